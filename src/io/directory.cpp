@@ -1,0 +1,33 @@
+#include "io/directory.h"
+
+#include "common/input_error.h"
+
+#include <cerrno>
+#include <cstring>
+#include <fcntl.h>
+#include <filesystem>
+#include <system_error>
+#include <unistd.h>
+
+namespace aurorawall::io {
+
+void ensureWritableDirectory(const std::string& dir, const std::string& optionName)
+{
+    const std::string where = optionName + " " + dir + ": ";
+    std::error_code error;
+    std::filesystem::create_directories(dir, error);
+    if (error)
+        throw InputError(where + "cannot create directory (" + error.message() + ")");
+    if (!std::filesystem::is_directory(dir, error))
+        throw InputError(where + "not a directory");
+
+    // Permission bits alone do not tell (root, read-only mounts, ACLs): try it.
+    const std::string probe = (std::filesystem::path(dir) / (".aurorawall-probe-" + std::to_string(::getpid()))).string();
+    const int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0600);
+    if (fd < 0)
+        throw InputError(where + "directory is not writable (" + std::strerror(errno) + ")");
+    ::close(fd);
+    ::unlink(probe.c_str());
+}
+
+} // namespace aurorawall::io

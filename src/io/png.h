@@ -1,0 +1,19 @@
+#pragma once
+// 8-bit sRGB PNG previews of linear images.
+#include "io/image.h"
+#include "io/tone_map.h"
+
+#include <string>
+
+namespace aurorawall::io {
+
+// Tone maps each pixel with toneMapPixel, quantises to 8 bits (round(255 v)) and writes an opaque
+// RGB PNG tagged sRGB, atomically (see atomic_file.h). Alpha is not written.
+// Throws std::invalid_argument for an empty or inconsistent image, std::runtime_error on I/O errors.
+void writePng(const std::string& path, const Image& image, const ToneMap& toneMap);
+
+// Reads a PNG as 8-bit RGBA; each channel holds the ENCODED byte value / 255 (not linear radiance).
+// Throws std::runtime_error.
+Image readPng8(const std::string& path);
+
+} // namespace aurorawall::io

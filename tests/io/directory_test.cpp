@@ -1,0 +1,79 @@
+#include "io/directory.h"
+#include "temp_dir.h"
+
+#include "common/input_error.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+using namespace aurorawall::io;
+using aurorawall::InputError;
+using aurorawall::io::test::TempDir;
+namespace fs = std::filesystem;
+
+namespace {
+
+// The message of the InputError that ensureWritableDirectory throws, or "" if none.
+std::string errorFor(const std::string& dir)
+{
+    try {
+        ensureWritableDirectory(dir, "--out");
+    } catch (const InputError& e) {
+        return e.what();
+    }
+    return "";
+}
+
+} // namespace
+
+TEST(EnsureWritableDirectory, AcceptsAnExistingWritableFolderAndLeavesItEmpty)
+{
+    TempDir dir;
+    EXPECT_NO_THROW(ensureWritableDirectory(dir.path().string(), "--out"));
+    EXPECT_TRUE(dir.entries().empty()); // the probe file is gone
+}
+
+TEST(EnsureWritableDirectory, CreatesMissingFoldersWithTheirParents)
+{
+    TempDir dir;
+    const std::string nested = dir.file("a/b/c");
+    EXPECT_NO_THROW(ensureWritableDirectory(nested, "--out"));
+    EXPECT_TRUE(fs::is_directory(nested));
+    EXPECT_TRUE(fs::is_empty(nested));
+}
+
+TEST(EnsureWritableDirectory, ProcFolderGivesOneLineNamingOptionPathAndReason)
+{
+    const std::string message = errorFor("/proc/aw_io_test/x");
+    EXPECT_EQ(message.rfind("--out /proc/aw_io_test/x: cannot create directory (", 0), 0u) << message;
+    EXPECT_EQ(message.back(), ')') << message;
+    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+}
+
+TEST(EnsureWritableDirectory, ParentThatIsARegularFileIsRejected)
+{
+    TempDir dir;
+    std::ofstream(dir.file("plain")) << "not a folder";
+    const std::string message = errorFor(dir.file("plain/out"));
+    EXPECT_EQ(message, "--out " + dir.file("plain/out") + ": cannot create directory (Not a directory)");
+}
+
+TEST(EnsureWritableDirectory, PathThatIsARegularFileIsRejected)
+{
+    TempDir dir;
+    std::ofstream(dir.file("plain")) << "not a folder";
+    const std::string message = errorFor(dir.file("plain"));
+    EXPECT_EQ(message.rfind("--out " + dir.file("plain") + ": ", 0), 0u) << message;
+}
+
+TEST(EnsureWritableDirectory, ReadOnlyFolderIsRejected)
+{
+    TempDir dir;
+    fs::permissions(dir.path(), fs::perms::owner_read | fs::perms::owner_exec);
+    if (::access(dir.path().c_str(), W_OK) == 0)
+        GTEST_SKIP() << "this user may write into read-only folders (root)";
+    const std::string message = errorFor(dir.path().string());
+    EXPECT_EQ(message, "--out " + dir.path().string() + ": directory is not writable (Permission denied)");
+}
