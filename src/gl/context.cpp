@@ -1,0 +1,42 @@
+#include "gl/context.h"
+
+#include "gl/backends.h"
+#include "gl/functions.h"
+
+#include <stdexcept>
+
+namespace aurorawall::gl {
+
+Context::~Context() = default;
+
+void Context::bindWindowFramebuffer(int)
+{
+    throw std::logic_error("bindWindowFramebuffer: a headless context has no windows");
+}
+
+void Context::swapBuffers(int)
+{
+    throw std::logic_error("swapBuffers: a headless context has no windows");
+}
+
+static std::string glString(GLenum name)
+{
+    const GLubyte* s = glGetString(name);
+    return s ? reinterpret_cast<const char*>(s) : "";
+}
+
+std::string Context::rendererName() const { return glString(GL_RENDERER); }
+
+std::string Context::glVersion() const { return glString(GL_VERSION); }
+
+std::unique_ptr<Context> createContext(Backend backend, const std::vector<WindowSpec>& windowsForGlfw)
+{
+    switch (backend) {
+    case Backend::Egl: return createEglContext();
+    case Backend::Osmesa: return createOsmesaContext();
+    case Backend::Glfw: return createGlfwContext(windowsForGlfw);
+    }
+    throw std::logic_error("createContext: unknown backend");
+}
+
+} // namespace aurorawall::gl

@@ -1,0 +1,60 @@
+#pragma once
+// An OpenGL 4.5 core context from one of the backends, with the GL functions loaded.
+//
+// Headless backends (EGL, OSMesa) have no windows: render into your own framebuffers (FloatTarget).
+// GLFW opens one window per WindowSpec; each window has its own context, and the contexts of
+// windows after the first share objects with the first one. Shared are textures, buffers, shaders
+// and programs; NOT shared are container objects (framebuffers, vertex arrays, queries), so create
+// those per window after makeCurrent(i).
+//
+// Creating a context leaves it current (window 0) and prints nothing.
+#include "gl/backend.h"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace aurorawall::gl {
+
+// One window of the GLFW backend, in screen pixels.
+struct WindowSpec {
+    std::string title;
+    int widthPx = 0, heightPx = 0;
+    int x = -1, y = -1;      // desktop position of the top-left corner; -1: let the system choose
+    int monitor = -1;        // fullscreen on this monitor (index into glfwGetMonitors)
+    bool fullscreen = false; // needs monitor >= 0
+};
+
+class Context {
+public:
+    virtual ~Context();
+    Context(const Context&) = delete;
+    Context& operator=(const Context&) = delete;
+
+    // Makes the context of `window` current (headless: the only context, window must be 0) and
+    // loads the GL functions for it.
+    virtual void makeCurrent(int window = 0) = 0;
+
+    virtual int windowCount() const { return 0; }
+    // Makes window i current and binds its default framebuffer, viewport covering it.
+    virtual void bindWindowFramebuffer(int window);
+    virtual void swapBuffers(int window);
+    virtual void pollEvents() {}
+    // A window was closed or Esc was pressed in one.
+    virtual bool closeRequested() const { return false; }
+
+    // GL_RENDERER and GL_VERSION of the current context, for logs (e.g. "llvmpipe (LLVM 15.0.6, 256 bits)").
+    std::string rendererName() const;
+    std::string glVersion() const;
+
+protected:
+    Context() = default;
+};
+
+// Throws std::runtime_error with one line saying why when no context can be made.
+// windowsForGlfw is used by Backend::Glfw only (at least one window).
+// EGL tries the device platform (device $AURORAWALL_EGL_DEVICE only, if set), then the surfaceless
+// platform, then the default display.
+std::unique_ptr<Context> createContext(Backend backend, const std::vector<WindowSpec>& windowsForGlfw = {});
+
+} // namespace aurorawall::gl

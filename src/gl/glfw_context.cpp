@@ -1,0 +1,130 @@
+// GLFW windows, one context per window; windows after the first share the first one's objects.
+// GLFW loads libGL itself at run time, so nothing here links it.
+#include "gl/backends.h"
+#include "gl/functions.h"
+#include "gl/loader.h"
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+
+#include <stdexcept>
+#include <string>
+
+namespace aurorawall::gl {
+namespace {
+
+std::string lastGlfwError;
+
+void recordGlfwError(int, const char* description) { lastGlfwError = description; }
+
+void* glfwProcAddress(const char* name)
+{
+    return reinterpret_cast<void*>(glfwGetProcAddress(name));
+}
+
+void closeOnEscape(GLFWwindow* window, int key, int, int action, int)
+{
+    if (key == GLFW_KEY_ESCAPE && action == GLFW_PRESS)
+        glfwSetWindowShouldClose(window, GLFW_TRUE);
+}
+
+class GlfwContext : public Context {
+public:
+    // glfwInit/glfwTerminate are process-wide: the first live GlfwContext initializes, the last ends.
+    GlfwContext()
+    {
+        if (liveContexts_ == 0) {
+            glfwSetErrorCallback(recordGlfwError);
+            if (!glfwInit())
+                throw std::runtime_error("GLFW: glfwInit failed (" + lastGlfwError + ")");
+        }
+        ++liveContexts_;
+    }
+
+    ~GlfwContext() override
+    {
+        for (GLFWwindow* w : windows_)
+            glfwDestroyWindow(w);
+        if (--liveContexts_ == 0)
+            glfwTerminate();
+    }
+
+    void openWindow(const WindowSpec& spec)
+    {
+        const std::string name = "GLFW: window '" + spec.title + "'";
+        GLFWmonitor* monitor = nullptr;
+        if (spec.fullscreen) {
+            int count = 0;
+            GLFWmonitor** monitors = glfwGetMonitors(&count);
+            if (spec.monitor < 0 || spec.monitor >= count)
+                throw std::runtime_error(name + ": fullscreen on monitor " + std::to_string(spec.monitor) +
+                                         " but there are " + std::to_string(count) + " monitors");
+            monitor = monitors[spec.monitor];
+        }
+        glfwDefaultWindowHints();
+        glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 4);
+        glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 5);
+        glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+        glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+        glfwWindowHint(GLFW_VISIBLE, GLFW_FALSE); // shown once placed
+        GLFWwindow* share = windows_.empty() ? nullptr : windows_.front();
+        GLFWwindow* window = glfwCreateWindow(spec.widthPx, spec.heightPx, spec.title.c_str(), monitor, share);
+        if (!window)
+            throw std::runtime_error(name + ": no OpenGL 4.5 core window (" + lastGlfwError + ")");
+        windows_.push_back(window);
+        glfwSetKeyCallback(window, closeOnEscape);
+        if (!monitor && spec.x >= 0 && spec.y >= 0)
+            glfwSetWindowPos(window, spec.x, spec.y);
+        glfwShowWindow(window);
+        glfwMakeContextCurrent(window);
+        glfwSwapInterval(0); // several windows swap in turn; vsync would wait once per window
+    }
+
+    void makeCurrent(int window) override
+    {
+        glfwMakeContextCurrent(windows_.at(window));
+        loadFunctions(glfwProcAddress);
+    }
+
+    int windowCount() const override { return static_cast<int>(windows_.size()); }
+
+    void bindWindowFramebuffer(int window) override
+    {
+        makeCurrent(window);
+        int width = 0, height = 0;
+        glfwGetFramebufferSize(windows_.at(window), &width, &height);
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        glViewport(0, 0, width, height);
+    }
+
+    void swapBuffers(int window) override { glfwSwapBuffers(windows_.at(window)); }
+
+    void pollEvents() override { glfwPollEvents(); }
+
+    bool closeRequested() const override
+    {
+        for (GLFWwindow* w : windows_)
+            if (glfwWindowShouldClose(w))
+                return true;
+        return false;
+    }
+
+private:
+    static inline int liveContexts_ = 0;
+    std::vector<GLFWwindow*> windows_;
+};
+
+} // namespace
+
+std::unique_ptr<Context> createGlfwContext(const std::vector<WindowSpec>& windows)
+{
+    if (windows.empty())
+        throw std::runtime_error("GLFW: no windows asked for");
+    auto context = std::make_unique<GlfwContext>();
+    for (const WindowSpec& spec : windows)
+        context->openWindow(spec);
+    context->makeCurrent(0);
+    return context;
+}
+
+} // namespace aurorawall::gl

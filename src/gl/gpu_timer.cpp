@@ -1,0 +1,52 @@
+#include "gl/gpu_timer.h"
+
+#include "gl/functions.h"
+
+#include <cstring>
+
+namespace aurorawall::gl {
+
+static bool isMesaSoftwareRenderer()
+{
+    const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+    return renderer && (std::strncmp(renderer, "llvmpipe", 8) == 0 || std::strncmp(renderer, "softpipe", 8) == 0);
+}
+
+GpuTimer::GpuTimer()
+{
+    GLint bits = 0;
+    glGetQueryiv(GL_TIMESTAMP, GL_QUERY_COUNTER_BITS, &bits);
+    if (bits > 0 && !isMesaSoftwareRenderer())
+        glGenQueries(2, queries_);
+}
+
+GpuTimer::~GpuTimer()
+{
+    if (usesQueries())
+        glDeleteQueries(2, queries_);
+}
+
+void GpuTimer::start()
+{
+    if (usesQueries()) {
+        glQueryCounter(queries_[0], GL_TIMESTAMP);
+    } else {
+        glFinish();
+        cpuStart_ = std::chrono::steady_clock::now();
+    }
+}
+
+double GpuTimer::stopSeconds()
+{
+    if (!usesQueries()) {
+        glFinish();
+        return std::chrono::duration<double>(std::chrono::steady_clock::now() - cpuStart_).count();
+    }
+    glQueryCounter(queries_[1], GL_TIMESTAMP);
+    GLuint64 begin = 0, end = 0;
+    glGetQueryObjectui64v(queries_[0], GL_QUERY_RESULT, &begin); // GL_QUERY_RESULT waits
+    glGetQueryObjectui64v(queries_[1], GL_QUERY_RESULT, &end);
+    return double(end - begin) * 1e-9;
+}
+
+} // namespace aurorawall::gl

@@ -1,0 +1,69 @@
+// EGL and OSMesa render the test pattern like the CPU double reference, and identically.
+#include "test_pattern.h"
+
+#include "gl/context.h"
+
+#include <gtest/gtest.h>
+
+#include <cstring>
+
+namespace aurorawall::gl::test {
+namespace {
+
+// float32 transcendentals on llvmpipe are good to a few ulp; 1e-5 leaves margin, a wrong formula
+// or a flipped row order is off by far more.
+constexpr double kTolerance = 1e-5;
+
+std::vector<double> flippedRows(const std::vector<double>& pixels)
+{
+    std::vector<double> flipped;
+    for (int y = kHeight - 1; y >= 0; --y)
+        flipped.insert(flipped.end(), pixels.begin() + 4 * y * kWidth, pixels.begin() + 4 * (y + 1) * kWidth);
+    return flipped;
+}
+
+void expectMatchesReference(Backend backend)
+{
+    auto context = createContext(backend);
+    EXPECT_NE(context->rendererName(), "");
+    const std::vector<float> gpu = renderPattern();
+    const std::vector<double> cpu = referencePattern();
+    EXPECT_LT(maxRelativeError(gpu, cpu), kTolerance) << context->rendererName();
+    // Rows are bottom-up (documented in float_target.h): the top-down order must not match.
+    EXPECT_GT(maxRelativeError(gpu, flippedRows(cpu)), 1e-2);
+}
+
+TEST(Egl, RendersPatternLikeCpuDouble) { expectMatchesReference(Backend::Egl); }
+
+TEST(Osmesa, RendersPatternLikeCpuDouble) { expectMatchesReference(Backend::Osmesa); }
+
+// Both are llvmpipe of the same Mesa, and both load through the same libglapi, so they coexist in
+// one process (contexts used one after the other).
+TEST(Headless, EglAndOsmesaAreBitIdentical)
+{
+    std::vector<float> egl, osmesa;
+    {
+        auto context = createContext(Backend::Egl);
+        egl = renderPattern();
+    }
+    {
+        auto context = createContext(Backend::Osmesa);
+        osmesa = renderPattern();
+    }
+    ASSERT_EQ(egl.size(), osmesa.size());
+    EXPECT_EQ(std::memcmp(egl.data(), osmesa.data(), egl.size() * sizeof(float)), 0);
+}
+
+TEST(Headless, TwoLiveContextsTakeTurns)
+{
+    auto egl = createContext(Backend::Egl);
+    auto osmesa = createContext(Backend::Osmesa);
+    const std::vector<float> fromOsmesa = renderPattern();
+    egl->makeCurrent();
+    const std::vector<float> fromEgl = renderPattern();
+    ASSERT_EQ(fromEgl.size(), fromOsmesa.size());
+    EXPECT_EQ(std::memcmp(fromEgl.data(), fromOsmesa.data(), fromEgl.size() * sizeof(float)), 0);
+}
+
+} // namespace
+} // namespace aurorawall::gl::test
