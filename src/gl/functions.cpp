@@ -10,9 +10,12 @@ namespace aurorawall::gl {
 AURORAWALL_GL_FUNCTIONS(AURORAWALL_GL_DEFINE)
 #undef AURORAWALL_GL_DEFINE
 
+namespace {
+ProcAddressFunction loadedFrom = nullptr;
+}
+
 void loadFunctions(ProcAddressFunction getProcAddress)
 {
-    static ProcAddressFunction loadedFrom = nullptr;
     if (getProcAddress == loadedFrom)
         return;
     loadedFrom = nullptr;
@@ -26,6 +29,14 @@ void loadFunctions(ProcAddressFunction getProcAddress)
     if (!missing.empty())
         throw std::runtime_error("OpenGL loader: the context lacks " + missing);
     loadedFrom = getProcAddress;
+}
+
+void forgetFunctions()
+{
+#define AURORAWALL_GL_CLEAR(type, name) name = nullptr;
+    AURORAWALL_GL_FUNCTIONS(AURORAWALL_GL_CLEAR)
+#undef AURORAWALL_GL_CLEAR
+    loadedFrom = nullptr;
 }
 
 } // namespace aurorawall::gl

@@ -45,8 +45,10 @@ public:
     {
         for (GLFWwindow* w : windows_)
             glfwDestroyWindow(w);
-        if (--liveContexts_ == 0)
+        if (--liveContexts_ == 0) {
             glfwTerminate();
+            forgetFunctions();
+        }
     }
 
     void openWindow(const WindowSpec& spec)

@@ -12,4 +12,8 @@ using ProcAddressFunction = void* (*)(const char* name);
 // Throws std::runtime_error naming the functions the context lacks.
 void loadFunctions(ProcAddressFunction getProcAddress);
 
+// Clears the pointers; the next loadFunctions loads again. For when the library behind them is
+// unloaded (glfwTerminate closes the libGL that GLFW opened).
+void forgetFunctions();
+
 } // namespace aurorawall::gl

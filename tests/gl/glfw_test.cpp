@@ -41,5 +41,17 @@ TEST(Glfw, TwoWindowsMatchEgl)
     EXPECT_FALSE(context->closeRequested());
 }
 
+// GLFW contexts one after another: glfwTerminate closes libGL, the next one loads it and the functions again.
+TEST(Glfw, SecondContextAfterTerminate)
+{
+    if (!std::getenv("DISPLAY"))
+        GTEST_SKIP() << "no DISPLAY; ctest runs this test under xvfb-run";
+    for (int round = 0; round < 2; ++round) {
+        auto context = createContext(Backend::Glfw, {{"again", kWidth, kHeight}});
+        EXPECT_NE(context->rendererName(), "") << "round " << round;
+        EXPECT_EQ(maxRelativeError(renderPattern(), referencePattern()) < 1e-5, true) << "round " << round;
+    }
+}
+
 } // namespace
 } // namespace aurorawall::gl::test
