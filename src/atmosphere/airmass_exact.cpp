@@ -1,0 +1,156 @@
+#include "atmosphere/airmass_exact.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace aurorawall {
+namespace {
+
+constexpr double kDensityExponentCap = 60.0; // as airmassDensity in airmass_common.glsl
+
+// Gauss–Kronrod 7/15 nodes and weights on [−1, 1] (Piessens et al., QUADPACK qk15).
+constexpr double kKronrodNodes[8] = {0.991455371120812639, 0.949107912342758525, 0.864864423359769073,
+                                     0.741531185599394440, 0.586087235467691130, 0.405845151377397167,
+                                     0.207784955007898468, 0.0};
+constexpr double kKronrodWeights[8] = {0.022935322010529225, 0.063092092629978553, 0.104790010322250184,
+                                       0.140653259715525919, 0.169004726639267903, 0.190350578064785410,
+                                       0.204432940075298892, 0.209482141084727828};
+constexpr double kGaussWeights[4] = {0.129484966168869693, 0.279705391489276668, 0.381830050505118945,
+                                     0.417959183673469388}; // at Kronrod nodes 1, 3, 5, 7
+
+// The integrand of one monotone piece, divided by its value at the piece's lower end xLow:
+// g(x) = exp(e(x) − e(xLow)), e(x) = min((R − r(x))/H, 60), r(x) = √(x² + y²). While uncapped,
+// e(x) − e(xLow) = −(x − xLow)(x + xLow)/((r + rLow)·H), free of cancellation.
+struct PieceIntegrand {
+    double y, xLow, rLow, H, R;
+    bool lowCapped;
+    double operator()(double x) const
+    {
+        double r = std::hypot(x, y);
+        if (!lowCapped) return std::exp(-(x - xLow) * (x + xLow) / ((r + rLow) * H));
+        return std::exp(std::min((R - r) / H - kDensityExponentCap, 0.0));
+    }
+};
+
+double kronrod15(const PieceIntegrand& f, double a, double b, double& errorEstimate)
+{
+    double centre = 0.5 * (a + b);
+    double halfWidth = 0.5 * (b - a);
+    double fc = f(centre);
+    double kronrod = kKronrodWeights[7] * fc;
+    double gauss = kGaussWeights[3] * fc;
+    for (int i = 0; i < 7; ++i) {
+        double dx = halfWidth * kKronrodNodes[i];
+        double pair = f(centre - dx) + f(centre + dx);
+        kronrod += kKronrodWeights[i] * pair;
+        if (i % 2 == 1) gauss += kGaussWeights[i / 2] * pair;
+    }
+    errorEstimate = std::abs((kronrod - gauss) * halfWidth);
+    return kronrod * halfWidth;
+}
+
+// Recursive bisection until the Kronrod–Gauss difference is below the absolute tolerance.
+double adaptiveKronrod(const PieceIntegrand& f, double a, double b, double tolerance, int depth)
+{
+    double error = 0.0;
+    double value = kronrod15(f, a, b, error);
+    if (error <= tolerance || depth >= 60) return value;
+    double middle = 0.5 * (a + b);
+    return adaptiveKronrod(f, a, middle, 0.5 * tolerance, depth + 1) +
+           adaptiveKronrod(f, middle, b, 0.5 * tolerance, depth + 1);
+}
+
+// x ≥ 0 at which the ray reaches radius r (r ≥ y), on the outgoing side.
+double distanceAtRadius(double r, double y) { return std::sqrt((r - y) * (r + y)); }
+
+// ∫_{xLow}^{xHigh} exp(e(x)) dx for 0 ≤ xLow < xHigh, where r rises monotonically.
+// Split where the radius has risen by H/16, H/8, …, 4096·H above the lowest point, and at the
+// planet's surface and the cap radius, so that no subinterval hides a narrow spike of the integrand.
+double monotonePiece(double y, double xLow, double xHigh, double H, double R)
+{
+    double rLow = std::hypot(xLow, y);
+    double capRadius = R - kDensityExponentCap * H;
+    PieceIntegrand f{y, xLow, rLow, H, R, rLow < capRadius};
+    std::vector<double> splits{xLow, xHigh};
+    double baseRadius = std::max(rLow, capRadius);
+    for (double rise = H / 16.0; rise <= 4096.0 * H; rise *= 2.0) {
+        splits.push_back(distanceAtRadius(baseRadius + rise, y));
+    }
+    if (R > y) splits.push_back(distanceAtRadius(R, y));
+    if (capRadius > y) splits.push_back(distanceAtRadius(capRadius, y));
+    std::sort(splits.begin(), splits.end());
+    splits.erase(std::remove_if(splits.begin(), splits.end(),
+                                [&](double x) { return !(x >= xLow && x <= xHigh); }),
+                 splits.end());
+    splits.erase(std::unique(splits.begin(), splits.end()), splits.end());
+
+    double roughTotal = 0.0;
+    for (size_t i = 0; i + 1 < splits.size(); ++i) {
+        double error = 0.0;
+        roughTotal += kronrod15(f, splits[i], splits[i + 1], error);
+    }
+    double tolerance = 1e-14 * roughTotal;
+    double total = 0.0;
+    for (size_t i = 0; i + 1 < splits.size(); ++i) {
+        total += adaptiveKronrod(f, splits[i], splits[i + 1], tolerance, 0);
+    }
+    double lowExponent = std::min((R - rLow) / H, kDensityExponentCap);
+    return std::exp(lowExponent) * total;
+}
+
+} // namespace
+
+double exactAirmass(glm::dvec3 origin, glm::dvec3 direction, double t0, double t1, double H, double R)
+{
+    double directionLength = glm::length(direction);
+    if (!(directionLength > 0.0) || t0 == t1) return 0.0;
+    glm::dvec3 d = direction / directionLength;
+    double originDistance = glm::length(origin);
+    glm::dvec3 up = originDistance > 0.0 ? origin / originDistance : d;
+    double y = originDistance * glm::length(up - d) * glm::length(up + d) * 0.5; // see airmassRayFrame
+    double tClosest = -glm::dot(origin, d);
+    double lo = std::min(t0, t1) - tClosest;
+    double hi = std::max(t0, t1) - tClosest;
+    double airmass;
+    if (lo >= 0.0) {
+        airmass = monotonePiece(y, lo, hi, H, R);
+    } else if (hi <= 0.0) {
+        airmass = monotonePiece(y, -hi, -lo, H, R);
+    } else {
+        airmass = monotonePiece(y, 0.0, -lo, H, R) + monotonePiece(y, 0.0, hi, H, R);
+    }
+    return t1 < t0 ? -airmass : airmass;
+}
+
+double exactAirmass(const AirmassRay& ray)
+{
+    return exactAirmass(ray.origin, ray.direction, ray.t0, ray.t1, ray.scaleHeight, ray.planetRadius);
+}
+
+// Ch(x, χ) = I / (H·e^{−(r−R)/H}) with H = 1, R = r = x: the ray from (0, 0, x) at zenith angle χ to
+// where it has risen 300 scale heights (e^{−300} is far below the quadrature's accuracy).
+double exactChapman(double x, double zenithAngle)
+{
+    glm::dvec3 origin(0.0, 0.0, x);
+    glm::dvec3 direction(std::sin(zenithAngle), 0.0, std::cos(zenithAngle));
+    double top = x + 300.0;
+    double y = x * std::sin(zenithAngle);
+    double tTop = std::sqrt((top - y) * (top + y)) - x * std::cos(zenithAngle);
+    return exactAirmass(origin, direction, 0.0, tTop, 1.0, x);
+}
+
+// e^x·K₁(x) ~ √(π/(2x))·Σ_k a_k/x^k, a_0 = 1, a_k = a_{k−1}·(4 − (2k − 1)²)/(8k)  (A&S 9.7.2, ν = 1).
+double scaledBesselK1(double x)
+{
+    if (x < 500.0) return std::cyl_bessel_k(1.0, x) * std::exp(x);
+    double term = 1.0;
+    double sum = 1.0;
+    for (int k = 1; k < 30 && std::abs(term) > 1e-18; ++k) {
+        term *= (4.0 - (2.0 * k - 1.0) * (2.0 * k - 1.0)) / (8.0 * k * x);
+        sum += term;
+    }
+    return std::sqrt(M_PI / (2.0 * x)) * sum;
+}
+
+} // namespace aurorawall
