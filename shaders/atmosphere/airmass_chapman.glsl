@@ -85,13 +85,11 @@ real chapmanApproximation(real x, real cosZenith, int kind)
     return chapmanAsymptotic(x, cosZenith);
 }
 
-// Airmass of the monotone piece 0 ≤ xa ≤ xb at closest-approach distance y (see the top of this file).
-// rise = (rb − ra)/H is computed as (xb² − xa²)/((ra + rb)·H), free of cancellation.
-// The exponent e^{−(ra−R)/H} is capped at e^{60} like airmassDensity (transparent planet).
-real airmassChapmanPiece(real y, real xa, real xb, real H, real R, int kind)
+// Airmass of the monotone piece 0 ≤ xa ≤ xb at closest-approach distance y, whose ends lie at radii
+// ra and rb (see the top of this file). rise = (rb − ra)/H is computed as (xb² − xa²)/((ra + rb)·H),
+// free of cancellation. The exponent e^{−(ra−R)/H} is capped at e^{60} like airmassDensity.
+real airmassChapmanPiece(real y, real xa, real xb, real ra, real rb, real H, real R, int kind)
 {
-    real ra = sqrt(xa * xa + y * y);
-    real rb = sqrt(xb * xb + y * y);
     real rise = (xb - xa) * (xb + xa) / ((ra + rb) * H);
     if (!(rise > real(1))) return airmassGaussLegendre3(y, xa, xb, H, R);
     real cosZenithA = ra > real(0) ? xa / ra : real(1);
@@ -100,20 +98,27 @@ real airmassChapmanPiece(real y, real xa, real xb, real H, real R, int kind)
     return H * exp(min((R - ra) / H, real(60))) * (chapmanA - exp(-rise) * chapmanB);
 }
 
-// Airmass of the segment [t0, t1] from Chapman functions of the given kind (signed).
+// Airmass of the segment [t0, t1] from Chapman functions of the given kind (signed); segments shorter
+// than H take the safe form airmassShortSegment.
 real airmassChapman(vec3 origin, vec3 direction, real t0, real t1, real H, real R, int kind)
 {
+    if (abs(t1 - t0) <= H) return airmassShortSegment(origin, direction, t0, t1, H, R);
     vec3 frame = airmassRayFrame(origin, direction, t0, t1);
     real y = frame.x;
     real lo = min(frame.y, frame.z);
     real hi = max(frame.y, frame.z);
+    // The end radii straight from the end points: |o + t·d̂| is more accurate in float than √(x² + y²).
+    vec3 d = direction / length(direction);
+    real rLo = length(origin + min(t0, t1) * d);
+    real rHi = length(origin + max(t0, t1) * d);
     real airmass;
     if (lo >= real(0)) {
-        airmass = airmassChapmanPiece(y, lo, hi, H, R, kind);
+        airmass = airmassChapmanPiece(y, lo, hi, rLo, rHi, H, R, kind);
     } else if (hi <= real(0)) {
-        airmass = airmassChapmanPiece(y, -hi, -lo, H, R, kind);
+        airmass = airmassChapmanPiece(y, -hi, -lo, rHi, rLo, H, R, kind);
     } else {
-        airmass = airmassChapmanPiece(y, real(0), -lo, H, R, kind) + airmassChapmanPiece(y, real(0), hi, H, R, kind);
+        airmass = airmassChapmanPiece(y, real(0), -lo, y, rLo, H, R, kind)
+                + airmassChapmanPiece(y, real(0), hi, y, rHi, H, R, kind);
     }
     real segmentSign = frame.z < frame.y ? real(-1) : real(1);
     return segmentSign * airmass;

@@ -44,6 +44,23 @@ real airmassGaussLegendre3(real y, real xa, real xb, real H, real R)
                       + real(0.555555555555555556) * airmassDensity(y, middle + offset, H, R));
 }
 
+// Safe form for a segment shorter than one scale height (the exponent varies by at most 1): 3-point
+// Gauss–Legendre in t with the radius |o + t·d̂| taken directly. Positions relative to the closest
+// approach (x = t − t_c) cannot resolve such a segment in float once |t_c| ≫ |t1 − t0|.
+// Signed like the segment; a zero direction gives 0.
+real airmassShortSegment(vec3 origin, vec3 direction, real t0, real t1, real H, real R)
+{
+    real directionLength = length(direction);
+    if (!(directionLength > real(0))) return real(0);
+    vec3 d = direction / directionLength;
+    real halfWidth = real(0.5) * (t1 - t0);
+    real middle = real(0.5) * (t0 + t1);
+    real offset = halfWidth * real(0.774596669241483377);
+    return halfWidth * (real(0.555555555555555556) * exp(min((R - length(origin + (middle - offset) * d)) / H, real(60)))
+                      + real(0.888888888888888889) * exp(min((R - length(origin + middle * d)) / H, real(60)))
+                      + real(0.555555555555555556) * exp(min((R - length(origin + (middle + offset) * d)) / H, real(60))));
+}
+
 // Scaled complementary error function erfcx(z) = e^{z²}·erfc(z) for z ≥ 0.
 // Numerical Recipes in C (2nd ed., §6.2, erfcc): erfc(z) = t·exp(−z² + P(t)), t = 1/(1 + z/2),
 // fractional error < 1.2e-7 for all z ≥ 0; without its exp(−z²) factor it is erfcx, which stays

@@ -60,9 +60,11 @@ real airmassLawlorWinitzki(vec3 start, vec3 direction, real tstart, real tend, r
 //   crossing (s0 < 0 < s1):  erf(s1) − erf(s0) = 2 − erfc(s1) − erfc(−s0),
 //   same sign (0 ≤ s0 < s1): erf(s1) − erf(s0) = erfc(s0) − erfc(s1).
 // The same-sign difference cancels when s1² − s0² < 1; there the safe form integrates e^{−A/H − s²}
-// over [s0, s1] with 3-point Gauss–Legendre (error ~1e-6, continuous across the switch).
+// over [s0, s1] with 3-point Gauss–Legendre (error ~1e-6, continuous across the switch), and segments
+// shorter than H take airmassShortSegment.
 real airmassLawlorErfcx(vec3 origin, vec3 direction, real t0, real t1, real H, real R)
 {
+    if (abs(t1 - t0) <= H) return airmassShortSegment(origin, direction, t0, t1, H, R);
     vec3 frame = airmassRayFrame(origin, direction, t0, t1);
     real lo = min(frame.y, frame.z);
     real hi = max(frame.y, frame.z);

@@ -1,0 +1,35 @@
+// aurorawall: one binary, several subcommands.
+#include "app/render_command.h"
+
+#include <cstdio>
+#include <cstring>
+#include <iostream>
+#include <string>
+
+namespace {
+
+const char* kUsage =
+    "aurorawall: a distributed powerwall renderer of the aurora borealis.\n"
+    "\n"
+    "Usage: aurorawall <command> [options]   (aurorawall <command> --help for its options)\n"
+    "\n"
+    "Commands:\n"
+    "  render    render a scene on a display wall, one MPI rank per group of screens\n"
+    "            (mpirun -n RANKS aurorawall render --wall FILE --scene FILE ...)\n"
+    "  airmass   airmass integrals along rays read from standard input (CSV), by a chosen method\n";
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+    if (argc < 2 || !std::strcmp(argv[1], "--help") || !std::strcmp(argv[1], "-h") || !std::strcmp(argv[1], "help")) {
+        std::fputs(kUsage, argc < 2 ? stderr : stdout);
+        return argc < 2 ? 2 : 0;
+    }
+    const std::string command = argv[1];
+    // Each command sees its own name as argv[0].
+    if (command == "render")
+        return aurorawall::app::runRenderCommand(argc - 1, argv + 1);
+    std::fprintf(stderr, "aurorawall: unknown command '%s'\n%s", command.c_str(), kUsage);
+    return 2;
+}

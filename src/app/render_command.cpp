@@ -1,0 +1,295 @@
+#include "app/render_command.h"
+
+#include "app/render_options.h"
+#include "cluster/frame_stats.h"
+#include "cluster/master_clock.h"
+#include "cluster/mpi_world.h"
+#include "common/data_dir.h"
+#include "common/input_error.h"
+#include "gl/context.h"
+#include "gl/float_target.h"
+#include "gl/functions.h"
+#include "io/directory.h"
+#include "io/exr.h"
+#include "io/image.h"
+#include "io/png.h"
+#include "render/fragment_shader.h"
+#include "render/tile_renderer.h"
+#include "render/window_presenter.h"
+#include "scene/scene.h"
+#include "wall/tile_rays.h"
+#include "wall/wall_file.h"
+
+#include <chrono>
+#include <cstdio>
+#include <cstring>
+#include <functional>
+#include <iostream>
+#include <memory>
+#include <optional>
+
+namespace aurorawall::app {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double millisecondsSince(Clock::time_point start)
+{
+    return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+// Runs one set-up step on every rank and agrees on its outcome: returns false on every rank
+// if any rank threw (rank 0 has printed the reasons).
+bool setUpStep(const cluster::MpiWorld& world, const std::function<void()>& step)
+{
+    std::string error;
+    try {
+        step();
+    } catch (const std::exception& e) {
+        error = e.what();
+        if (error.empty())
+            error = "unknown error";
+    }
+    return !world.anyRankFailed(error);
+}
+
+// One screen this rank draws: where its pixels come from and where they go.
+struct Tile {
+    int screenIndex = 0;
+    int window = 0; // context/window it is drawn in (glfw: one per screen; headless: 0)
+    wall::TileRays rays;
+    std::unique_ptr<gl::FloatTarget> target;
+    std::unique_ptr<gl::FullScreenTriangle> triangle;
+};
+
+std::vector<gl::WindowSpec> windowsFor(const wall::Wall& wall, const std::vector<int>& screens)
+{
+    std::vector<gl::WindowSpec> windows;
+    for (int s : screens) {
+        const wall::Screen& screen = wall.screens[s];
+        gl::WindowSpec w;
+        w.title = "aurorawall " + screen.name;
+        w.widthPx = screen.window.width > 0 ? screen.window.width : screen.widthPx;
+        w.heightPx = screen.window.height > 0 ? screen.window.height : screen.heightPx;
+        w.x = screen.window.x;
+        w.y = screen.window.y;
+        w.monitor = screen.window.monitor;
+        w.fullscreen = screen.window.fullscreen;
+        windows.push_back(w);
+    }
+    return windows;
+}
+
+io::ToneMap toneMapFor(const RenderOptions& options, double exposure)
+{
+    io::ToneMap t;
+    t.curve = options.toneMap == "aces" ? io::ToneMap::Curve::AcesFilmic : io::ToneMap::Curve::MagnitudeGamma;
+    t.exposure = exposure;
+    return t;
+}
+
+// Tiles travel to rank 0 as [screen index, width, height] followed by top-down RGBA floats.
+std::vector<char> packTiles(const std::vector<std::pair<int, io::Image>>& tiles)
+{
+    std::vector<char> bytes;
+    for (const auto& [screen, image] : tiles) {
+        const int header[3] = {screen, image.width, image.height};
+        const char* h = reinterpret_cast<const char*>(header);
+        bytes.insert(bytes.end(), h, h + sizeof header);
+        const char* p = reinterpret_cast<const char*>(image.rgba.data());
+        bytes.insert(bytes.end(), p, p + image.rgba.size() * sizeof(float));
+    }
+    return bytes;
+}
+
+io::Image assembleWall(const wall::Wall& wall, const std::vector<char>& bytes)
+{
+    io::Image canvas(wall.canvasSizePx.x, wall.canvasSizePx.y);
+    size_t at = 0;
+    while (at < bytes.size()) {
+        int header[3];
+        std::memcpy(header, bytes.data() + at, sizeof header);
+        at += sizeof header;
+        io::Image tile;
+        tile.width = header[1];
+        tile.height = header[2];
+        tile.rgba.resize(4 * size_t(tile.width) * tile.height);
+        std::memcpy(tile.rgba.data(), bytes.data() + at, tile.rgba.size() * sizeof(float));
+        at += tile.rgba.size() * sizeof(float);
+        const wall::Screen& screen = wall.screens[header[0]];
+        io::pasteTile(canvas, tile, screen.canvasOffsetPx.x, screen.canvasOffsetPx.y);
+    }
+    // Bezels stay black, as on the wall; alpha 1 everywhere so viewers show them as black, not transparent.
+    for (size_t i = 3; i < canvas.rgba.size(); i += 4)
+        canvas.rgba[i] = 1.0f;
+    return canvas;
+}
+
+} // namespace
+
+int runRenderCommand(int argc, char** argv)
+{
+    cluster::MpiWorld world(&argc, &argv);
+
+    // 1. Configuration, identical on every rank: options, wall, scene, shaders, output folder.
+    RenderOptions options;
+    wall::Wall wallLayout;
+    scene::Scene scene;
+    std::vector<int> myScreens;
+    std::string shaderDir;
+    const bool configured = setUpStep(world, [&] {
+        options = parseRenderOptions(argc, argv);
+        if (options.help)
+            return;
+        wallLayout = wall::loadWall(options.wallFile);
+        if (options.singleScreen)
+            wallLayout = wall::singleScreenEquivalent(wallLayout);
+        if (wallLayout.rankCount != world.size())
+            throw InputError(options.wallFile + ": the wall is driven by " + std::to_string(wallLayout.rankCount) +
+                             " ranks, but mpirun started " + std::to_string(world.size()) +
+                             " (use mpirun -n " + std::to_string(wallLayout.rankCount) + ")");
+        scene = scene::loadScene(options.sceneFile);
+        shaderDir = (options.dataDir.empty() ? dataDirectory() : options.dataDir) + "/shaders";
+        render::fragmentShaderSource(scene, shaderDir); // every module readable before any window opens
+        if (options.backend != "glfw" && options.frames == 0)
+            throw InputError("--frames 0 (until a window is closed) needs --backend glfw");
+        gl::parseBackend(options.backend);
+        if (options.gather || options.tiles || !options.statsFile.empty())
+            io::ensureWritableDirectory(options.outDir, "--out");
+        myScreens = wallLayout.screensOfRank(world.rank());
+    });
+    if (!configured)
+        return 1;
+    if (options.help) {
+        if (world.isMaster())
+            std::cout << options.helpText;
+        return 0;
+    }
+
+    // 2. Graphics: a context (and windows) per rank, the raymarcher compiled for this scene.
+    const gl::Backend backend = gl::parseBackend(options.backend);
+    std::unique_ptr<gl::Context> context;
+    std::unique_ptr<render::TileRenderer> renderer;
+    std::unique_ptr<render::WindowPresenter> presenter;
+    std::vector<Tile> tiles;
+    const double exposure = options.exposure > 0 ? options.exposure : scene.exposure;
+    const bool graphicsReady = setUpStep(world, [&] {
+        context = gl::createContext(backend, windowsFor(wallLayout, myScreens));
+        renderer = std::make_unique<render::TileRenderer>(scene, shaderDir);
+        if (backend == gl::Backend::Glfw)
+            presenter = std::make_unique<render::WindowPresenter>(shaderDir, toneMapFor(options, exposure));
+        for (size_t i = 0; i < myScreens.size(); ++i) {
+            Tile tile;
+            tile.screenIndex = myScreens[i];
+            tile.window = backend == gl::Backend::Glfw ? static_cast<int>(i) : 0;
+            context->makeCurrent(tile.window);
+            const wall::Screen& screen = wallLayout.screens[tile.screenIndex];
+            tile.rays = wall::tileRays(wallLayout, tile.screenIndex);
+            tile.target = std::make_unique<gl::FloatTarget>(screen.widthPx, screen.heightPx);
+            tile.triangle = std::make_unique<gl::FullScreenTriangle>();
+            tiles.push_back(std::move(tile));
+        }
+    });
+    if (!graphicsReady)
+        return 1;
+    if (world.isMaster() && !options.quiet)
+        std::printf("aurorawall: %d ranks, %zu screens, canvas %dx%d, backend %s on %s\n", world.size(),
+                    wallLayout.screens.size(), wallLayout.canvasSizePx.x, wallLayout.canvasSizePx.y,
+                    options.backend.c_str(), context->rendererName().c_str());
+
+    // 3. The frame loop: the master decides, everyone renders, all flip together.
+    cluster::ClockSettings clockSettings;
+    clockSettings.frames = options.frames;
+    clockSettings.startTimeS = options.startTimeGiven ? options.startTimeS : scene.startTimeS;
+    clockSettings.timeStepS = options.timeStepS >= 0 ? options.timeStepS : scene.timeStepS;
+    clockSettings.realTime = options.realTime;
+    std::optional<cluster::MasterClock> clock;
+    if (world.isMaster())
+        clock.emplace(clockSettings, scene.camera, exposure);
+    double pixelsPerFrame = 0;
+    for (const wall::Screen& s : wallLayout.screens)
+        pixelsPerFrame += double(s.widthPx) * s.heightPx;
+    cluster::FrameStats stats(pixelsPerFrame);
+    bool stopRequested = false;
+    cluster::FrameState frame;
+    while (true) {
+        const auto frameStart = Clock::now();
+        if (world.isMaster())
+            frame = clock->next(stopRequested);
+        world.broadcast(frame);
+        if (frame.quit)
+            break;
+
+        const auto renderStart = Clock::now();
+        for (Tile& tile : tiles) {
+            context->makeCurrent(tile.window);
+            renderer->beginFrame(frame);
+            renderer->renderTile(tile.rays, *tile.target, *tile.triangle);
+        }
+        for (Tile& tile : tiles) {
+            context->makeCurrent(tile.window);
+            gl::glFinish();
+        }
+        const double renderMs = millisecondsSince(renderStart);
+
+        if (presenter)
+            for (Tile& tile : tiles)
+                presenter->present(*context, tile.window, *tile.target, *tile.triangle);
+        const std::vector<cluster::RankReport> reports = world.gatherReports({frame.frame, frame.timeS, renderMs});
+        int closeWanted = 0;
+        if (backend == gl::Backend::Glfw) {
+            context->pollEvents();
+            closeWanted = context->closeRequested();
+        }
+        stopRequested = world.anyRankRequests(closeWanted);
+        world.swapBarrier();
+        if (presenter)
+            for (Tile& tile : tiles)
+                context->swapBuffers(tile.window);
+
+        if (world.isMaster()) {
+            cluster::FrameRecord record{frame.frame, frame.timeS, millisecondsSince(frameStart), reports};
+            if (!options.quiet)
+                std::printf("%s\n", stats.frameLine(record).c_str());
+            stats.add(std::move(record));
+        }
+    }
+
+    // 4. Output of the last frame: tiles from every rank, the assembled wall from the master.
+    std::vector<std::pair<int, io::Image>> images;
+    bool written = setUpStep(world, [&] {
+        for (Tile& tile : tiles) {
+            context->makeCurrent(tile.window);
+            images.emplace_back(tile.screenIndex, io::imageFromGlReadback(tile.target->width(), tile.target->height(),
+                                                                          tile.target->readback()));
+            if (options.tiles)
+                io::writeExr(options.outDir + "/tile-" + wallLayout.screens[tile.screenIndex].name + ".exr",
+                             images.back().second);
+        }
+    });
+    std::vector<char> gathered;
+    if (written && options.gather) {
+        std::vector<int> sizes;
+        gathered = world.gatherBytes(packTiles(images), sizes);
+    }
+    written = written && setUpStep(world, [&] {
+        if (!world.isMaster())
+            return;
+        if (options.gather) {
+            const io::Image canvas = assembleWall(wallLayout, gathered);
+            io::writeExr(options.outDir + "/wall.exr", canvas);
+            io::writePng(options.outDir + "/wall.png", canvas, toneMapFor(options, exposure));
+        }
+        if (!options.statsFile.empty())
+            stats.write(options.statsFile);
+    });
+    if (world.isMaster()) {
+        std::printf("%s\n", stats.summary().c_str());
+        if (written && options.gather)
+            std::printf("wrote %s/wall.exr and %s/wall.png\n", options.outDir.c_str(), options.outDir.c_str());
+    }
+    return written ? 0 : 1;
+}
+
+} // namespace aurorawall::app

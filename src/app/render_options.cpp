@@ -1,0 +1,76 @@
+#include "app/render_options.h"
+
+#include "common/input_error.h"
+
+#include <boost/program_options.hpp>
+
+#include <cmath>
+#include <sstream>
+
+namespace aurorawall::app {
+
+namespace po = boost::program_options;
+
+RenderOptions parseRenderOptions(int argc, char** argv)
+{
+    RenderOptions o;
+    po::options_description desc(
+        "Usage: mpirun -n RANKS aurorawall render --wall FILE --scene FILE [options]\n"
+        "Renders the scene on the wall: rank r draws the screens the wall file gives it; rank 0\n"
+        "owns the camera and the clock and broadcasts them every frame.\n\nOptions");
+    desc.add_options()
+        ("help,h", "show this help")
+        ("wall", po::value(&o.wallFile)->required(), "wall file (config/walls/*.ini): screens, bezels, eye, ranks")
+        ("scene", po::value(&o.sceneFile)->required(), "scene file (config/scenes/*.toml): components and parameters")
+        ("backend", po::value(&o.backend)->default_value(o.backend),
+         "OpenGL backend: egl (headless; GPU or Mesa llvmpipe), osmesa (headless), glfw (one window per screen)")
+        ("frames", po::value(&o.frames)->default_value(o.frames),
+         "number of frames to render; 0 = until a window is closed (glfw)")
+        ("dt", po::value(&o.timeStepS), "animation time step per frame in seconds (default: the scene's time_step_s)")
+        ("start-time", po::value(&o.startTimeS), "animation time of the first frame in seconds (default: the scene's)")
+        ("realtime", po::bool_switch(&o.realTime), "animation time follows the master's wall clock instead of --dt")
+        ("exposure", po::value(&o.exposure), "multiplies radiance for the PNG preview and windows (default: the scene's)")
+        ("tonemap", po::value(&o.toneMap)->default_value(o.toneMap),
+         "preview curve: aces (ACES filmic + sRGB) or magnitude-gamma (Lawlor & Genetti)")
+        ("out", po::value(&o.outDir)->default_value(o.outDir), "output folder for images")
+        ("gather", po::bool_switch(&o.gather), "rank 0 assembles the whole wall: OUT/wall.exr and OUT/wall.png")
+        ("tiles", po::bool_switch(&o.tiles), "every rank writes its tiles: OUT/tile-<screen>.exr (linear, half float)")
+        ("single-screen", po::bool_switch(&o.singleScreen),
+         "render the wall's whole canvas (bezels included) as one screen on one rank: the reference a wall must match")
+        ("stats", po::value(&o.statsFile), "write per-frame timings to FILE (.csv or .json)")
+        ("data-dir", po::value(&o.dataDir), "folder holding shaders/ (default: installed share/aurorawall or the source tree)")
+        ("quiet", po::bool_switch(&o.quiet), "print only the summary, not a line per frame");
+    std::ostringstream help;
+    help << desc;
+    o.helpText = help.str();
+
+    po::variables_map vm;
+    try {
+        po::store(po::command_line_parser(argc, argv).options(desc).run(), vm);
+        if (vm.count("help")) {
+            o.help = true;
+            return o;
+        }
+        po::notify(vm);
+    } catch (const po::error& e) {
+        throw InputError(std::string("render: ") + e.what() + " (see aurorawall render --help)");
+    }
+    o.timeStepS = vm.count("dt") ? o.timeStepS : -1.0;
+    o.startTimeGiven = vm.count("start-time") != 0;
+    auto check = [](bool ok, const std::string& message) {
+        if (!ok)
+            throw InputError(message);
+    };
+    if (vm.count("dt"))
+        check(std::isfinite(o.timeStepS) && o.timeStepS >= 0 && o.timeStepS <= 1e9,
+              "--dt must be a finite number of seconds in [0, 1e9]");
+    check(std::isfinite(o.startTimeS) && std::abs(o.startTimeS) <= 1e15, "--start-time must be finite, |t| <= 1e15 s");
+    if (vm.count("exposure"))
+        check(std::isfinite(o.exposure) && o.exposure > 0 && o.exposure < 1e12, "--exposure must be a positive finite number");
+    check(o.toneMap == "aces" || o.toneMap == "magnitude-gamma", "--tonemap must be aces or magnitude-gamma (got '" + o.toneMap + "')");
+    check(o.frames <= 100000000, "--frames must be at most 1e8");
+    check(!o.outDir.empty(), "--out must not be empty");
+    return o;
+}
+
+} // namespace aurorawall::app

@@ -1,0 +1,33 @@
+#pragma once
+// The options of `aurorawall render`, parsed with Boost.Program_options.
+#include <cstdint>
+#include <string>
+
+namespace aurorawall::app {
+
+struct RenderOptions {
+    std::string wallFile;
+    std::string sceneFile;
+    std::string backend = "egl";
+    std::string outDir = "out";
+    std::string statsFile;
+    std::string dataDir; // empty: see common/data_dir.h
+    std::string toneMap = "aces";
+    std::uint64_t frames = 1;
+    double timeStepS = -1.0;   // < 0: the scene's
+    double startTimeS = 0.0;
+    bool startTimeGiven = false;
+    double exposure = 0.0;     // 0: the scene's
+    bool realTime = false;
+    bool gather = false;
+    bool tiles = false;
+    bool singleScreen = false;
+    bool quiet = false;
+    bool help = false;
+    std::string helpText;
+};
+
+// Throws InputError naming the option for malformed or absurd values.
+RenderOptions parseRenderOptions(int argc, char** argv);
+
+} // namespace aurorawall::app

@@ -1,0 +1,23 @@
+#pragma once
+// What every rank must agree on to draw one frame. The master (rank 0) decides it and
+// broadcasts it; the other ranks never read input or clocks of their own.
+#include <glm/glm.hpp>
+
+#include <cstdint>
+#include <type_traits>
+
+namespace aurorawall::cluster {
+
+struct FrameState {
+    std::uint64_t frame = 0;
+    double timeS = 0.0;                   // animation time, seconds (double: stays exact at 1e9 s)
+    glm::dvec3 cameraPositionKm{0.0};     // planet frame
+    glm::dvec3 cameraRight{1.0, 0.0, 0.0};
+    glm::dvec3 cameraUp{0.0, 1.0, 0.0};
+    glm::dvec3 cameraBack{0.0, 0.0, 1.0}; // the camera looks along -back
+    double exposure = 1.0;
+    std::int32_t quit = 0;                // 1: this state is not rendered; every rank leaves the loop
+};
+static_assert(std::is_trivially_copyable_v<FrameState>, "FrameState is broadcast as bytes");
+
+} // namespace aurorawall::cluster

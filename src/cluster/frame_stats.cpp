@@ -1,0 +1,112 @@
+#include "cluster/frame_stats.h"
+
+#include "io/atomic_file.h"
+
+#include <algorithm>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+namespace aurorawall::cluster {
+
+double FrameRecord::maxRenderMs() const
+{
+    double m = 0.0;
+    for (const RankReport& r : ranks)
+        m = std::max(m, r.renderMs);
+    return m;
+}
+
+double FrameRecord::meanRenderMs() const
+{
+    double sum = 0.0;
+    for (const RankReport& r : ranks)
+        sum += r.renderMs;
+    return ranks.empty() ? 0.0 : sum / static_cast<double>(ranks.size());
+}
+
+double FrameRecord::imbalance() const
+{
+    const double mean = meanRenderMs();
+    return mean > 0.0 ? maxRenderMs() / mean : 1.0;
+}
+
+std::string FrameStats::frameLine(const FrameRecord& r) const
+{
+    std::ostringstream s;
+    s.setf(std::ios::fixed);
+    s.precision(3);
+    s << "frame " << r.frame << "  t=" << r.timeS << " s  ";
+    s.precision(1);
+    s << r.frameMs << " ms  " << 1000.0 / r.frameMs << " fps  " << pixelsPerFrame_ / (r.frameMs * 1e3)
+      << " Mpixel/s  render max " << r.maxRenderMs() << " ms mean " << r.meanRenderMs() << " ms  imbalance ";
+    s.precision(2);
+    s << r.imbalance();
+    return s.str();
+}
+
+std::string FrameStats::summary() const
+{
+    const size_t first = records_.size() > 1 ? 1 : 0;
+    double frameMs = 0, imbalance = 0, renderMax = 0;
+    for (size_t i = first; i < records_.size(); ++i) {
+        frameMs += records_[i].frameMs;
+        imbalance += records_[i].imbalance();
+        renderMax += records_[i].maxRenderMs();
+    }
+    const double n = static_cast<double>(records_.size() - first);
+    if (n == 0)
+        return "no frames rendered";
+    std::ostringstream s;
+    s.setf(std::ios::fixed);
+    s.precision(2);
+    s << records_.size() << " frames (" << (first ? "first excluded as warm-up" : "one frame")
+      << "): " << 1000.0 * n / frameMs << " fps, " << pixelsPerFrame_ * n / (frameMs * 1e3) << " Mpixel/s, "
+      << "frame " << frameMs / n << " ms, slowest rank " << renderMax / n << " ms, imbalance " << imbalance / n;
+    return s.str();
+}
+
+void FrameStats::write(const std::string& path) const
+{
+    const bool json = path.size() >= 5 && path.compare(path.size() - 5, 5, ".json") == 0;
+    const bool csv = path.size() >= 4 && path.compare(path.size() - 4, 4, ".csv") == 0;
+    if (!json && !csv)
+        throw std::invalid_argument("--stats " + path + ": the file name must end in .csv or .json");
+    std::ostringstream out;
+    out.precision(9);
+    const size_t ranks = records_.empty() ? 0 : records_.front().ranks.size();
+    if (csv) {
+        out << "frame,time_s,frame_ms,fps,mpixel_per_s,render_max_ms,render_mean_ms,imbalance";
+        for (size_t r = 0; r < ranks; ++r)
+            out << ",render_ms_rank" << r << ",frame_rank" << r << ",time_s_rank" << r;
+        out << "\n";
+        for (const FrameRecord& f : records_) {
+            out << f.frame << "," << f.timeS << "," << f.frameMs << "," << 1000.0 / f.frameMs << ","
+                << pixelsPerFrame_ / (f.frameMs * 1e3) << "," << f.maxRenderMs() << "," << f.meanRenderMs() << ","
+                << f.imbalance();
+            for (const RankReport& r : f.ranks)
+                out << "," << r.renderMs << "," << r.frame << "," << r.timeS;
+            out << "\n";
+        }
+    } else {
+        out << "{\n  \"pixels_per_frame\": " << pixelsPerFrame_ << ",\n  \"frames\": [";
+        for (size_t i = 0; i < records_.size(); ++i) {
+            const FrameRecord& f = records_[i];
+            out << (i ? ",\n" : "\n") << "    {\"frame\": " << f.frame << ", \"time_s\": " << f.timeS
+                << ", \"frame_ms\": " << f.frameMs << ", \"imbalance\": " << f.imbalance() << ", \"ranks\": [";
+            for (size_t r = 0; r < f.ranks.size(); ++r)
+                out << (r ? ", " : "") << "{\"render_ms\": " << f.ranks[r].renderMs << ", \"frame\": " << f.ranks[r].frame
+                    << ", \"time_s\": " << f.ranks[r].timeS << "}";
+            out << "]}";
+        }
+        out << "\n  ]\n}\n";
+    }
+    io::writeFileAtomically(path, [&](const std::string& temporary) {
+        std::ofstream file(temporary);
+        file << out.str();
+        if (!file.flush())
+            throw std::runtime_error(temporary + ": write failed");
+    });
+}
+
+} // namespace aurorawall::cluster

@@ -1,0 +1,50 @@
+#pragma once
+// Per-frame timing gathered on the master: each rank's render time, the frame's wall-clock
+// time, and what follows from them (frames/s, pixels/s, load imbalance = max/mean render time).
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace aurorawall::cluster {
+
+// What each rank reports to the master after drawing a frame: the frame it drew (so the
+// master can show every rank drew the same one) and how long it took.
+struct RankReport {
+    std::uint64_t frame = 0;
+    double timeS = 0.0;
+    double renderMs = 0.0; // its tiles drawn and finished (glFinish), CPU wall time
+};
+
+struct FrameRecord {
+    std::uint64_t frame = 0;
+    double timeS = 0.0;          // animation time
+    double frameMs = 0.0;        // wall clock, from the broadcast to after the swap barrier
+    std::vector<RankReport> ranks;
+
+    double maxRenderMs() const;
+    double meanRenderMs() const;
+    double imbalance() const; // max / mean; 1 is perfect balance
+};
+
+class FrameStats {
+public:
+    explicit FrameStats(double pixelsPerFrame) : pixelsPerFrame_(pixelsPerFrame) {}
+
+    void add(FrameRecord record) { records_.push_back(std::move(record)); }
+    const std::vector<FrameRecord>& records() const { return records_; }
+
+    // "frame 3  t=0.100 s  41.2 ms  24.3 fps  22.4 Mpixel/s  imbalance 1.07"
+    std::string frameLine(const FrameRecord& r) const;
+    // Means over all frames but the first (which includes shader compilation and warm-up).
+    std::string summary() const;
+
+    // CSV (one row per frame, one render_ms column per rank) or JSON, chosen by the extension
+    // (.csv or .json); written atomically.
+    void write(const std::string& path) const;
+
+private:
+    double pixelsPerFrame_;
+    std::vector<FrameRecord> records_;
+};
+
+} // namespace aurorawall::cluster

@@ -1,0 +1,86 @@
+#include "cluster/mpi_world.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <cstring>
+#include <numeric>
+#include <set>
+
+namespace aurorawall::cluster {
+
+MpiWorld::MpiWorld(int* argc, char*** argv)
+{
+    MPI_Init(argc, argv);
+    MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
+    MPI_Comm_size(MPI_COMM_WORLD, &size_);
+}
+
+MpiWorld::~MpiWorld() { MPI_Finalize(); }
+
+bool MpiWorld::anyRankFailed(const std::string& myError) const
+{
+    int failed = myError.empty() ? 0 : 1, anyFailed = 0;
+    MPI_Allreduce(&failed, &anyFailed, 1, MPI_INT, MPI_LOR, MPI_COMM_WORLD);
+    if (!anyFailed)
+        return false;
+    std::vector<char> mine(myError.begin(), myError.end());
+    std::vector<int> sizes;
+    const std::vector<char> all = gatherBytes(mine, sizes);
+    if (rank_ == 0) {
+        int failures = 0;
+        for (int s : sizes)
+            failures += s > 0;
+        std::set<std::string> printed;
+        size_t at = 0;
+        for (int r = 0; r < size_; ++r) {
+            const std::string message(all.data() + at, static_cast<size_t>(sizes[r]));
+            at += static_cast<size_t>(sizes[r]);
+            if (message.empty() || !printed.insert(message).second)
+                continue;
+            if (failures == size_ || size_ == 1)
+                std::fprintf(stderr, "aurorawall: %s\n", message.c_str());
+            else
+                std::fprintf(stderr, "aurorawall: rank %d: %s\n", r, message.c_str());
+        }
+        std::fflush(stderr);
+    }
+    return true;
+}
+
+bool MpiWorld::anyRankRequests(bool request) const
+{
+    int mine = request ? 1 : 0, any = 0;
+    MPI_Allreduce(&mine, &any, 1, MPI_INT, MPI_LOR, MPI_COMM_WORLD);
+    return any != 0;
+}
+
+void MpiWorld::broadcast(FrameState& state) const
+{
+    MPI_Bcast(&state, sizeof(FrameState), MPI_BYTE, 0, MPI_COMM_WORLD);
+}
+
+std::vector<RankReport> MpiWorld::gatherReports(const RankReport& mine) const
+{
+    static_assert(std::is_trivially_copyable_v<RankReport>, "RankReport travels as bytes");
+    std::vector<RankReport> all(rank_ == 0 ? static_cast<size_t>(size_) : 0);
+    MPI_Gather(&mine, sizeof(RankReport), MPI_BYTE, all.data(), sizeof(RankReport), MPI_BYTE, 0, MPI_COMM_WORLD);
+    return all;
+}
+
+void MpiWorld::swapBarrier() const { MPI_Barrier(MPI_COMM_WORLD); }
+
+std::vector<char> MpiWorld::gatherBytes(const std::vector<char>& mine, std::vector<int>& sizesOut) const
+{
+    const int mySize = static_cast<int>(mine.size());
+    sizesOut.assign(rank_ == 0 ? static_cast<size_t>(size_) : 0, 0);
+    MPI_Gather(&mySize, 1, MPI_INT, sizesOut.data(), 1, MPI_INT, 0, MPI_COMM_WORLD);
+    std::vector<int> displacements(sizesOut.size(), 0);
+    if (!sizesOut.empty())
+        std::partial_sum(sizesOut.begin(), sizesOut.end() - 1, displacements.begin() + 1);
+    std::vector<char> all(rank_ == 0 ? static_cast<size_t>(std::accumulate(sizesOut.begin(), sizesOut.end(), 0)) : 0);
+    MPI_Gatherv(mine.data(), mySize, MPI_BYTE, all.data(), sizesOut.data(), displacements.data(), MPI_BYTE, 0,
+                MPI_COMM_WORLD);
+    return all;
+}
+
+} // namespace aurorawall::cluster

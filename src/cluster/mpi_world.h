@@ -1,0 +1,47 @@
+#pragma once
+// The MPI calls of the frame loop, in one place. Every rank runs the same binary, so
+// trivially copyable structs travel as bytes.
+#include "cluster/frame_state.h"
+#include "cluster/frame_stats.h"
+
+#include <mpi.h>
+
+#include <string>
+#include <vector>
+
+namespace aurorawall::cluster {
+
+class MpiWorld {
+public:
+    MpiWorld(int* argc, char*** argv);
+    ~MpiWorld();
+    MpiWorld(const MpiWorld&) = delete;
+    MpiWorld& operator=(const MpiWorld&) = delete;
+
+    int rank() const { return rank_; }
+    int size() const { return size_; }
+    bool isMaster() const { return rank_ == 0; }
+
+    // Called by every rank after a set-up step with its own error (empty: it went well).
+    // Returns true on every rank if any rank failed; rank 0 then prints each distinct message
+    // once on stderr ("aurorawall: ..." or, if only some ranks failed, "aurorawall: rank 2: ...").
+    bool anyRankFailed(const std::string& myError) const;
+
+    // True on every rank if any rank passes true (e.g. a window was closed somewhere).
+    bool anyRankRequests(bool request) const;
+
+    void broadcast(FrameState& state) const;
+    // Rank 0 receives one report from each rank, in rank order (others get an empty vector).
+    std::vector<RankReport> gatherReports(const RankReport& mine) const;
+    // All ranks wait here before their screens flip: the swap barrier.
+    void swapBarrier() const;
+
+    // Rank 0 receives every rank's bytes, concatenated in rank order, with their sizes.
+    std::vector<char> gatherBytes(const std::vector<char>& mine, std::vector<int>& sizesOut) const;
+
+private:
+    int rank_ = 0;
+    int size_ = 1;
+};
+
+} // namespace aurorawall::cluster

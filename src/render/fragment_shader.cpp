@@ -1,0 +1,65 @@
+#include "render/fragment_shader.h"
+
+#include "common/input_error.h"
+
+#include <fstream>
+#include <sstream>
+
+namespace aurorawall::render {
+
+namespace {
+
+const char* moduleOf(scene::Component c)
+{
+    switch (c) {
+    case scene::Component::Planet: return "scene/planet.glsl";
+    case scene::Component::Atmosphere: return "scene/atmosphere.glsl";
+    case scene::Component::Aurora: return "scene/aurora_firstlight.glsl";
+    case scene::Component::Stars: return "scene/stars.glsl";
+    }
+    return "";
+}
+
+std::string defineOf(scene::Component c)
+{
+    std::string name = scene::componentName(c);
+    for (char& ch : name)
+        ch = static_cast<char>(std::toupper(static_cast<unsigned char>(ch)));
+    return "HAS_" + name;
+}
+
+// Components in dependency order: the planet's uniforms are used by the layers above it.
+const scene::Component kOrder[] = {scene::Component::Planet, scene::Component::Atmosphere,
+                                   scene::Component::Aurora, scene::Component::Stars};
+
+} // namespace
+
+std::vector<std::string> fragmentModuleNames(const scene::Scene& scene)
+{
+    std::vector<std::string> names = {"render/ray_sphere.glsl", "render/tile_rays.glsl"};
+    for (scene::Component c : kOrder)
+        if (scene.has(c))
+            names.push_back(moduleOf(c));
+    names.push_back("render/composite.glsl");
+    names.push_back("render/main.frag");
+    return names;
+}
+
+gl::ShaderSource fragmentShaderSource(const scene::Scene& scene, const std::string& shaderDir)
+{
+    gl::ShaderSource source;
+    for (scene::Component c : kOrder)
+        if (scene.has(c))
+            source.defines.push_back(defineOf(c));
+    for (const std::string& name : fragmentModuleNames(scene)) {
+        const std::string path = shaderDir + "/" + name;
+        std::ifstream file(path);
+        std::ostringstream text;
+        if (!file || !(text << file.rdbuf()))
+            throw inputError(path, 0, "cannot read shader module (check --data-dir or AURORAWALL_DATA_DIR)");
+        source.modules.push_back({path, text.str()});
+    }
+    return source;
+}
+
+} // namespace aurorawall::render

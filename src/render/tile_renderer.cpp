@@ -1,0 +1,37 @@
+#include "render/tile_renderer.h"
+
+#include "gl/full_screen_triangle.h"
+#include "render/fragment_shader.h"
+#include "render/scene_uniforms.h"
+
+namespace aurorawall::render {
+
+TileRenderer::TileRenderer(const scene::Scene& scene, const std::string& shaderDir)
+    : scene_(scene),
+      program_(gl::Program::graphics(gl::fullScreenTriangleVertexShader(), fragmentShaderSource(scene, shaderDir)))
+{
+}
+
+void TileRenderer::beginFrame(const cluster::FrameState& frame)
+{
+    // Wall frame (x right, y up, z toward the viewer) -> camera axes in the planet frame.
+    wallToPlanet_ = glm::dmat3(frame.cameraRight, frame.cameraUp, frame.cameraBack);
+    applySceneUniforms(program_, scene_, frame);
+}
+
+void TileRenderer::renderTile(const wall::TileRays& rays, gl::FloatTarget& target,
+                              const gl::FullScreenTriangle& triangle)
+{
+    program_.set("uRayOrigin", glm::vec3(wallToPlanet_ * rays.originDir));
+    program_.set("uRayStepRight", glm::vec3(wallToPlanet_ * rays.stepRight));
+    program_.set("uRayStepDown", glm::vec3(wallToPlanet_ * rays.stepDown));
+    program_.set("uPixelOffset", glm::vec2(rays.pixelOffset)); // integers: exact in float below 2^24
+    program_.set("uTileHeight", target.height());
+    // Angular size of one pixel at the canvas origin, for drawing point-like stars.
+    program_.set("uPixelAngle", static_cast<float>(glm::length(rays.stepRight) / glm::length(rays.originDir)));
+    target.bind();
+    program_.use();
+    triangle.draw();
+}
+
+} // namespace aurorawall::render

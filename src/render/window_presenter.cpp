@@ -1,0 +1,42 @@
+#include "render/window_presenter.h"
+
+#include "common/input_error.h"
+
+#include <fstream>
+#include <sstream>
+
+namespace aurorawall::render {
+
+namespace {
+
+gl::ShaderSource displayShader(const std::string& shaderDir)
+{
+    const std::string path = shaderDir + "/render/display.frag";
+    std::ifstream file(path);
+    std::ostringstream text;
+    if (!file || !(text << file.rdbuf()))
+        throw inputError(path, 0, "cannot read shader module");
+    gl::ShaderSource source;
+    source.modules.push_back({path, text.str()});
+    return source;
+}
+
+} // namespace
+
+WindowPresenter::WindowPresenter(const std::string& shaderDir, const io::ToneMap& toneMap)
+    : program_(gl::Program::graphics(gl::fullScreenTriangleVertexShader(), displayShader(shaderDir)))
+{
+    program_.set("uExposure", static_cast<float>(toneMap.exposure));
+    program_.set("uCurve", toneMap.curve == io::ToneMap::Curve::AcesFilmic ? 0 : 1);
+}
+
+void WindowPresenter::present(gl::Context& context, int window, const gl::FloatTarget& tile,
+                              const gl::FullScreenTriangle& triangle)
+{
+    context.bindWindowFramebuffer(window);
+    program_.bindTexture("uTile", 0, tile.texture().id());
+    program_.use();
+    triangle.draw();
+}
+
+} // namespace aurorawall::render

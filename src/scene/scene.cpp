@@ -1,0 +1,167 @@
+#include "scene/scene.h"
+
+#include "common/input_error.h"
+#include "scene/toml_reader.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace aurorawall::scene {
+
+namespace {
+
+constexpr double kDeg = 3.14159265358979323846 / 180.0;
+
+const Component kAllComponents[] = {Component::Planet, Component::Atmosphere, Component::Aurora,
+                                    Component::Stars};
+
+Camera readCamera(const TableReader& t, double planetRadiusKm)
+{
+    Camera c;
+    if (t.has("position_radii") || t.has("position_km")) {
+        // Explicit vectors, e.g. the paper's benchmark view in planet radii.
+        c.positionKm = t.has("position_radii") ? t.vector3("position_radii") * planetRadiusKm
+                                               : t.vector3("position_km");
+        c.forward = t.vector3("direction");
+        c.up = t.vector3("up");
+    } else {
+        // Geographic: where the viewer stands and where they look.
+        const double lat = t.number("latitude_deg", -90, 90), lon = t.number("longitude_deg", -360, 360);
+        const double alt = t.number("altitude_km", -planetRadiusKm + 1, 1e9);
+        const double heading = t.number("heading_deg", -360, 360) * kDeg;
+        const double elevation = t.number("elevation_deg", -90, 90) * kDeg;
+        c.positionKm = planetPoint(lat, lon, planetRadiusKm + alt);
+        const glm::dvec3 zenith = glm::normalize(c.positionKm);
+        const glm::dvec3 north0 = glm::dvec3(0, 0, 1) - zenith * zenith.z;
+        // At a pole "north" is undefined; use the direction of longitude 0 there.
+        const glm::dvec3 north = glm::length(north0) > 1e-12 ? glm::normalize(north0)
+                                                             : glm::normalize(planetPoint(0, lon, 1) * -zenith.z);
+        const glm::dvec3 east = glm::cross(north, zenith);
+        const glm::dvec3 horizontal = std::cos(heading) * north + std::sin(heading) * east;
+        c.forward = std::cos(elevation) * horizontal + std::sin(elevation) * zenith;
+        c.up = glm::cross(glm::cross(c.forward, zenith), c.forward);
+        if (glm::length(c.up) < 1e-9) // looking straight up or down: up is the heading direction
+            c.up = elevation > 0 ? -horizontal : horizontal;
+    }
+    c.speedKmPerS = t.number("speed_km_per_s", -1e6, 1e6, 0.0);
+    if (glm::length(c.forward) < 1e-12)
+        t.fail("direction", "must not be zero");
+    c.forward = glm::normalize(c.forward);
+    c.up = c.up - c.forward * glm::dot(c.up, c.forward);
+    if (glm::length(c.up) < 1e-9)
+        t.fail("up", "must not be parallel to the view direction");
+    c.up = glm::normalize(c.up);
+    t.rejectUnknownKeys();
+    return c;
+}
+
+Curtain readCurtain(const TableReader& t)
+{
+    Curtain c;
+    c.pointsLatLonDeg = t.pairs("points_lat_lon_deg", {-90, -360}, {90, 360});
+    if (c.pointsLatLonDeg.size() < 2)
+        t.fail("points_lat_lon_deg", "needs at least 2 points");
+    c.brightness = t.number("brightness", 0, 1e6, c.brightness);
+    c.thicknessKm = t.number("thickness_km", 0.01, 1000, c.thicknessKm);
+    c.energyKeV = t.number("energy_kev", 0.1, 100, c.energyKeV);
+    c.foldAmplitudeKm = t.number("fold_amplitude_km", 0, 1000, c.foldAmplitudeKm);
+    c.foldWavelengthKm = t.number("fold_wavelength_km", 0.1, 1e5, c.foldWavelengthKm);
+    c.driftKmPerS = t.number("drift_km_per_s", -1e4, 1e4, c.driftKmPerS);
+    t.rejectUnknownKeys();
+    return c;
+}
+
+} // namespace
+
+// Planet frame: z north, x toward longitude 180 deg, y toward 90 deg W.
+glm::dvec3 planetPoint(double latitudeDeg, double longitudeDeg, double radius)
+{
+    const double lat = latitudeDeg * kDeg, lon = longitudeDeg * kDeg;
+    return radius * glm::dvec3(-std::cos(lat) * std::cos(lon), -std::cos(lat) * std::sin(lon), std::sin(lat));
+}
+
+const char* componentName(Component c)
+{
+    switch (c) {
+    case Component::Planet: return "planet";
+    case Component::Atmosphere: return "atmosphere";
+    case Component::Aurora: return "aurora";
+    case Component::Stars: return "stars";
+    }
+    return "?";
+}
+
+bool Scene::has(Component c) const
+{
+    return std::find(components.begin(), components.end(), c) != components.end();
+}
+
+Scene loadScene(const std::string& path)
+{
+    const TomlValue root = parseTomlFile(path);
+    const TableReader top(root, path, "");
+    Scene s;
+    s.sourceFile = path;
+
+    const TableReader meta = top.table("scene");
+    s.name = meta.string("name");
+    for (const std::string& name : meta.strings("components")) {
+        auto known = std::find_if(std::begin(kAllComponents), std::end(kAllComponents),
+                                  [&](Component c) { return name == componentName(c); });
+        if (known == std::end(kAllComponents))
+            meta.fail("components", "unknown component '" + name +
+                                        "' (known: planet, atmosphere, aurora, stars)");
+        if (s.has(*known))
+            meta.fail("components", "component '" + name + "' listed twice");
+        s.components.push_back(*known);
+    }
+    s.startTimeS = meta.number("start_time_s", -1e15, 1e15, 0.0);
+    s.timeStepS = meta.number("time_step_s", 0.0, 1e9, s.timeStepS);
+    s.exposure = meta.number("exposure", 1e-12, 1e12, s.exposure);
+    meta.rejectUnknownKeys();
+
+    // A component's table is read only when the component is listed; a table for a component
+    // the scene does not list is reported as unknown, so nothing is silently ignored.
+    if (s.has(Component::Planet)) {
+        const TableReader t = top.optionalTable("planet");
+        s.planet.radiusKm = t.number("radius_km", 1.0, 1e6, s.planet.radiusKm);
+        t.rejectUnknownKeys();
+    }
+    if (s.has(Component::Atmosphere)) {
+        if (!s.has(Component::Planet))
+            meta.fail("components", "'atmosphere' needs 'planet'");
+        const TableReader t = top.optionalTable("atmosphere");
+        s.atmosphere.topKm = t.number("top_km", 1.0, 1000.0, s.atmosphere.topKm);
+        s.atmosphere.scaleHeightKm = t.number("scale_height_km", 0.1, 1000.0, s.atmosphere.scaleHeightKm);
+        t.rejectUnknownKeys();
+    }
+    if (s.has(Component::Aurora)) {
+        if (!s.has(Component::Planet))
+            meta.fail("components", "'aurora' needs 'planet'");
+        const TableReader t = top.optionalTable("aurora");
+        s.aurora.bottomKm = t.number("bottom_km", 1.0, 5000.0, s.aurora.bottomKm);
+        s.aurora.topKm = t.number("top_km", 1.0, 5000.0, s.aurora.topKm);
+        if (s.aurora.topKm <= s.aurora.bottomKm)
+            t.fail("top_km", "must be above aurora.bottom_km");
+        if (s.has(Component::Atmosphere) && s.aurora.bottomKm < s.atmosphere.topKm)
+            t.fail("bottom_km", "must not be below atmosphere.top_km (the layers are composited in order)");
+        s.aurora.stepKm = t.number("step_km", 0.05, 100.0, s.aurora.stepKm);
+        if (t.has("curtain"))
+            for (const TableReader& c : t.arrayOfTables("curtain"))
+                s.aurora.curtains.push_back(readCurtain(c));
+        if (s.aurora.curtains.size() > 16)
+            t.fail("curtain", "at most 16 curtains are supported");
+        t.rejectUnknownKeys();
+    }
+    if (s.has(Component::Stars)) {
+        const TableReader t = top.optionalTable("stars");
+        s.stars.density = t.number("density", 0.0, 1.0, s.stars.density);
+        s.stars.brightness = t.number("brightness", 0.0, 1e6, s.stars.brightness);
+        t.rejectUnknownKeys();
+    }
+    s.camera = readCamera(top.table("camera"), s.planet.radiusKm);
+    top.rejectUnknownKeys();
+    return s;
+}
+
+} // namespace aurorawall::scene

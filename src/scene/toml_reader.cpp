@@ -1,0 +1,202 @@
+#include "scene/toml_reader.h"
+
+#include "common/input_error.h"
+
+#include <cmath>
+#include <filesystem>
+#include <sstream>
+
+namespace aurorawall::scene {
+
+namespace {
+
+// toml11 formats errors over several lines with a source excerpt; keep the problem and its hint.
+std::string oneLine(const std::string& what)
+{
+    std::istringstream lines(what);
+    std::string first, line, hint;
+    std::getline(lines, first);
+    while (std::getline(lines, line))
+        if (auto at = line.find("^---"); at != std::string::npos)
+            hint = line.substr(at + 4);
+    if (first.rfind("[error] ", 0) == 0)
+        first = first.substr(8);
+    if (auto colon = first.find(": "); first.rfind("toml::", 0) == 0 && colon != std::string::npos)
+        first = first.substr(colon + 2);
+    while (!hint.empty() && hint.front() == ' ')
+        hint.erase(hint.begin());
+    return hint.empty() ? first : first + " (" + hint + ")";
+}
+
+} // namespace
+
+TomlValue parseTomlFile(const std::string& path)
+{
+    if (!std::filesystem::is_regular_file(path))
+        throw inputError(path, 0, "scene file not found");
+    try {
+        return toml::parse<toml::discard_comments>(path);
+    } catch (const toml::exception& e) {
+        throw inputError(path, static_cast<int>(e.location().line()), oneLine(e.what()));
+    } catch (const std::exception& e) {
+        throw inputError(path, 0, e.what());
+    }
+}
+
+TableReader::TableReader(const TomlValue& table, std::string file, std::string tableName)
+    : table_(table), file_(std::move(file)), name_(std::move(tableName))
+{
+    if (!table_.is_table())
+        throw inputError(file_, line(), "'" + name_ + "' must be a table");
+}
+
+int TableReader::line() const { return static_cast<int>(table_.location().line()); }
+
+int TableReader::lineOf(const std::string& key) const
+{
+    return has(key) ? static_cast<int>(table_.as_table().at(key).location().line()) : line();
+}
+
+std::string TableReader::qualified(const std::string& key) const
+{
+    return name_.empty() ? key : name_ + "." + key;
+}
+
+void TableReader::fail(const std::string& key, const std::string& problem) const
+{
+    throw inputError(file_, lineOf(key), qualified(key) + ": " + problem);
+}
+
+bool TableReader::has(const std::string& key) const { return table_.as_table().count(key) != 0; }
+
+const TomlValue& TableReader::at(const std::string& key) const
+{
+    if (!has(key))
+        throw inputError(file_, line(), "missing key '" + qualified(key) + "'");
+    read_.insert(key);
+    return table_.as_table().at(key);
+}
+
+static bool toNumber(const TomlValue& v, double& out)
+{
+    if (v.is_floating()) { out = v.as_floating(); return true; }
+    if (v.is_integer()) { out = static_cast<double>(v.as_integer()); return true; }
+    return false;
+}
+
+double TableReader::number(const std::string& key, double lo, double hi) const
+{
+    double x = 0;
+    if (!toNumber(at(key), x))
+        fail(key, "expected a number");
+    if (!std::isfinite(x) || x < lo || x > hi) {
+        std::ostringstream s;
+        s << "must be a finite number in [" << lo << ", " << hi << "] (got " << x << ")";
+        fail(key, s.str());
+    }
+    return x;
+}
+
+double TableReader::number(const std::string& key, double lo, double hi, double fallback) const
+{
+    return has(key) ? number(key, lo, hi) : fallback;
+}
+
+std::string TableReader::string(const std::string& key) const
+{
+    const TomlValue& v = at(key);
+    if (!v.is_string())
+        fail(key, "expected a string");
+    return v.as_string().str;
+}
+
+std::string TableReader::string(const std::string& key, const std::string& fallback) const
+{
+    return has(key) ? string(key) : fallback;
+}
+
+std::vector<std::string> TableReader::strings(const std::string& key) const
+{
+    const TomlValue& v = at(key);
+    if (!v.is_array())
+        fail(key, "expected an array of strings");
+    std::vector<std::string> out;
+    for (const auto& item : v.as_array()) {
+        if (!item.is_string())
+            fail(key, "expected an array of strings");
+        out.push_back(item.as_string().str);
+    }
+    return out;
+}
+
+glm::dvec3 TableReader::vector3(const std::string& key) const
+{
+    const TomlValue& v = at(key);
+    glm::dvec3 out;
+    if (!v.is_array() || v.as_array().size() != 3)
+        fail(key, "expected an array of 3 numbers");
+    for (int i = 0; i < 3; ++i)
+        if (!toNumber(v.as_array()[i], out[i]) || !std::isfinite(out[i]) || std::abs(out[i]) > 1e12)
+            fail(key, "expected an array of 3 finite numbers");
+    return out;
+}
+
+std::vector<glm::dvec2> TableReader::pairs(const std::string& key, glm::dvec2 lo, glm::dvec2 hi) const
+{
+    const TomlValue& v = at(key);
+    if (!v.is_array())
+        fail(key, "expected an array of [a, b] pairs");
+    std::vector<glm::dvec2> out;
+    for (const auto& item : v.as_array()) {
+        glm::dvec2 p;
+        if (!item.is_array() || item.as_array().size() != 2 || !toNumber(item.as_array()[0], p.x) ||
+            !toNumber(item.as_array()[1], p.y))
+            fail(key, "expected an array of [a, b] pairs of numbers");
+        if (!std::isfinite(p.x) || !std::isfinite(p.y) || p.x < lo.x || p.x > hi.x || p.y < lo.y || p.y > hi.y) {
+            std::ostringstream s;
+            s << "pair [" << p.x << ", " << p.y << "] is outside [" << lo.x << ", " << hi.x << "] x [" << lo.y
+              << ", " << hi.y << "]";
+            fail(key, s.str());
+        }
+        out.push_back(p);
+    }
+    return out;
+}
+
+TableReader TableReader::table(const std::string& key) const
+{
+    const TomlValue& v = at(key);
+    if (!v.is_table())
+        fail(key, "expected a table");
+    return TableReader(v, file_, qualified(key));
+}
+
+TableReader TableReader::optionalTable(const std::string& key) const
+{
+    static const TomlValue empty{toml::table{}};
+    return has(key) ? table(key) : TableReader(empty, file_, qualified(key));
+}
+
+std::vector<TableReader> TableReader::arrayOfTables(const std::string& key) const
+{
+    const TomlValue& v = at(key);
+    if (!v.is_array())
+        fail(key, "expected an array of tables ([[" + qualified(key) + "]])");
+    std::vector<TableReader> out;
+    for (const auto& item : v.as_array()) {
+        if (!item.is_table())
+            fail(key, "expected an array of tables ([[" + qualified(key) + "]])");
+        out.emplace_back(item, file_, qualified(key));
+    }
+    return out;
+}
+
+void TableReader::rejectUnknownKeys() const
+{
+    for (const auto& [key, value] : table_.as_table())
+        if (!read_.count(key))
+            throw inputError(file_, static_cast<int>(value.location().line()),
+                             "unknown key '" + qualified(key) + "'");
+}
+
+} // namespace aurorawall::scene

@@ -1,0 +1,57 @@
+#pragma once
+// Reading a TOML scene file with errors that name file and line (toml11 from Debian).
+// Every table is read through a TableReader, which knows which keys it has consumed,
+// so a misspelt key is reported instead of silently ignored.
+#include <glm/glm.hpp>
+#include <toml.hpp>
+
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace aurorawall::scene {
+
+using TomlValue = toml::basic_value<toml::discard_comments>;
+
+// Parses a file; syntax errors become InputError "file:line: problem".
+TomlValue parseTomlFile(const std::string& path);
+
+class TableReader {
+public:
+    TableReader(const TomlValue& table, std::string file, std::string tableName);
+
+    bool has(const std::string& key) const;
+    // Numbers must be finite and within [lo, hi]; integers are accepted where floats are asked for.
+    double number(const std::string& key, double lo, double hi) const;
+    double number(const std::string& key, double lo, double hi, double fallback) const;
+    std::string string(const std::string& key) const;
+    std::string string(const std::string& key, const std::string& fallback) const;
+    std::vector<std::string> strings(const std::string& key) const;
+    glm::dvec3 vector3(const std::string& key) const;
+    // An array of [a, b] pairs, e.g. latitude/longitude control points.
+    std::vector<glm::dvec2> pairs(const std::string& key, glm::dvec2 lo, glm::dvec2 hi) const;
+    TableReader table(const std::string& key) const;
+    // A table that may be left out: then every key takes its default.
+    TableReader optionalTable(const std::string& key) const;
+    std::vector<TableReader> arrayOfTables(const std::string& key) const;
+
+    // Throws for the first key that was never read (a typo, or a key of a component not listed).
+    void rejectUnknownKeys() const;
+
+    int line() const;
+    int lineOf(const std::string& key) const;
+    const std::string& file() const { return file_; }
+    [[noreturn]] void fail(const std::string& key, const std::string& problem) const;
+
+private:
+    const TomlValue& at(const std::string& key) const;
+    std::string qualified(const std::string& key) const;
+
+    const TomlValue& table_;
+    std::string file_;
+    std::string name_;
+    mutable std::set<std::string> read_;
+};
+
+} // namespace aurorawall::scene
