@@ -1,5 +1,6 @@
 // aurorawall: one binary, several subcommands.
 #include "app/render_command.h"
+#include "atmosphere/airmass_cli.h"
 
 #include <cstdio>
 #include <cstring>
@@ -30,6 +31,8 @@ int main(int argc, char** argv)
     // Each command sees its own name as argv[0].
     if (command == "render")
         return aurorawall::app::runRenderCommand(argc - 1, argv + 1);
+    if (command == "airmass")
+        return aurorawall::runAirmassCommand(argc - 1, argv + 1, std::cin, std::cout, std::cerr);
     std::fprintf(stderr, "aurorawall: unknown command '%s'\n%s", command.c_str(), kUsage);
     return 2;
 }
