@@ -173,7 +173,7 @@ TableReader TableReader::table(const std::string& key) const
 
 TableReader TableReader::optionalTable(const std::string& key) const
 {
-    static const TomlValue empty{toml::table{}};
+    static const TomlValue empty = TomlValue(TomlValue::table_type());
     return has(key) ? table(key) : TableReader(empty, file_, qualified(key));
 }
 

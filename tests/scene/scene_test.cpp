@@ -1,0 +1,99 @@
+#include "common/input_error.h"
+#include "scene/scene.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+using namespace aurorawall;
+
+namespace {
+
+const std::string kData = SCENE_TEST_DATA;
+const std::string kScenes = SCENE_CONFIG_DIR;
+
+// The message of the InputError that loading `file` throws ("" if none).
+std::string loadError(const std::string& file)
+{
+    try {
+        scene::loadScene(file);
+    } catch (const InputError& e) {
+        return e.what();
+    }
+    return "";
+}
+
+} // namespace
+
+TEST(Scene, SubstormListsItsComponentsAndCurtains)
+{
+    const scene::Scene s = scene::loadScene(kScenes + "/substorm.toml");
+    EXPECT_TRUE(s.has(scene::Component::Planet));
+    EXPECT_TRUE(s.has(scene::Component::Aurora));
+    EXPECT_GE(s.aurora.curtains.size(), 3u);
+    EXPECT_DOUBLE_EQ(s.planet.radiusKm, 6371.0);
+}
+
+TEST(Scene, BenchmarkCameraIsThePapersView)
+{
+    // reference.md: |C| = 1.011017 radii, about 70 km above southern Finland (59.2 N, 25.6 E),
+    // heading 299 deg, 10.4 deg above the horizontal.
+    const scene::Scene s = scene::loadScene(kScenes + "/substorm.toml");
+    const glm::dvec3 c = s.camera.positionKm;
+    EXPECT_NEAR(glm::length(c) / 6371.0, 1.011017, 1e-6);
+    EXPECT_NEAR(glm::length(c) - 6371.0, 70.0, 0.2);
+    const double latitude = std::asin(c.z / glm::length(c)) * 180.0 / M_PI;
+    EXPECT_NEAR(latitude, 59.2, 0.05);
+    const glm::dvec3 zenith = glm::normalize(c);
+    const double elevation = std::asin(glm::dot(s.camera.forward, zenith)) * 180.0 / M_PI;
+    EXPECT_NEAR(elevation, 10.4, 0.1);
+    EXPECT_NEAR(glm::dot(s.camera.forward, s.camera.up), 0.0, 1e-12);
+}
+
+TEST(Scene, GeographicCameraMatchesExplicitVectors)
+{
+    // The benchmark view written geographically lands on the same vectors as the explicit form.
+    const glm::dvec3 p = scene::planetPoint(59.2, 25.6, 1.0);
+    const glm::dvec3 reference = glm::normalize(glm::dvec3(-0.467287, -0.223999, 0.868115));
+    EXPECT_NEAR(glm::dot(p, reference), 1.0, 1e-6);
+}
+
+TEST(Scene, ComponentsNotListedAreLeftOut)
+{
+    const scene::Scene s = scene::loadScene(kData + "/minimal.toml");
+    EXPECT_TRUE(s.has(scene::Component::Stars));
+    EXPECT_FALSE(s.has(scene::Component::Aurora));
+    EXPECT_FALSE(s.has(scene::Component::Atmosphere));
+    EXPECT_NEAR(glm::length(s.camera.positionKm) - 6371.0, 0.001, 1e-9);
+}
+
+TEST(SceneErrors, MissingFile)
+{
+    EXPECT_EQ(loadError(kData + "/nope.toml"), kData + "/nope.toml: scene file not found");
+}
+
+TEST(SceneErrors, NameFileAndLine)
+{
+    struct Case {
+        const char* file;
+        const char* where;   // file:line prefix expected
+        const char* problem; // a part of the message
+    };
+    const Case cases[] = {
+        {"syntax_error.toml", ":2: ", ""},
+        {"unknown_key.toml", ":7: ", "unknown key 'planet.raduis_km'"},
+        {"nan_value.toml", ":6: ", "atmosphere.scale_height_km: must be a finite number"},
+        {"absurd_value.toml", ":8: ", "aurora.step_km: must be a finite number in [0.05, 100]"},
+        {"unknown_component.toml", ":3: ", "unknown component 'glory'"},
+        {"unlisted_table.toml", ":5: ", "unknown key 'stars'"},
+    };
+    for (const Case& c : cases) {
+        const std::string file = kData + "/" + c.file;
+        const std::string message = loadError(file);
+        SCOPED_TRACE(message);
+        EXPECT_EQ(message.rfind(file + c.where, 0), 0u) << c.file;
+        EXPECT_NE(message.find(c.problem), std::string::npos) << c.file;
+        EXPECT_EQ(message.find('\n'), std::string::npos) << "one line";
+    }
+}
