@@ -1,0 +1,51 @@
+#pragma once
+// The aurora tables the shader samples (shaders/aurora/deposition.glsl): deposition over altitude ×
+// ln energy in decibels, and the per-altitude line yields. See docs/aurora-physics.md, "Tables".
+#include "aurora/lazarev.h"
+
+#include <glm/glm.hpp>
+#include <vector>
+
+namespace aurorawall::aurora {
+
+struct DepositionTableSpec {
+    double minAltitudeKm = 60.0;
+    double maxAltitudeKm = 600.0;
+    double altitudeStepKm = 0.5;  // the altitude count is round((max − min)/step) + 1
+    double minEnergyKeV = 0.5;
+    double maxEnergyKeV = 50.0;
+    int energyCount = 64;         // log-spaced, both ends included
+    Spectrum spectrum = Spectrum::Monoenergetic;
+    double floorDecibels = -200.0;
+};
+
+struct DepositionTable {
+    int altitudeCount = 0;
+    int energyCount = 0;
+    double minAltitudeKm = 0.0;
+    double altitudeStepKm = 0.0;
+    double minLogEnergy = 0.0;    // ln(keV)
+    double logEnergyStep = 0.0;
+    // 10·log10(rate), rate in keV cm⁻³ s⁻¹ per erg cm⁻² s⁻¹ (depositionPerEnergyFlux·kKeVPerErg),
+    // floored at the spec's floorDecibels; row-major, one row per energy: [j·altitudeCount + i].
+    std::vector<float> decibels;
+
+    // The uniforms uAuroraDepositionAxes and uAuroraDepositionSize.
+    glm::vec4 axes() const;
+    glm::vec2 size() const;
+};
+
+DepositionTable buildDepositionTable(const DepositionTableSpec& spec);
+
+// The rate the table stores at (z, E), in double: depositionPerEnergyFlux(z, E, spectrum)·kKeVPerErg.
+double depositionRate(double altitudeKm, double energyKeV, Spectrum spectrum);
+
+// What the GPU returns for (z, E): the shared texture-coordinate mapping in float, GL_LINEAR filtering
+// of the float texels with clamp-to-edge (OpenGL 4.6 §8.14.2), then decibelsToValue in float.
+float sampleDepositionTable(const DepositionTable& table, float altitudeKm, float energyKeV);
+
+// Per-altitude yields, photons per keV deposited, of the four emissions (aurora/emission.h) on the
+// deposition table's altitude axis: RGBA32F texture of altitudeCount × 1, texel i = line yields at z_i.
+std::vector<glm::vec4> buildLineYieldTable(const DepositionTableSpec& spec);
+
+} // namespace aurorawall::aurora

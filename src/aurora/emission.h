@@ -1,0 +1,49 @@
+#pragma once
+// Auroral emissions: altitude-dependent yields (photons per keV deposited) of the four emissions the
+// renderer draws, and their volume and column rates. See docs/aurora-physics.md, "Emission".
+#include "aurora/lazarev.h"
+
+#include <glm/glm.hpp>
+
+namespace aurorawall::aurora {
+
+enum class EmissionLine {
+    Blue4278 = 0,        // N2+ first negative (0,1) band, 427.8 nm, prompt
+    Green5577 = 1,       // O(1S → 1D), 557.7 nm, τ ≈ 0.75 s
+    Red6300 = 2,         // O(1D → 3P), 630.0 nm, τ ≈ 134 s
+    N2FirstPositive = 3, // N2 B → A first positive group, visible red bands, prompt (drawn at 670 nm)
+};
+inline constexpr int kLineCount = 4;
+
+struct LineInfo {
+    const char* name;
+    double wavelengthNm;
+    glm::dvec3 cieXyz; // CIE 1931 2° colour matching functions (x̄, ȳ, z̄) at the wavelength
+};
+const LineInfo& lineInfo(EmissionLine line);
+
+// Fraction of N2(A) excitation energy transferred to O (producing O(1S)) rather than lost to O2:
+// f = k_O n_O / (k_O n_O + k_O2 n_O2), k_O = 2.8e-11, k_O2 = 2.5e-12 cm³/s (Piper et al. 1981).
+double oxygenTransferFraction(double altitudeKm);
+
+// Fraction of O(1S) atoms that radiate: A / (A + k n_O2), A = 1.35 s⁻¹,
+// k = 4.0e-12·exp(−865/T) cm³/s (Slanger, Wood & Black 1972).
+double o1sRadiatingFraction(double altitudeKm);
+
+// Fraction of O(1D) atoms that radiate: A / (A + k_N2 n_N2 + k_O2 n_O2), A = 7.45e-3 s⁻¹,
+// k_N2 = 2.0e-11·exp(107.8/T), k_O2 = 2.9e-11·exp(67.5/T) cm³/s (Streit et al. 1976).
+double o1dRadiatingFraction(double altitudeKm);
+
+// Photons of the line emitted per keV deposited at altitude z (docs/aurora-physics.md):
+//   427.8: 0.4213·(1 − x_O);  N2 1PG: 0.4213·(1 − x_O);
+//   557.7: 2.213·(1 − x_O)·f_transfer·q_1S;  630.0: 8·x_O·q_1D·0.756.
+double lineYield(EmissionLine line, double altitudeKm);
+
+// Volume emission rate, photons cm⁻³ s⁻¹ per erg cm⁻² s⁻¹ of incident energy flux:
+// depositionPerEnergyFlux · kKeVPerErg · lineYield.
+double volumeEmissionRate(EmissionLine line, double altitudeKm, double energyKeV, Spectrum spectrum);
+
+// Vertical column brightness, rayleigh per erg cm⁻² s⁻¹: ∫ volume rate dz (cm) / 1e6, 60–1000 km.
+double columnBrightnessRayleigh(EmissionLine line, double energyKeV, Spectrum spectrum);
+
+} // namespace aurorawall::aurora

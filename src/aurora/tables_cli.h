@@ -1,0 +1,14 @@
+#pragma once
+// `aurorawall tables deposition --energy-kev E [--maxwellian]`: the Lazarev deposition profile as CSV.
+#include <iosfwd>
+
+namespace aurorawall::aurora {
+
+// argv[0] is the command's name ("tables"), argv[1] the table ("deposition"); the options follow.
+// Prints `altitude_km,rate` then one line per 0.5 km from 60 to 600 km; rate is the energy deposition
+// rate in keV cm⁻³ s⁻¹ per erg cm⁻² s⁻¹ of incident energy flux (electrons of energy E, or a
+// Maxwellian of characteristic energy E), 10 significant digits. Returns 0; 2 with one line on `err`
+// naming the option for a bad or missing option (then nothing is printed on `out`).
+int runTablesCommand(int argc, char** argv, std::ostream& out, std::ostream& err);
+
+} // namespace aurorawall::aurora

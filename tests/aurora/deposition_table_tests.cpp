@@ -1,0 +1,102 @@
+#include "aurora/deposition_table.h"
+#include "aurora/emission.h"
+#include "common/glsl.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace aurorawall::aurora::f64 {
+AURORAWALL_GLSL_PRECISION(double)
+#include "aurora/deposition_coords.glsl"
+} // namespace aurorawall::aurora::f64
+
+namespace aurorawall::aurora {
+namespace {
+
+// Largest relative error of the table lookup against the exact rate over energies between the table's
+// energies and altitudes between its texels, where the exact rate is within 40 dB of that energy's peak.
+double maxLookupError(const DepositionTableSpec& spec)
+{
+    DepositionTable table = buildDepositionTable(spec);
+    double worst = 0.0;
+    for (double fj = 0.37; fj < spec.energyCount - 1; fj += 1.0) {
+        double energy = std::exp(table.minLogEnergy + fj * table.logEnergyStep);
+        double peak = 0.0;
+        for (double z = spec.minAltitudeKm; z <= spec.maxAltitudeKm; z += 0.25)
+            peak = std::max(peak, depositionRate(z, energy, spec.spectrum));
+        for (double z = spec.minAltitudeKm + 0.31 * spec.altitudeStepKm; z < spec.maxAltitudeKm; z += 0.83 * spec.altitudeStepKm) {
+            double exact = depositionRate(z, energy, spec.spectrum);
+            if (exact < 1e-4 * peak) continue;
+            double lookup = sampleDepositionTable(table, static_cast<float>(z), static_cast<float>(energy));
+            worst = std::max(worst, std::abs(lookup / exact - 1.0));
+        }
+    }
+    return worst;
+}
+
+TEST(DepositionTable, DefaultSpecHasTheDocumentedShape)
+{
+    DepositionTable table = buildDepositionTable({});
+    EXPECT_EQ(table.altitudeCount, 1081);
+    EXPECT_EQ(table.energyCount, 64);
+    EXPECT_EQ(table.decibels.size(), 1081u * 64u);
+    EXPECT_FLOAT_EQ(table.axes().x, 60.0f);
+    EXPECT_FLOAT_EQ(table.axes().y, 0.5f);
+}
+
+TEST(DepositionTable, TexelsHoldTheExactRateInDecibels)
+{
+    DepositionTableSpec spec;
+    spec.energyCount = 8;
+    spec.altitudeStepKm = 5.0;
+    DepositionTable table = buildDepositionTable(spec);
+    int i = 10, j = 5; // 110 km
+    double energy = std::exp(table.minLogEnergy + j * table.logEnergyStep);
+    double exact = 10.0 * std::log10(depositionRate(110.0, energy, spec.spectrum));
+    EXPECT_NEAR(table.decibels[j * table.altitudeCount + i], exact, 1e-5);
+    EXPECT_GE(*std::min_element(table.decibels.begin(), table.decibels.end()), -200.0f);
+}
+
+TEST(DepositionTable, TexCoordsHitTexelCentres)
+{
+    glm::dvec4 axes(60.0, 0.5, std::log(0.5), 0.1);
+    glm::dvec2 size(1081.0, 64.0);
+    glm::dvec2 uv = f64::depositionTexCoord(60.0, 0.5, axes, size);
+    EXPECT_DOUBLE_EQ(uv.x, 0.5 / 1081.0);
+    EXPECT_DOUBLE_EQ(uv.y, 0.5 / 64.0);
+    uv = f64::depositionTexCoord(600.0, 0.5 * std::exp(6.3), axes, size);
+    EXPECT_NEAR(uv.x, 1080.5 / 1081.0, 1e-15);
+    EXPECT_NEAR(uv.y, 63.5 / 64.0, 1e-14);
+    EXPECT_NEAR(f64::decibelsToValue(30.0), 1000.0, 1e-10);
+}
+
+TEST(DepositionTable, LookupAtTexelsReproducesTheExactRate)
+{
+    DepositionTable table = buildDepositionTable({});
+    double energy = std::exp(table.minLogEnergy + 40 * table.logEnergyStep);
+    double lookup = sampleDepositionTable(table, 112.0f, static_cast<float>(energy));
+    EXPECT_NEAR(lookup / depositionRate(112.0, energy, Spectrum::Monoenergetic), 1.0, 2e-5);
+}
+
+TEST(DepositionTable, DefaultLookupErrorIsBelowOnePercent)
+{
+    DepositionTableSpec spec;
+    spec.altitudeStepKm = 2.0; // coarser altitude axis, same energy axis: keeps the test fast
+    double coarse = maxLookupError(spec);
+    spec.altitudeStepKm = 1.0;
+    double fine = maxLookupError(spec);
+    EXPECT_LT(fine, coarse); // the error falls with resolution
+    EXPECT_LT(fine, 0.01);
+}
+
+TEST(DepositionTable, LineYieldTableSharesTheAltitudeAxis)
+{
+    std::vector<glm::vec4> yields = buildLineYieldTable({});
+    ASSERT_EQ(yields.size(), 1081u);
+    EXPECT_FLOAT_EQ(yields[100][1], static_cast<float>(lineYield(EmissionLine::Green5577, 110.0)));
+}
+
+} // namespace
+} // namespace aurorawall::aurora
