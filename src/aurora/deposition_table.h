@@ -14,7 +14,7 @@ struct DepositionTableSpec {
     double altitudeStepKm = 0.5;  // the altitude count is round((max − min)/step) + 1
     double minEnergyKeV = 0.5;
     double maxEnergyKeV = 50.0;
-    int energyCount = 64;         // log-spaced, both ends included
+    int energyCount = 128;        // log-spaced, both ends included
     Spectrum spectrum = Spectrum::Monoenergetic;
     double floorDecibels = -200.0;
 };
