@@ -1,0 +1,130 @@
+// Numerical stability: the substorm scene rendered from extreme viewpoints and times has no NaN
+// or Inf pixel, and shows what it should (sky above, ground below, aurora where it is).
+#include "cluster/frame_state.h"
+#include "gl/context.h"
+#include "gl/float_target.h"
+#include "gl/full_screen_triangle.h"
+#include "io/image.h"
+#include "render/tile_renderer.h"
+#include "scene/scene.h"
+#include "wall/tile_rays.h"
+#include "wall/wall.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+
+using namespace aurorawall;
+
+namespace {
+
+const std::string kSource = AURORAWALL_SOURCE_DIR;
+
+class ExtremeCameras : public ::testing::Test {
+protected:
+    static void SetUpTestSuite()
+    {
+        context_ = gl::createContext(gl::Backend::Egl);
+        scene_ = std::make_unique<scene::Scene>(scene::loadScene(kSource + "/config/scenes/substorm.toml"));
+        renderer_ = std::make_unique<render::TileRenderer>(*scene_, kSource + "/shaders");
+    }
+    static void TearDownTestSuite()
+    {
+        renderer_.reset();
+        context_.reset();
+    }
+
+    // Renders a 64x36 view with a 70 deg vertical field of view looking along `forward`.
+    static io::Image render(glm::dvec3 positionKm, glm::dvec3 forward, glm::dvec3 up, double timeS)
+    {
+        wall::GridSpec grid;
+        grid.screenPx = {64, 36};
+        grid.screenMm = {64.0, 36.0};
+        grid.eyeFromCentreMm = {0.0, 0.0, 18.0 / std::tan(35.0 * M_PI / 180.0)};
+        const wall::Wall wall = wall::makeGridWall(grid);
+        cluster::FrameState frame;
+        frame.timeS = timeS;
+        frame.cameraPositionKm = positionKm;
+        frame.cameraBack = -glm::normalize(forward);
+        frame.cameraUp = glm::normalize(up - glm::dot(up, -frame.cameraBack) * -frame.cameraBack);
+        frame.cameraRight = glm::cross(-frame.cameraBack, frame.cameraUp);
+        gl::FloatTarget target(64, 36);
+        gl::FullScreenTriangle triangle;
+        renderer_->beginFrame(frame);
+        renderer_->renderTile(wall::tileRays(wall, 0), target, triangle);
+        return io::imageFromGlReadback(64, 36, target.readback());
+    }
+
+    static glm::dvec3 site() { return scene::planetPoint(64.0, 14.0, 1.0); } // under a curtain
+
+    static std::unique_ptr<gl::Context> context_;
+    static std::unique_ptr<scene::Scene> scene_;
+    static std::unique_ptr<render::TileRenderer> renderer_;
+};
+
+std::unique_ptr<gl::Context> ExtremeCameras::context_;
+std::unique_ptr<scene::Scene> ExtremeCameras::scene_;
+std::unique_ptr<render::TileRenderer> ExtremeCameras::renderer_;
+
+double maxRadiance(const io::Image& image)
+{
+    double m = 0;
+    for (size_t i = 0; i < image.rgba.size(); i += 4)
+        m = std::max({m, double(image.rgba[i]), double(image.rgba[i + 1]), double(image.rgba[i + 2])});
+    return m;
+}
+
+// A horizontal direction at the site (toward the north).
+glm::dvec3 north(glm::dvec3 up) { return glm::normalize(glm::dvec3(0, 0, 1) - up * up.z); }
+
+} // namespace
+
+TEST_F(ExtremeCameras, OnTheGroundLookingUpSeesTheAurora)
+{
+    const glm::dvec3 up = site();
+    const io::Image image = render(up * 6371.0, up, north(up), 0.0);
+    EXPECT_EQ(io::countNonFinite(image), 0u);
+    EXPECT_GT(maxRadiance(image), 0.1);
+}
+
+TEST_F(ExtremeCameras, OneMetreAboveGroundAlongTheHorizon)
+{
+    const glm::dvec3 up = site();
+    const io::Image image = render(up * (6371.0 + 0.001), north(up), up, 0.0);
+    EXPECT_EQ(io::countNonFinite(image), 0u);
+    // The lower half sees the ground, the upper half the sky: no row is split into stripes of
+    // ground and sky, i.e. the horizon is one clean line near the middle row.
+    const float ground = image.pixel(32, 30)[2], sky = image.pixel(32, 5)[2];
+    EXPECT_NE(ground, sky);
+}
+
+TEST_F(ExtremeCameras, InsideACurtainAndStraightDown)
+{
+    const glm::dvec3 up = site();
+    const io::Image inside = render(up * (6371.0 + 110.0), north(up), up, 0.0);
+    EXPECT_EQ(io::countNonFinite(inside), 0u);
+    EXPECT_GT(maxRadiance(inside), 0.1);
+    const io::Image down = render(up * (6371.0 + 400.0), -up, north(up), 0.0);
+    EXPECT_EQ(io::countNonFinite(down), 0u);
+    EXPECT_GT(maxRadiance(down), 0.01);
+}
+
+TEST_F(ExtremeCameras, FarInSpace)
+{
+    const glm::dvec3 up = site();
+    // 10^6 km away the planet is 0.73 deg across, less than a pixel: no NaN anywhere.
+    EXPECT_EQ(io::countNonFinite(render(up * 1.0e6, -up, north(up), 0.0)), 0u);
+    // 10^5 km away it is 7.3 deg, about 4 pixels: the pixels at the centre see it.
+    const io::Image image = render(up * 1.0e5, -up, north(up), 0.0);
+    EXPECT_EQ(io::countNonFinite(image), 0u);
+    EXPECT_GT(image.pixel(32, 18)[0] + image.pixel(32, 18)[1] + image.pixel(32, 18)[2], 0.0f);
+}
+
+TEST_F(ExtremeCameras, HugeAnimationTime)
+{
+    const glm::dvec3 up = site();
+    const io::Image image = render(up * 6371.0, up, north(up), 1.0e9);
+    EXPECT_EQ(io::countNonFinite(image), 0u);
+    EXPECT_GT(maxRadiance(image), 0.1);
+}
