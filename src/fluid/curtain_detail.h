@@ -1,0 +1,80 @@
+#pragma once
+// The curtain-detail fluid simulation (issue 3, part 6; specification section 2): a
+// Kelvin–Helmholtz shear layer along the flux centre of an auroral curtain, in a strip periodic
+// along and across the curtain, carrying the electron flux as a passive scalar. Its output, a
+// few flux frames from smooth to turbulent, is wrapped along the curtain splines by the renderer.
+// CPU, serial and deterministic: every rank computes the same bytes at start-up.
+// See docs/fluid.md.
+#include "fluid/multigrid.h"
+#include "fluid/periodic_field.h"
+#include "fluid/stable_fluids.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace aurorawall::fluid {
+
+struct CurtainDetailSpec {
+    int nx = 512;                      // cells along the curtain (power of two)
+    int ny = 128;                      // cells across it (power of two)
+    double stripLengthKm = 128.0;      // Lx, the period along the curtain
+    double stripWidthKm = 32.0;        // Ly, the period across it
+    double shearVelocity = 1.0;        // U, km/s: the flow is ±U on the two sides of the shear line
+    double shearThicknessKm = 1.0;     // δ in u = U tanh(y'/δ)
+    double fluxWidthKm = 1.0;          // σ, standard deviation of the initial Gaussian flux profile
+    double perturbation = 0.02;        // ε, amplitude of the seed cross-stream velocity, units of U
+    int frames = 16;                   // K flux frames; frame 0 is the initial condition
+    double timeBetweenFramesS = 5.0;   // simulated seconds between frames
+    int stepsPerFrame = 6;             // time steps between frames
+    int multigridCycles = 20;          // V-cycles per projection at most
+    double multigridTolerance = 1e-6;  // rms residual / rms divergence to stop at
+    std::uint32_t seed = 1;            // picks the amplitudes and phases of the seed modes
+};
+
+// Flux frames: F (1/km) at the cell centres, frame-major then row-major: flux[(k·ny + iy)·nx + ix].
+// Texel (ix, iy) is centred at s = (ix + ½)·texelKmX along the curtain and u = (iy + ½)·texelKmY − Ly/2
+// across it (u = 0 on the curtain's centre line). Normalized so that ∫F du = 1 for every column of
+// frame 0.
+struct FluxFrames {
+    int nx = 0;
+    int ny = 0;
+    int frames = 0;
+    float texelKmX = 0.0f;
+    float texelKmY = 0.0f;
+    std::vector<float> flux;
+
+    float at(int frame, int ix, int iy) const { return flux[(std::size_t(frame) * ny + iy) * nx + ix]; }
+};
+
+// The flow state, stepped by simulateCurtainDetail and by the tests.
+class CurtainFlow {
+public:
+    // The initial condition (docs/fluid.md, "Initial condition"), velocity projected once.
+    // Throws std::invalid_argument for a spec outside its documented ranges.
+    explicit CurtainFlow(const CurtainDetailSpec& spec);
+
+    // One Stable Fluids step: flux advected by the current (divergence-free) velocity, then the
+    // velocity advected by itself and projected. Returns the projection's multigrid report.
+    MultigridReport step(double dt);
+
+    const PeriodicField& flux() const { return flux_; }
+    const MacVelocity& velocity() const { return velocity_; }
+    // ½ ∫ v² dA over the strip, km⁴/s²: the kinetic energy of the cross-stream velocity.
+    double crossStreamEnergy() const;
+
+private:
+    MultigridSettings settings_;
+    MacVelocity velocity_;
+    PeriodicField phi_;
+    PeriodicField flux_;
+};
+
+// Runs the simulation: frame k is the flux at t = k·timeBetweenFramesS, stepsPerFrame steps apart.
+FluxFrames simulateCurtainDetail(const CurtainDetailSpec& spec);
+
+// The CPU reference for the shader lookup: F at (sKm along, uKm across from the centre line),
+// bilinear between texel centres with periodic wrap in both directions, and linear between
+// frames ⌊p⌋ and ⌊p⌋ + 1 at p = clamp(phase, 0, 1)·(frames − 1). In double.
+double sampleFlux(const FluxFrames& frames, double sKm, double uKm, double phase);
+
+} // namespace aurorawall::fluid
