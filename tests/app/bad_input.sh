@@ -1,0 +1,144 @@
+#!/bin/bash
+# Test 5, bad input: every mistake in a wall file, scene file, option or path ends the run
+#   - with a non-zero exit status on EVERY rank (each rank's status is recorded by rank_wrapper.sh,
+#     which exits 0 itself so that mpirun lets every rank finish on its own; a rank killed by a
+#     signal or one that never ends (timeout) is a failure),
+#   - with exactly one line on the ranks' stderr together: "aurorawall: ..." naming the file:line
+#     (for files whose offending line carries a '# <- error' comment) or the option,
+#   - within 15 s (a hang is caught by timeout 30),
+#   - without leaving anything in the --out folder (no wall.exr, wall.png, stats, temporaries).
+# Usage: bad_input.sh [main|late-output]   (late-output: mistakes that are only noticed after the
+# frames are rendered; see CMakeLists.txt)
+source "$(dirname "$0")/lib.sh"
+set_name="${1:-main}"
+WALL_DATA="$SRC_DIR/tests/wall/data"
+TINY="$DATA/tiny-2x2.ini"
+MAX_SECONDS=15
+failures=0 cases=0
+
+# The line of FILE marked "# <- error".
+marked_line() {
+    local n; n=$(grep -n -m1 -- '<- error' "$1" | cut -d: -f1)
+    [ -n "$n" ] || fail "$1 has no '# <- error' line"
+    echo "$n"
+}
+# The pattern "NAME:LINE:" for a marked file.
+at_marked_line() { echo "$(basename "$1"):$(marked_line "$1"):"; }
+
+# expect_error NAME RANKS REGEX ARGS...: runs mpirun -n RANKS aurorawall render ARGS plus --gather,
+# --out OUT and --stats OUT/stats.csv (unless ARGS has its own --out or --stats).
+expect_error() {
+    local name="$1" ranks="$2" regex="$3"; shift 3
+    local out="$WORK/$name/out" rankdir="$WORK/$name/ranks"
+    mkdir -p "$rankdir"
+    local args=("$@") has_out=0 has_stats=0 a
+    for a in "${args[@]}"; do
+        [ "$a" != --out ] || has_out=1
+        [ "$a" != --stats ] || has_stats=1
+    done
+    if [ $has_out = 0 ]; then args+=(--out "$out"); else out=""; fi
+    [ $has_stats = 1 ] || args+=(--stats "${out:-$WORK/$name/unused}/stats.csv")
+    args+=(--gather)
+    cases=$((cases + 1))
+
+    local t0 rc=0 seconds problems=()
+    t0=$(now)
+    RANK_DIR="$rankdir" timeout 30 "$MPIEXEC" -n "$ranks" "${MPI_FLAGS[@]}" -x LP_NUM_THREADS=1 -x RANK_DIR \
+        "$HERE/rank_wrapper.sh" "$AW" render "${args[@]}" >"$WORK/$name/stdout" 2>"$WORK/$name/mpirun-stderr" || rc=$?
+    seconds=$(elapsed "$t0")
+
+    [ $rc -ne 124 ] || problems+=("hung: killed by timeout 30")
+    [ $rc -eq 0 ] || [ $rc -eq 124 ] || problems+=("mpirun exited $rc although every rank's wrapper exits 0")
+    awk -v s="$seconds" -v m="$MAX_SECONDS" 'BEGIN { exit !(s < m) }' || problems+=("took $seconds s (limit $MAX_SECONDS s)")
+    local r rank_rc
+    for ((r = 0; r < ranks; ++r)); do
+        if [ ! -f "$rankdir/rc.$r" ]; then
+            problems+=("rank $r did not exit by itself (killed?)")
+        else
+            rank_rc=$(cat "$rankdir/rc.$r")
+            [ "$rank_rc" != 0 ] || problems+=("rank $r exited 0")
+            [ "$rank_rc" -lt 128 ] || problems+=("rank $r died with status $rank_rc (a signal?)")
+        fi
+    done
+    local stderr_text lines
+    stderr_text=$(cat "$rankdir"/stderr.* 2>/dev/null | sed '/^[[:space:]]*$/d')
+    lines=$(printf '%s' "$stderr_text" | grep -c '' || true)
+    [ "$lines" = 1 ] || problems+=("$lines lines on stderr, expected 1")
+    grep -q '^aurorawall: ' <<<"$stderr_text" || problems+=("stderr does not start with 'aurorawall: '")
+    grep -Eq -e "$regex" <<<"$stderr_text" || problems+=("stderr does not match /$regex/")
+    if grep -Eiq 'segmentation|exited on signal|core dumped|terminate called|MPI_ABORT' "$WORK/$name/mpirun-stderr" "$rankdir"/stderr.* 2>/dev/null; then
+        problems+=("a crash or abort was reported")
+    fi
+    if [ -n "$out" ] && [ -e "$out" ] && [ -n "$(ls -A "$out")" ]; then
+        problems+=("--out folder not empty: $(ls -A "$out" | tr '\n' ' ')")
+    fi
+
+    if [ ${#problems[@]} -eq 0 ]; then
+        printf 'ok   %-26s ranks exited %s  %5.2f s  %s\n' "$name" "$(cat "$rankdir"/rc.* | tr '\n' ' ')" "$seconds" "$stderr_text"
+    else
+        failures=$((failures + 1))
+        printf 'FAIL %-26s ranks exited %s  %5.2f s\n' "$name" "$(cat "$rankdir"/rc.* 2>/dev/null | tr '\n' ' ')" "$seconds"
+        printf '     command: mpirun -n %s aurorawall render %s\n' "$ranks" "${args[*]}"
+        local p; for p in "${problems[@]}"; do printf '     - %s\n' "$p"; done
+        printf '     stderr of the ranks:\n%s\n' "$(sed 's/^/       /' <<<"$stderr_text")"
+        printf '     stdout:\n%s\n' "$(sed 's/^/       /' "$WORK/$name/stdout")"
+    fi
+}
+
+main_cases() {
+    # Wall files (tests/wall/data, each with its offending line marked).
+    local f
+    for f in missing-key negative-size unknown-key rank-without-screen grid-rank-gap nan syntax-error \
+             eye-behind-wall; do
+        expect_error "wall-$f" 4 "$(at_marked_line "$WALL_DATA/$f.ini")" --wall "$WALL_DATA/$f.ini" --scene "$SCENE"
+    done
+    # Two-screen walls, two ranks.
+    for f in overlap rank-gap; do
+        expect_error "wall-$f" 2 "$(at_marked_line "$WALL_DATA/$f.ini")" --wall "$WALL_DATA/$f.ini" --scene "$SCENE"
+    done
+    expect_error wall-missing-file 4 "nonexistent-wall\.ini" --wall "$WORK/nonexistent-wall.ini" --scene "$SCENE"
+    expect_error wall-wrong-rank-count 3 "desktop-2x2\.ini.*4 ranks.*3" --wall "$WALLS/desktop-2x2.ini" --scene "$SCENE"
+
+    # Scene files.
+    expect_error scene-missing-file 4 "nonexistent-scene\.toml" --wall "$TINY" --scene "$WORK/nonexistent-scene.toml"
+    for f in syntax unknown-key nan absurd unknown-component; do
+        expect_error "scene-$f" 4 "$(at_marked_line "$DATA/bad-$f.toml")" --wall "$TINY" --scene "$DATA/bad-$f.toml"
+    done
+
+    # Paths.
+    expect_error data-dir-missing 4 "/nonexistent" --wall "$TINY" --scene "$SCENE" --data-dir /nonexistent
+    expect_error out-in-proc 4 "--out /proc/forbidden" --wall "$TINY" --scene "$SCENE" --out /proc/forbidden
+    touch "$WORK/regular-file"
+    expect_error out-under-file 4 "--out $WORK/regular-file/sub" --wall "$TINY" --scene "$SCENE" \
+        --out "$WORK/regular-file/sub"
+
+    # Options.
+    expect_error frames-negative 4 "--frames" --wall "$TINY" --scene "$SCENE" --frames -1
+    expect_error frames-zero-headless 4 "--frames 0" --wall "$TINY" --scene "$SCENE" --frames 0
+    expect_error frames-fraction 4 "--frames" --wall "$TINY" --scene "$SCENE" --frames 1.5
+    expect_error backend-vulkan 4 "--backend.*vulkan" --wall "$TINY" --scene "$SCENE" --backend vulkan
+    expect_error dt-nan 4 "--dt" --wall "$TINY" --scene "$SCENE" --dt nan
+    expect_error start-time-inf 4 "--start-time" --wall "$TINY" --scene "$SCENE" --start-time inf
+    expect_error exposure-negative 4 "--exposure" --wall "$TINY" --scene "$SCENE" --exposure -1
+    expect_error tonemap-unknown 4 "--tonemap" --wall "$TINY" --scene "$SCENE" --tonemap reinhard
+    expect_error option-unknown 4 "--bogus" --wall "$TINY" --scene "$SCENE" --bogus
+    expect_error option-twice 4 "--wall" --wall "$TINY" --wall "$TINY" --scene "$SCENE"
+    expect_error wall-option-missing 4 "wall" --scene "$SCENE"
+}
+
+# Mistakes in --stats that the program only notices when it writes the file, after rendering.
+late_output_cases() {
+    touch "$WORK/regular-file"
+    expect_error stats-extension 4 "--stats" --wall "$TINY" --scene "$SCENE" --frames 3 --stats "$WORK/s.txt"
+    expect_error stats-under-file 4 "--stats.*regular-file" --wall "$TINY" --scene "$SCENE" --frames 3 \
+        --stats "$WORK/regular-file/s.csv"
+}
+
+case "$set_name" in
+    main) main_cases ;;
+    late-output) late_output_cases ;;
+    *) fail "unknown case set $set_name" ;;
+esac
+echo "$((cases - failures)) of $cases cases ok"
+[ $failures -eq 0 ] || fail "$failures bad-input cases misbehaved"
+echo "PASS bad_input $set_name"

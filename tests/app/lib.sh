@@ -1,0 +1,34 @@
+# Shared by the end-to-end driver scripts of tests/app (sourced, not run).
+# The test registration (CMakeLists.txt) sets:
+#   AW          the aurorawall binary           MPIEXEC   mpirun
+#   COMPARE     the compare_walls binary        SRC_DIR   the source tree
+#   DATA        tests/app/data                  HERE      tests/app
+set -euo pipefail
+
+: "${AW:?}" "${MPIEXEC:?}" "${SRC_DIR:?}" "${DATA:?}" "${HERE:?}"
+WALLS="$SRC_DIR/config/walls"
+SCENE="$DATA/overhead.toml" # the fast test scene with curtains across every tile
+
+# Open MPI as root in a container, quick shared-memory start-up, more ranks than cores.
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+MPI_FLAGS=(--oversubscribe --bind-to none --mca pml ob1 --mca btl self,vader)
+
+WORK="$(mktemp -d "${TMPDIR:-/tmp}/aw-e2e.XXXXXX")"
+cleanup() { rm -rf "$WORK"; }
+trap cleanup EXIT
+
+fail() { echo "FAIL: $*" >&2; exit 1; }
+note() { echo "== $*"; }
+
+# aw_mpirun N ARGS...: mpirun -n N aurorawall ARGS. Several ranks on 2 cores run faster with one
+# llvmpipe thread each; a single rank keeps llvmpipe's default.
+aw_mpirun() {
+    local n="$1"; shift
+    local threads=()
+    if [ "$n" -gt 1 ]; then threads=(-x LP_NUM_THREADS=1); fi
+    "$MPIEXEC" -n "$n" "${MPI_FLAGS[@]}" "${threads[@]}" "$AW" "$@"
+}
+
+# Seconds since the epoch with nanoseconds, for timing.
+now() { date +%s.%N; }
+elapsed() { awk -v a="$(now)" -v b="$1" 'BEGIN { printf "%.2f", a - b }'; }
