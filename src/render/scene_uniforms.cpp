@@ -1,7 +1,5 @@
 #include "render/scene_uniforms.h"
 
-#include "gl/functions.h"
-
 #include <cmath>
 
 namespace aurorawall::render {
@@ -58,16 +56,10 @@ void applySceneUniforms(gl::Program& program, const scene::Scene& scene, const c
         const CurtainUniforms c = curtainUniforms(scene, frame.timeS);
         program.set("uCurtainCount", static_cast<int>(c.ranges.size()));
         if (!c.ranges.empty()) {
-            program.use();
-            const GLuint id = program.id();
-            gl::glUniform4fv(gl::glGetUniformLocation(id, "uCurtainPoints"), static_cast<GLsizei>(c.points.size()),
-                             &c.points[0].x);
-            gl::glUniform2fv(gl::glGetUniformLocation(id, "uCurtainRange"), static_cast<GLsizei>(c.ranges.size()),
-                             &c.ranges[0].x);
-            gl::glUniform4fv(gl::glGetUniformLocation(id, "uCurtainShape"), static_cast<GLsizei>(c.shapes.size()),
-                             &c.shapes[0].x);
-            gl::glUniform2fv(gl::glGetUniformLocation(id, "uCurtainFold"), static_cast<GLsizei>(c.folds.size()),
-                             &c.folds[0].x);
+            program.set("uCurtainPoints", c.points);
+            program.set("uCurtainRange", c.ranges);
+            program.set("uCurtainShape", c.shapes);
+            program.set("uCurtainFold", c.folds);
         }
     }
     if (scene.has(scene::Component::Stars)) {
