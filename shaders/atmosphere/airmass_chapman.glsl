@@ -32,7 +32,8 @@ real chapmanHdrp(real x, real cosZenith)
 
 // Huestis' exact integral (J. Quant. Spectrosc. Radiat. Transfer 69, 709 (2001), eq. 9), χ ≤ 90°:
 //   Ch(x, χ) = 1 + x·sin χ ∫_0^χ exp(x·(1 − sin χ/sin θ)) / (1 + cos θ) dθ,
-// by 8-point Gauss–Legendre. Smooth for small x: the safe form of chapmanAsymptotic below x = 50.
+// by 8-point Gauss–Legendre over θ ∈ [χ − w, χ], w = min(χ, 6/√x): below χ − w the integrand is
+// under e^{−x·w²/2} = e^{−18}. The safe form of chapmanAsymptotic below x = 50.
 real huestisIntegrand(real x, real sinZenith, real theta)
 {
     return exp(x * (real(1) - sinZenith / sin(theta))) / (real(1) + cos(theta));
@@ -41,15 +42,18 @@ real huestisIntegrand(real x, real sinZenith, real theta)
 real chapmanHuestis(real x, real cosZenith)
 {
     real sinZenith = sqrt(max(real(1) - cosZenith * cosZenith, real(0)));
-    real halfZenith = real(0.5) * acos(clamp(cosZenith, real(0), real(1)));
+    real zenith = acos(clamp(cosZenith, real(0), real(1)));
+    if (!(zenith > real(0))) return real(1);   // vertical: Ch = 1 (and no node at θ = 0)
+    real halfZenith = real(0.5) * min(zenith, real(6) / sqrt(x));
+    real middle = zenith - halfZenith;
     real u1 = halfZenith * real(0.183434642495649805);
     real u2 = halfZenith * real(0.525532409916328986);
     real u3 = halfZenith * real(0.796666477413626740);
     real u4 = halfZenith * real(0.960289856497536232);
-    real sum = real(0.362683783378361983) * (huestisIntegrand(x, sinZenith, halfZenith - u1) + huestisIntegrand(x, sinZenith, halfZenith + u1))
-             + real(0.313706645877887287) * (huestisIntegrand(x, sinZenith, halfZenith - u2) + huestisIntegrand(x, sinZenith, halfZenith + u2))
-             + real(0.222381034453374471) * (huestisIntegrand(x, sinZenith, halfZenith - u3) + huestisIntegrand(x, sinZenith, halfZenith + u3))
-             + real(0.101228536290376259) * (huestisIntegrand(x, sinZenith, halfZenith - u4) + huestisIntegrand(x, sinZenith, halfZenith + u4));
+    real sum = real(0.362683783378361983) * (huestisIntegrand(x, sinZenith, middle - u1) + huestisIntegrand(x, sinZenith, middle + u1))
+             + real(0.313706645877887287) * (huestisIntegrand(x, sinZenith, middle - u2) + huestisIntegrand(x, sinZenith, middle + u2))
+             + real(0.222381034453374471) * (huestisIntegrand(x, sinZenith, middle - u3) + huestisIntegrand(x, sinZenith, middle + u3))
+             + real(0.101228536290376259) * (huestisIntegrand(x, sinZenith, middle - u4) + huestisIntegrand(x, sinZenith, middle + u4));
     return real(1) + x * sinZenith * halfZenith * sum;
 }
 

@@ -123,18 +123,21 @@ std::vector<MethodAccuracy> measureAirmassAccuracy(const std::vector<AirmassRay>
             double sumSquares = 0.0;
             for (size_t i = 0; i < rays.size(); ++i) {
                 double value = evaluateAirmass(method, rays[i], precision);
-                double error = std::isfinite(value)
-                                   ? std::abs(value - exact[i]) / std::max(std::abs(exact[i]), kAirmassRelativeErrorFloor)
-                                   : std::numeric_limits<double>::infinity();
+                if (!std::isfinite(value)) {
+                    ++row.nonFiniteCount;
+                    continue;
+                }
+                double error = std::abs(value - exact[i]) / std::max(std::abs(exact[i]), kAirmassRelativeErrorFloor);
                 sumSquares += error * error;
-                if (i == 0 || error > row.maxRelativeError || std::isnan(error)) {
+                if (error >= row.maxRelativeError) {
                     row.maxRelativeError = error;
                     row.worstRay = rays[i];
                     row.worstValue = value;
                     row.worstExact = exact[i];
                 }
             }
-            row.rmsRelativeError = rays.empty() ? 0.0 : std::sqrt(sumSquares / double(rays.size()));
+            size_t finiteCount = rays.size() - row.nonFiniteCount;
+            row.rmsRelativeError = finiteCount == 0 ? 0.0 : std::sqrt(sumSquares / double(finiteCount));
             if (measureTime) row.nanosecondsPerEvaluation = airmassNanosecondsPerEvaluation(method, precision, rays);
             rows.push_back(row);
         }
@@ -144,16 +147,16 @@ std::vector<MethodAccuracy> measureAirmassAccuracy(const std::vector<AirmassRay>
 
 std::string formatAirmassAccuracyTable(const std::vector<MethodAccuracy>& rows)
 {
-    std::string table = "method               prec   rays   max_rel    rms_rel    ns/eval  worst ray: altitude_km "
+    std::string table = "method               prec   rays   nonfinite max_rel    rms_rel    ns/eval  worst ray: altitude_km "
                         "cos_zenith t0 t1 H -> value exact\n";
     for (const MethodAccuracy& row : rows) {
         const AirmassRay& ray = row.worstRay;
         double distance = glm::length(ray.origin);
         double cosZenith = distance > 0.0 ? glm::dot(ray.origin / distance, glm::normalize(ray.direction)) : 0.0;
         char line[512];
-        std::snprintf(line, sizeof line, "%-20s %-6s %-6zu %-10.3g %-10.3g %-8.1f %.6g %.6f %.6g %.6g %g -> %.9g %.9g\n",
+        std::snprintf(line, sizeof line, "%-20s %-6s %-6zu %-9zu %-10.3g %-10.3g %-8.1f %.6g %.6f %.6g %.6g %g -> %.9g %.9g\n",
                       row.method.c_str(), row.precision == AirmassPrecision::Float32 ? "f32" : "f64", row.rayCount,
-                      row.maxRelativeError, row.rmsRelativeError, row.nanosecondsPerEvaluation,
+                      row.nonFiniteCount, row.maxRelativeError, row.rmsRelativeError, row.nanosecondsPerEvaluation,
                       distance - ray.planetRadius, cosZenith, ray.t0, ray.t1, ray.scaleHeight, row.worstValue,
                       row.worstExact);
         table += line;

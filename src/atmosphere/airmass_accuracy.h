@@ -16,7 +16,8 @@ struct MethodAccuracy {
     std::string method;
     AirmassPrecision precision = AirmassPrecision::Float32;
     size_t rayCount = 0;
-    double maxRelativeError = 0.0;   // +inf if any result was NaN or infinite
+    size_t nonFiniteCount = 0;       // NaN or infinite results (left out of the errors below)
+    double maxRelativeError = 0.0;
     double rmsRelativeError = 0.0;
     AirmassRay worstRay;
     double worstValue = 0.0;

@@ -33,7 +33,8 @@ struct PieceIntegrand {
     }
 };
 
-double kronrod15(const PieceIntegrand& f, double a, double b, double& errorEstimate)
+template <class Integrand>
+double kronrod15(const Integrand& f, double a, double b, double& errorEstimate)
 {
     double centre = 0.5 * (a + b);
     double halfWidth = 0.5 * (b - a);
@@ -50,16 +51,21 @@ double kronrod15(const PieceIntegrand& f, double a, double b, double& errorEstim
     return kronrod * halfWidth;
 }
 
-// Recursive bisection until the Kronrod–Gauss difference is below the absolute tolerance.
-double adaptiveKronrod(const PieceIntegrand& f, double a, double b, double tolerance, int depth)
+// Recursive bisection until the Kronrod–Gauss difference is below the absolute tolerance, or the
+// budget of subintervals (against rounding noise above the tolerance) is spent.
+template <class Integrand>
+double adaptiveKronrod(const Integrand& f, double a, double b, double tolerance, int& budget)
 {
     double error = 0.0;
     double value = kronrod15(f, a, b, error);
-    if (error <= tolerance || depth >= 60) return value;
+    if (error <= tolerance || budget <= 0) return value;
+    budget -= 2;
     double middle = 0.5 * (a + b);
-    return adaptiveKronrod(f, a, middle, 0.5 * tolerance, depth + 1) +
-           adaptiveKronrod(f, middle, b, 0.5 * tolerance, depth + 1);
+    return adaptiveKronrod(f, a, middle, 0.5 * tolerance, budget) +
+           adaptiveKronrod(f, middle, b, 0.5 * tolerance, budget);
 }
+
+constexpr int kSubintervalBudget = 4000;
 
 // x ≥ 0 at which the ray reaches radius r (r ≥ y), on the outgoing side.
 double distanceAtRadius(double r, double y) { return std::sqrt((r - y) * (r + y)); }
@@ -92,8 +98,9 @@ double monotonePiece(double y, double xLow, double xHigh, double H, double R)
     }
     double tolerance = 1e-14 * roughTotal;
     double total = 0.0;
+    int budget = kSubintervalBudget;
     for (size_t i = 0; i + 1 < splits.size(); ++i) {
-        total += adaptiveKronrod(f, splits[i], splits[i + 1], tolerance, 0);
+        total += adaptiveKronrod(f, splits[i], splits[i + 1], tolerance, budget);
     }
     double lowExponent = std::min((R - rLow) / H, kDensityExponentCap);
     return std::exp(lowExponent) * total;
@@ -106,6 +113,18 @@ double exactAirmass(glm::dvec3 origin, glm::dvec3 direction, double t0, double t
     double directionLength = glm::length(direction);
     if (!(directionLength > 0.0) || t0 == t1) return 0.0;
     glm::dvec3 d = direction / directionLength;
+    if (std::abs(t1 - t0) <= H) {
+        // Shorter than a scale height: integrate in t with |o + t·d̂| taken directly, since x = t − t_c
+        // cannot resolve a segment much shorter than |t_c| (the exponent varies by at most 1 here).
+        auto density = [&](double t) { return std::exp(std::min((R - glm::length(origin + t * d)) / H, kDensityExponentCap)); };
+        double error = 0.0;
+        double rough = kronrod15(density, std::min(t0, t1), std::max(t0, t1), error);
+        // The radius carries rounding of ~1e-16·|o|: a tolerance below that noise cannot be met.
+        double tolerance = std::max(1e-13, 1e-14 * glm::length(origin) / H) * rough;
+        int budget = kSubintervalBudget;
+        double airmass = adaptiveKronrod(density, std::min(t0, t1), std::max(t0, t1), tolerance, budget);
+        return t1 < t0 ? -airmass : airmass;
+    }
     double originDistance = glm::length(origin);
     glm::dvec3 up = originDistance > 0.0 ? origin / originDistance : d;
     double y = originDistance * glm::length(up - d) * glm::length(up + d) * 0.5; // see airmassRayFrame

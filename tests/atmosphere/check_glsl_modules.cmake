@@ -1,0 +1,26 @@
+# Wraps each shared airmass module (with airmass_common.glsl before it) in a GLSL 4.50 fragment shader
+# that calls its public function, and compiles it with glslangValidator.
+file(MAKE_DIRECTORY ${WORK_DIR})
+file(READ ${SHADER_DIR}/airmass_common.glsl common)
+set(calls
+  "airmass_lawlor.glsl|airmassLawlorWinitzki(o, d, 0.0, 100.0, 8.0, 6371.0) + airmassLawlorErfcx(o, d, 0.0, 100.0, 8.0, 6371.0)"
+  "airmass_tectonics.glsl|airmassTectonics(o, d, 0.0, 100.0, 8.0, 6371.0)"
+  "airmass_chapman.glsl|airmassChapmanSchueler(o, d, 0.0, 100.0, 8.0, 6371.0) + airmassChapmanHdrp(o, d, 0.0, 100.0, 8.0, 6371.0) + airmassChapmanAsymptotic(o, d, 0.0, 100.0, 8.0, 6371.0)"
+  "airmass_march.glsl|airmassMarch16(o, d, 0.0, 100.0, 8.0, 6371.0)")
+foreach(entry IN LISTS calls)
+  string(REPLACE "|" ";" parts "${entry}")
+  list(GET parts 0 module)
+  list(GET parts 1 call)
+  file(READ ${SHADER_DIR}/${module} body)
+  string(CONCAT shader "#version 450 core\n#define real float\n${common}\n${body}\n"
+             "layout(location = 0) out vec4 color;\n"
+             "void main() {\n  vec3 o = vec3(0.0, 0.0, 6372.0 + gl_FragCoord.x);\n  vec3 d = normalize(vec3(1.0, 0.0, gl_FragCoord.y));\n"
+             "  color = vec4(${call});\n}\n")
+  set(file ${WORK_DIR}/${module}.frag)
+  file(WRITE ${file} "${shader}")
+  execute_process(COMMAND ${VALIDATOR} ${file} RESULT_VARIABLE result OUTPUT_VARIABLE output ERROR_VARIABLE output)
+  if(NOT result EQUAL 0)
+    message(FATAL_ERROR "${module} does not compile as GLSL:\n${output}")
+  endif()
+  message(STATUS "${module}: compiles as GLSL 4.50")
+endforeach()
