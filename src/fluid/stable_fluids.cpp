@@ -4,12 +4,6 @@
 
 namespace aurorawall::fluid {
 
-void velocityAt(const MacVelocity& velocity, double x, double y, double& u, double& v)
-{
-    u = sampleBilinear(velocity.u, x / velocity.u.hx, y / velocity.u.hy - 0.5);
-    v = sampleBilinear(velocity.v, x / velocity.v.hx - 0.5, y / velocity.v.hy);
-}
-
 PeriodicField divergence(const MacVelocity& velocity)
 {
     const PeriodicField& u = velocity.u;
@@ -23,19 +17,32 @@ PeriodicField divergence(const MacVelocity& velocity)
 
 namespace {
 
-// The semi-Lagrangian update of a field whose node (i, j) sits at ((i + ox) hx, (j + oy) hy).
+// The velocity in cells per second, (u/hx, v/hy), at (X, Y) = (x/hx, y/hy), each component
+// interpolated bilinearly from its faces (u-face (i, j) at X = i, Y = j + ½; v-face at
+// X = i + ½, Y = j).
+void cellVelocityAt(const MacVelocity& velocity, double inverseHx, double inverseHy, double X, double Y, double& cu,
+                    double& cv)
+{
+    cu = sampleBilinear(velocity.u, X, Y - 0.5) * inverseHx;
+    cv = sampleBilinear(velocity.v, X - 0.5, Y) * inverseHy;
+}
+
+// The semi-Lagrangian update of a field whose node (i, j) sits at ((i + ox) hx, (j + oy) hy),
+// traced in cell units (X, Y) = (x/hx, y/hy).
 PeriodicField advected(const PeriodicField& q, double ox, double oy, const MacVelocity& velocity, double dt)
 {
     PeriodicField result(q.nx, q.ny, q.hx, q.hy);
+    const double inverseHx = 1.0 / q.hx;
+    const double inverseHy = 1.0 / q.hy;
     for (int j = 0; j < q.ny; ++j)
         for (int i = 0; i < q.nx; ++i) {
-            const double x = (i + ox) * q.hx;
-            const double y = (j + oy) * q.hy;
-            double u = 0.0;
-            double v = 0.0;
-            velocityAt(velocity, x, y, u, v);
-            velocityAt(velocity, x - 0.5 * dt * u, y - 0.5 * dt * v, u, v);
-            result(i, j) = sampleCubicClamped(q, (x - dt * u) / q.hx - ox, (y - dt * v) / q.hy - oy);
+            const double X = i + ox;
+            const double Y = j + oy;
+            double cu = 0.0;
+            double cv = 0.0;
+            cellVelocityAt(velocity, inverseHx, inverseHy, X, Y, cu, cv);
+            cellVelocityAt(velocity, inverseHx, inverseHy, X - 0.5 * dt * cu, Y - 0.5 * dt * cv, cu, cv);
+            result(i, j) = sampleCubicClamped(q, X - dt * cu - ox, Y - dt * cv - oy);
         }
     return result;
 }

@@ -14,9 +14,6 @@ struct MacVelocity {
     PeriodicField v;
 };
 
-// The velocity at a point (x, y) in km, each component interpolated bilinearly from its faces.
-void velocityAt(const MacVelocity& velocity, double x, double y, double& u, double& v);
-
 // Discrete divergence at the cell centres: (∇·u)ᵢⱼ = (uᵢ₊₁ⱼ − uᵢⱼ)/hx + (vᵢⱼ₊₁ − vᵢⱼ)/hy, 1/s.
 PeriodicField divergence(const MacVelocity& velocity);
 
