@@ -9,6 +9,7 @@
 #include "fluid/periodic_field.h"
 #include "fluid/stable_fluids.h"
 
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
