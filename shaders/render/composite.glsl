@@ -28,7 +28,7 @@ vec3 shadeRay(vec3 o, vec3 d)
     if (air.x < air.y) {
         float airmass = airmassSegment(o, d, air.x, air.y);
         transmittance = exp(-uExtinctionPerKm * airmass);
-        radiance += uGlowPerKm * airmass;
+        radiance += uSkyGlow * (vec3(1.0) - transmittance);
         atmosphereEnd = air.y;
     }
 #endif

@@ -1,10 +1,10 @@
 // Lower atmosphere: density exp(-h / H) relative to sea level, up to uAtmosphereTopKm.
-// Light crossing it is attenuated by exp(-extinction * airmass); it adds a faint night-sky
-// glow in proportion to the airmass. Airmass is in sea-level-equivalent kilometres.
+// Light crossing it is attenuated by T = exp(-extinction * airmass); the path adds the night-sky
+// glow uSkyGlow (1 - T) that the air scatters toward the viewer. Airmass is in sea-level-equivalent km.
 uniform float uAtmosphereTopKm;
 uniform float uScaleHeightKm;
 uniform vec3 uExtinctionPerKm;
-uniform vec3 uGlowPerKm;
+uniform vec3 uSkyGlow;
 
 // Airmass of the segment [t0, t1] by a 16-step midpoint rule (first light; issue 4 brings
 // the closed forms measured against an exact reference).

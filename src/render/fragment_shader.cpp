@@ -9,15 +9,16 @@ namespace aurorawall::render {
 
 namespace {
 
-const char* moduleOf(scene::Component c)
+std::vector<std::string> modulesOf(scene::Component c)
 {
     switch (c) {
-    case scene::Component::Planet: return "scene/planet.glsl";
-    case scene::Component::Atmosphere: return "scene/atmosphere.glsl";
-    case scene::Component::Aurora: return "scene/aurora_firstlight.glsl";
-    case scene::Component::Stars: return "scene/stars.glsl";
+    case scene::Component::Planet: return {"scene/planet.glsl"};
+    case scene::Component::Atmosphere: return {"scene/atmosphere.glsl"};
+    case scene::Component::Aurora:
+        return {"aurora/deposition_coords.glsl", "aurora/deposition.glsl", "scene/aurora_curtains.glsl"};
+    case scene::Component::Stars: return {"scene/stars.glsl"};
     }
-    return "";
+    return {};
 }
 
 std::string defineOf(scene::Component c)
@@ -39,7 +40,8 @@ std::vector<std::string> fragmentModuleNames(const scene::Scene& scene)
     std::vector<std::string> names = {"render/ray_sphere.glsl", "render/tile_rays.glsl"};
     for (scene::Component c : kOrder)
         if (scene.has(c))
-            names.push_back(moduleOf(c));
+            for (const std::string& m : modulesOf(c))
+                names.push_back(m);
     names.push_back("render/composite.glsl");
     names.push_back("render/main.frag");
     return names;

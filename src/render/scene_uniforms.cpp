@@ -8,8 +8,6 @@ namespace {
 constexpr double kTwoPi = 6.28318530717958647692;
 }
 
-double peakHeightKm(double energyKeV) { return 100.0 + 57.0 * std::pow(energyKeV, -0.9); }
-
 CurtainUniforms curtainUniforms(const scene::Scene& scene, double timeS)
 {
     CurtainUniforms u;
@@ -25,7 +23,7 @@ CurtainUniforms curtainUniforms(const scene::Scene& scene, double timeS)
             u.points.emplace_back(glm::vec3(p), static_cast<float>(arclengthKm));
             previous = p;
         }
-        u.shapes.emplace_back(c.brightness, 0.5 * c.thicknessKm, peakHeightKm(c.energyKeV), c.foldAmplitudeKm);
+        u.shapes.emplace_back(c.energyFluxErgPerCm2S, 0.5 * c.thicknessKm, c.energyKeV, c.foldAmplitudeKm);
         // Folds travel along the curtain: phase = -2 pi drift t / wavelength, reduced in double.
         const double cycles = std::fmod(c.driftKmPerS * timeS / c.foldWavelengthKm, 1.0);
         const double phase = std::fmod(kTwoPi * (1.0 - cycles), kTwoPi);
@@ -47,7 +45,7 @@ void applySceneUniforms(gl::Program& program, const scene::Scene& scene, const c
         program.set("uAtmosphereTopKm", static_cast<float>(scene.atmosphere.topKm));
         program.set("uScaleHeightKm", static_cast<float>(scene.atmosphere.scaleHeightKm));
         program.set("uExtinctionPerKm", glm::vec3(scene.atmosphere.extinctionPerKm));
-        program.set("uGlowPerKm", glm::vec3(scene.atmosphere.glowPerKm));
+        program.set("uSkyGlow", glm::vec3(scene.atmosphere.skyGlow));
     }
     if (scene.has(scene::Component::Aurora)) {
         program.set("uAuroraBottomKm", static_cast<float>(scene.aurora.bottomKm));

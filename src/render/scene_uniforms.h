@@ -15,13 +15,9 @@ namespace aurorawall::render {
 struct CurtainUniforms {
     std::vector<glm::vec4> points; // unit vector, arclength from the curtain's first point (km)
     std::vector<glm::vec2> ranges;  // first point, point count (small integers, exact in float)
-    std::vector<glm::vec4> shapes;  // brightness, half-thickness km, peak height km, fold amplitude km
+    std::vector<glm::vec4> shapes;  // energy flux erg cm^-2 s^-1, half-thickness km, energy keV, fold amplitude km
     std::vector<glm::vec2> folds;   // wavenumber rad/km, phase rad in [0, 2 pi)
 };
-
-// Peak emission height of a curtain of electrons of this energy (first light: a fit through the
-// Lazarev peak heights of reference.md, 157 km at 1 keV to 105 km at 10 keV).
-double peakHeightKm(double energyKeV);
 
 CurtainUniforms curtainUniforms(const scene::Scene& scene, double timeS);
 

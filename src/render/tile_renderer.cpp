@@ -10,6 +10,10 @@ TileRenderer::TileRenderer(const scene::Scene& scene, const std::string& shaderD
     : scene_(scene),
       program_(gl::Program::graphics(gl::fullScreenTriangleVertexShader(), fragmentShaderSource(scene, shaderDir)))
 {
+    if (scene.has(scene::Component::Aurora)) {
+        auroraTables_ = std::make_unique<AuroraTables>(scene.aurora);
+        precomputationLog_.push_back(auroraTables_->summary());
+    }
 }
 
 void TileRenderer::beginFrame(const cluster::FrameState& frame)
@@ -29,6 +33,8 @@ void TileRenderer::renderTile(const wall::TileRays& rays, gl::FloatTarget& targe
     program_.set("uTileHeight", target.height());
     // Angular size of one pixel at the canvas origin, for drawing point-like stars.
     program_.set("uPixelAngle", static_cast<float>(glm::length(rays.stepRight) / glm::length(rays.originDir)));
+    if (auroraTables_)
+        auroraTables_->bind(program_);
     target.bind();
     program_.use();
     triangle.draw();

@@ -6,17 +6,21 @@
 #include "gl/float_target.h"
 #include "gl/full_screen_triangle.h"
 #include "gl/shader_program.h"
+#include "render/aurora_tables.h"
 #include "scene/scene.h"
 #include "wall/tile_rays.h"
 
+#include <memory>
 #include <string>
+#include <vector>
 
 namespace aurorawall::render {
 
 class TileRenderer {
 public:
-    // Compiles the raymarcher (needs a current context). Throws InputError for unreadable shader
-    // files and gl::ShaderError for compile errors.
+    // Compiles the raymarcher and precomputes the tables of the scene's components (needs a
+    // current context). Throws InputError for unreadable shader files and gl::ShaderError for
+    // compile errors.
     TileRenderer(const scene::Scene& scene, const std::string& shaderDir);
 
     // Sets the uniforms that are the same for every tile of this frame.
@@ -29,9 +33,14 @@ public:
 
     gl::Program& program() { return program_; }
 
+    // One line per table precomputed for the scene's components; empty when none is needed.
+    const std::vector<std::string>& precomputationLog() const { return precomputationLog_; }
+
 private:
     const scene::Scene& scene_;
     gl::Program program_;
+    std::unique_ptr<AuroraTables> auroraTables_; // only when the scene lists the aurora
+    std::vector<std::string> precomputationLog_;
     glm::dmat3 wallToPlanet_{1.0};
 };
 

@@ -61,9 +61,9 @@ Curtain readCurtain(const TableReader& t)
     c.pointsLatLonDeg = t.pairs("points_lat_lon_deg", {-90, -360}, {90, 360});
     if (c.pointsLatLonDeg.size() < 2)
         t.fail("points_lat_lon_deg", "needs at least 2 points");
-    c.brightness = t.number("brightness", 0, 1e6, c.brightness);
+    c.energyFluxErgPerCm2S = t.number("energy_flux_erg_cm2_s", 0, 1e4, c.energyFluxErgPerCm2S);
     c.thicknessKm = t.number("thickness_km", 0.01, 1000, c.thicknessKm);
-    c.energyKeV = t.number("energy_kev", 0.1, 100, c.energyKeV);
+    c.energyKeV = t.number("energy_kev", 0.5, 50, c.energyKeV); // the deposition table's range
     c.foldAmplitudeKm = t.number("fold_amplitude_km", 0, 1000, c.foldAmplitudeKm);
     c.foldWavelengthKm = t.number("fold_wavelength_km", 0.1, 1e5, c.foldWavelengthKm);
     c.driftKmPerS = t.number("drift_km_per_s", -1e4, 1e4, c.driftKmPerS);
@@ -139,6 +139,10 @@ Scene loadScene(const std::string& path)
         if (!s.has(Component::Planet))
             meta.fail("components", "'aurora' needs 'planet'");
         const TableReader t = top.optionalTable("aurora");
+        const std::string spectrum = t.string("spectrum", "maxwellian");
+        if (spectrum != "maxwellian" && spectrum != "monoenergetic")
+            t.fail("spectrum", "must be \"maxwellian\" or \"monoenergetic\" (got \"" + spectrum + "\")");
+        s.aurora.spectrum = spectrum == "maxwellian" ? ElectronSpectrum::Maxwellian : ElectronSpectrum::Monoenergetic;
         s.aurora.bottomKm = t.number("bottom_km", 1.0, 5000.0, s.aurora.bottomKm);
         s.aurora.topKm = t.number("top_km", 1.0, 5000.0, s.aurora.topKm);
         if (s.aurora.topKm <= s.aurora.bottomKm)

@@ -18,7 +18,8 @@ const char* componentName(Component c);
 
 struct Planet {
     double radiusKm = 6371.0;
-    glm::dvec3 surfaceRadiance{0.0004, 0.0005, 0.0007}; // night ground lit by sky and aurora
+    // Night ground lit by starlight, airglow and aurora (cd/m^2; snow under a moonless sky is ~1e-5).
+    glm::dvec3 surfaceRadiance{2.0e-5, 2.5e-5, 3.5e-5};
 };
 
 // The lower atmosphere: exponential density, scatters and absorbs.
@@ -27,22 +28,29 @@ struct Atmosphere {
     double scaleHeightKm = 8.0;
     // Rayleigh extinction at sea level per km for the R, G, B primaries (Bruneton & Neyret 2008).
     glm::dvec3 extinctionPerKm{5.8e-3, 13.5e-3, 33.1e-3};
-    // Night-sky glow added per km of sea-level-equivalent air (airglow seen through the air).
-    glm::dvec3 glowPerKm{2.0e-6, 3.0e-6, 4.0e-6};
+    // Night-sky glow (cd/m^2): airglow and starlight scattered by the air. A path of transmittance
+    // T adds skyGlow (1 - T), so an optically thick path near the horizon tends to skyGlow and the
+    // zenith sky comes out near 2e-5 cd/m^2 and the horizon near 2e-4 cd/m^2 (a dark natural night
+    // sky is about 1e-4 cd/m^2, 22 mag/arcsec^2).
+    glm::dvec3 skyGlow{1.5e-4, 2.0e-4, 2.5e-4};
 };
 
 // An auroral curtain: its footprint is a curve on the sphere through latitude/longitude points.
 struct Curtain {
     std::vector<glm::dvec2> pointsLatLonDeg;
-    double brightness = 1.0;  // relative flux
-    double thicknessKm = 1.0; // across the curtain
-    double energyKeV = 5.0;   // characteristic electron energy: sets the curtain's height
+    double energyFluxErgPerCm2S = 1.0; // precipitating electron energy flux at the curtain's centre
+    double thicknessKm = 1.0;          // across the curtain
+    double energyKeV = 5.0;            // (characteristic) electron energy: sets the curtain's height
     double foldAmplitudeKm = 0.0; // first light: sinusoidal folds along the curtain
     double foldWavelengthKm = 50.0;
     double driftKmPerS = 0.0;     // folds travel along the curtain
 };
 
+// Energy spectrum of the precipitating electrons (src/aurora/lazarev.h).
+enum class ElectronSpectrum { Monoenergetic, Maxwellian };
+
 struct Aurora {
+    ElectronSpectrum spectrum = ElectronSpectrum::Maxwellian;
     double bottomKm = 85.0;
     double topKm = 300.0;
     double stepKm = 2.0; // march step inside curtains

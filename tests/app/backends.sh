@@ -13,7 +13,7 @@ for backend in egl osmesa; do
     grep -q "backend $backend on " <<<"$out" || fail "--backend $backend: the start-up line does not name it"
     note "$backend rendered in $(elapsed "$t0") s"
 done
-"$COMPARE" content "$WORK/egl/wall.exr" "$wall" --min-max 0.01 --lit-above 0.5 --min-lit-screens 3
+"$COMPARE" content "$WORK/egl/wall.exr" "$wall" --min-max 1e-3 --lit-above 5e-4 --min-lit-screens 3
 "$COMPARE" diff "$WORK/egl/wall.exr" "$WORK/osmesa/wall.exr" --half-ulps 0
 for tile in "$WORK"/egl/tile-*.exr; do
     "$COMPARE" diff "$tile" "$WORK/osmesa/$(basename "$tile")" --half-ulps 0

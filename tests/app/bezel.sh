@@ -11,6 +11,6 @@ note "wall rendered in $(elapsed "$t0") s"
 t0=$(now)
 aw_mpirun 1 render --wall "$wall" --scene "$SCENE" --single-screen --gather --quiet --out "$WORK/single"
 note "reference rendered in $(elapsed "$t0") s"
-"$COMPARE" content "$WORK/wall/wall.exr" "$wall" --min-max 0.01 --lit-above 0.5 --min-lit-screens 4
+"$COMPARE" content "$WORK/wall/wall.exr" "$wall" --min-max 1e-3 --lit-above 5e-4 --min-lit-screens 4
 "$COMPARE" bezel "$wall" "$WORK/single/wall.exr" "$WORK/wall/wall.exr" --half-ulps "$HALF_ULPS"
 echo "PASS bezel"

@@ -42,6 +42,6 @@ grep -q "backend glfw on " "$WORK/glfw.log" || fail "the start-up line does not 
 if command -v xwininfo >/dev/null; then
     [ "$(cat "$WORK/glfw.windows")" = 4 ] || fail "expected 4 windows, saw $(cat "$WORK/glfw.windows") at most"
 fi
-"$COMPARE" content "$WORK/glfw/wall.exr" "$wall" --min-max 0.01 --lit-above 0.5 --min-lit-screens 4
+"$COMPARE" content "$WORK/glfw/wall.exr" "$wall" --min-max 1e-3 --lit-above 5e-4 --min-lit-screens 4
 "$COMPARE" diff "$WORK/egl/wall.exr" "$WORK/glfw/wall.exr" --half-ulps 0
 echo "PASS glfw"

@@ -19,8 +19,8 @@ check_wall() {
     for f in wall.exr wall.png; do
         [ -s "$WORK/$name-wall/$f" ] || fail "$name: $f missing or empty"
     done
-    "$COMPARE" content "$WORK/$name-wall/wall.exr" "$wall" --min-max 0.01 --lit-above 0.5 --min-lit-screens "$ranks"
-    "$COMPARE" content "$WORK/$name-single/wall.exr" "$wall" --min-max 0.01 --lit-above 0.5 --min-lit-screens "$ranks"
+    "$COMPARE" content "$WORK/$name-wall/wall.exr" "$wall" --min-max 1e-3 --lit-above 5e-4 --min-lit-screens "$ranks"
+    "$COMPARE" content "$WORK/$name-single/wall.exr" "$wall" --min-max 1e-3 --lit-above 5e-4 --min-lit-screens "$ranks"
     "$COMPARE" diff "$WORK/$name-single/wall.exr" "$WORK/$name-wall/wall.exr" --half-ulps "$HALF_ULPS"
     "$COMPARE" tiles "$wall" "$WORK/$name-single/wall.exr" "$WORK/$name-wall" --half-ulps "$HALF_ULPS"
 }

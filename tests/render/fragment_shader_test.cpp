@@ -37,7 +37,7 @@ TEST(FragmentShader, FullSceneHasEveryModule)
 {
     const scene::Scene s = scene::loadScene(std::string(AURORAWALL_SOURCE_DIR) + "/config/scenes/substorm.toml");
     const std::vector<std::string> names = render::fragmentModuleNames(s);
-    EXPECT_TRUE(contains(names, "scene/aurora_firstlight.glsl"));
+    EXPECT_TRUE(contains(names, "scene/aurora_curtains.glsl"));
     EXPECT_TRUE(contains(names, "scene/atmosphere.glsl"));
     EXPECT_EQ(names.back(), "render/main.frag");
 }

@@ -1,9 +1,9 @@
-// Aurora, first light: an emissive shell between uAuroraBottomKm and uAuroraTopKm holding a
-// few curtains. A curtain's footprint is a polyline of great-circle arcs on the sphere
-// (control points as unit vectors), displaced sideways by travelling folds; its electron
-// flux falls off as a Gaussian across the curtain. The vertical profile is a Chapman layer
-// whose peak height falls with electron energy. Issue 3 replaces this module with the full
-// Lawlor & Genetti model (Lazarev deposition tables, fluid detail, distance field).
+// Aurora curtains: an emissive shell between uAuroraBottomKm and uAuroraTopKm. A curtain's
+// footprint is a polyline of great-circle arcs on the sphere (control points as unit vectors),
+// displaced sideways by travelling folds; the precipitating energy flux falls off as a Gaussian
+// across the curtain. The emission at a point is that flux times the tabulated line emission of
+// the curtain's electrons at that altitude (aurora/deposition.glsl: Lazarev deposition, line
+// yields, CIE colour), so the curtain's height and colours follow from its electron energy.
 const int MAX_CURTAINS = 16;
 const int MAX_CURTAIN_POINTS = 256;
 uniform float uAuroraBottomKm;
@@ -12,34 +12,13 @@ uniform float uAuroraStepKm;
 uniform int uCurtainCount;
 uniform vec4 uCurtainPoints[MAX_CURTAIN_POINTS]; // xyz: unit vector; w: arclength from the first point, km
 uniform vec2 uCurtainRange[MAX_CURTAINS];       // first point, point count (integers)
-uniform vec4 uCurtainShape[MAX_CURTAINS];       // brightness, half-thickness km, peak height km, fold amplitude km
+uniform vec4 uCurtainShape[MAX_CURTAINS];       // energy flux erg cm^-2 s^-1, half-thickness km, energy keV, fold amplitude km
 uniform vec2 uCurtainFold[MAX_CURTAINS];        // fold wavenumber rad/km, fold phase rad (from double time on the CPU)
-
-// Emission colours of the three lines in linear sRGB, negative components clipped
-// (from the CIE 1931 2-degree values in reference.md; issue 3 brings a tested gamut mapping).
-const vec3 GREEN_5577 = vec3(0.265, 1.335, 0.0);
-const vec3 RED_6300 = vec3(1.675, 0.0, 0.0);
-const vec3 BLUE_4278 = vec3(0.194, 0.0, 1.327);
 
 struct CurtainHit {
     float skipKm;   // a step this long cannot reach any curtain's visible core
-    vec3 radiance;  // emission per km at this point
+    vec3 radiance;  // linear sRGB radiance added per km of path at this point
 };
-
-// Chapman production profile exp(1 - z - e^-z), z = (h - peak) / scale: sharp bottom, long top.
-float chapmanProfile(float h, float peak)
-{
-    float z = (h - peak) / 18.0;
-    return exp(1.0 - z - exp(-z));
-}
-
-vec3 lineColour(float h)
-{
-    float green = 1.0 / (1.0 + exp(-(h - 97.0) / 4.0)) * (1.0 - 1.0 / (1.0 + exp(-(h - 230.0) / 25.0)));
-    float red = 2.5 / (1.0 + exp(-(h - 210.0) / 22.0));
-    float lowerBorder = 1.0 - 1.0 / (1.0 + exp(-(h - 100.0) / 3.0));
-    return green * GREEN_5577 + red * RED_6300 + 0.18 * BLUE_4278 + lowerBorder * vec3(0.9, 0.0, 0.5);
-}
 
 CurtainHit sampleCurtains(vec3 p, float h)
 {
@@ -77,7 +56,8 @@ CurtainHit sampleCurtains(vec3 p, float h)
             flux = max(flux, exp(-x * x));
         }
         hit.skipKm = min(hit.skipKm, nearestKm - 3.0 * shape.y);
-        hit.radiance += shape.x * flux * chapmanProfile(h, shape.z) * lineColour(h);
+        if (flux > 1e-12)
+            hit.radiance += shape.x * flux * auroraEmissionRgbPerKm(h, shape.z);
     }
     return hit;
 }
