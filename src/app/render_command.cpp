@@ -21,6 +21,7 @@
 #include "wall/wall_file.h"
 
 #include <chrono>
+#include <filesystem>
 #include <cstdio>
 #include <cstring>
 #include <functional>
@@ -146,17 +147,23 @@ int runRenderCommand(int argc, char** argv)
         if (options.singleScreen)
             wallLayout = wall::singleScreenEquivalent(wallLayout);
         if (wallLayout.rankCount != world.size())
-            throw InputError(options.wallFile + ": the wall is driven by " + std::to_string(wallLayout.rankCount) +
-                             " ranks, but mpirun started " + std::to_string(world.size()) +
-                             " (use mpirun -n " + std::to_string(wallLayout.rankCount) + ")");
+            throw InputError(options.wallFile + (options.singleScreen ? " with --single-screen" : "") +
+                             ": the wall is driven by " + std::to_string(wallLayout.rankCount) +
+                             (wallLayout.rankCount == 1 ? " rank" : " ranks") + ", but mpirun started " +
+                             std::to_string(world.size()) + " (use mpirun -n " + std::to_string(wallLayout.rankCount) +
+                             ")");
         scene = scene::loadScene(options.sceneFile);
         shaderDir = (options.dataDir.empty() ? dataDirectory() : options.dataDir) + "/shaders";
         render::fragmentShaderSource(scene, shaderDir); // every module readable before any window opens
         if (options.backend != "glfw" && options.frames == 0)
             throw InputError("--frames 0 (until a window is closed) needs --backend glfw");
         gl::parseBackend(options.backend);
-        if (options.gather || options.tiles || !options.statsFile.empty())
+        if (options.gather || options.tiles)
             io::ensureWritableDirectory(options.outDir, "--out");
+        if (!options.statsFile.empty()) {
+            const std::filesystem::path parent = std::filesystem::path(options.statsFile).parent_path();
+            io::ensureWritableDirectory(parent.empty() ? "." : parent.string(), "--stats");
+        }
         myScreens = wallLayout.screensOfRank(world.rank());
     });
     if (!configured)
@@ -200,7 +207,7 @@ int runRenderCommand(int argc, char** argv)
 
     // 3. The frame loop: the master decides, everyone renders, all flip together.
     cluster::ClockSettings clockSettings;
-    clockSettings.frames = options.frames;
+    clockSettings.frames = static_cast<std::uint64_t>(options.frames);
     clockSettings.startTimeS = options.startTimeGiven ? options.startTimeS : scene.startTimeS;
     clockSettings.timeStepS = options.timeStepS >= 0 ? options.timeStepS : scene.timeStepS;
     clockSettings.realTime = options.realTime;

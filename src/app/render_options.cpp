@@ -68,7 +68,13 @@ RenderOptions parseRenderOptions(int argc, char** argv)
     if (vm.count("exposure"))
         check(std::isfinite(o.exposure) && o.exposure > 0 && o.exposure < 1e12, "--exposure must be a positive finite number");
     check(o.toneMap == "aces" || o.toneMap == "magnitude-gamma", "--tonemap must be aces or magnitude-gamma (got '" + o.toneMap + "')");
-    check(o.frames <= 100000000, "--frames must be at most 1e8");
+    check(o.frames >= 0 && o.frames <= 100000000, "--frames must be a whole number in [0, 1e8] (got " +
+                                                       std::to_string(o.frames) + ")");
+    if (vm.count("stats")) {
+        const bool csv = o.statsFile.size() > 4 && o.statsFile.compare(o.statsFile.size() - 4, 4, ".csv") == 0;
+        const bool json = o.statsFile.size() > 5 && o.statsFile.compare(o.statsFile.size() - 5, 5, ".json") == 0;
+        check(csv || json, "--stats " + o.statsFile + ": the file name must end in .csv or .json");
+    }
     check(!o.outDir.empty(), "--out must not be empty");
     return o;
 }

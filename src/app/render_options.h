@@ -13,7 +13,7 @@ struct RenderOptions {
     std::string statsFile;
     std::string dataDir; // empty: see common/data_dir.h
     std::string toneMap = "aces";
-    std::uint64_t frames = 1;
+    long long frames = 1;
     double timeStepS = -1.0;   // < 0: the scene's
     double startTimeS = 0.0;
     bool startTimeGiven = false;

@@ -3,6 +3,8 @@
 #include "io/atomic_file.h"
 
 #include <algorithm>
+#include <cerrno>
+#include <cstring>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -101,12 +103,16 @@ void FrameStats::write(const std::string& path) const
         }
         out << "\n  ]\n}\n";
     }
-    io::writeFileAtomically(path, [&](const std::string& temporary) {
-        std::ofstream file(temporary);
-        file << out.str();
-        if (!file.flush())
-            throw std::runtime_error(temporary + ": write failed");
-    });
+    try {
+        io::writeFileAtomically(path, [&](const std::string& temporary) {
+            std::ofstream file(temporary);
+            file << out.str();
+            if (!file.flush())
+                throw std::runtime_error(std::strerror(errno));
+        });
+    } catch (const std::exception& e) {
+        throw std::runtime_error("--stats " + path + ": cannot write (" + e.what() + ")");
+    }
 }
 
 } // namespace aurorawall::cluster
