@@ -13,7 +13,8 @@ std::vector<std::string> modulesOf(scene::Component c)
 {
     switch (c) {
     case scene::Component::Planet: return {"scene/planet.glsl"};
-    case scene::Component::Atmosphere: return {"scene/atmosphere.glsl"};
+    case scene::Component::Atmosphere:
+        return {"atmosphere/airmass_common.glsl", "atmosphere/airmass_chapman.glsl", "scene/atmosphere.glsl"};
     case scene::Component::Aurora:
         return {"aurora/deposition_coords.glsl", "aurora/deposition.glsl", "scene/aurora_curtains.glsl"};
     case scene::Component::Stars: return {"scene/stars.glsl"};
