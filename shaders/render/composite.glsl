@@ -43,8 +43,13 @@ vec3 shadeRay(vec3 o, vec3 d)
 #endif
 
 #ifdef HAS_PLANET
-    if (hitsGround)
-        radiance += uPlanetRadiance * transmittance;
+    if (hitsGround) {
+        vec3 ground = uPlanetRadiance;
+#ifdef HAS_PLANET_TEXTURE
+        ground += nightLights(normalize(o + tEnd * d));
+#endif
+        radiance += ground * transmittance;
+    }
 #endif
 #ifdef HAS_STARS
     if (!hitsGround)

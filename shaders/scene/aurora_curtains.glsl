@@ -1,75 +1,87 @@
-// Aurora curtains: an emissive shell between uAuroraBottomKm and uAuroraTopKm. A curtain's
-// footprint is a polyline of great-circle arcs on the sphere (control points as unit vectors),
-// displaced sideways by travelling folds; the precipitating energy flux falls off as a Gaussian
-// across the curtain. The emission at a point is that flux times the tabulated line emission of
-// the curtain's electrons at that altitude (aurora/deposition.glsl: Lazarev deposition, line
-// yields, CIE colour), so the curtain's height and colours follow from its electron energy.
-const int MAX_CURTAINS = 16;
-const int MAX_CURTAIN_POINTS = 256;
+// Aurora curtains (Lawlor & Genetti 2011, sections 2-3): an emissive shell between
+// uAuroraBottomKm and uAuroraTopKm. Each curtain's footprint is a spline on the sphere, sampled on
+// the CPU into a dense polyline (a row of uCurtainPolylines: unit vector, arclength km). The
+// footprint map (a jump-flooded nearest-point map, shaders/aurora/footprint_map.glsl) gives, for
+// any point, the nearest curtain point and a conservative distance to it; the shader refines on
+// the segments around that point to exact curtain coordinates (s along, u across), so detail is
+// not limited by the map's texels. Emission = peak energy flux x profile(s, u) x the tabulated
+// line emission of the curtain's electrons at this altitude (aurora/deposition.glsl).
 uniform float uAuroraBottomKm;
 uniform float uAuroraTopKm;
 uniform float uAuroraStepKm;
 uniform int uCurtainCount;
-uniform vec4 uCurtainPoints[MAX_CURTAIN_POINTS]; // xyz: unit vector; w: arclength from the first point, km
-uniform vec2 uCurtainRange[MAX_CURTAINS];       // first point, point count (integers)
-uniform vec4 uCurtainShape[MAX_CURTAINS];       // energy flux erg cm^-2 s^-1, half-thickness km, energy keV, fold amplitude km
-uniform vec2 uCurtainFold[MAX_CURTAINS];        // fold wavenumber rad/km, fold phase rad (from double time on the CPU)
+uniform sampler2D uCurtainPolylines; // RGBA32F, row c: xyz unit vector, w arclength km
+uniform vec4 uCurtainState[MAX_CURTAINS];  // peak energy flux erg cm^-2 s^-1, energy keV, point count, -
+uniform float uCurtainReachKm;       // beyond this distance from its centre line no curtain emits
+
+uniform sampler2D uFootprintMap;     // RGBA32F, nearest: curtain id, point index, distance km, -
+uniform vec3 uFootprintCentre;
+uniform vec3 uFootprintEast;
+uniform float uFootprintAngularRadius;
+uniform float uFootprintSize;
+uniform float uFootprintMarginKm;
 
 struct CurtainHit {
-    float skipKm;   // a step this long cannot reach any curtain's visible core
+    float skipKm;   // a step this long cannot reach any curtain's emitting part
     vec3 radiance;  // linear sRGB radiance added per km of path at this point
 };
+
+// Curtain coordinates of direction n relative to curtain c near polyline point i: the segment
+// around i on which n projects closest. Returns (s km, u km, |distance| km).
+vec3 curtainCoordinates(int c, int i, vec3 n)
+{
+    float R = uPlanetRadiusKm;
+    int last = int(uCurtainState[c].z) - 1;
+    vec3 best = vec3(0.0, 0.0, 1e30);
+    for (int j = max(i - 2, 0); j < min(i + 2, last); ++j) {
+        vec4 a = texelFetch(uCurtainPolylines, ivec2(j, c), 0);
+        vec4 b = texelFetch(uCurtainPolylines, ivec2(j + 1, c), 0);
+        vec3 normal = normalize(cross(a.xyz, b.xyz));
+        float along = atan(dot(cross(a.xyz, n), normal), dot(a.xyz, n)); // angle from a along the arc
+        float arc = (b.w - a.w) / R;
+        float u = R * asin(clamp(dot(n, normal), -1.0, 1.0));
+        float outside = R * max(max(-along, along - arc), 0.0);
+        float distance = length(vec2(u, outside));
+        if (distance < best.z)
+            best = vec3(a.w + R * clamp(along, 0.0, arc), u, distance);
+    }
+    return best;
+}
 
 CurtainHit sampleCurtains(vec3 p, float h)
 {
     CurtainHit hit;
-    hit.skipKm = 1e9;
     hit.radiance = vec3(0.0);
     vec3 n = normalize(p);
-    float R = uPlanetRadiusKm;
-    for (int c = 0; c < uCurtainCount; ++c) {
-        vec4 shape = uCurtainShape[c];
-        float nearestKm = 1e9; // lower bound of the distance to the displaced curtain
-        float flux = 0.0;
-        int first = int(uCurtainRange[c].x), last = first + int(uCurtainRange[c].y) - 1;
-        for (int i = first; i < last; ++i) {
-            vec3 a = uCurtainPoints[i].xyz;
-            vec3 b = uCurtainPoints[i + 1].xyz;
-            vec3 normal = normalize(cross(a, b));
-            float along = atan(dot(cross(a, n), normal), dot(a, n)); // angle from a along the arc
-            float arc = (uCurtainPoints[i + 1].w - uCurtainPoints[i].w) / R;
-            float distKm;
-            float lowerKm;
-            if (along < 0.0 || along > arc) {
-                vec3 end = along < 0.0 ? a : b;
-                distKm = R * acos(clamp(dot(n, end), -1.0, 1.0));
-                lowerKm = max(distKm - shape.w, 0.0);
-            } else {
-                float s = uCurtainPoints[i].w + along * R;
-                float lateral = R * asin(clamp(dot(n, normal), -1.0, 1.0));
-                float fold = shape.w * sin(uCurtainFold[c].x * s + uCurtainFold[c].y);
-                distKm = abs(lateral - fold);
-                lowerKm = max(abs(lateral) - shape.w, 0.0);
-            }
-            nearestKm = min(nearestKm, lowerKm);
-            float x = distKm / shape.y;
-            flux = max(flux, exp(-x * x));
-        }
-        hit.skipKm = min(hit.skipKm, nearestKm - 3.0 * shape.y);
-        if (flux > 1e-12)
-            hit.radiance += shape.x * flux * auroraEmissionRgbPerKm(h, shape.z);
+    float outsideKm = footprintMapOutsideKm(n, uFootprintCentre, uFootprintAngularRadius, uPlanetRadiusKm);
+    if (outsideKm > 0.0) {
+        // The map's cap holds every curtain with its reach (CPU side), so nothing emits out here.
+        hit.skipKm = outsideKm;
+        return hit;
     }
+    vec2 texel = footprintMapTexel(footprintMapCoord(n, uFootprintCentre, uFootprintEast, uFootprintAngularRadius),
+                                   uFootprintSize);
+    vec4 nearest = texelFetch(uFootprintMap, ivec2(texel), 0);
+    float lowerKm = footprintConservativeKm(nearest.z, uFootprintMarginKm);
+    hit.skipKm = lowerKm - uCurtainReachKm;
+    if (hit.skipKm > 0.0)
+        return hit;
+    int c = int(nearest.x);
+    vec3 su = curtainCoordinates(c, int(nearest.y), n);
+    float flux = uCurtainState[c].x * curtainProfile(c, su.x, su.y);
+    if (flux > 0.0)
+        hit.radiance = flux * auroraEmissionRgbPerKm(h, uCurtainState[c].y);
     return hit;
 }
 
-// Emission integrated along the ray segment [seg.x, seg.y]: fine steps near curtains, long
-// steps where the footprint distance proves no curtain is near (moving s km changes the
-// footprint position by at most s km above the ground).
+// Emission integrated along the ray segment [seg.x, seg.y]: fine steps of uAuroraStepKm where a
+// curtain may emit, long steps where the footprint map proves none is near (moving s km changes
+// the footprint position by at most s km above the ground, so no curtain is skipped).
 vec3 auroraSegment(vec3 o, vec3 d, vec2 seg)
 {
     vec3 sum = vec3(0.0);
     float t = seg.x;
-    for (int i = 0; i < 4096 && t < seg.y; ++i) {
+    for (int i = 0; i < 8192 && t < seg.y; ++i) {
         vec3 p = o + t * d;
         float h = length(p) - uPlanetRadiusKm;
         CurtainHit hit = sampleCurtains(p, h);

@@ -13,10 +13,13 @@ std::vector<std::string> modulesOf(scene::Component c)
 {
     switch (c) {
     case scene::Component::Planet: return {"scene/planet.glsl"};
+    case scene::Component::PlanetTexture: return {"scene/night_lights.glsl"};
     case scene::Component::Atmosphere:
         return {"atmosphere/airmass_common.glsl", "atmosphere/airmass_chapman.glsl", "scene/atmosphere.glsl"};
     case scene::Component::Aurora:
-        return {"aurora/deposition_coords.glsl", "aurora/deposition.glsl", "scene/aurora_curtains.glsl"};
+        return {"aurora/deposition_coords.glsl", "aurora/deposition.glsl", "aurora/footprint_map.glsl",
+                "aurora/curtain_profile.glsl", "scene/aurora_curtains.glsl"};
+    case scene::Component::FluidDetail: return {};
     case scene::Component::Stars: return {"scene/stars.glsl"};
     }
     return {};
@@ -31,7 +34,8 @@ std::string defineOf(scene::Component c)
 }
 
 // Components in dependency order: the planet's uniforms are used by the layers above it.
-const scene::Component kOrder[] = {scene::Component::Planet, scene::Component::Atmosphere,
+const scene::Component kOrder[] = {scene::Component::Planet, scene::Component::PlanetTexture,
+                                   scene::Component::Atmosphere, scene::Component::FluidDetail,
                                    scene::Component::Aurora, scene::Component::Stars};
 
 } // namespace

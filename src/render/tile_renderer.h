@@ -1,12 +1,15 @@
 #pragma once
 // Draws tiles of the wall: for each tile, one full-screen pass of the raymarcher into a float
-// target. The program is compiled once per rank for the scene's components; the per-frame
-// state comes from the master's FrameState only.
+// target. The program is compiled, and the tables of the scene's components precomputed, once
+// per rank; everything that changes per frame comes from the master's FrameState only.
 #include "cluster/frame_state.h"
 #include "gl/float_target.h"
 #include "gl/full_screen_triangle.h"
 #include "gl/shader_program.h"
 #include "render/aurora_tables.h"
+#include "render/curtain_detail.h"
+#include "render/curtain_field.h"
+#include "render/night_lights.h"
 #include "scene/scene.h"
 #include "wall/tile_rays.h"
 
@@ -23,25 +26,30 @@ public:
     // compile errors.
     TileRenderer(const scene::Scene& scene, const std::string& shaderDir);
 
-    // Sets the uniforms that are the same for every tile of this frame.
-    void beginFrame(const cluster::FrameState& frame);
+    // Once per frame, before its tiles: the uniforms shared by every tile and the per-frame
+    // component data (curtains at this time), uploaded to textures shared by all contexts.
+    void setFrame(const cluster::FrameState& frame);
 
     // Renders the tile whose pixel rays are `rays` into `target` (its size is the tile's size),
     // drawing with `triangle` (vertex arrays belong to one context). The ray vectors are rotated
     // from the wall frame into the planet frame in double precision.
     void renderTile(const wall::TileRays& rays, gl::FloatTarget& target, const gl::FullScreenTriangle& triangle);
 
-    gl::Program& program() { return program_; }
-
-    // One line per table precomputed for the scene's components; empty when none is needed.
+    // One line per table precomputed at start-up for the scene's components; empty when none is needed.
     const std::vector<std::string>& precomputationLog() const { return precomputationLog_; }
+    // What the last setFrame computed per frame (e.g. the curtains' footprint map); may be empty.
+    std::string frameLog() const;
 
 private:
     const scene::Scene& scene_;
     gl::Program program_;
-    std::unique_ptr<AuroraTables> auroraTables_; // only when the scene lists the aurora
-    std::vector<std::string> precomputationLog_;
     glm::dmat3 wallToPlanet_{1.0};
+    // Components' GPU data, present only when the scene lists the component.
+    std::unique_ptr<AuroraTables> auroraTables_;
+    std::unique_ptr<CurtainDetail> curtainDetail_;
+    std::unique_ptr<CurtainField> curtainField_;
+    std::unique_ptr<NightLights> nightLights_;
+    std::vector<std::string> precomputationLog_;
 };
 
 } // namespace aurorawall::render

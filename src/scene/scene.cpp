@@ -12,8 +12,8 @@ namespace {
 
 constexpr double kDeg = 3.14159265358979323846 / 180.0;
 
-const Component kAllComponents[] = {Component::Planet, Component::Atmosphere, Component::Aurora,
-                                    Component::Stars};
+const Component kAllComponents[] = {Component::Planet, Component::PlanetTexture, Component::Atmosphere,
+                                    Component::Aurora,  Component::FluidDetail,   Component::Stars};
 
 Camera readCamera(const TableReader& t, double planetRadiusKm)
 {
@@ -55,18 +55,46 @@ Camera readCamera(const TableReader& t, double planetRadiusKm)
     return c;
 }
 
-Curtain readCurtain(const TableReader& t)
+// The fields a key may set; `c` holds the defaults (the curtain's own keys, or the previous key).
+CurtainKey readCurtainKey(const TableReader& t, CurtainKey c)
 {
-    Curtain c;
-    c.pointsLatLonDeg = t.pairs("points_lat_lon_deg", {-90, -360}, {90, 360});
+    if (t.has("points_lat_lon_deg") || c.pointsLatLonDeg.empty())
+        c.pointsLatLonDeg = t.pairs("points_lat_lon_deg", {-90, -360}, {90, 360});
     if (c.pointsLatLonDeg.size() < 2)
         t.fail("points_lat_lon_deg", "needs at least 2 points");
     c.energyFluxErgPerCm2S = t.number("energy_flux_erg_cm2_s", 0, 1e4, c.energyFluxErgPerCm2S);
-    c.thicknessKm = t.number("thickness_km", 0.01, 1000, c.thicknessKm);
     c.energyKeV = t.number("energy_kev", 0.5, 50, c.energyKeV); // the deposition table's range
-    c.foldAmplitudeKm = t.number("fold_amplitude_km", 0, 1000, c.foldAmplitudeKm);
-    c.foldWavelengthKm = t.number("fold_wavelength_km", 0.1, 1e5, c.foldWavelengthKm);
+    c.detailPhase = t.number("detail_phase", 0, 1, c.detailPhase);
+    return c;
+}
+
+// A curtain is either one state (its own keys) or a list of [[aurora.curtain.key]] tables, each
+// with time_s; a key leaves out what does not change from the key before it.
+Curtain readCurtain(const TableReader& t)
+{
+    Curtain c;
+    c.thicknessKm = t.number("thickness_km", 0.01, 1000, c.thicknessKm);
     c.driftKmPerS = t.number("drift_km_per_s", -1e4, 1e4, c.driftKmPerS);
+    c.pulsationPeriodS = t.number("pulsation_period_s", 0, 1e6, c.pulsationPeriodS);
+    c.pulsationDepth = t.number("pulsation_depth", 0, 1, c.pulsationDepth);
+    if (!t.has("key")) {
+        c.keys.push_back(readCurtainKey(t, CurtainKey{}));
+    } else {
+        CurtainKey previous;
+        for (const TableReader& k : t.arrayOfTables("key")) {
+            CurtainKey key = readCurtainKey(k, previous);
+            key.timeS = k.number("time_s", -1e15, 1e15);
+            if (!c.keys.empty() && key.timeS <= c.keys.back().timeS)
+                k.fail("time_s", "keys must be in increasing time");
+            if (!c.keys.empty() && key.pointsLatLonDeg.size() != c.keys.front().pointsLatLonDeg.size())
+                k.fail("points_lat_lon_deg", "every key of a curtain needs the same number of points");
+            k.rejectUnknownKeys();
+            c.keys.push_back(key);
+            previous = key;
+        }
+        if (c.keys.empty())
+            t.fail("key", "needs at least one key");
+    }
     t.rejectUnknownKeys();
     return c;
 }
@@ -84,6 +112,8 @@ const char* componentName(Component c)
 {
     switch (c) {
     case Component::Planet: return "planet";
+    case Component::PlanetTexture: return "planet_texture";
+    case Component::FluidDetail: return "fluid_detail";
     case Component::Atmosphere: return "atmosphere";
     case Component::Aurora: return "aurora";
     case Component::Stars: return "stars";
@@ -110,7 +140,7 @@ Scene loadScene(const std::string& path)
                                   [&](Component c) { return name == componentName(c); });
         if (known == std::end(kAllComponents))
             meta.fail("components", "unknown component '" + name +
-                                        "' (known: planet, atmosphere, aurora, stars)");
+                                        "' (known: planet, planet_texture, atmosphere, aurora, fluid_detail, stars)");
         if (s.has(*known))
             meta.fail("components", "component '" + name + "' listed twice");
         s.components.push_back(*known);
@@ -122,9 +152,17 @@ Scene loadScene(const std::string& path)
 
     // A component's table is read only when the component is listed; a table for a component
     // the scene does not list is reported as unknown, so nothing is silently ignored.
+    if (s.has(Component::PlanetTexture) && !s.has(Component::Planet))
+        meta.fail("components", "'planet_texture' needs 'planet'");
+    if (s.has(Component::FluidDetail) && !s.has(Component::Aurora))
+        meta.fail("components", "'fluid_detail' needs 'aurora'");
     if (s.has(Component::Planet)) {
         const TableReader t = top.optionalTable("planet");
         s.planet.radiusKm = t.number("radius_km", 1.0, 1e6, s.planet.radiusKm);
+        if (s.has(Component::PlanetTexture)) {
+            s.planet.nightImage = t.string("night_image", s.planet.nightImage);
+            s.planet.nightLightsRadiance = t.number("night_lights_cd_m2", 0.0, 1e6, s.planet.nightLightsRadiance);
+        }
         t.rejectUnknownKeys();
     }
     if (s.has(Component::Atmosphere)) {
@@ -150,11 +188,29 @@ Scene loadScene(const std::string& path)
         if (s.has(Component::Atmosphere) && s.aurora.bottomKm < s.atmosphere.topKm)
             t.fail("bottom_km", "must not be below atmosphere.top_km (the layers are composited in order)");
         s.aurora.stepKm = t.number("step_km", 0.05, 100.0, s.aurora.stepKm);
+        s.aurora.polylineSpacingKm = t.number("polyline_spacing_km", 0.1, 100.0, s.aurora.polylineSpacingKm);
+        s.aurora.footprintMapSize = static_cast<int>(t.number("footprint_map_size", 16, 8192, s.aurora.footprintMapSize));
+        if (s.aurora.footprintMapSize & (s.aurora.footprintMapSize - 1))
+            t.fail("footprint_map_size", "must be a power of two");
         if (t.has("curtain"))
             for (const TableReader& c : t.arrayOfTables("curtain"))
                 s.aurora.curtains.push_back(readCurtain(c));
         if (s.aurora.curtains.size() > 16)
             t.fail("curtain", "at most 16 curtains are supported");
+        if (s.has(Component::FluidDetail)) {
+            const TableReader d = t.optionalTable("detail");
+            FluidDetail& f = s.aurora.detail;
+            f.cellsAlong = static_cast<int>(d.number("cells_along", 16, 4096, f.cellsAlong));
+            f.cellsAcross = static_cast<int>(d.number("cells_across", 4, 4096, f.cellsAcross));
+            for (int n : {f.cellsAlong, f.cellsAcross})
+                if (n & (n - 1))
+                    d.fail(n == f.cellsAlong ? "cells_along" : "cells_across", "must be a power of two");
+            f.stripLengthKm = d.number("strip_length_km", 1.0, 1e5, f.stripLengthKm);
+            f.stripWidthKm = d.number("strip_width_km", 1.0, 1e4, f.stripWidthKm);
+            f.frames = static_cast<int>(d.number("frames", 2, 256, f.frames));
+            f.seed = static_cast<unsigned>(d.number("seed", 0, 4294967295.0, f.seed));
+            d.rejectUnknownKeys();
+        }
         t.rejectUnknownKeys();
     }
     if (s.has(Component::Stars)) {

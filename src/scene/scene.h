@@ -13,11 +13,15 @@ namespace aurorawall::scene {
 
 // What a scene may contain. The renderer compiles shader code and computes tables only for
 // the components a scene lists.
-enum class Component { Planet, Atmosphere, Aurora, Stars };
+enum class Component { Planet, PlanetTexture, Atmosphere, Aurora, FluidDetail, Stars };
 const char* componentName(Component c);
 
 struct Planet {
     double radiusKm = 6371.0;
+    // City lights of the night side (planet_texture component): an equirectangular image,
+    // Debian's xplanet-images by default; if it is not installed the ground stays uniform.
+    std::string nightImage = "/usr/share/xplanet/images/night.jpg";
+    double nightLightsRadiance = 2.0e-3; // cd/m^2 of a white texel
     // Night ground lit by starlight, airglow and aurora (cd/m^2; snow under a moonless sky is ~1e-5).
     glm::dvec3 surfaceRadiance{2.0e-5, 2.5e-5, 3.5e-5};
 };
@@ -35,15 +39,34 @@ struct Atmosphere {
     glm::dvec3 skyGlow{1.5e-4, 2.0e-4, 2.5e-4};
 };
 
-// An auroral curtain: its footprint is a curve on the sphere through latitude/longitude points.
-struct Curtain {
+// One keyframe of a curtain: its footprint (a spline on the sphere through latitude/longitude
+// control points) and its electrons at one moment of the substorm.
+struct CurtainKey {
+    double timeS = 0.0;
     std::vector<glm::dvec2> pointsLatLonDeg;
-    double energyFluxErgPerCm2S = 1.0; // precipitating electron energy flux at the curtain's centre
-    double thicknessKm = 1.0;          // across the curtain
+    double energyFluxErgPerCm2S = 1.0; // peak precipitating energy flux on the centre line
     double energyKeV = 5.0;            // (characteristic) electron energy: sets the curtain's height
-    double foldAmplitudeKm = 0.0; // first light: sinusoidal folds along the curtain
-    double foldWavelengthKm = 50.0;
-    double driftKmPerS = 0.0;     // folds travel along the curtain
+    double detailPhase = 0.0;          // fluid detail: 0 the smooth start ... 1 fully turbulent
+};
+
+// An auroral curtain, keyframed through the phases of a substorm; between keys everything is
+// interpolated smoothly (src/render/curtain_frames.h). Every key has the same number of points.
+struct Curtain {
+    std::vector<CurtainKey> keys;  // ordered by time
+    double thicknessKm = 1.0;      // across the curtain: twice the standard deviation of its flux
+    double driftKmPerS = 0.0;      // the detail pattern slides along the curtain
+    double pulsationPeriodS = 0.0; // pulsating aurora (recovery): brightness modulated; 0 = steady
+    double pulsationDepth = 0.0;   // 0..1: fraction of the brightness that pulsates
+};
+
+// Small-scale curtain detail from the Kelvin-Helmholtz fluid simulation (src/fluid).
+struct FluidDetail {
+    int cellsAlong = 512;
+    int cellsAcross = 128;
+    double stripLengthKm = 128.0;
+    double stripWidthKm = 32.0;
+    int frames = 16;
+    unsigned seed = 1;
 };
 
 // Energy spectrum of the precipitating electrons (src/aurora/lazarev.h).
@@ -54,7 +77,10 @@ struct Aurora {
     double bottomKm = 85.0;
     double topKm = 300.0;
     double stepKm = 2.0; // march step inside curtains
+    double polylineSpacingKm = 2.0; // curtain splines are sampled this finely for the shader
+    int footprintMapSize = 512;     // texels per side of the jump-flooded footprint map
     std::vector<Curtain> curtains;
+    FluidDetail detail;  // used when the scene lists fluid_detail
 };
 
 struct Stars {

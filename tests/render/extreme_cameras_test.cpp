@@ -51,7 +51,7 @@ protected:
         frame.cameraRight = glm::cross(-frame.cameraBack, frame.cameraUp);
         gl::FloatTarget target(64, 36);
         gl::FullScreenTriangle triangle;
-        renderer_->beginFrame(frame);
+        renderer_->setFrame(frame);
         renderer_->renderTile(wall::tileRays(wall, 0), target, triangle);
         return io::imageFromGlReadback(64, 36, target.readback());
     }

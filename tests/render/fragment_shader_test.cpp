@@ -1,11 +1,9 @@
 #include "render/fragment_shader.h"
-#include "render/scene_uniforms.h"
 #include "scene/scene.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <cmath>
 
 using namespace aurorawall;
 
@@ -51,26 +49,5 @@ TEST(FragmentShader, MissingShaderFolderNamesTheFile)
         FAIL() << "no error";
     } catch (const std::exception& e) {
         EXPECT_EQ(std::string(e.what()).rfind("/nonexistent/shaders/render/ray_sphere.glsl: ", 0), 0u) << e.what();
-    }
-}
-
-TEST(SceneUniforms, FoldPhaseStaysExactAtHugeTimes)
-{
-    // At t = 1e9 s the phase is reduced in double on the CPU: it is in [0, 2 pi) and equals
-    // the exact value computed with long double.
-    scene::Scene s = scene::loadScene(std::string(AURORAWALL_SOURCE_DIR) + "/config/scenes/substorm.toml");
-    for (double t : {0.0, 12.5, 1e9, 1e9 + 0.5}) {
-        const render::CurtainUniforms u = render::curtainUniforms(s, t);
-        ASSERT_EQ(u.folds.size(), s.aurora.curtains.size());
-        for (size_t c = 0; c < u.folds.size(); ++c) {
-            const scene::Curtain& curtain = s.aurora.curtains[c];
-            const long double cycles = (long double)curtain.driftKmPerS * t / curtain.foldWavelengthKm;
-            long double exact = -2.0L * M_PIl * (cycles - std::floor(cycles));
-            exact = exact < 0 ? exact + 2.0L * M_PIl : exact;
-            EXPECT_GE(u.folds[c].y, 0.0f);
-            EXPECT_LT(u.folds[c].y, 6.2832f);
-            const double diff = std::remainder(double(u.folds[c].y - exact), 2.0 * M_PI);
-            EXPECT_NEAR(diff, 0.0, 1e-5) << "t=" << t;
-        }
     }
 }
