@@ -21,7 +21,7 @@ struct Planet {
     // City lights of the night side (planet_texture component): an equirectangular image,
     // Debian's xplanet-images by default; if it is not installed the ground stays uniform.
     std::string nightImage = "/usr/share/xplanet/images/night.jpg";
-    double nightLightsRadiance = 2.0e-3; // cd/m^2 of a white texel
+    double nightLightsRadiance = 5.0e-4; // cd/m^2 of a white texel
     // Night ground lit by starlight, airglow and aurora (cd/m^2; snow under a moonless sky is ~1e-5).
     glm::dvec3 surfaceRadiance{2.0e-5, 2.5e-5, 3.5e-5};
 };
