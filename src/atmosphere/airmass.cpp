@@ -31,20 +31,21 @@ const std::vector<AirmassMethod>& airmassMethods()
         {"exact", "double-precision adaptive Gauss-Kronrod quadrature (the reference)", nullptr,
          [](glm::dvec3 o, glm::dvec3 d, double t0, double t1, double H, double R) {
              return exactAirmass(o, d, t0, t1, H, R);
-         }},
+         },
+         ""},
         {"lawlor-winitzki", "Lawlor's parabola + Winitzki erf and 0.5*guts erfc, as published (baseline)",
-         f32::airmassLawlorWinitzki, f64::airmassLawlorWinitzki},
+         f32::airmassLawlorWinitzki, f64::airmassLawlorWinitzki, "airmassLawlorWinitzki"},
         {"lawlor-erfcx", "Lawlor's parabola with an accurate scaled erfc and a safe form for short segments",
-         f32::airmassLawlorErfcx, f64::airmassLawlorErfcx},
+         f32::airmassLawlorErfcx, f64::airmassLawlorErfcx, "airmassLawlorErfcx"},
         {"tectonics-quadratic", "Tectonics.js quadratic-height approximation, as published",
-         f32::airmassTectonics, f64::airmassTectonics},
+         f32::airmassTectonics, f64::airmassTectonics, "airmassTectonics"},
         {"chapman-schueler", "differences of Schueler's Chapman approximation (GPU Pro 3)",
-         f32::airmassChapmanSchueler, f64::airmassChapmanSchueler},
+         f32::airmassChapmanSchueler, f64::airmassChapmanSchueler, "airmassChapmanSchueler"},
         {"chapman-hdrp", "differences of the Unity HDRP rational Chapman fit",
-         f32::airmassChapmanHdrp, f64::airmassChapmanHdrp},
+         f32::airmassChapmanHdrp, f64::airmassChapmanHdrp, "airmassChapmanHdrp"},
         {"chapman-asymptotic", "differences of the first-order asymptotic Chapman function with erfcx (default)",
-         f32::airmassChapmanAsymptotic, f64::airmassChapmanAsymptotic},
-        {"march16", "16-step midpoint march (cost yardstick)", f32::airmassMarch16, f64::airmassMarch16},
+         f32::airmassChapmanAsymptotic, f64::airmassChapmanAsymptotic, "airmassChapmanAsymptotic"},
+        {"march16", "16-step midpoint march (cost yardstick)", f32::airmassMarch16, f64::airmassMarch16, "airmassMarch16"},
     };
     return methods;
 }

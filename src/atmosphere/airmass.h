@@ -30,7 +30,13 @@ struct AirmassMethod {
     std::string description;
     float (*float32)(glm::vec3 origin, glm::vec3 direction, float t0, float t1, float H, float R);
     double (*float64)(glm::dvec3 origin, glm::dvec3 direction, double t0, double t1, double H, double R);
+    std::string glslFunction; // the shader function (same signature, in shaders/atmosphere/airmass_*.glsl); empty for `exact`
 };
+
+// The shader modules that define every method's glslFunction, in the order they must be compiled.
+inline const char* const kAirmassShaderModules[] = {"atmosphere/airmass_common.glsl", "atmosphere/airmass_lawlor.glsl",
+                                                    "atmosphere/airmass_tectonics.glsl", "atmosphere/airmass_chapman.glsl",
+                                                    "atmosphere/airmass_march.glsl"};
 
 // The method the renderer uses: the asymptotic Chapman expansion with erfcx (shaders/atmosphere/
 // airmass_chapman.glsl, airmassChapmanAsymptotic).

@@ -106,6 +106,27 @@ double airmassNanosecondsPerEvaluation(const AirmassMethod& method, AirmassPreci
     return elapsed.count() / (double(repetitions) * double(rays.size()));
 }
 
+RelativeErrors relativeErrors(const std::vector<double>& values, const std::vector<double>& exact, double floor)
+{
+    RelativeErrors errors;
+    double sumSquares = 0.0;
+    for (size_t i = 0; i < values.size(); ++i) {
+        if (!std::isfinite(values[i])) {
+            ++errors.nonFiniteCount;
+            continue;
+        }
+        double error = std::abs(values[i] - exact[i]) / std::max(std::abs(exact[i]), floor);
+        sumSquares += error * error;
+        if (error >= errors.maxRelativeError) {
+            errors.maxRelativeError = error;
+            errors.worstIndex = i;
+        }
+    }
+    size_t finiteCount = values.size() - errors.nonFiniteCount;
+    errors.rmsRelativeError = finiteCount == 0 ? 0.0 : std::sqrt(sumSquares / double(finiteCount));
+    return errors;
+}
+
 std::vector<MethodAccuracy> measureAirmassAccuracy(const std::vector<AirmassRay>& rays, bool measureTime)
 {
     std::vector<double> exact;
@@ -116,28 +137,20 @@ std::vector<MethodAccuracy> measureAirmassAccuracy(const std::vector<AirmassRay>
     for (const AirmassMethod& method : airmassMethods()) {
         for (AirmassPrecision precision : {AirmassPrecision::Float32, AirmassPrecision::Float64}) {
             if (!method.float32 && precision == AirmassPrecision::Float32) continue;
+            std::vector<double> values;
+            values.reserve(rays.size());
+            for (const AirmassRay& ray : rays) values.push_back(evaluateAirmass(method, ray, precision));
+            RelativeErrors errors = relativeErrors(values, exact, kAirmassRelativeErrorFloor);
             MethodAccuracy row;
             row.method = method.name;
             row.precision = precision;
             row.rayCount = rays.size();
-            double sumSquares = 0.0;
-            for (size_t i = 0; i < rays.size(); ++i) {
-                double value = evaluateAirmass(method, rays[i], precision);
-                if (!std::isfinite(value)) {
-                    ++row.nonFiniteCount;
-                    continue;
-                }
-                double error = std::abs(value - exact[i]) / std::max(std::abs(exact[i]), kAirmassRelativeErrorFloor);
-                sumSquares += error * error;
-                if (error >= row.maxRelativeError) {
-                    row.maxRelativeError = error;
-                    row.worstRay = rays[i];
-                    row.worstValue = value;
-                    row.worstExact = exact[i];
-                }
-            }
-            size_t finiteCount = rays.size() - row.nonFiniteCount;
-            row.rmsRelativeError = finiteCount == 0 ? 0.0 : std::sqrt(sumSquares / double(finiteCount));
+            row.nonFiniteCount = errors.nonFiniteCount;
+            row.maxRelativeError = errors.maxRelativeError;
+            row.rmsRelativeError = errors.rmsRelativeError;
+            row.worstRay = rays[errors.worstIndex];
+            row.worstValue = values[errors.worstIndex];
+            row.worstExact = exact[errors.worstIndex];
             if (measureTime) row.nanosecondsPerEvaluation = airmassNanosecondsPerEvaluation(method, precision, rays);
             rows.push_back(row);
         }

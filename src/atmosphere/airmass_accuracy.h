@@ -12,6 +12,16 @@ namespace aurorawall {
 // denormal or zero) errors count as absolute, so float underflow of a negligible airmass is no error.
 inline constexpr double kAirmassRelativeErrorFloor = 1e-30;
 
+// Max and RMS of |value − exact| / max(|exact|, floor) over a set of results; non-finite values are
+// counted and left out.
+struct RelativeErrors {
+    size_t nonFiniteCount = 0;
+    double maxRelativeError = 0.0;
+    double rmsRelativeError = 0.0;
+    size_t worstIndex = 0;
+};
+RelativeErrors relativeErrors(const std::vector<double>& values, const std::vector<double>& exact, double floor);
+
 struct MethodAccuracy {
     std::string method;
     AirmassPrecision precision = AirmassPrecision::Float32;
