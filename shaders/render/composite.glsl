@@ -31,6 +31,9 @@ vec3 shadeRay(vec3 o, vec3 d)
         radiance += uSkyGlow * (vec3(1.0) - transmittance);
         atmosphereEnd = air.y;
     }
+#ifdef HAS_SKY
+    radiance += skyRadiance(o, d, tEnd); // in-scattered light, already attenuated along the view ray
+#endif
 #endif
 
 #ifdef HAS_AURORA

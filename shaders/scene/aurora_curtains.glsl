@@ -26,24 +26,42 @@ struct CurtainHit {
     vec3 radiance;  // linear sRGB radiance added per km of path at this point
 };
 
-// Curtain coordinates of direction n relative to curtain c near polyline point i: the segment
-// around i on which n projects closest. Returns (s km, u km, |distance| km).
-vec3 curtainCoordinates(int c, int i, vec3 n)
+// Where n projects along segment j of curtain c: (km along from the segment's start, segment
+// length km, signed lateral distance km, distance beyond the segment's ends km).
+vec4 segmentProjection(int c, int j, vec3 n)
 {
     float R = uPlanetRadiusKm;
-    int last = int(uCurtainState[c].z) - 1;
+    vec4 a = texelFetch(uCurtainPolylines, ivec2(j, c), 0);
+    vec4 b = texelFetch(uCurtainPolylines, ivec2(j + 1, c), 0);
+    vec3 normal = normalize(cross(a.xyz, b.xyz));
+    float along = R * atan(dot(cross(a.xyz, n), normal), dot(a.xyz, n));
+    float length = b.w - a.w;
+    return vec4(along, length, R * asin(clamp(dot(n, normal), -1.0, 1.0)), max(max(-along, along - length), 0.0));
+}
+
+// Curtain coordinates of direction n relative to curtain c, starting from polyline point i (the
+// footprint map's nearest point, which can be a few texels of arclength away from the true
+// nearest one): jump along the polyline by the projected along-track offset until n projects
+// inside the segment, then take the closest of that segment and its neighbours.
+// Returns (s km along the curtain, u km across, distance km).
+vec3 curtainCoordinates(int c, int i, vec3 n)
+{
+    int last = int(uCurtainState[c].z) - 2; // index of the last segment
+    int j = clamp(i, 0, last);
+    for (int jump = 0; jump < 6; ++jump) {
+        vec4 p = segmentProjection(c, j, n);
+        int step = int(floor(p.x / max(p.y, 1e-6)));
+        int next = clamp(j + step, 0, last);
+        if (next == j)
+            break;
+        j = next;
+    }
     vec3 best = vec3(0.0, 0.0, 1e30);
-    for (int j = max(i - 2, 0); j < min(i + 2, last); ++j) {
-        vec4 a = texelFetch(uCurtainPolylines, ivec2(j, c), 0);
-        vec4 b = texelFetch(uCurtainPolylines, ivec2(j + 1, c), 0);
-        vec3 normal = normalize(cross(a.xyz, b.xyz));
-        float along = atan(dot(cross(a.xyz, n), normal), dot(a.xyz, n)); // angle from a along the arc
-        float arc = (b.w - a.w) / R;
-        float u = R * asin(clamp(dot(n, normal), -1.0, 1.0));
-        float outside = R * max(max(-along, along - arc), 0.0);
-        float distance = length(vec2(u, outside));
+    for (int k = max(j - 1, 0); k <= min(j + 1, last); ++k) {
+        vec4 p = segmentProjection(c, k, n);
+        float distance = length(vec2(p.z, p.w));
         if (distance < best.z)
-            best = vec3(a.w + R * clamp(along, 0.0, arc), u, distance);
+            best = vec3(texelFetch(uCurtainPolylines, ivec2(k, c), 0).w + clamp(p.x, 0.0, p.y), p.z, distance);
     }
     return best;
 }

@@ -1,5 +1,6 @@
 // aurorawall: one binary, several subcommands.
 #include "app/render_command.h"
+#include "atmosphere/accuracy_cli.h"
 #include "atmosphere/airmass_cli.h"
 #include "aurora/tables_cli.h"
 
@@ -19,7 +20,8 @@ const char* kUsage =
     "  render    render a scene on a display wall, one MPI rank per group of screens\n"
     "            (mpirun -n RANKS aurorawall render --wall FILE --scene FILE ...)\n"
     "  airmass   airmass integrals along rays read from standard input (CSV), by a chosen method\n"
-    "  tables    print the precomputed physics tables (e.g. tables deposition --energy-kev 5)\n";
+    "  tables    print the precomputed physics tables (e.g. tables deposition --energy-kev 5)\n"
+    "  accuracy  error against cost of the approximations (accuracy --airmass | --sky)\n";
 
 } // namespace
 
@@ -35,6 +37,8 @@ int main(int argc, char** argv)
         return aurorawall::app::runRenderCommand(argc - 1, argv + 1);
     if (command == "airmass")
         return aurorawall::runAirmassCommand(argc - 1, argv + 1, std::cin, std::cout, std::cerr);
+    if (command == "accuracy")
+        return aurorawall::runAccuracyCommand(argc - 1, argv + 1, std::cout, std::cerr);
     if (command == "tables")
         return aurorawall::aurora::runTablesCommand(argc - 1, argv + 1, std::cout, std::cerr);
     std::fprintf(stderr, "aurorawall: unknown command '%s'\n%s", command.c_str(), kUsage);

@@ -229,9 +229,10 @@ int runRenderCommand(int argc, char** argv)
             break;
 
         const auto renderStart = Clock::now();
+        context->makeCurrent(0);
+        renderer->setFrame(frame);
         for (Tile& tile : tiles) {
             context->makeCurrent(tile.window);
-            renderer->beginFrame(frame);
             renderer->renderTile(tile.rays, *tile.target, *tile.triangle);
         }
         for (Tile& tile : tiles) {

@@ -19,6 +19,7 @@ std::vector<std::string> modulesOf(scene::Component c)
     case scene::Component::Aurora:
         return {"aurora/deposition_coords.glsl", "aurora/deposition.glsl", "aurora/footprint_map.glsl",
                 "aurora/curtain_profile.glsl", "scene/aurora_curtains.glsl"};
+    case scene::Component::Sky: return {"atmosphere/sky.glsl", "scene/sky.glsl"};
     case scene::Component::FluidDetail: return {};
     case scene::Component::Stars: return {"scene/stars.glsl"};
     }
@@ -35,7 +36,7 @@ std::string defineOf(scene::Component c)
 
 // Components in dependency order: the planet's uniforms are used by the layers above it.
 const scene::Component kOrder[] = {scene::Component::Planet, scene::Component::PlanetTexture,
-                                   scene::Component::Atmosphere, scene::Component::FluidDetail,
+                                   scene::Component::Atmosphere, scene::Component::Sky, scene::Component::FluidDetail,
                                    scene::Component::Aurora, scene::Component::Stars};
 
 } // namespace

@@ -17,6 +17,19 @@ void applySceneUniforms(gl::Program& program, const scene::Scene& scene, const c
         program.set("uExtinctionPerKm", glm::vec3(scene.atmosphere.extinctionPerKm));
         program.set("uSkyGlow", glm::vec3(scene.atmosphere.skyGlow));
     }
+    if (scene.has(scene::Component::Sky)) {
+        const scene::Sky& sky = scene.sky;
+        program.set("uSkyTopKm", static_cast<float>(sky.topKm));
+        program.set("uSkyViewSteps", sky.viewSteps);
+        program.set("uSkyLightMethod", sky.nestedMarch ? 1 : 0); // SKY_LIGHT_NESTED_MARCH : SKY_LIGHT_CLOSED_FORM
+        program.set("uSkyLightSteps", sky.lightSteps);
+        program.set("uSkyLightCount", static_cast<int>(sky.lights.size()));
+        for (size_t i = 0; i < sky.lights.size(); ++i) {
+            const std::string index = "[" + std::to_string(i) + "]";
+            program.set("uSkyLightDirection" + index, glm::vec3(sky.lights[i].direction));
+            program.set("uSkyLightIlluminanceLux" + index, glm::vec3(sky.lights[i].illuminanceLux));
+        }
+    }
     if (scene.has(scene::Component::Aurora)) {
         program.set("uAuroraBottomKm", static_cast<float>(scene.aurora.bottomKm));
         program.set("uAuroraTopKm", static_cast<float>(scene.aurora.topKm));

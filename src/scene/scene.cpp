@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 
 namespace aurorawall::scene {
 
@@ -13,7 +14,25 @@ namespace {
 constexpr double kDeg = 3.14159265358979323846 / 180.0;
 
 const Component kAllComponents[] = {Component::Planet, Component::PlanetTexture, Component::Atmosphere,
-                                    Component::Aurora,  Component::FluidDetail,   Component::Stars};
+                                    Component::Sky,    Component::Aurora,        Component::FluidDetail,
+                                    Component::Stars};
+
+// The local horizon frame at a site: up (the zenith), north and east, all unit vectors.
+struct LocalFrame {
+    glm::dvec3 up, north, east;
+};
+
+LocalFrame localFrame(double latitudeDeg, double longitudeDeg)
+{
+    LocalFrame f;
+    f.up = planetPoint(latitudeDeg, longitudeDeg, 1.0);
+    const glm::dvec3 north = glm::dvec3(0, 0, 1) - f.up * f.up.z;
+    // At a pole "north" is undefined; take the direction away from the given meridian there.
+    f.north = glm::length(north) > 1e-12 ? glm::normalize(north)
+                                         : glm::normalize(planetPoint(0, longitudeDeg, 1) * -f.up.z);
+    f.east = glm::cross(f.north, f.up);
+    return f;
+}
 
 Camera readCamera(const TableReader& t, double planetRadiusKm)
 {
@@ -31,13 +50,9 @@ Camera readCamera(const TableReader& t, double planetRadiusKm)
         const double heading = t.number("heading_deg", -360, 360) * kDeg;
         const double elevation = t.number("elevation_deg", -90, 90) * kDeg;
         c.positionKm = planetPoint(lat, lon, planetRadiusKm + alt);
-        const glm::dvec3 zenith = glm::normalize(c.positionKm);
-        const glm::dvec3 north0 = glm::dvec3(0, 0, 1) - zenith * zenith.z;
-        // At a pole "north" is undefined; use the direction of longitude 0 there.
-        const glm::dvec3 north = glm::length(north0) > 1e-12 ? glm::normalize(north0)
-                                                             : glm::normalize(planetPoint(0, lon, 1) * -zenith.z);
-        const glm::dvec3 east = glm::cross(north, zenith);
-        const glm::dvec3 horizontal = std::cos(heading) * north + std::sin(heading) * east;
+        const LocalFrame local = localFrame(lat, lon);
+        const glm::dvec3 zenith = local.up;
+        const glm::dvec3 horizontal = std::cos(heading) * local.north + std::sin(heading) * local.east;
         c.forward = std::cos(elevation) * horizontal + std::sin(elevation) * zenith;
         c.up = glm::cross(glm::cross(c.forward, zenith), c.forward);
         if (glm::length(c.up) < 1e-9) // looking straight up or down: up is the heading direction
@@ -53,6 +68,23 @@ Camera readCamera(const TableReader& t, double planetRadiusKm)
     c.up = glm::normalize(c.up);
     t.rejectUnknownKeys();
     return c;
+}
+
+// A light is given as seen from a site: where it stands in that sky (elevation above the
+// horizon, azimuth clockwise from north), and its illuminance above the atmosphere.
+SkyLight readSkyLight(const TableReader& t)
+{
+    SkyLight l;
+    const double lat = t.number("site_latitude_deg", -90, 90), lon = t.number("site_longitude_deg", -360, 360);
+    const double elevation = t.number("elevation_deg", -90, 90) * kDeg;
+    const double azimuth = t.number("azimuth_deg", -360, 360) * kDeg;
+    const LocalFrame local = localFrame(lat, lon);
+    l.direction = std::cos(elevation) * (std::cos(azimuth) * local.north + std::sin(azimuth) * local.east) +
+                  std::sin(elevation) * local.up;
+    const double lux = t.number("illuminance_lux", 0.0, 1e7, 1.28e5);
+    l.illuminanceLux = glm::dvec3(lux);
+    t.rejectUnknownKeys();
+    return l;
 }
 
 // The fields a key may set; `c` holds the defaults (the curtain's own keys, or the previous key).
@@ -114,6 +146,7 @@ const char* componentName(Component c)
     case Component::Planet: return "planet";
     case Component::PlanetTexture: return "planet_texture";
     case Component::FluidDetail: return "fluid_detail";
+    case Component::Sky: return "sky";
     case Component::Atmosphere: return "atmosphere";
     case Component::Aurora: return "aurora";
     case Component::Stars: return "stars";
@@ -126,26 +159,38 @@ bool Scene::has(Component c) const
     return std::find(components.begin(), components.end(), c) != components.end();
 }
 
-Scene loadScene(const std::string& path)
+// depth counts the base scenes above this one (a guard against cycles).
+static Scene loadSceneAtDepth(const std::string& path, int depth)
 {
     const TomlValue root = parseTomlFile(path);
     const TableReader top(root, path, "");
-    Scene s;
-    s.sourceFile = path;
-
     const TableReader meta = top.table("scene");
-    s.name = meta.string("name");
-    for (const std::string& name : meta.strings("components")) {
+    // A scene may start from another one ([scene] base = "file", relative to this file) and
+    // change only what it gives: a camera preset over the substorm, say.
+    Scene s;
+    const bool derived = meta.has("base");
+    if (derived) {
+        if (depth >= 8)
+            meta.fail("base", "scenes derive from each other more than 8 deep (a cycle?)");
+        const std::string base = (std::filesystem::path(path).parent_path() / meta.string("base")).string();
+        s = loadSceneAtDepth(base, depth + 1);
+    }
+    s.sourceFile = path;
+    s.name = derived ? meta.string("name", s.name) : meta.string("name");
+    if (!derived || meta.has("components"))
+        s.components.clear();
+    for (const std::string& name : derived && !meta.has("components") ? std::vector<std::string>{}
+                                                                        : meta.strings("components")) {
         auto known = std::find_if(std::begin(kAllComponents), std::end(kAllComponents),
                                   [&](Component c) { return name == componentName(c); });
         if (known == std::end(kAllComponents))
             meta.fail("components", "unknown component '" + name +
-                                        "' (known: planet, planet_texture, atmosphere, aurora, fluid_detail, stars)");
+                                        "' (known: planet, planet_texture, atmosphere, sky, aurora, fluid_detail, stars)");
         if (s.has(*known))
             meta.fail("components", "component '" + name + "' listed twice");
         s.components.push_back(*known);
     }
-    s.startTimeS = meta.number("start_time_s", -1e15, 1e15, 0.0);
+    s.startTimeS = meta.number("start_time_s", -1e15, 1e15, s.startTimeS);
     s.timeStepS = meta.number("time_step_s", 0.0, 1e9, s.timeStepS);
     s.exposure = meta.number("exposure", 1e-12, 1e12, s.exposure);
     meta.rejectUnknownKeys();
@@ -173,6 +218,26 @@ Scene loadScene(const std::string& path)
         s.atmosphere.scaleHeightKm = t.number("scale_height_km", 0.1, 1000.0, s.atmosphere.scaleHeightKm);
         t.rejectUnknownKeys();
     }
+    if (s.has(Component::Sky)) {
+        if (!s.has(Component::Atmosphere))
+            meta.fail("components", "'sky' needs 'atmosphere'");
+        const TableReader t = top.optionalTable("sky");
+        s.sky.topKm = t.number("top_km", 1.0, 1000.0, s.sky.topKm);
+        s.sky.viewSteps = static_cast<int>(t.number("view_steps", 1, 1024, s.sky.viewSteps));
+        const std::string method = t.string("light_method", s.sky.nestedMarch ? "nested-march" : "closed-form");
+        if (method != "closed-form" && method != "nested-march")
+            t.fail("light_method", "must be \"closed-form\" or \"nested-march\" (got \"" + method + "\")");
+        s.sky.nestedMarch = method == "nested-march";
+        s.sky.lightSteps = static_cast<int>(t.number("light_steps", 1, 1024, s.sky.lightSteps));
+        if (t.has("light")) {
+            s.sky.lights.clear();
+            for (const TableReader& l : t.arrayOfTables("light"))
+                s.sky.lights.push_back(readSkyLight(l));
+        }
+        if (s.sky.lights.size() > 8)
+            t.fail("light", "at most 8 lights");
+        t.rejectUnknownKeys();
+    }
     if (s.has(Component::Aurora)) {
         if (!s.has(Component::Planet))
             meta.fail("components", "'aurora' needs 'planet'");
@@ -192,9 +257,11 @@ Scene loadScene(const std::string& path)
         s.aurora.footprintMapSize = static_cast<int>(t.number("footprint_map_size", 16, 8192, s.aurora.footprintMapSize));
         if (s.aurora.footprintMapSize & (s.aurora.footprintMapSize - 1))
             t.fail("footprint_map_size", "must be a power of two");
-        if (t.has("curtain"))
+        if (t.has("curtain")) {
+            s.aurora.curtains.clear(); // a derived scene's curtains replace its base's
             for (const TableReader& c : t.arrayOfTables("curtain"))
                 s.aurora.curtains.push_back(readCurtain(c));
+        }
         if (s.aurora.curtains.size() > 16)
             t.fail("curtain", "at most 16 curtains are supported");
         if (s.has(Component::FluidDetail)) {
@@ -219,9 +286,12 @@ Scene loadScene(const std::string& path)
         s.stars.brightness = t.number("brightness", 0.0, 1e6, s.stars.brightness);
         t.rejectUnknownKeys();
     }
-    s.camera = readCamera(top.table("camera"), s.planet.radiusKm);
+    if (!derived || top.has("camera"))
+        s.camera = readCamera(top.table("camera"), s.planet.radiusKm);
     top.rejectUnknownKeys();
     return s;
 }
+
+Scene loadScene(const std::string& path) { return loadSceneAtDepth(path, 0); }
 
 } // namespace aurorawall::scene

@@ -13,7 +13,7 @@ namespace aurorawall::scene {
 
 // What a scene may contain. The renderer compiles shader code and computes tables only for
 // the components a scene lists.
-enum class Component { Planet, PlanetTexture, Atmosphere, Aurora, FluidDetail, Stars };
+enum class Component { Planet, PlanetTexture, Atmosphere, Sky, Aurora, FluidDetail, Stars };
 const char* componentName(Component c);
 
 struct Planet {
@@ -47,6 +47,23 @@ struct CurtainKey {
     double energyFluxErgPerCm2S = 1.0; // peak precipitating energy flux on the centre line
     double energyKeV = 5.0;            // (characteristic) electron energy: sets the curtain's height
     double detailPhase = 0.0;          // fluid detail: 0 the smooth start ... 1 fully turbulent
+};
+
+// A light source of the single-scattering sky: a direction in the planet frame and its
+// illuminance above the atmosphere, per linear-sRGB primary (lux).
+struct SkyLight {
+    glm::dvec3 direction{0.0, 0.0, 1.0};
+    glm::dvec3 illuminanceLux{1.28e5};
+};
+
+// Single-scattering sky (Rayleigh) lit by up to 8 sources, each source's light-side optical depth
+// from the closed-form airmass (seed 002: several lights for the price of one).
+struct Sky {
+    double topKm = 100.0; // air above this height is not lit in the model
+    int viewSteps = 16;   // march steps along the view ray
+    bool nestedMarch = false; // light-side depth by an inner march of lightSteps instead (the reference)
+    int lightSteps = 8;
+    std::vector<SkyLight> lights;
 };
 
 // An auroral curtain, keyframed through the phases of a substorm; between keys everything is
@@ -103,6 +120,7 @@ struct Scene {
     std::vector<Component> components;
     Planet planet;
     Atmosphere atmosphere;
+    Sky sky;
     Aurora aurora;
     Stars stars;
     Camera camera;
