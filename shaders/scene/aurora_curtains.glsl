@@ -9,6 +9,7 @@
 uniform float uAuroraBottomKm;
 uniform float uAuroraTopKm;
 uniform float uAuroraStepKm;
+uniform int uSkipEmptySpace;         // 0: the naive fine march everywhere (the reference)
 uniform int uCurtainCount;
 uniform sampler2D uCurtainPolylines; // RGBA32F, row c: xyz unit vector, w arclength km
 uniform vec4 uCurtainState[MAX_CURTAINS];  // peak energy flux erg cm^-2 s^-1, energy keV, point count, -
@@ -103,7 +104,7 @@ vec3 auroraSegment(vec3 o, vec3 d, vec2 seg)
         vec3 p = o + t * d;
         float h = length(p) - uPlanetRadiusKm;
         CurtainHit hit = sampleCurtains(p, h);
-        float dt = min(max(uAuroraStepKm, hit.skipKm), seg.y - t);
+        float dt = min(uSkipEmptySpace != 0 ? max(uAuroraStepKm, hit.skipKm) : uAuroraStepKm, seg.y - t);
         sum += hit.radiance * dt;
         t += dt;
     }

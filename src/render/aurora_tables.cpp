@@ -14,6 +14,8 @@ namespace {
 aurora::DepositionTableSpec specFor(const scene::Aurora& a)
 {
     aurora::DepositionTableSpec spec;
+    spec.altitudeStepKm = a.tableAltitudeStepKm;
+    spec.energyCount = a.tableEnergyCount;
     spec.spectrum = a.spectrum == scene::ElectronSpectrum::Maxwellian ? aurora::Spectrum::Maxwellian
                                                                       : aurora::Spectrum::Monoenergetic;
     return spec;

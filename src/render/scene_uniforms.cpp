@@ -34,6 +34,7 @@ void applySceneUniforms(gl::Program& program, const scene::Scene& scene, const c
         program.set("uAuroraBottomKm", static_cast<float>(scene.aurora.bottomKm));
         program.set("uAuroraTopKm", static_cast<float>(scene.aurora.topKm));
         program.set("uAuroraStepKm", static_cast<float>(scene.aurora.stepKm));
+        program.set("uSkipEmptySpace", scene.aurora.skipEmptySpace ? 1 : 0);
     }
     if (scene.has(scene::Component::Stars)) {
         program.set("uStarDensity", static_cast<float>(scene.stars.density));

@@ -257,6 +257,12 @@ static Scene loadSceneAtDepth(const std::string& path, int depth)
         s.aurora.footprintMapSize = static_cast<int>(t.number("footprint_map_size", 16, 8192, s.aurora.footprintMapSize));
         if (s.aurora.footprintMapSize & (s.aurora.footprintMapSize - 1))
             t.fail("footprint_map_size", "must be a power of two");
+        const std::string skipping = t.string("skip_empty_space", s.aurora.skipEmptySpace ? "yes" : "no");
+        if (skipping != "yes" && skipping != "no")
+            t.fail("skip_empty_space", "must be \"yes\" or \"no\"");
+        s.aurora.skipEmptySpace = skipping == "yes";
+        s.aurora.tableAltitudeStepKm = t.number("table_altitude_step_km", 0.05, 10.0, s.aurora.tableAltitudeStepKm);
+        s.aurora.tableEnergyCount = static_cast<int>(t.number("table_energy_count", 2, 4096, s.aurora.tableEnergyCount));
         if (t.has("curtain")) {
             s.aurora.curtains.clear(); // a derived scene's curtains replace its base's
             for (const TableReader& c : t.arrayOfTables("curtain"))

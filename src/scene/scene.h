@@ -96,6 +96,9 @@ struct Aurora {
     double stepKm = 2.0; // march step inside curtains
     double polylineSpacingKm = 2.0; // curtain splines are sampled this finely for the shader
     int footprintMapSize = 512;     // texels per side of the jump-flooded footprint map
+    bool skipEmptySpace = true;     // long steps where the footprint map proves no curtain is near
+    double tableAltitudeStepKm = 0.5; // deposition table resolution (src/aurora/deposition_table.h)
+    int tableEnergyCount = 128;
     std::vector<Curtain> curtains;
     FluidDetail detail;  // used when the scene lists fluid_detail
 };
