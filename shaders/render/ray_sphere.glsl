@@ -27,8 +27,8 @@ vec2 raySphere(vec3 o, vec3 d, real r, real heightAbove)
 }
 
 // The part of the ray with t in [0, tMax] inside the spherical shell rInner < |x| < rOuter,
-// as up to two intervals (the ray may cross the inner sphere's shadow). Unused intervals are
-// empty (x > y). Heights are |o| - rInner and |o| - rOuter from the caller, in double.
+// as up to two intervals in order along the ray (the ray may cross the inner sphere's shadow).
+// With a single part it is `first`; unused intervals are empty (x > y). Heights are |o| - rInner and |o| - rOuter from the caller, in double.
 struct ShellSegments {
     vec2 first;
     vec2 second;
@@ -52,5 +52,9 @@ ShellSegments rayShell(vec3 o, vec3 d, real rInner, real heightAboveInner, real 
     }
     s.first = vec2(outer.x, max(outer.x, inner.x));
     s.second = vec2(min(outer.y, inner.y), outer.y);
+    if (s.first.x >= s.first.y) { // the ray starts inside the inner sphere: one part, put it first
+        s.first = s.second;
+        s.second = vec2(real(1.0), real(-1.0));
+    }
     return s;
 }

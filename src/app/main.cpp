@@ -1,4 +1,5 @@
 // aurorawall: one binary, several subcommands.
+#include "app/accuracy_scene.h"
 #include "app/render_command.h"
 #include "atmosphere/accuracy_cli.h"
 #include "atmosphere/airmass_cli.h"
@@ -21,7 +22,7 @@ const char* kUsage =
     "            (mpirun -n RANKS aurorawall render --wall FILE --scene FILE ...)\n"
     "  airmass   airmass integrals along rays read from standard input (CSV), by a chosen method\n"
     "  tables    print the precomputed physics tables (e.g. tables deposition --energy-kev 5)\n"
-    "  accuracy  error against cost of the approximations (accuracy --airmass | --sky)\n";
+    "  accuracy  error against cost of the approximations (accuracy --airmass | --sky | --scene FILE)\n";
 
 } // namespace
 
@@ -37,8 +38,13 @@ int main(int argc, char** argv)
         return aurorawall::app::runRenderCommand(argc - 1, argv + 1);
     if (command == "airmass")
         return aurorawall::runAirmassCommand(argc - 1, argv + 1, std::cin, std::cout, std::cerr);
-    if (command == "accuracy")
+    if (command == "accuracy") {
+        // --scene: the aurora's quality knobs (src/app/accuracy_scene.h); else airmass and sky.
+        for (int i = 2; i < argc; ++i)
+            if (!std::strcmp(argv[i], "--scene"))
+                return aurorawall::app::runSceneAccuracy(argc - 1, argv + 1, std::cout, std::cerr);
         return aurorawall::runAccuracyCommand(argc - 1, argv + 1, std::cout, std::cerr);
+    }
     if (command == "tables")
         return aurorawall::aurora::runTablesCommand(argc - 1, argv + 1, std::cout, std::cerr);
     std::fprintf(stderr, "aurorawall: unknown command '%s'\n%s", command.c_str(), kUsage);

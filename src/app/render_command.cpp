@@ -200,10 +200,13 @@ int runRenderCommand(int argc, char** argv)
     });
     if (!graphicsReady)
         return 1;
-    if (world.isMaster() && !options.quiet)
+    if (world.isMaster() && !options.quiet) {
         std::printf("aurorawall: %d ranks, %zu screens, canvas %dx%d, backend %s on %s\n", world.size(),
                     wallLayout.screens.size(), wallLayout.canvasSizePx.x, wallLayout.canvasSizePx.y,
                     options.backend.c_str(), context->rendererName().c_str());
+        for (const std::string& line : renderer->precomputationLog())
+            std::printf("precomputed %s\n", line.c_str());
+    }
 
     // 3. The frame loop: the master decides, everyone renders, all flip together.
     cluster::ClockSettings clockSettings;
@@ -260,6 +263,8 @@ int runRenderCommand(int argc, char** argv)
             cluster::FrameRecord record{frame.frame, frame.timeS, millisecondsSince(frameStart), reports};
             if (!options.quiet)
                 std::printf("%s\n", stats.frameLine(record).c_str());
+            if (options.verbose)
+                std::printf("  %s\n", renderer->frameLog().c_str());
             stats.add(std::move(record));
         }
     }

@@ -39,7 +39,8 @@ RenderOptions parseRenderOptions(int argc, char** argv)
          "render the wall's whole canvas (bezels included) as one screen on one rank: the reference a wall must match")
         ("stats", po::value(&o.statsFile), "write per-frame timings to FILE (.csv or .json)")
         ("data-dir", po::value(&o.dataDir), "folder holding shaders/ (default: installed share/aurorawall or the source tree)")
-        ("quiet", po::bool_switch(&o.quiet), "print only the summary, not a line per frame");
+        ("quiet", po::bool_switch(&o.quiet), "print only the summary, not a line per frame")
+        ("verbose", po::bool_switch(&o.verbose), "also print the per-frame work of the components (curtain map build)");
     std::ostringstream help;
     help << desc;
     o.helpText = help.str();

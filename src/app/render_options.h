@@ -23,6 +23,7 @@ struct RenderOptions {
     bool tiles = false;
     bool singleScreen = false;
     bool quiet = false;
+    bool verbose = false;
     bool help = false;
     std::string helpText;
 };

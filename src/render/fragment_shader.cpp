@@ -43,7 +43,7 @@ const scene::Component kOrder[] = {scene::Component::Planet, scene::Component::P
 
 std::vector<std::string> fragmentModuleNames(const scene::Scene& scene)
 {
-    std::vector<std::string> names = {"render/ray_sphere.glsl", "render/tile_rays.glsl"};
+    std::vector<std::string> names = {"render/ray_sphere.glsl", "render/layers.glsl", "render/tile_rays.glsl"};
     for (scene::Component c : kOrder)
         if (scene.has(c))
             for (const std::string& m : modulesOf(c))

@@ -38,6 +38,12 @@ protected:
     // Renders a 64x36 view with a 70 deg vertical field of view looking along `forward`.
     static io::Image render(glm::dvec3 positionKm, glm::dvec3 forward, glm::dvec3 up, double timeS)
     {
+        return renderWith(*renderer_, positionKm, forward, up, timeS);
+    }
+
+    static io::Image renderWith(render::TileRenderer& renderer, glm::dvec3 positionKm, glm::dvec3 forward,
+                                glm::dvec3 up, double timeS)
+    {
         wall::GridSpec grid;
         grid.screenPx = {64, 36};
         grid.screenMm = {64.0, 36.0};
@@ -51,8 +57,8 @@ protected:
         frame.cameraRight = glm::cross(-frame.cameraBack, frame.cameraUp);
         gl::FloatTarget target(64, 36);
         gl::FullScreenTriangle triangle;
-        renderer_->setFrame(frame);
-        renderer_->renderTile(wall::tileRays(wall, 0), target, triangle);
+        renderer.setFrame(frame);
+        renderer.renderTile(wall::tileRays(wall, 0), target, triangle);
         return io::imageFromGlReadback(64, 36, target.readback());
     }
 
@@ -109,7 +115,7 @@ TEST_F(ExtremeCameras, InsideACurtainAndStraightDown)
     const io::Image inside = render(up * (6371.0 + 110.0), north(up), up, 0.0);
     EXPECT_EQ(io::countNonFinite(inside), 0u);
     EXPECT_GT(maxRadiance(inside), kAuroraSeen);
-    const io::Image down = render(up * (6371.0 + 400.0), -up, north(up), 0.0);
+    const io::Image down = render(up * (6371.0 + 400.0), -up, north(up), 180.0); // at the break-up
     EXPECT_EQ(io::countNonFinite(down), 0u);
     EXPECT_GT(maxRadiance(down), 0.5 * kAuroraSeen);
 }
@@ -131,4 +137,57 @@ TEST_F(ExtremeCameras, HugeAnimationTime)
     const io::Image image = render(up * 6371.0, up, north(up), 1.0e9);
     EXPECT_EQ(io::countNonFinite(image), 0u);
     EXPECT_GT(maxRadiance(image), kAuroraSeen);
+}
+
+TEST_F(ExtremeCameras, ZeroAndMaximumCurtains)
+{
+    // Every curtain dark, then every curtain at the largest flux and electron energy a scene
+    // accepts (1e4 erg cm^-2 s^-1, 50 keV): finite everywhere; dark curtains add nothing to the
+    // same view without the aurora component; the brightest ones are far above the usual ~1e-2.
+    const glm::dvec3 up = site(), position = up * (6371.0 + 110.0);
+    scene::Scene withoutAurora = *scene_;
+    withoutAurora.components = {scene::Component::Planet, scene::Component::PlanetTexture,
+                                scene::Component::Atmosphere, scene::Component::Stars};
+    render::TileRenderer plain(withoutAurora, kSource + "/shaders");
+    const io::Image reference = renderWith(plain, position, north(up), up, 180.0);
+    for (double flux : {0.0, 1e4}) {
+        scene::Scene s = *scene_;
+        for (scene::Curtain& c : s.aurora.curtains)
+            for (scene::CurtainKey& k : c.keys) {
+                k.energyFluxErgPerCm2S = flux;
+                k.energyKeV = flux > 0 ? 50.0 : k.energyKeV;
+            }
+        render::TileRenderer renderer(s, kSource + "/shaders");
+        const io::Image image = renderWith(renderer, position, north(up), up, 180.0);
+        EXPECT_EQ(io::countNonFinite(image), 0u) << "flux " << flux;
+        if (flux == 0.0)
+            EXPECT_LT(io::compareImages(reference, image).maxAbs, 1e-7);
+        else
+            EXPECT_GT(maxRadiance(image), 0.1);
+    }
+}
+
+TEST_F(ExtremeCameras, PrecomputesOnlyForListedComponents)
+{
+    // The precomputation log names one table per listed component that needs one, and nothing
+    // for components the scene leaves out (the shader source side is tests/render/fragment_shader_test).
+    auto logOf = [](std::vector<scene::Component> components) {
+        scene::Scene s = *scene_;
+        s.components = std::move(components);
+        render::TileRenderer renderer(s, kSource + "/shaders");
+        std::string log;
+        for (const std::string& line : renderer.precomputationLog())
+            log += line + "\n";
+        return log;
+    };
+    using C = scene::Component;
+    const std::string starsOnly = logOf({C::Planet, C::Stars});
+    EXPECT_EQ(starsOnly, "");
+    const std::string aurora = logOf({C::Planet, C::Atmosphere, C::Aurora});
+    EXPECT_NE(aurora.find("aurora deposition table"), std::string::npos) << aurora;
+    EXPECT_EQ(aurora.find("fluid_detail"), std::string::npos) << aurora;
+    EXPECT_EQ(aurora.find("planet_texture"), std::string::npos) << aurora;
+    const std::string all = logOf({C::Planet, C::PlanetTexture, C::Atmosphere, C::Aurora, C::FluidDetail});
+    EXPECT_NE(all.find("fluid_detail: 512 x 128 cells"), std::string::npos) << all;
+    EXPECT_NE(all.find("planet_texture"), std::string::npos) << all;
 }

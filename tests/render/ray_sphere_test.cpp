@@ -7,16 +7,19 @@
 #include <algorithm>
 #include <cmath>
 
-namespace aurorawall::f32 {
+// An unnamed namespace per test file: each file compiles its own copy of the shared modules.
+namespace {
+namespace f32 {
 AURORAWALL_GLSL_PRECISION(float)
 #include "render/ray_sphere.glsl"
-} // namespace aurorawall::f32
-namespace aurorawall::f64 {
+} // namespace f32
+namespace f64 {
 AURORAWALL_GLSL_PRECISION(double)
 #include "render/ray_sphere.glsl"
-} // namespace aurorawall::f64
+} // namespace f64
+} // namespace
 
-using namespace aurorawall;
+
 
 namespace {
 constexpr double R = 6371.0;

@@ -1,0 +1,459 @@
+#include "app/accuracy_scene.h"
+
+#include "cluster/master_clock.h"
+#include "common/data_dir.h"
+#include "fluid/curtain_detail.h"
+#include "gl/context.h"
+#include "gl/float_target.h"
+#include "gl/full_screen_triangle.h"
+#include "gl/functions.h"
+#include "render/curtain_detail.h"
+#include "render/tile_renderer.h"
+#include "wall/wall_file.h"
+
+#include <boost/program_options.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <functional>
+#include <memory>
+#include <ostream>
+#include <thread>
+
+namespace aurorawall::app {
+
+using scene::Component;
+
+SceneView sceneView(const scene::Scene& scene, const std::string& wallFile, glm::ivec2 sizePx)
+{
+    const wall::Wall single = wall::singleScreenEquivalent(wall::loadWall(wallFile));
+    const wall::Screen& screen = single.screens.front();
+    wall::GridSpec grid;
+    grid.screenPx = sizePx;
+    grid.screenMm = {screen.widthMm, screen.heightMm};
+    const glm::dvec3 centre(screen.lowerLeftMm + 0.5 * grid.screenMm, 0.0);
+    grid.eyeFromCentreMm = single.eyeMm - centre;
+    SceneView view;
+    view.wall = wall::makeGridWall(grid);
+    view.rays = wall::tileRays(view.wall, 0);
+    cluster::ClockSettings clock;
+    clock.startTimeS = scene.startTimeS;
+    clock.timeStepS = scene.timeStepS;
+    view.frame = cluster::MasterClock(clock, scene.camera, scene.exposure).next(false);
+    return view;
+}
+
+// tile_rays.h: the direction through canvas point pixelOffset + (x + 1/2, y + 1/2), wall frame; the
+// wall frame's x, y, z are the camera's right, up and back (TileRenderer::setFrame).
+glm::dvec3 pixelDirection(const SceneView& view, int x, int y)
+{
+    const wall::TileRays& r = view.rays;
+    const glm::dvec2 canvas = glm::dvec2(r.pixelOffset) + glm::dvec2(x + 0.5, y + 0.5);
+    const glm::dvec3 wallDir = r.originDir + canvas.x * r.stepRight + canvas.y * r.stepDown;
+    const glm::dmat3 wallToPlanet(view.frame.cameraRight, view.frame.cameraUp, view.frame.cameraBack);
+    return glm::normalize(wallToPlanet * wallDir);
+}
+
+TimedRender renderView(const scene::Scene& scene, const SceneView& view, const std::string& shaderDir, int runs)
+{
+    using Clock = std::chrono::steady_clock;
+    render::TileRenderer renderer(scene, shaderDir);
+    const glm::ivec2 size(view.wall.screens.front().widthPx, view.wall.screens.front().heightPx);
+    gl::FloatTarget target(size.x, size.y);
+    gl::FullScreenTriangle triangle;
+    std::vector<double> ms;
+    for (int i = 0; i <= runs; ++i) {
+        const auto start = Clock::now();
+        renderer.setFrame(view.frame);
+        renderer.renderTile(view.rays, target, triangle);
+        gl::glFinish();
+        if (i > 0) // the first frame is the warm-up
+            ms.push_back(std::chrono::duration<double, std::milli>(Clock::now() - start).count());
+    }
+    std::sort(ms.begin(), ms.end());
+    TimedRender result;
+    result.image = io::imageFromGlReadback(size.x, size.y, target.readback());
+    result.msPerFrame = ms.empty() ? 0.0 : ms[ms.size() / 2];
+    return result;
+}
+
+RelativeError relativeError(const std::vector<glm::dvec3>& values, const std::vector<glm::dvec3>& reference,
+                            double floor)
+{
+    RelativeError e;
+    double sumSquares = 0.0;
+    for (size_t i = 0; i < values.size(); ++i) {
+        const double r = glm::length(reference[i]);
+        if (!(r >= floor))
+            continue;
+        const double rel = glm::length(values[i] - reference[i]) / r;
+        sumSquares += rel * rel;
+        e.max = std::max(e.max, std::isfinite(rel) ? rel : INFINITY);
+        ++e.pixels;
+    }
+    e.rms = e.pixels ? std::sqrt(sumSquares / double(e.pixels)) : 0.0;
+    return e;
+}
+
+glm::dvec3 pixelRadiance(const io::Image& image, int x, int y)
+{
+    const float* p = image.pixel(x, y);
+    return {p[0], p[1], p[2]};
+}
+
+std::vector<glm::dvec3> referencePixels(const render::ReferenceModel& model, const SceneView& view,
+                                        const std::vector<glm::ivec2>& pixels, int threads)
+{
+    std::vector<glm::dvec3> result(pixels.size());
+    std::vector<std::thread> workers;
+    for (int w = 0; w < std::max(threads, 1); ++w)
+        workers.emplace_back([&, w] {
+            for (size_t i = size_t(w); i < pixels.size(); i += size_t(std::max(threads, 1)))
+                result[i] = model.radiance(view.frame.cameraPositionKm, pixelDirection(view, pixels[i].x, pixels[i].y));
+        });
+    for (std::thread& t : workers)
+        t.join();
+    return result;
+}
+
+namespace {
+
+scene::Scene without(scene::Scene s, Component c)
+{
+    s.components.erase(std::remove(s.components.begin(), s.components.end(), c), s.components.end());
+    return s;
+}
+
+} // namespace
+
+scene::Scene withoutUnmodelled(scene::Scene scene)
+{
+    for (Component c : {Component::Stars, Component::PlanetTexture, Component::Sky})
+        scene = without(std::move(scene), c);
+    return scene;
+}
+
+namespace {
+
+namespace po = boost::program_options;
+
+constexpr int kUsageError = 2;
+constexpr int kRuntimeError = 1;
+
+struct Settings {
+    std::string sceneFile;
+    std::string wallFile;
+    glm::ivec2 sizePx{320, 180};
+    int pixels = 48;
+    int runs = 3;
+    int threads = 2;
+    double referenceStepKm = 0.05;
+    bool featureCosts = false;
+};
+
+// A scene changed by one knob or feature, with its table label.
+struct Variant {
+    std::string knob;
+    std::string value;
+    std::function<void(scene::Scene&)> apply;
+};
+
+// The reference's settings (issue 3, part 11): 0.25 km steps everywhere, no skipping, the finest
+// tables, footprint map and polylines of the knob ranges.
+void finest(scene::Scene& s)
+{
+    s.aurora.stepKm = 0.25;
+    s.aurora.skipEmptySpace = false;
+    s.aurora.footprintMapSize = 1024;
+    s.aurora.tableAltitudeStepKm = 0.25;
+    s.aurora.tableEnergyCount = 128;
+    s.aurora.polylineSpacingKm = 1.0;
+}
+
+void finestFluid(scene::Scene& s)
+{
+    s.aurora.detail.cellsAlong = 1024;
+    s.aurora.detail.cellsAcross = 256;
+}
+
+std::string number(double v)
+{
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", v);
+    return text;
+}
+
+std::vector<Variant> knobVariants()
+{
+    std::vector<Variant> v;
+    v.push_back({"default", "-", [](scene::Scene&) {}});
+    for (double step : {0.5, 1.0, 2.0, 4.0})
+        v.push_back({"step_km", number(step), [step](scene::Scene& s) { s.aurora.stepKm = step; }});
+    for (bool skip : {true, false})
+        v.push_back({"skip_empty_space", skip ? "yes" : "no", [skip](scene::Scene& s) { s.aurora.skipEmptySpace = skip; }});
+    for (int size : {128, 256, 512, 1024})
+        v.push_back({"footprint_map_size", number(size), [size](scene::Scene& s) { s.aurora.footprintMapSize = size; }});
+    for (double step : {0.25, 0.5, 1.0, 2.0})
+        v.push_back({"table_altitude_step_km", number(step),
+                     [step](scene::Scene& s) { s.aurora.tableAltitudeStepKm = step; }});
+    for (int count : {32, 64, 128})
+        v.push_back({"table_energy_count", number(count), [count](scene::Scene& s) { s.aurora.tableEnergyCount = count; }});
+    for (int along : {256, 512, 1024})
+        v.push_back({"fluid_cells", number(along) + "x" + number(along / 4), [along](scene::Scene& s) {
+                         s.aurora.detail.cellsAlong = along;
+                         s.aurora.detail.cellsAcross = along / 4;
+                     }});
+    for (double spacing : {1.0, 2.0, 4.0})
+        v.push_back({"polyline_spacing_km", number(spacing),
+                     [spacing](scene::Scene& s) { s.aurora.polylineSpacingKm = spacing; }});
+    return v;
+}
+
+// The paper's table 2 (../shared/reference.md): the features it timed, each toggled alone.
+struct Feature {
+    Variant variant;
+    const char* paper; // the paper's change in frame time, or "-"
+};
+
+std::vector<Feature> featureVariants()
+{
+    return {
+        {{"default", "-", [](scene::Scene&) {}}, "-"},
+        {{"no distance field (skip_empty_space = no)", "", [](scene::Scene& s) { s.aurora.skipEmptySpace = false; }}, "+350%"},
+        {{"aurora layer 100 km thicker", "", [](scene::Scene& s) { s.aurora.topKm += 100.0; }}, "+32%"},
+        {{"1 km steps instead of 2", "", [](scene::Scene& s) { s.aurora.stepKm = 1.0; }}, "+60%"},
+        {{"4 km steps instead of 2", "", [](scene::Scene& s) { s.aurora.stepKm = 4.0; }}, "-33%"},
+        {{"deposition table at half resolution", "", [](scene::Scene& s) {
+              s.aurora.tableAltitudeStepKm *= 2.0;
+              s.aurora.tableEnergyCount /= 2;
+          }}, "-"},
+        {{"deposition table at double resolution", "", [](scene::Scene& s) {
+              s.aurora.tableAltitudeStepKm *= 0.5;
+              s.aurora.tableEnergyCount *= 2;
+          }}, "-"},
+        {{"no fluid detail", "", [](scene::Scene& s) { s = without(s, Component::FluidDetail); }}, "-"},
+        {{"no planet texture", "", [](scene::Scene& s) { s = without(s, Component::PlanetTexture); }}, "-"},
+        {{"no atmosphere", "", [](scene::Scene& s) { s = without(without(s, Component::Atmosphere), Component::Sky); }}, "-"},
+        {{"no stars", "", [](scene::Scene& s) { s = without(s, Component::Stars); }}, "-"},
+    };
+}
+
+std::vector<glm::dvec3> imagePixels(const io::Image& image, const std::vector<glm::ivec2>& pixels)
+{
+    std::vector<glm::dvec3> values;
+    for (const glm::ivec2& p : pixels)
+        values.push_back(pixelRadiance(image, p.x, p.y));
+    return values;
+}
+
+std::vector<glm::ivec2> allPixels(glm::ivec2 size)
+{
+    std::vector<glm::ivec2> pixels;
+    for (int y = 0; y < size.y; ++y)
+        for (int x = 0; x < size.x; ++x)
+            pixels.emplace_back(x, y);
+    return pixels;
+}
+
+// `count` pixels evenly spaced (in row-major order) among those of the GPU reference at or above the
+// floor, so that the CPU reference is spent where the error is measured.
+std::vector<glm::ivec2> samplePixels(const io::Image& reference, double floor, int count)
+{
+    std::vector<glm::ivec2> lit;
+    for (const glm::ivec2& p : allPixels({reference.width, reference.height}))
+        if (glm::length(pixelRadiance(reference, p.x, p.y)) >= floor)
+            lit.push_back(p);
+    std::vector<glm::ivec2> chosen;
+    for (int i = 0; i < count && !lit.empty(); ++i)
+        chosen.push_back(lit[(size_t(i) * lit.size()) / size_t(count)]);
+    chosen.erase(std::unique(chosen.begin(), chosen.end()), chosen.end());
+    return chosen;
+}
+
+double secondsSince(std::chrono::steady_clock::time_point start)
+{
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// The two references of one fluid resolution: the GPU render at the finest settings and the CPU
+// reference at the sampled pixels.
+struct References {
+    scene::Scene scene;
+    TimedRender gpu;
+    std::vector<glm::dvec3> cpu;
+    double cpuSeconds = 0.0;
+};
+
+void computeReferences(References& r, const SceneView& view, const std::vector<glm::ivec2>& pixels, const Settings& settings)
+{
+    const auto start = std::chrono::steady_clock::now();
+    std::unique_ptr<fluid::FluxFrames> frames;
+    if (r.scene.has(Component::FluidDetail))
+        frames = std::make_unique<fluid::FluxFrames>(
+            fluid::simulateCurtainDetail(render::curtainDetailSpec(r.scene.aurora.detail)));
+    render::ReferenceSettings reference;
+    reference.stepKm = settings.referenceStepKm;
+    const render::ReferenceModel model(r.scene, view.frame.timeS, frames.get(), reference);
+    r.cpu = referencePixels(model, view, pixels, settings.threads);
+    r.cpuSeconds = secondsSince(start);
+}
+
+void printKnobTable(const scene::Scene& base, const SceneView& view, const std::string& shaderDir,
+                    const Settings& settings, std::ostream& out)
+{
+    const double floor = 1.0 / (255.0 * base.exposure);
+    const std::vector<glm::ivec2> all = allPixels(settings.sizePx);
+
+    References common{base, {}, {}, 0.0}, fluid{base, {}, {}, 0.0};
+    finest(common.scene);
+    finest(fluid.scene);
+    finestFluid(fluid.scene);
+    const bool hasFluid = base.has(Component::FluidDetail);
+    common.gpu = renderView(common.scene, view, shaderDir, 0);
+    if (hasFluid)
+        fluid.gpu = renderView(fluid.scene, view, shaderDir, 0);
+    const std::vector<glm::ivec2> sampled = samplePixels(common.gpu.image, floor, settings.pixels);
+    computeReferences(common, view, sampled, settings);
+    if (hasFluid)
+        computeReferences(fluid, view, sampled, settings);
+
+    const RelativeError gpuVsCpu = relativeError(imagePixels(common.gpu.image, sampled), common.cpu, floor);
+    char line[512];
+    std::snprintf(line, sizeof line,
+                  "noise floor: |linear RGB| >= %.3g cd/m^2 (one 8-bit step of the linear preview at exposure %g)\n"
+                  "GPU reference: step 0.25 km, no skipping, footprint map 1024, tables 0.25 km x 128 energies, "
+                  "polylines 1 km; its error against the CPU reference at the %zu sampled pixels: rms %.3g, max %.3g\n"
+                  "CPU reference: double, midpoint rule %.3g km where a curtain is in reach; %.1f s on %d threads",
+                  floor, base.exposure, sampled.size(), gpuVsCpu.rms, gpuVsCpu.max, settings.referenceStepKm,
+                  common.cpuSeconds, settings.threads);
+    out << line << (hasFluid ? "; for fluid_cells both references use 1024x256 fluid cells" : "") << "\n";
+    out << "knob                     value     rms_rel_gpu max_rel_gpu rms_rel_cpu max_rel_cpu ms_per_frame\n";
+    for (const Variant& variant : knobVariants()) {
+        const bool fluidKnob = variant.knob == "fluid_cells";
+        if (fluidKnob && !hasFluid)
+            continue;
+        const References& ref = fluidKnob ? fluid : common;
+        scene::Scene s = base;
+        variant.apply(s);
+        const TimedRender render = renderView(s, view, shaderDir, settings.runs);
+        const RelativeError gpu =
+            relativeError(imagePixels(render.image, all), imagePixels(ref.gpu.image, all), floor);
+        const RelativeError cpu = relativeError(imagePixels(render.image, sampled), ref.cpu, floor);
+        std::snprintf(line, sizeof line, "%-24s %-9s %-11.3g %-11.3g %-11.3g %-11.3g %.1f\n", variant.knob.c_str(),
+                      variant.value.c_str(), gpu.rms, gpu.max, cpu.rms, cpu.max, render.msPerFrame);
+        out << line << std::flush;
+    }
+}
+
+void printFeatureCosts(const scene::Scene& base, const SceneView& view, const std::string& shaderDir,
+                       const Settings& settings, std::ostream& out)
+{
+    out << "feature                                   ms_per_frame change   paper\n";
+    double defaultMs = 0.0;
+    for (const Feature& feature : featureVariants()) {
+        scene::Scene s = base;
+        feature.variant.apply(s);
+        const double ms = renderView(s, view, shaderDir, settings.runs).msPerFrame;
+        if (feature.variant.knob == "default")
+            defaultMs = ms;
+        char line[256];
+        std::snprintf(line, sizeof line, "%-41s %-12.1f %+6.0f%%  %s\n", feature.variant.knob.c_str(), ms,
+                      100.0 * (ms / defaultMs - 1.0), feature.paper);
+        out << line << std::flush;
+    }
+}
+
+bool parseSize(const std::string& text, glm::ivec2& size)
+{
+    int w = 0, h = 0;
+    char x = 0, rest = 0;
+    if (std::sscanf(text.c_str(), "%d%c%d%c", &w, &x, &h, &rest) != 3 || x != 'x' || w < 1 || h < 1)
+        return false;
+    size = {w, h};
+    return true;
+}
+
+} // namespace
+
+int runSceneAccuracy(int argc, char** argv, std::ostream& out, std::ostream& err)
+{
+    po::options_description options(
+        "Usage: aurorawall accuracy --scene FILE [--wall FILE] [--size WxH] [--pixels N] [--feature-costs]\n"
+        "Error against run time of the aurora's quality knobs (docs/ACCURACY.md, \"Aurora\"): the scene's first\n"
+        "frame at a small size, each knob varied alone around the scene's defaults, compared with the GPU\n"
+        "render at the finest settings (every pixel) and the double-precision CPU reference (N sampled pixels).\n"
+        "Stars, planet_texture and sky are removed (the CPU reference does not model them).\n"
+        "--feature-costs: instead, the frame time of each feature toggled alone, the full scene (paper table 2).\n"
+        "One headless EGL context, one process (no mpirun).\nOptions");
+    Settings settings;
+    std::string size = "320x180";
+    options.add_options()("help,h", "show this help")("scene", po::value<std::string>(&settings.sceneFile), "scene file")(
+        "wall", po::value<std::string>(&settings.wallFile),
+        "wall file whose single-screen equivalent sets the field of view (default config/walls/single.ini)")(
+        "size", po::value<std::string>(&size)->default_value(size), "render size WxH in pixels")(
+        "pixels", po::value<int>(&settings.pixels)->default_value(settings.pixels), "pixels of the CPU reference")(
+        "runs", po::value<int>(&settings.runs)->default_value(settings.runs),
+        "timed frames per setting after one warm-up (the median is reported)")(
+        "threads", po::value<int>(&settings.threads)->default_value(settings.threads), "CPU reference threads")(
+        "reference-step-km", po::value<double>(&settings.referenceStepKm)->default_value(settings.referenceStepKm),
+        "CPU reference step where a curtain is in reach")("feature-costs", "the paper's table 2 instead of the knobs");
+    po::variables_map variables;
+    try {
+        po::store(po::command_line_parser(argc, argv).options(options).run(), variables);
+        po::notify(variables);
+    } catch (const po::error& e) {
+        err << "aurorawall accuracy: " << e.what() << "\n";
+        return kUsageError;
+    }
+    if (variables.count("help")) {
+        out << options;
+        return 0;
+    }
+    settings.featureCosts = variables.count("feature-costs") > 0;
+    if (settings.sceneFile.empty() || !parseSize(size, settings.sizePx) || settings.pixels < 1 || settings.runs < 1 ||
+        settings.threads < 1 || !(settings.referenceStepKm > 0.0)) {
+        err << "aurorawall accuracy: --scene FILE is required; --size is WxH; --pixels, --runs, --threads and "
+               "--reference-step-km must be positive\n";
+        return kUsageError;
+    }
+    const std::string dataDir = dataDirectory();
+    if (settings.wallFile.empty())
+        settings.wallFile = dataDir + "/config/walls/single.ini";
+
+    scene::Scene scene;
+    SceneView view;
+    try {
+        scene = scene::loadScene(settings.sceneFile);
+        if (!settings.featureCosts)
+            scene = withoutUnmodelled(scene);
+        view = sceneView(scene, settings.wallFile, settings.sizePx);
+    } catch (const std::exception& e) {
+        err << "aurorawall accuracy: " << e.what() << "\n";
+        return kUsageError;
+    }
+    try {
+        auto context = gl::createContext(gl::Backend::Egl);
+        const char* threads = std::getenv("LP_NUM_THREADS");
+        out << "renderer: " << context->rendererName() << ", " << context->glVersion()
+            << (threads ? ", LP_NUM_THREADS=" + std::string(threads) : std::string()) << "\n";
+        out << "scene: " << settings.sceneFile << " (components:";
+        for (Component c : scene.components)
+            out << " " << scene::componentName(c);
+        out << "), frame 0 at t = " << view.frame.timeS << " s, " << settings.sizePx.x << "x" << settings.sizePx.y
+            << " px, field of view of " << settings.wallFile << "; ms per frame: median of " << settings.runs
+            << " frames (setFrame + renderTile + glFinish, CPU clock) after one warm-up\n";
+        if (settings.featureCosts)
+            printFeatureCosts(scene, view, dataDir + "/shaders", settings, out);
+        else
+            printKnobTable(scene, view, dataDir + "/shaders", settings, out);
+    } catch (const std::exception& e) {
+        err << "aurorawall accuracy: " << e.what() << "\n";
+        return kRuntimeError;
+    }
+    return 0;
+}
+
+} // namespace aurorawall::app

@@ -1,0 +1,66 @@
+#pragma once
+// `aurorawall accuracy --scene FILE`: error against run time of the aurora's quality knobs (issue 3,
+// part 11) and the cost of each feature (the paper's table 2), on one headless EGL context in one
+// process (no MPI). The renders and the CPU reference (render/reference_ray.h) are also the tools of
+// tests/render/reference_ray_test.cpp and skipping_test.cpp.
+#include "cluster/frame_state.h"
+#include "io/image.h"
+#include "render/reference_ray.h"
+#include "scene/scene.h"
+#include "wall/tile_rays.h"
+#include "wall/wall.h"
+
+#include <glm/glm.hpp>
+
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+namespace aurorawall::app {
+
+// One small view of a scene: the wall file's single-screen equivalent with the same physical screen
+// and eye (so the same field of view) at sizePx pixels, and the scene's first frame (frame 0 of the
+// master clock: the scene's start time and camera).
+struct SceneView {
+    wall::Wall wall;
+    wall::TileRays rays;
+    cluster::FrameState frame;
+};
+SceneView sceneView(const scene::Scene& scene, const std::string& wallFile, glm::ivec2 sizePx);
+
+// The view's pixel (x, y) (x right, y down from the top-left) as a unit direction in the planet
+// frame, in double: the direction through the pixel centre (tile_rays.h) rotated as TileRenderer does.
+glm::dvec3 pixelDirection(const SceneView& view, int x, int y);
+
+// A render of the view and its time per frame: `runs` frames after one warm-up frame, each
+// setFrame + renderTile + glFinish timed on the CPU clock (llvmpipe's timer queries are wrong);
+// msPerFrame is the median. Needs a current GL context.
+struct TimedRender {
+    io::Image image;
+    double msPerFrame = 0.0;
+};
+TimedRender renderView(const scene::Scene& scene, const SceneView& view, const std::string& shaderDir, int runs);
+
+// Per-pixel relative error e = |a - r| / |r| (Euclidean norm of linear RGB) over the pixels whose
+// reference radiance |r| is at least `floor`: RMS and maximum of e, and how many pixels.
+struct RelativeError {
+    double rms = 0.0;
+    double max = 0.0;
+    size_t pixels = 0;
+};
+RelativeError relativeError(const std::vector<glm::dvec3>& values, const std::vector<glm::dvec3>& reference,
+                            double floor);
+glm::dvec3 pixelRadiance(const io::Image& image, int x, int y);
+
+// The CPU reference at the given pixels, on `threads` threads.
+std::vector<glm::dvec3> referencePixels(const render::ReferenceModel& model, const SceneView& view,
+                                        const std::vector<glm::ivec2>& pixels, int threads);
+
+// The scene without the components the CPU reference does not model (stars, planet_texture, sky).
+scene::Scene withoutUnmodelled(scene::Scene scene);
+
+// argv[0] is "accuracy"; see --help. Returns 0; 2 with one line on `err` for a bad option or file;
+// 1 when no GL context or shader can be made.
+int runSceneAccuracy(int argc, char** argv, std::ostream& out, std::ostream& err);
+
+} // namespace aurorawall::app
