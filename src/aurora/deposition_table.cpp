@@ -1,5 +1,6 @@
 #include "aurora/deposition_table.h"
 
+#include "aurora/atmosphere_profile.h"
 #include "aurora/emission.h"
 #include "common/glsl.h"
 
@@ -62,10 +63,12 @@ DepositionTable buildDepositionTable(const DepositionTableSpec& spec)
     table.minLogEnergy = std::log(spec.minEnergyKeV);
     table.logEnergyStep = (std::log(spec.maxEnergyKeV) - table.minLogEnergy) / (spec.energyCount - 1);
     table.decibels.resize(static_cast<size_t>(table.altitudeCount) * table.energyCount);
-    for (int j = 0; j < table.energyCount; ++j) {
-        double energyKeV = std::exp(table.minLogEnergy + j * table.logEnergyStep);
-        for (int i = 0; i < table.altitudeCount; ++i) {
-            double rate = depositionRate(spec.minAltitudeKm + i * spec.altitudeStepKm, energyKeV, spec.spectrum);
+    for (int i = 0; i < table.altitudeCount; ++i) {
+        const double altitudeKm = spec.minAltitudeKm + i * spec.altitudeStepKm;
+        const double density = massDensity(altitudeKm), shielding = shieldingMass(altitudeKm);
+        for (int j = 0; j < table.energyCount; ++j) {
+            double energyKeV = std::exp(table.minLogEnergy + j * table.logEnergyStep);
+            double rate = depositionPerEnergyFlux(density, shielding, energyKeV, spec.spectrum) * kKeVPerErg;
             double decibels = rate > 0.0 ? 10.0 * std::log10(rate) : spec.floorDecibels;
             table.decibels[static_cast<size_t>(j) * table.altitudeCount + i] =
                 static_cast<float>(std::max(decibels, spec.floorDecibels));

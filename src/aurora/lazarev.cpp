@@ -31,16 +31,31 @@ double lazarevRateIntegral()
     return simpson(inS, 0.0, 1.0) + simpson(lazarevRate, 1.0, 8.0);
 }
 
-double depositionPerElectron(double altitudeKm, double energyKeV)
+namespace {
+
+// A = L(M/M_E)·E·D/M_E for an atmosphere of density D and shielding mass M at the altitude.
+double depositionPerElectronIn(double density, double shielding, double energyKeV)
 {
     double massE = characteristicMass(energyKeV);
-    double r = shieldingMass(altitudeKm) / massE;
-    return lazarevRate(r) * energyKeV * massDensity(altitudeKm) / massE;
+    return lazarevRate(shielding / massE) * energyKeV * density / massE;
+}
+
+} // namespace
+
+double depositionPerElectron(double altitudeKm, double energyKeV)
+{
+    return depositionPerElectronIn(massDensity(altitudeKm), shieldingMass(altitudeKm), energyKeV);
 }
 
 double depositionPerEnergyFlux(double altitudeKm, double energyKeV, Spectrum spectrum)
 {
-    if (spectrum == Spectrum::Monoenergetic) return depositionPerElectron(altitudeKm, energyKeV) / energyKeV;
+    return depositionPerEnergyFlux(massDensity(altitudeKm), shieldingMass(altitudeKm), energyKeV, spectrum);
+}
+
+double depositionPerEnergyFlux(double density, double shielding, double energyKeV, Spectrum spectrum)
+{
+    if (spectrum == Spectrum::Monoenergetic)
+        return depositionPerElectronIn(density, shielding, energyKeV) / energyKeV;
     // E = E0·x, u = ln x: ∫ φ A dE = E0² ∫ x² e^{−x} A(z, E0 x) du (φ = E e^{−E/E0}, dE = E du).
     const double e0 = energyKeV;
     const double u0 = std::log(0.01), u1 = std::log(30.0);
@@ -50,7 +65,7 @@ double depositionPerEnergyFlux(double altitudeKm, double energyKeV, Spectrum spe
     for (int i = 0; i <= kIntervals; ++i) {
         double x = std::exp(u0 + i * h);
         double weight = (i == 0 || i == kIntervals) ? 1.0 : (i % 2 ? 4.0 : 2.0);
-        sum += weight * x * x * std::exp(-x) * depositionPerElectron(altitudeKm, e0 * x);
+        sum += weight * x * x * std::exp(-x) * depositionPerElectronIn(density, shielding, e0 * x);
     }
     double numerator = e0 * e0 * sum * h / 3.0;
     return numerator / (2.0 * e0 * e0 * e0);

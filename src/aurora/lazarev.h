@@ -30,4 +30,9 @@ enum class Spectrum {
 // numerator by Simpson's rule in ln E over [0.01, 30]·E0 (the energy outside holds < 1e-6 of the flux).
 double depositionPerEnergyFlux(double altitudeKm, double energyKeV, Spectrum spectrum);
 
+// The same at an altitude whose mass density D (g/cm^3) and shielding mass M (g/cm^2) are
+// already known: the table builder evaluates the atmosphere once per altitude for all energies.
+double depositionPerEnergyFlux(double densityGPerCm3, double shieldingMassGPerCm2, double energyKeV,
+                               Spectrum spectrum);
+
 } // namespace aurorawall::aurora
