@@ -21,6 +21,7 @@
 #include "wall/wall_file.h"
 
 #include <chrono>
+#include <ctime>
 #include <filesystem>
 #include <cstdio>
 #include <cstring>
@@ -38,6 +39,14 @@ using Clock = std::chrono::steady_clock;
 double millisecondsSince(Clock::time_point start)
 {
     return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+// CPU time used so far by every thread of this process (llvmpipe renders on threads of ours).
+double processCpuMilliseconds()
+{
+    timespec t{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+    return 1e3 * static_cast<double>(t.tv_sec) + 1e-6 * static_cast<double>(t.tv_nsec);
 }
 
 // Runs one set-up step on every rank and agrees on its outcome: returns false on every rank
@@ -231,9 +240,13 @@ int runRenderCommand(int argc, char** argv)
         if (frame.quit)
             break;
 
-        const auto renderStart = Clock::now();
+        cluster::RankReport report{frame.frame, frame.timeS};
+        auto phase = Clock::now();
         context->makeCurrent(0);
         renderer->setFrame(frame);
+        report.prepareMs = millisecondsSince(phase);
+        phase = Clock::now();
+        const double cpuStart = processCpuMilliseconds();
         for (Tile& tile : tiles) {
             context->makeCurrent(tile.window);
             renderer->renderTile(tile.rays, *tile.target, *tile.triangle);
@@ -242,24 +255,29 @@ int runRenderCommand(int argc, char** argv)
             context->makeCurrent(tile.window);
             gl::glFinish();
         }
-        const double renderMs = millisecondsSince(renderStart);
+        report.renderMs = millisecondsSince(phase);
+        report.renderCpuMs = processCpuMilliseconds() - cpuStart;
 
+        phase = Clock::now();
         if (presenter)
             for (Tile& tile : tiles)
                 presenter->present(*context, tile.window, *tile.target, *tile.triangle);
-        const std::vector<cluster::RankReport> reports = world.gatherReports({frame.frame, frame.timeS, renderMs});
-        int closeWanted = 0;
-        if (backend == gl::Backend::Glfw) {
-            context->pollEvents();
-            closeWanted = context->closeRequested();
-        }
-        stopRequested = world.anyRankRequests(closeWanted);
         world.swapBarrier();
-        if (presenter)
+        report.waitMs = millisecondsSince(phase);
+        phase = Clock::now();
+        if (presenter) {
             for (Tile& tile : tiles)
                 context->swapBuffers(tile.window);
+            context->pollEvents();
+            report.closeRequested = context->closeRequested();
+        }
+        report.swapMs = millisecondsSince(phase);
 
+        // The master learns what every rank drew and how long it took, and whether to stop.
+        const std::vector<cluster::RankReport> reports = world.gatherReports(report);
         if (world.isMaster()) {
+            for (const cluster::RankReport& r : reports)
+                stopRequested = stopRequested || r.closeRequested;
             cluster::FrameRecord record{frame.frame, frame.timeS, millisecondsSince(frameStart), reports};
             if (!options.quiet)
                 std::printf("%s\n", stats.frameLine(record).c_str());

@@ -80,14 +80,16 @@ void FrameStats::write(const std::string& path) const
     if (csv) {
         out << "frame,time_s,frame_ms,fps,mpixel_per_s,render_max_ms,render_mean_ms,imbalance";
         for (size_t r = 0; r < ranks; ++r)
-            out << ",render_ms_rank" << r << ",frame_rank" << r << ",time_s_rank" << r;
+            out << ",frame_rank" << r << ",time_s_rank" << r << ",prepare_ms_rank" << r << ",render_ms_rank" << r
+                << ",render_cpu_ms_rank" << r << ",wait_ms_rank" << r << ",swap_ms_rank" << r;
         out << "\n";
         for (const FrameRecord& f : records_) {
             out << f.frame << "," << f.timeS << "," << f.frameMs << "," << 1000.0 / f.frameMs << ","
                 << pixelsPerFrame_ / (f.frameMs * 1e3) << "," << f.maxRenderMs() << "," << f.meanRenderMs() << ","
                 << f.imbalance();
             for (const RankReport& r : f.ranks)
-                out << "," << r.renderMs << "," << r.frame << "," << r.timeS;
+                out << "," << r.frame << "," << r.timeS << "," << r.prepareMs << "," << r.renderMs << ","
+                    << r.renderCpuMs << "," << r.waitMs << "," << r.swapMs;
             out << "\n";
         }
     } else {
@@ -97,8 +99,10 @@ void FrameStats::write(const std::string& path) const
             out << (i ? ",\n" : "\n") << "    {\"frame\": " << f.frame << ", \"time_s\": " << f.timeS
                 << ", \"frame_ms\": " << f.frameMs << ", \"imbalance\": " << f.imbalance() << ", \"ranks\": [";
             for (size_t r = 0; r < f.ranks.size(); ++r)
-                out << (r ? ", " : "") << "{\"render_ms\": " << f.ranks[r].renderMs << ", \"frame\": " << f.ranks[r].frame
-                    << ", \"time_s\": " << f.ranks[r].timeS << "}";
+                out << (r ? ", " : "") << "{\"frame\": " << f.ranks[r].frame << ", \"time_s\": " << f.ranks[r].timeS
+                    << ", \"prepare_ms\": " << f.ranks[r].prepareMs << ", \"render_ms\": " << f.ranks[r].renderMs
+                    << ", \"render_cpu_ms\": " << f.ranks[r].renderCpuMs << ", \"wait_ms\": " << f.ranks[r].waitMs
+                    << ", \"swap_ms\": " << f.ranks[r].swapMs << "}";
             out << "]}";
         }
         out << "\n  ]\n}\n";

@@ -9,10 +9,18 @@ namespace aurorawall::cluster {
 
 // What each rank reports to the master after drawing a frame: the frame it drew (so the
 // master can show every rank drew the same one) and how long it took.
+// The phases follow MPIglut's perflib: prepare (per-frame CPU work), render, wait (at the swap
+// barrier for the slowest rank), swap.
 struct RankReport {
     std::uint64_t frame = 0;
     double timeS = 0.0;
-    double renderMs = 0.0; // its tiles drawn and finished (glFinish), CPU wall time
+    double prepareMs = 0.0;   // per-frame component work on the CPU (curtain map), wall time
+    double renderMs = 0.0;    // its tiles drawn and finished (glFinish), wall time
+    double renderCpuMs = 0.0; // CPU time of the whole process while rendering, all threads
+                              // (llvmpipe's included): the rank's own work, even on a shared machine
+    double waitMs = 0.0;      // from its tiles finished to the swap barrier's release
+    double swapMs = 0.0;      // presenting and swapping its windows
+    std::int32_t closeRequested = 0; // a window of this rank was closed
 };
 
 struct FrameRecord {

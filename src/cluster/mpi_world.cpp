@@ -47,13 +47,6 @@ bool MpiWorld::anyRankFailed(const std::string& myError) const
     return true;
 }
 
-bool MpiWorld::anyRankRequests(bool request) const
-{
-    int mine = request ? 1 : 0, any = 0;
-    MPI_Allreduce(&mine, &any, 1, MPI_INT, MPI_LOR, MPI_COMM_WORLD);
-    return any != 0;
-}
-
 void MpiWorld::broadcast(FrameState& state) const
 {
     MPI_Bcast(&state, sizeof(FrameState), MPI_BYTE, 0, MPI_COMM_WORLD);

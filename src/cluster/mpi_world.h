@@ -27,9 +27,6 @@ public:
     // once on stderr ("aurorawall: ..." or, if only some ranks failed, "aurorawall: rank 2: ...").
     bool anyRankFailed(const std::string& myError) const;
 
-    // True on every rank if any rank passes true (e.g. a window was closed somewhere).
-    bool anyRankRequests(bool request) const;
-
     void broadcast(FrameState& state) const;
     // Rank 0 receives one report from each rank, in rank order (others get an empty vector).
     std::vector<RankReport> gatherReports(const RankReport& mine) const;
