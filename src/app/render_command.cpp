@@ -1,6 +1,8 @@
 #include "app/render_command.h"
 
+#include "app/balanced_frame.h"
 #include "app/render_options.h"
+#include "cluster/load_balancer.h"
 #include "cluster/frame_stats.h"
 #include "cluster/master_clock.h"
 #include "cluster/mpi_world.h"
@@ -97,6 +99,16 @@ io::ToneMap toneMapFor(const RenderOptions& options, double exposure)
     t.curve = options.toneMap == "aces" ? io::ToneMap::Curve::AcesFilmic : io::ToneMap::Curve::MagnitudeGamma;
     t.exposure = exposure;
     return t;
+}
+
+// Puts a top-down CPU image into a float target's texture (GL rows run bottom-up).
+void uploadToTarget(const io::Image& image, gl::FloatTarget& target)
+{
+    std::vector<float> texels(image.rgba.size());
+    const size_t row = 4 * size_t(image.width);
+    for (int y = 0; y < image.height; ++y)
+        std::copy_n(&image.rgba[size_t(image.height - 1 - y) * row], row, &texels[size_t(y) * row]);
+    target.texture().upload(texels);
 }
 
 // Tiles travel to rank 0 as [screen index, width, height] followed by top-down RGBA floats.
@@ -209,6 +221,18 @@ int runRenderCommand(int argc, char** argv)
     });
     if (!graphicsReady)
         return 1;
+
+    // Load balancing: the master splits the bands, every rank renders its share.
+    std::vector<int> assignment;
+    std::unique_ptr<BalancedFrame> balanced;
+    std::unique_ptr<cluster::LoadBalancer> balancer;
+    if (options.balance) {
+        std::vector<cluster::Band> bands = cluster::makeBands(wallLayout, options.balanceBands);
+        assignment.resize(bands.size());
+        if (world.isMaster())
+            balancer = std::make_unique<cluster::LoadBalancer>(bands, world.size());
+        balanced = std::make_unique<BalancedFrame>(wallLayout, std::move(bands), world.rank());
+    }
     if (world.isMaster() && !options.quiet) {
         std::printf("aurorawall: %d ranks, %zu screens, canvas %dx%d, backend %s on %s\n", world.size(),
                     wallLayout.screens.size(), wallLayout.canvasSizePx.x, wallLayout.canvasSizePx.y,
@@ -245,18 +269,38 @@ int runRenderCommand(int argc, char** argv)
         context->makeCurrent(0);
         renderer->setFrame(frame);
         report.prepareMs = millisecondsSince(phase);
-        phase = Clock::now();
-        const double cpuStart = processCpuMilliseconds();
-        for (Tile& tile : tiles) {
-            context->makeCurrent(tile.window);
-            renderer->renderTile(tile.rays, *tile.target, *tile.triangle);
+        if (balanced) {
+            if (world.isMaster())
+                assignment = balancer->assign();
+            world.broadcast(assignment);
+            BalancedFrame::Timing timing;
+            const std::vector<BandCost> costs = balanced->render(*renderer, assignment, world, timing);
+            report.renderMs = timing.renderMs;
+            report.renderCpuMs = timing.renderCpuMs;
+            report.exchangeMs = timing.exchangeMs;
+            std::vector<int> sizes;
+            const std::vector<char> all = world.gatherBytes(packBandCosts(costs), sizes);
+            if (world.isMaster())
+                balancer->observe(unpackBandCosts(all, assignment.size()));
+            if (presenter)
+                for (Tile& tile : tiles) {
+                    context->makeCurrent(tile.window);
+                    uploadToTarget(balanced->screenImage(tile.screenIndex), *tile.target);
+                }
+        } else {
+            phase = Clock::now();
+            const double cpuStart = processCpuMilliseconds();
+            for (Tile& tile : tiles) {
+                context->makeCurrent(tile.window);
+                renderer->renderTile(tile.rays, *tile.target, *tile.triangle);
+            }
+            for (Tile& tile : tiles) {
+                context->makeCurrent(tile.window);
+                gl::glFinish();
+            }
+            report.renderMs = millisecondsSince(phase);
+            report.renderCpuMs = processCpuMilliseconds() - cpuStart;
         }
-        for (Tile& tile : tiles) {
-            context->makeCurrent(tile.window);
-            gl::glFinish();
-        }
-        report.renderMs = millisecondsSince(phase);
-        report.renderCpuMs = processCpuMilliseconds() - cpuStart;
 
         phase = Clock::now();
         if (presenter)
@@ -292,8 +336,12 @@ int runRenderCommand(int argc, char** argv)
     bool written = setUpStep(world, [&] {
         for (Tile& tile : tiles) {
             context->makeCurrent(tile.window);
-            images.emplace_back(tile.screenIndex, io::imageFromGlReadback(tile.target->width(), tile.target->height(),
-                                                                          tile.target->readback()));
+            if (balanced)
+                images.emplace_back(tile.screenIndex, balanced->screenImage(tile.screenIndex));
+            else
+                images.emplace_back(tile.screenIndex, io::imageFromGlReadback(tile.target->width(),
+                                                                              tile.target->height(),
+                                                                              tile.target->readback()));
             if (options.tiles)
                 io::writeExr(options.outDir + "/tile-" + wallLayout.screens[tile.screenIndex].name + ".exr",
                              images.back().second);

@@ -35,6 +35,11 @@ RenderOptions parseRenderOptions(int argc, char** argv)
         ("out", po::value(&o.outDir)->default_value(o.outDir), "output folder for images")
         ("gather", po::bool_switch(&o.gather), "rank 0 assembles the whole wall: OUT/wall.exr and OUT/wall.png")
         ("tiles", po::bool_switch(&o.tiles), "every rank writes its tiles: OUT/tile-<screen>.exr (linear, half float)")
+        ("balance", po::bool_switch(&o.balance),
+         "dynamic load balancing: every screen is cut into bands, and each frame ranks with cheap screens "
+         "render bands of expensive ones (split from measured costs, damped); the image is unchanged")
+        ("balance-bands", po::value(&o.balanceBands)->default_value(o.balanceBands),
+         "bands per screen for --balance (1 to 256)")
         ("single-screen", po::bool_switch(&o.singleScreen),
          "render the wall's whole canvas (bezels included) as one screen on one rank: the reference a wall must match")
         ("stats", po::value(&o.statsFile), "write per-frame timings to FILE (.csv or .json)")
@@ -77,6 +82,7 @@ RenderOptions parseRenderOptions(int argc, char** argv)
         check(csv || json, "--stats " + o.statsFile + ": the file name must end in .csv or .json");
     }
     check(!o.outDir.empty(), "--out must not be empty");
+    check(o.balanceBands >= 1 && o.balanceBands <= 256, "--balance-bands must be in [1, 256]");
     return o;
 }
 

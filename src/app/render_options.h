@@ -22,6 +22,8 @@ struct RenderOptions {
     bool gather = false;
     bool tiles = false;
     bool singleScreen = false;
+    bool balance = false;
+    int balanceBands = 8;
     bool quiet = false;
     bool verbose = false;
     bool help = false;

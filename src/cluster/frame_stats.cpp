@@ -81,7 +81,7 @@ void FrameStats::write(const std::string& path) const
         out << "frame,time_s,frame_ms,fps,mpixel_per_s,render_max_ms,render_mean_ms,imbalance";
         for (size_t r = 0; r < ranks; ++r)
             out << ",frame_rank" << r << ",time_s_rank" << r << ",prepare_ms_rank" << r << ",render_ms_rank" << r
-                << ",render_cpu_ms_rank" << r << ",wait_ms_rank" << r << ",swap_ms_rank" << r;
+                << ",render_cpu_ms_rank" << r << ",exchange_ms_rank" << r << ",wait_ms_rank" << r << ",swap_ms_rank" << r;
         out << "\n";
         for (const FrameRecord& f : records_) {
             out << f.frame << "," << f.timeS << "," << f.frameMs << "," << 1000.0 / f.frameMs << ","
@@ -89,7 +89,7 @@ void FrameStats::write(const std::string& path) const
                 << f.imbalance();
             for (const RankReport& r : f.ranks)
                 out << "," << r.frame << "," << r.timeS << "," << r.prepareMs << "," << r.renderMs << ","
-                    << r.renderCpuMs << "," << r.waitMs << "," << r.swapMs;
+                    << r.renderCpuMs << "," << r.exchangeMs << "," << r.waitMs << "," << r.swapMs;
             out << "\n";
         }
     } else {
@@ -101,7 +101,8 @@ void FrameStats::write(const std::string& path) const
             for (size_t r = 0; r < f.ranks.size(); ++r)
                 out << (r ? ", " : "") << "{\"frame\": " << f.ranks[r].frame << ", \"time_s\": " << f.ranks[r].timeS
                     << ", \"prepare_ms\": " << f.ranks[r].prepareMs << ", \"render_ms\": " << f.ranks[r].renderMs
-                    << ", \"render_cpu_ms\": " << f.ranks[r].renderCpuMs << ", \"wait_ms\": " << f.ranks[r].waitMs
+                    << ", \"render_cpu_ms\": " << f.ranks[r].renderCpuMs << ", \"exchange_ms\": " << f.ranks[r].exchangeMs
+                    << ", \"wait_ms\": " << f.ranks[r].waitMs
                     << ", \"swap_ms\": " << f.ranks[r].swapMs << "}";
             out << "]}";
         }

@@ -52,6 +52,27 @@ void MpiWorld::broadcast(FrameState& state) const
     MPI_Bcast(&state, sizeof(FrameState), MPI_BYTE, 0, MPI_COMM_WORLD);
 }
 
+void MpiWorld::broadcast(std::vector<int>& values) const
+{
+    MPI_Bcast(values.data(), static_cast<int>(values.size()), MPI_INT, 0, MPI_COMM_WORLD);
+}
+
+void MpiWorld::exchange(const std::vector<Message>& outgoing, const std::vector<Message>& incoming) const
+{
+    std::vector<MPI_Request> requests;
+    for (const Message& m : incoming) {
+        requests.emplace_back();
+        MPI_Irecv(m.values->data(), static_cast<int>(m.values->size()), MPI_FLOAT, m.rank, m.tag, MPI_COMM_WORLD,
+                  &requests.back());
+    }
+    for (const Message& m : outgoing) {
+        requests.emplace_back();
+        MPI_Isend(m.values->data(), static_cast<int>(m.values->size()), MPI_FLOAT, m.rank, m.tag, MPI_COMM_WORLD,
+                  &requests.back());
+    }
+    MPI_Waitall(static_cast<int>(requests.size()), requests.data(), MPI_STATUSES_IGNORE);
+}
+
 std::vector<RankReport> MpiWorld::gatherReports(const RankReport& mine) const
 {
     static_assert(std::is_trivially_copyable_v<RankReport>, "RankReport travels as bytes");

@@ -28,6 +28,8 @@ public:
     bool anyRankFailed(const std::string& myError) const;
 
     void broadcast(FrameState& state) const;
+    // Rank 0's values to every rank (the size must already match on every rank).
+    void broadcast(std::vector<int>& values) const;
     // Rank 0 receives one report from each rank, in rank order (others get an empty vector).
     std::vector<RankReport> gatherReports(const RankReport& mine) const;
     // All ranks wait here before their screens flip: the swap barrier.
@@ -35,6 +37,15 @@ public:
 
     // Rank 0 receives every rank's bytes, concatenated in rank order, with their sizes.
     std::vector<char> gatherBytes(const std::vector<char>& mine, std::vector<int>& sizesOut) const;
+
+    // Point-to-point messages of floats (band pixels): every rank posts what it sends and what it
+    // expects (buffers sized by the caller) at once, so no order of sends can deadlock.
+    struct Message {
+        int rank = 0; // destination (outgoing) or source (incoming)
+        int tag = 0;
+        std::vector<float>* values = nullptr;
+    };
+    void exchange(const std::vector<Message>& outgoing, const std::vector<Message>& incoming) const;
 
 private:
     int rank_ = 0;

@@ -29,6 +29,7 @@ public:
     int height() const { return texture_.height(); }
     GLuint framebuffer() const { return framebuffer_; }
     const Texture& texture() const { return texture_; }
+    Texture& texture() { return texture_; } // e.g. to upload pixels rendered elsewhere
 
 private:
     Texture texture_;

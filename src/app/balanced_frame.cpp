@@ -1,0 +1,122 @@
+#include "app/balanced_frame.h"
+
+#include "gl/functions.h"
+#include "wall/tile_rays.h"
+
+#include <chrono>
+#include <cmath>
+#include <cstring>
+#include <ctime>
+#include <limits>
+
+namespace aurorawall::app {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double millisecondsSince(Clock::time_point start)
+{
+    return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+double processCpuMilliseconds()
+{
+    timespec t{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+    return 1e3 * static_cast<double>(t.tv_sec) + 1e-6 * static_cast<double>(t.tv_nsec);
+}
+
+} // namespace
+
+BalancedFrame::BalancedFrame(const wall::Wall& wall, std::vector<cluster::Band> bands, int rank)
+    : wall_(wall), bands_(std::move(bands)), rank_(rank)
+{
+    for (int s : wall.screensOfRank(rank))
+        screens_.emplace(s, io::Image(wall.screens[s].widthPx, wall.screens[s].heightPx));
+}
+
+BalancedFrame::Target& BalancedFrame::targetFor(int width, int height)
+{
+    Target& t = targets_[{width, height}];
+    if (!t.target) {
+        t.target = std::make_unique<gl::FloatTarget>(width, height);
+        t.triangle = std::make_unique<gl::FullScreenTriangle>();
+    }
+    return t;
+}
+
+std::vector<BandCost> BalancedFrame::render(render::TileRenderer& renderer, const std::vector<int>& assignment,
+                                            const cluster::MpiWorld& world, Timing& timing)
+{
+    // 1. Draw my bands, one at a time so each one's cost is measured alone.
+    std::vector<BandCost> costs;
+    std::vector<std::vector<float>> outgoingPixels;
+    std::vector<cluster::MpiWorld::Message> outgoing, incoming;
+    const auto start = Clock::now();
+    const double cpuStart = processCpuMilliseconds();
+    for (size_t i = 0; i < bands_.size(); ++i) {
+        if (assignment[i] != rank_)
+            continue;
+        const cluster::Band& b = bands_[i];
+        const int width = wall_.screens[b.screen].widthPx;
+        Target& t = targetFor(width, b.height);
+        const double bandStart = processCpuMilliseconds();
+        renderer.renderTile(wall::tileRays(wall_, b.screen, {0, b.y0}), *t.target, *t.triangle);
+        io::Image pixels = io::imageFromGlReadback(width, b.height, t.target->readback());
+        costs.push_back({static_cast<int>(i), processCpuMilliseconds() - bandStart});
+        if (b.owner == rank_) {
+            io::pasteTile(screens_.at(b.screen), pixels, 0, b.y0);
+        } else {
+            outgoingPixels.push_back(std::move(pixels.rgba));
+            outgoing.push_back({b.owner, static_cast<int>(i), nullptr});
+        }
+    }
+    for (size_t k = 0; k < outgoing.size(); ++k)
+        outgoing[k].values = &outgoingPixels[k];
+    timing.renderMs = millisecondsSince(start);
+    timing.renderCpuMs = processCpuMilliseconds() - cpuStart;
+
+    // 2. Exchange: my screens' bands drawn elsewhere come in, other screens' bands go out.
+    const auto exchangeStart = Clock::now();
+    std::vector<std::pair<int, std::vector<float>>> arriving;
+    for (size_t i = 0; i < bands_.size(); ++i)
+        if (bands_[i].owner == rank_ && assignment[i] != rank_)
+            arriving.emplace_back(static_cast<int>(i),
+                                  std::vector<float>(4 * size_t(wall_.screens[bands_[i].screen].widthPx) *
+                                                     bands_[i].height));
+    for (auto& [band, pixels] : arriving)
+        incoming.push_back({assignment[band], band, &pixels});
+    world.exchange(outgoing, incoming);
+    for (auto& [band, pixels] : arriving) {
+        const cluster::Band& b = bands_[band];
+        io::Image image;
+        image.width = wall_.screens[b.screen].widthPx;
+        image.height = b.height;
+        image.rgba = std::move(pixels);
+        io::pasteTile(screens_.at(b.screen), image, 0, b.y0);
+    }
+    timing.exchangeMs = millisecondsSince(exchangeStart);
+    return costs;
+}
+
+std::vector<char> packBandCosts(const std::vector<BandCost>& costs)
+{
+    std::vector<char> bytes(costs.size() * sizeof(BandCost));
+    if (!costs.empty())
+        std::memcpy(bytes.data(), costs.data(), bytes.size());
+    return bytes;
+}
+
+std::vector<double> unpackBandCosts(const std::vector<char>& bytes, size_t bandCount)
+{
+    std::vector<double> cost(bandCount, std::numeric_limits<double>::quiet_NaN());
+    for (size_t at = 0; at + sizeof(BandCost) <= bytes.size(); at += sizeof(BandCost)) {
+        BandCost c;
+        std::memcpy(&c, bytes.data() + at, sizeof c);
+        cost[static_cast<size_t>(c.band)] = c.cpuMs;
+    }
+    return cost;
+}
+
+} // namespace aurorawall::app

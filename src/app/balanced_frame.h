@@ -1,0 +1,61 @@
+#pragma once
+// This rank's part of a load-balanced frame (issue 5, src/cluster/load_balancer.h): it renders
+// the bands the master assigned to it, sends those that belong to other ranks' screens, and
+// receives its own screens' bands from whoever rendered them. Every pixel is traced with the
+// same rays as without balancing (the wall canvas makes a band's rays independent of who traces
+// them), so the balanced wall equals the unbalanced one.
+#include "cluster/load_balancer.h"
+#include "cluster/mpi_world.h"
+#include "gl/float_target.h"
+#include "gl/full_screen_triangle.h"
+#include "io/image.h"
+#include "render/tile_renderer.h"
+#include "wall/wall.h"
+
+#include <map>
+#include <memory>
+#include <utility>
+#include <vector>
+
+namespace aurorawall::app {
+
+struct BandCost {
+    int band = 0;
+    double cpuMs = 0.0; // process CPU time to draw it and read it back
+};
+
+class BalancedFrame {
+public:
+    BalancedFrame(const wall::Wall& wall, std::vector<cluster::Band> bands, int rank);
+
+    struct Timing {
+        double renderMs = 0.0, renderCpuMs = 0.0, exchangeMs = 0.0;
+    };
+
+    // Needs the context whose objects it uses current (the GLFW backend: window 0).
+    std::vector<BandCost> render(render::TileRenderer& renderer, const std::vector<int>& assignment,
+                                 const cluster::MpiWorld& world, Timing& timing);
+
+    // The complete pixels of one of this rank's screens (top-down rows), after render().
+    const io::Image& screenImage(int screen) const { return screens_.at(screen); }
+
+private:
+    struct Target {
+        std::unique_ptr<gl::FloatTarget> target;
+        std::unique_ptr<gl::FullScreenTriangle> triangle;
+    };
+    Target& targetFor(int width, int height);
+
+    const wall::Wall& wall_;
+    std::vector<cluster::Band> bands_;
+    int rank_;
+    std::map<int, io::Image> screens_;
+    std::map<std::pair<int, int>, Target> targets_;
+};
+
+// Band costs travel to the master as bytes; it turns them into one value per band (NaN where no
+// rank reported one).
+std::vector<char> packBandCosts(const std::vector<BandCost>& costs);
+std::vector<double> unpackBandCosts(const std::vector<char>& bytes, size_t bandCount);
+
+} // namespace aurorawall::app

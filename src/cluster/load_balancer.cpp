@@ -1,0 +1,68 @@
+#include "cluster/load_balancer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <stdexcept>
+
+namespace aurorawall::cluster {
+
+std::vector<Band> makeBands(const wall::Wall& wall, int bandsPerScreen)
+{
+    if (bandsPerScreen < 1)
+        throw std::invalid_argument("bands per screen must be at least 1");
+    std::vector<Band> bands;
+    for (int s = 0; s < static_cast<int>(wall.screens.size()); ++s) {
+        const wall::Screen& screen = wall.screens[s];
+        const int count = std::min(bandsPerScreen, screen.heightPx);
+        for (int b = 0; b < count; ++b) {
+            const int y0 = b * screen.heightPx / count, y1 = (b + 1) * screen.heightPx / count;
+            bands.push_back({s, y0, y1 - y0, screen.rank});
+        }
+    }
+    return bands;
+}
+
+LoadBalancer::LoadBalancer(std::vector<Band> bands, int ranks, double smoothing)
+    : bands_(std::move(bands)), ranks_(ranks), smoothing_(smoothing), costs_(bands_.size(), 0.0)
+{
+    for (const Band& b : bands_)
+        previous_.push_back(b.owner);
+}
+
+void LoadBalancer::observe(const std::vector<double>& bandCost)
+{
+    for (size_t i = 0; i < costs_.size(); ++i) {
+        if (!std::isfinite(bandCost[i]))
+            continue;
+        costs_[i] = measured_ ? (1.0 - smoothing_) * costs_[i] + smoothing_ * bandCost[i] : bandCost[i];
+    }
+    measured_ = true;
+}
+
+std::vector<int> LoadBalancer::assign(double tolerance)
+{
+    if (!measured_)
+        return previous_;
+    const double total = std::accumulate(costs_.begin(), costs_.end(), 0.0);
+    const double limit = (1.0 + tolerance) * total / ranks_;
+    std::vector<size_t> order(bands_.size());
+    std::iota(order.begin(), order.end(), size_t(0));
+    std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return costs_[a] > costs_[b]; });
+    std::vector<double> load(static_cast<size_t>(ranks_), 0.0);
+    std::vector<int> assignment(bands_.size(), 0);
+    for (size_t i : order) {
+        const double c = costs_[i];
+        int rank = previous_[i];
+        if (load[rank] + c > limit)
+            rank = bands_[i].owner;
+        if (load[rank] + c > limit)
+            rank = static_cast<int>(std::min_element(load.begin(), load.end()) - load.begin());
+        load[rank] += c;
+        assignment[i] = rank;
+    }
+    previous_ = assignment;
+    return assignment;
+}
+
+} // namespace aurorawall::cluster

@@ -1,0 +1,51 @@
+#pragma once
+// Dynamic load balancing across the wall (issue 5; the idea of Equalizer's load equalizer,
+// Eilemann et al. 2009): every screen is cut into horizontal bands; each frame every band is
+// rendered by some rank, and bands rendered away from their screen's rank travel to it before the
+// swap. The split follows the measured cost of each band, smoothed so it does not oscillate.
+// Pure bookkeeping: no MPI, no GL.
+#include "wall/wall.h"
+
+#include <vector>
+
+namespace aurorawall::cluster {
+
+struct Band {
+    int screen = 0; // index into wall.screens
+    int y0 = 0;     // first row (from the screen's top)
+    int height = 0;
+    int owner = 0;  // the rank that shows this screen
+};
+
+// Every screen cut into `bandsPerScreen` bands of nearly equal height (at least one row each).
+std::vector<Band> makeBands(const wall::Wall& wall, int bandsPerScreen);
+
+class LoadBalancer {
+public:
+    // smoothing: weight of the newest measurement in the exponential average of each band's cost.
+    LoadBalancer(std::vector<Band> bands, int ranks, double smoothing = 0.5);
+
+    const std::vector<Band>& bands() const { return bands_; }
+
+    // Which rank renders each band next frame. Before any measurement every band stays with its
+    // owner. Then, heaviest band first, a band goes to its previous renderer while that rank stays
+    // within `tolerance` of the mean load (hysteresis: no band hops for a tiny gain), else to its
+    // owner under the same condition, else to the least loaded rank. Deterministic.
+    std::vector<int> assign(double tolerance = 0.05);
+
+    // The measured cost of each band this frame (ms, any consistent unit; NaN: not measured).
+    void observe(const std::vector<double>& bandCost);
+
+    // The smoothed cost estimates.
+    const std::vector<double>& costs() const { return costs_; }
+
+private:
+    std::vector<Band> bands_;
+    int ranks_;
+    double smoothing_;
+    bool measured_ = false;
+    std::vector<double> costs_;
+    std::vector<int> previous_;
+};
+
+} // namespace aurorawall::cluster
