@@ -18,6 +18,7 @@ namespace aurorawall::render {
 namespace f64 {
 AURORAWALL_GLSL_PRECISION(double)
 #include "render/ray_sphere.glsl"
+#include "render/layers.glsl"
 } // namespace f64
 
 namespace {
@@ -187,50 +188,34 @@ glm::dvec3 ReferenceModel::auroraSegment(glm::dvec3 o, glm::dvec3 d, double t0, 
     return sum;
 }
 
-// shadeRay of shaders/render/composite.glsl in double, same layers in the same order.
+// shadeRay of shaders/render/composite.glsl in double: the layers from the shared module
+// render/layers.glsl, composited front to back in the same order.
 glm::dvec3 ReferenceModel::radiance(glm::dvec3 o, glm::dvec3 direction) const
 {
     using scene::Component;
     const glm::dvec3 d = glm::normalize(direction);
     const double R = scene_.planet.radiusKm;
-    const double altitude = glm::length(o) - R;
+    const bool hasAtmosphere = scene_.has(Component::Atmosphere), hasAurora = scene_.has(Component::Aurora);
+    const scene::Atmosphere& air = scene_.atmosphere;
+    const f64::RayLayers layers =
+        f64::rayLayers(o, d, R, glm::length(o) - R, hasAtmosphere ? air.topKm : 0.0,
+                       hasAurora ? scene_.aurora.bottomKm : 0.0, hasAurora ? scene_.aurora.topKm : 0.0);
+    const bool hasPlanet = scene_.has(Component::Planet);
+    if (hasPlanet && layers.insideGround)
+        return glm::dvec3(0.0);
     glm::dvec3 radiance(0.0);
-    double tEnd = 1e300;
-    bool hitsGround = false;
-    if (scene_.has(Component::Planet)) {
-        if (altitude < 0.0)
-            return radiance;
-        const glm::dvec2 ground = f64::raySphere(o, d, R, altitude);
-        if (ground.x <= ground.y && ground.y > 0.0) {
-            hitsGround = true;
-            tEnd = std::max(ground.x, 0.0);
-        }
-    }
-
     glm::dvec3 transmittance(1.0);
-    double atmosphereEnd = -1.0;
-    if (scene_.has(Component::Atmosphere)) {
-        const scene::Atmosphere& air = scene_.atmosphere;
-        glm::dvec2 span = f64::raySphere(o, d, R + air.topKm, altitude - air.topKm);
-        span = glm::dvec2(std::max(span.x, 0.0), std::min(span.y, tEnd));
-        if (span.x < span.y) {
-            const double airmass = exactAirmass(o, d, span.x, span.y, air.scaleHeightKm, R);
-            transmittance = glm::exp(-air.extinctionPerKm * airmass);
-            radiance += air.skyGlow * (1.0 - transmittance);
-            atmosphereEnd = span.y;
-        }
+    if (hasAtmosphere && layers.atmosphere.x < layers.atmosphere.y) {
+        const double airmass = exactAirmass(o, d, layers.atmosphere.x, layers.atmosphere.y, air.scaleHeightKm, R);
+        transmittance = glm::exp(-air.extinctionPerKm * airmass);
+        radiance += air.skyGlow * (1.0 - transmittance);
     }
-
-    if (scene_.has(Component::Aurora)) {
-        const scene::Aurora& a = scene_.aurora;
-        const f64::ShellSegments shell =
-            f64::rayShell(o, d, R + a.bottomKm, altitude - a.bottomKm, R + a.topKm, altitude - a.topKm, tEnd);
-        for (const glm::dvec2 seg : {shell.first, shell.second})
+    if (hasAurora)
+        for (const glm::dvec2 seg : {layers.auroraNear, layers.auroraFar})
             if (seg.x < seg.y)
-                radiance += auroraSegment(o, d, seg.x, seg.y) * (seg.x >= atmosphereEnd ? transmittance : glm::dvec3(1.0));
-    }
-
-    if (hitsGround)
+                radiance += auroraSegment(o, d, seg.x, seg.y) *
+                            (f64::behindAtmosphere(seg, layers.atmosphere) ? transmittance : glm::dvec3(1.0));
+    if (hasPlanet && layers.groundT >= 0.0)
         radiance += scene_.planet.surfaceRadiance * transmittance;
     return radiance;
 }

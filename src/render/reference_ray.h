@@ -2,7 +2,7 @@
 // A double-precision CPU reference of the renderer's model for single rays (issue 3, part 11): the
 // radiance shaders/render/composite.glsl and shaders/scene/aurora_curtains.glsl compute, without
 // their approximations. Same model, exact evaluation:
-//   - layers: the shared ray-sphere module (shaders/render/ray_sphere.glsl) compiled in double;
+//   - layers: the shared modules shaders/render/ray_sphere.glsl and layers.glsl compiled in double;
 //   - curtains: the same keyframes (render/curtain_frames.h) sampled into the same dense polylines
 //     (aurora::sampleCurtain); curtain coordinates (s, u) by exact projection on every segment of the
 //     nearest curtain (no footprint map); a curtain emits within reachKm of its centre line, as the
