@@ -1,33 +1,15 @@
 #include "app/balanced_frame.h"
 
+#include "common/clock.h"
 #include "gl/functions.h"
 #include "wall/tile_rays.h"
 
 #include <chrono>
 #include <cmath>
 #include <cstring>
-#include <ctime>
 #include <limits>
 
 namespace aurorawall::app {
-
-namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double millisecondsSince(Clock::time_point start)
-{
-    return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
-
-double processCpuMilliseconds()
-{
-    timespec t{};
-    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
-    return 1e3 * static_cast<double>(t.tv_sec) + 1e-6 * static_cast<double>(t.tv_nsec);
-}
-
-} // namespace
 
 BalancedFrame::BalancedFrame(const wall::Wall& wall, std::vector<cluster::Band> bands, int rank)
     : wall_(wall), bands_(std::move(bands)), rank_(rank)
@@ -53,7 +35,7 @@ std::vector<BandCost> BalancedFrame::render(render::TileRenderer& renderer, cons
     std::vector<BandCost> costs;
     std::vector<std::vector<float>> outgoingPixels;
     std::vector<cluster::MpiWorld::Message> outgoing, incoming;
-    const auto start = Clock::now();
+    const auto start = SteadyClock::now();
     const double cpuStart = processCpuMilliseconds();
     for (size_t i = 0; i < bands_.size(); ++i) {
         if (assignment[i] != rank_)
@@ -78,7 +60,7 @@ std::vector<BandCost> BalancedFrame::render(render::TileRenderer& renderer, cons
     timing.renderCpuMs = processCpuMilliseconds() - cpuStart;
 
     // 2. Exchange: my screens' bands drawn elsewhere come in, other screens' bands go out.
-    const auto exchangeStart = Clock::now();
+    const auto exchangeStart = SteadyClock::now();
     std::vector<std::pair<int, std::vector<float>>> arriving;
     for (size_t i = 0; i < bands_.size(); ++i)
         if (bands_[i].owner == rank_ && assignment[i] != rank_)

@@ -6,6 +6,7 @@
 #include "cluster/frame_stats.h"
 #include "cluster/master_clock.h"
 #include "cluster/mpi_world.h"
+#include "common/clock.h"
 #include "common/data_dir.h"
 #include "common/input_error.h"
 #include "gl/context.h"
@@ -23,7 +24,6 @@
 #include "wall/wall_file.h"
 
 #include <chrono>
-#include <ctime>
 #include <filesystem>
 #include <cstdio>
 #include <cstring>
@@ -35,21 +35,6 @@
 namespace aurorawall::app {
 
 namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double millisecondsSince(Clock::time_point start)
-{
-    return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
-
-// CPU time used so far by every thread of this process (llvmpipe renders on threads of ours).
-double processCpuMilliseconds()
-{
-    timespec t{};
-    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
-    return 1e3 * static_cast<double>(t.tv_sec) + 1e-6 * static_cast<double>(t.tv_nsec);
-}
 
 // Runs one set-up step on every rank and agrees on its outcome: returns false on every rank
 // if any rank threw (rank 0 has printed the reasons).
@@ -257,7 +242,7 @@ int runRenderCommand(int argc, char** argv)
     bool stopRequested = false;
     cluster::FrameState frame;
     while (true) {
-        const auto frameStart = Clock::now();
+        const auto frameStart = SteadyClock::now();
         if (world.isMaster())
             frame = clock->next(stopRequested);
         world.broadcast(frame);
@@ -265,7 +250,7 @@ int runRenderCommand(int argc, char** argv)
             break;
 
         cluster::RankReport report{frame.frame, frame.timeS};
-        auto phase = Clock::now();
+        auto phase = SteadyClock::now();
         context->makeCurrent(0);
         renderer->setFrame(frame);
         report.prepareMs = millisecondsSince(phase);
@@ -288,7 +273,7 @@ int runRenderCommand(int argc, char** argv)
                     uploadToTarget(balanced->screenImage(tile.screenIndex), *tile.target);
                 }
         } else {
-            phase = Clock::now();
+            phase = SteadyClock::now();
             const double cpuStart = processCpuMilliseconds();
             for (Tile& tile : tiles) {
                 context->makeCurrent(tile.window);
@@ -302,13 +287,13 @@ int runRenderCommand(int argc, char** argv)
             report.renderCpuMs = processCpuMilliseconds() - cpuStart;
         }
 
-        phase = Clock::now();
+        phase = SteadyClock::now();
         if (presenter)
             for (Tile& tile : tiles)
                 presenter->present(*context, tile.window, *tile.target, *tile.triangle);
         world.swapBarrier();
         report.waitMs = millisecondsSince(phase);
-        phase = Clock::now();
+        phase = SteadyClock::now();
         if (presenter) {
             for (Tile& tile : tiles)
                 context->swapBuffers(tile.window);

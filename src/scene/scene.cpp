@@ -224,10 +224,7 @@ static Scene loadSceneAtDepth(const std::string& path, int depth)
         const TableReader t = top.optionalTable("sky");
         s.sky.topKm = t.number("top_km", 1.0, 1000.0, s.sky.topKm);
         s.sky.viewSteps = static_cast<int>(t.number("view_steps", 1, 1024, s.sky.viewSteps));
-        const std::string method = t.string("light_method", s.sky.nestedMarch ? "nested-march" : "closed-form");
-        if (method != "closed-form" && method != "nested-march")
-            t.fail("light_method", "must be \"closed-form\" or \"nested-march\" (got \"" + method + "\")");
-        s.sky.nestedMarch = method == "nested-march";
+        s.sky.nestedMarch = t.choice("light_method", {"closed-form", "nested-march"}, s.sky.nestedMarch) == 1;
         s.sky.lightSteps = static_cast<int>(t.number("light_steps", 1, 1024, s.sky.lightSteps));
         if (t.has("light")) {
             s.sky.lights.clear();
@@ -242,10 +239,10 @@ static Scene loadSceneAtDepth(const std::string& path, int depth)
         if (!s.has(Component::Planet))
             meta.fail("components", "'aurora' needs 'planet'");
         const TableReader t = top.optionalTable("aurora");
-        const std::string spectrum = t.string("spectrum", "maxwellian");
-        if (spectrum != "maxwellian" && spectrum != "monoenergetic")
-            t.fail("spectrum", "must be \"maxwellian\" or \"monoenergetic\" (got \"" + spectrum + "\")");
-        s.aurora.spectrum = spectrum == "maxwellian" ? ElectronSpectrum::Maxwellian : ElectronSpectrum::Monoenergetic;
+        s.aurora.spectrum = t.choice("spectrum", {"maxwellian", "monoenergetic"},
+                                     s.aurora.spectrum == ElectronSpectrum::Maxwellian ? 0 : 1) == 0
+                                ? ElectronSpectrum::Maxwellian
+                                : ElectronSpectrum::Monoenergetic;
         s.aurora.bottomKm = t.number("bottom_km", 1.0, 5000.0, s.aurora.bottomKm);
         s.aurora.topKm = t.number("top_km", 1.0, 5000.0, s.aurora.topKm);
         if (s.aurora.topKm <= s.aurora.bottomKm)
@@ -257,10 +254,7 @@ static Scene loadSceneAtDepth(const std::string& path, int depth)
         s.aurora.footprintMapSize = static_cast<int>(t.number("footprint_map_size", 16, 8192, s.aurora.footprintMapSize));
         if (s.aurora.footprintMapSize & (s.aurora.footprintMapSize - 1))
             t.fail("footprint_map_size", "must be a power of two");
-        const std::string skipping = t.string("skip_empty_space", s.aurora.skipEmptySpace ? "yes" : "no");
-        if (skipping != "yes" && skipping != "no")
-            t.fail("skip_empty_space", "must be \"yes\" or \"no\"");
-        s.aurora.skipEmptySpace = skipping == "yes";
+        s.aurora.skipEmptySpace = t.choice("skip_empty_space", {"no", "yes"}, s.aurora.skipEmptySpace) == 1;
         s.aurora.tableAltitudeStepKm = t.number("table_altitude_step_km", 0.05, 10.0, s.aurora.tableAltitudeStepKm);
         s.aurora.tableEnergyCount = static_cast<int>(t.number("table_energy_count", 2, 4096, s.aurora.tableEnergyCount));
         if (t.has("curtain")) {

@@ -115,6 +115,20 @@ std::string TableReader::string(const std::string& key, const std::string& fallb
     return has(key) ? string(key) : fallback;
 }
 
+int TableReader::choice(const std::string& key, const std::vector<std::string>& words, int fallback) const
+{
+    if (!has(key))
+        return fallback;
+    const std::string word = string(key);
+    for (size_t i = 0; i < words.size(); ++i)
+        if (word == words[i])
+            return static_cast<int>(i);
+    std::string list;
+    for (const std::string& w : words)
+        list += (list.empty() ? "\"" : ", \"") + w + "\"";
+    fail(key, "must be one of " + list + " (got \"" + word + "\")");
+}
+
 std::vector<std::string> TableReader::strings(const std::string& key) const
 {
     const TomlValue& v = at(key);

@@ -28,6 +28,8 @@ public:
     std::string string(const std::string& key) const;
     std::string string(const std::string& key, const std::string& fallback) const;
     std::vector<std::string> strings(const std::string& key) const;
+    // One of the given words; returns its index (fallback when the key is absent).
+    int choice(const std::string& key, const std::vector<std::string>& words, int fallback) const;
     glm::dvec3 vector3(const std::string& key) const;
     // An array of [a, b] pairs, e.g. latitude/longitude control points.
     std::vector<glm::dvec2> pairs(const std::string& key, glm::dvec2 lo, glm::dvec2 hi) const;
