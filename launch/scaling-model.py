@@ -2,7 +2,7 @@
 """Tables and plot of the powerwall scaling experiment (launch/scaling; docs/BENCHMARKS.md).
 
 Input: the runs.csv written by launch/scaling (one line per rank count: the GPU grid, the tile
-size, the warm-up frames and the --stats CSV of that run). Every stats CSV has, per frame, the
+size, the warm-up frames, the --stats CSV of that run and the other load on the machine). Every stats CSV has, per frame, the
 master's wall-clock frame time and, per rank, prepare_ms, render_ms, render_cpu_ms, wait_ms and
 swap_ms (src/cluster/frame_stats.h). Frames before the warm-up count are left out.
 
@@ -20,7 +20,8 @@ Two sets of numbers:
   the least disturbed measurement of the same work: the minimum prepare_ms over every rank of
   every run at the same animation time. comm is the communication on the critical path
   (broadcast + swap barrier + report gather), see sync below, measured where every rank had a
-  core of its own (N <= cores); for larger N it is the largest such measurement scaled by the
+  core of its own (N <= cores), in the frame where it was smallest (other processes can only
+  delay a rank, never speed the messages up); for larger N it is the largest such measurement scaled by the
   depth of a binomial tree, ceil(log2 N) / ceil(log2 N_measured), as Open MPI's broadcast,
   barrier and gather are trees. (This is shared memory, not a network: an InfiniBand or Ethernet
   hop costs 2-50 us, still far below the frame time.)
@@ -86,6 +87,8 @@ def read_runs(runs_csv):
         for row in csv.DictReader(f):
             run = {key: int(row[key]) for key in ("ranks", "gpu_columns", "gpu_rows", "tile_width_px", "tile_height_px")}
             run["frames"] = read_stats(os.path.join(folder, row["stats"]), int(row["warmup"]))
+            # Cores' worth of CPU other processes used during the run (launch/scaling measures it).
+            run["other_load"] = row.get("other_load_cores") or "-"
             runs.append(run)
     return sorted(runs, key=lambda run: run["ranks"])
 
@@ -122,6 +125,9 @@ def analyse(runs, cores):
                 "imbalance_wait": statistics.fmean(r["wait_ms"] for r in ranks) - barrier,
             })
         run["mean"] = {key: statistics.fmean(f[key] for f in per_frame) for key in per_frame[0]}
+        # The communication itself is the same every frame; what varies is other processes
+        # delaying a rank: the least disturbed frame measures it.
+        run["mean"]["sync_min"] = min(f["sync"] for f in per_frame)
         run["rank_cpu"] = [statistics.fmean(fr["ranks"][r]["render_cpu_ms"] for fr in run["frames"])
                            for r in range(run["ranks"])]
 
@@ -132,9 +138,9 @@ def analyse(runs, cores):
     for run in runs:
         m = run["mean"]
         if run["ranks"] <= cores:
-            m["comm"], m["comm_source"] = m["sync"], "measured"
+            m["comm"], m["comm_source"] = m["sync_min"], "measured"
         else:
-            m["comm"] = reference["mean"]["sync"] * tree_depth(run["ranks"]) / tree_depth(reference["ranks"])
+            m["comm"] = reference["mean"]["sync_min"] * tree_depth(run["ranks"]) / tree_depth(reference["ranks"])
             m["comm_source"] = f"{reference['ranks']}-rank x {tree_depth(run['ranks'])}/{tree_depth(reference['ranks'])}"
         m["modelled_ms"] = m["work_cpu"] + m["comm"]
         m["fps_wall"] = 1e3 / m["frame_ms"]
@@ -193,8 +199,8 @@ def report(runs, cores):
         if run["ranks"] <= cores:
             m = run["mean"]
             rows.append([run["ranks"], f"{m['frame_ms']:.1f}", f"{m['modelled_ms']:.1f}",
-                         f"{(m['modelled_ms'] - m['frame_ms']) / m['frame_ms']:+.1%}"])
-    out.append(table(["ranks", "wall-clock frame", "modelled frame", "model - wall"], rows))
+                         f"{(m['modelled_ms'] - m['frame_ms']) / m['frame_ms']:+.1%}", run["other_load"]])
+    out.append(table(["ranks", "wall-clock frame", "modelled frame", "model - wall", "other load (cores)"], rows))
 
     out.append("\nMean render CPU time per rank (ms), laid out as the wall (rank 0 top left)\n")
     for run in runs:
