@@ -34,7 +34,9 @@ vec4 segmentProjection(int c, int j, vec3 n)
     float R = uPlanetRadiusKm;
     vec4 a = texelFetch(uCurtainPolylines, ivec2(j, c), 0);
     vec4 b = texelFetch(uCurtainPolylines, ivec2(j + 1, c), 0);
-    vec3 normal = normalize(cross(a.xyz, b.xyz));
+    // cross(a, b - a), not cross(a, b): for points kilometres apart the latter cancels to about 4
+    // digits in float and tilts the great circle by up to a kilometre at the segment's end.
+    vec3 normal = normalize(cross(a.xyz, b.xyz - a.xyz));
     float along = R * atan(dot(cross(a.xyz, n), normal), dot(a.xyz, n));
     float length = b.w - a.w;
     return vec4(along, length, R * asin(clamp(dot(n, normal), -1.0, 1.0)), max(max(-along, along - length), 0.0));
@@ -100,7 +102,10 @@ vec3 auroraSegment(vec3 o, vec3 d, vec2 seg)
 {
     vec3 sum = vec3(0.0);
     float t = seg.x;
-    for (int i = 0; i < 8192 && t < seg.y; ++i) {
+    // Every step is at least uAuroraStepKm, so this bound is never reached by a finite segment;
+    // it only guards against a NaN segment end.
+    int steps = int(min(ceil((seg.y - seg.x) / uAuroraStepKm), 4.0e6)) + 1;
+    for (int i = 0; i < steps && t < seg.y; ++i) {
         vec3 p = o + t * d;
         float h = length(p) - uPlanetRadiusKm;
         CurtainHit hit = sampleCurtains(p, h);

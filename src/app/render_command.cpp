@@ -251,9 +251,11 @@ int runRenderCommand(int argc, char** argv)
 
         cluster::RankReport report{frame.frame, frame.timeS};
         auto phase = SteadyClock::now();
+        const double prepareCpuStart = processCpuMilliseconds();
         context->makeCurrent(0);
         renderer->setFrame(frame);
         report.prepareMs = millisecondsSince(phase);
+        report.prepareCpuMs = processCpuMilliseconds() - prepareCpuStart;
         if (balanced) {
             if (world.isMaster())
                 assignment = balancer->assign();

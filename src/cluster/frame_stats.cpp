@@ -80,7 +80,8 @@ void FrameStats::write(const std::string& path) const
     if (csv) {
         out << "frame,time_s,frame_ms,fps,mpixel_per_s,render_max_ms,render_mean_ms,imbalance";
         for (size_t r = 0; r < ranks; ++r)
-            out << ",frame_rank" << r << ",time_s_rank" << r << ",prepare_ms_rank" << r << ",render_ms_rank" << r
+            out << ",frame_rank" << r << ",time_s_rank" << r << ",prepare_ms_rank" << r << ",prepare_cpu_ms_rank" << r
+                << ",render_ms_rank" << r
                 << ",render_cpu_ms_rank" << r << ",exchange_ms_rank" << r << ",wait_ms_rank" << r << ",swap_ms_rank" << r;
         out << "\n";
         for (const FrameRecord& f : records_) {
@@ -88,7 +89,7 @@ void FrameStats::write(const std::string& path) const
                 << pixelsPerFrame_ / (f.frameMs * 1e3) << "," << f.maxRenderMs() << "," << f.meanRenderMs() << ","
                 << f.imbalance();
             for (const RankReport& r : f.ranks)
-                out << "," << r.frame << "," << r.timeS << "," << r.prepareMs << "," << r.renderMs << ","
+                out << "," << r.frame << "," << r.timeS << "," << r.prepareMs << "," << r.prepareCpuMs << "," << r.renderMs << ","
                     << r.renderCpuMs << "," << r.exchangeMs << "," << r.waitMs << "," << r.swapMs;
             out << "\n";
         }
@@ -100,7 +101,8 @@ void FrameStats::write(const std::string& path) const
                 << ", \"frame_ms\": " << f.frameMs << ", \"imbalance\": " << f.imbalance() << ", \"ranks\": [";
             for (size_t r = 0; r < f.ranks.size(); ++r)
                 out << (r ? ", " : "") << "{\"frame\": " << f.ranks[r].frame << ", \"time_s\": " << f.ranks[r].timeS
-                    << ", \"prepare_ms\": " << f.ranks[r].prepareMs << ", \"render_ms\": " << f.ranks[r].renderMs
+                    << ", \"prepare_ms\": " << f.ranks[r].prepareMs << ", \"prepare_cpu_ms\": " << f.ranks[r].prepareCpuMs
+                    << ", \"render_ms\": " << f.ranks[r].renderMs
                     << ", \"render_cpu_ms\": " << f.ranks[r].renderCpuMs << ", \"exchange_ms\": " << f.ranks[r].exchangeMs
                     << ", \"wait_ms\": " << f.ranks[r].waitMs
                     << ", \"swap_ms\": " << f.ranks[r].swapMs << "}";

@@ -15,6 +15,7 @@ struct RankReport {
     std::uint64_t frame = 0;
     double timeS = 0.0;
     double prepareMs = 0.0;   // per-frame component work on the CPU (curtain map), wall time
+    double prepareCpuMs = 0.0; // the same as CPU time of the process
     double renderMs = 0.0;    // its tiles drawn and finished (glFinish), wall time
     double renderCpuMs = 0.0; // CPU time of the whole process while rendering, all threads
                               // (llvmpipe's included): the rank's own work, even on a shared machine
