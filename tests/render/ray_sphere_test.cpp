@@ -97,11 +97,11 @@ TEST(RaySphere, ShellSplitsAroundTheInnerSphere)
     EXPECT_LT(level.first.x, level.first.y);
     EXPECT_LT(level.second.x, level.second.y);
     EXPECT_GT(level.second.x, level.first.y);
-    // The float evaluation finds the same two parts to well within a metre.
+    // The float evaluation finds the same two parts within float resolution of the distances.
     const f32::ShellSegments single = f32::rayShell(glm::vec3(o), glm::vec3(slanting), float(bottom), 15.0f, float(top),
                                                     -200.0f, 1e30f);
-    EXPECT_NEAR(single.first.y, level.first.y, 1e-3 * level.first.y + 1e-3);
-    EXPECT_NEAR(single.second.x, level.second.x, 1e-3 * level.second.x + 1e-3);
+    EXPECT_NEAR(single.first.y, level.first.y, 4e-7 * level.first.y + 1e-3);
+    EXPECT_NEAR(single.second.x, level.second.x, 4e-7 * level.second.x + 1e-3);
     const f64::ShellSegments up = f64::rayShell(o, {0, 0, 1}, bottom, 15.0, top, -200.0, 1e30);
     EXPECT_NEAR(up.first.y, 200.0, 1e-9);
     EXPECT_GT(up.second.x, up.second.y);
