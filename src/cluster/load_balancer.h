@@ -23,7 +23,7 @@ std::vector<Band> makeBands(const wall::Wall& wall, int bandsPerScreen);
 class LoadBalancer {
 public:
     // smoothing: weight of the newest measurement in the exponential average of each band's cost.
-    LoadBalancer(std::vector<Band> bands, int ranks, double smoothing = 0.5);
+    LoadBalancer(std::vector<Band> bands, int ranks, double smoothing = 0.8);
 
     const std::vector<Band>& bands() const { return bands_; }
 
@@ -31,7 +31,7 @@ public:
     // owner. Then, heaviest band first, a band goes to its previous renderer while that rank stays
     // within `tolerance` of the mean load (hysteresis: no band hops for a tiny gain), else to its
     // owner under the same condition, else to the least loaded rank. Deterministic.
-    std::vector<int> assign(double tolerance = 0.05);
+    std::vector<int> assign(double tolerance = 0.02);
 
     // The measured cost of each band this frame (ms, any consistent unit; NaN: not measured).
     void observe(const std::vector<double>& bandCost);
