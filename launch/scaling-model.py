@@ -73,7 +73,9 @@ def read_stats(path, warmup):
                 "time_s": float(row["time_s"]),
                 "frame_ms": frame_ms,
                 "pixels": float(row["mpixel_per_s"]) * frame_ms * 1e3,
-                "ranks": [{p: float(row[f"{p}_rank{r}"]) for p in PHASES} for r in range(count)],
+                "ranks": [dict({p: float(row[f"{p}_rank{r}"]) for p in PHASES},
+                               # Load balancing moves band pixels between ranks (0 for the static split).
+                               exchange_mb=float(row.get(f"exchange_mb_rank{r}") or 0.0)) for r in range(count)],
             })
     if not frames:
         sys.exit(f"scaling-model: {path} has no frames after the {warmup} warm-up frame(s)")
@@ -97,7 +99,7 @@ def tree_depth(n):
     return max(1, math.ceil(math.log2(n))) if n > 1 else 1
 
 
-def analyse(runs, cores):
+def analyse(runs, cores, bandwidth_gb_s=1.25):
     """Adds the per-run summary (means over the measured frames) to every run; returns the runs."""
     # The least disturbed measurement of each animation time's prepare work, over all runs.
     prepare = {}
@@ -122,6 +124,7 @@ def analyse(runs, cores):
                 "imbalance": max(cpu) / statistics.fmean(cpu) if statistics.fmean(cpu) > 0 else 1.0,
                 "sync": fr["frame_ms"] - max(r["prepare_ms"] + r["render_ms"] for r in ranks) - max(r["swap_ms"] for r in ranks),
                 "barrier": barrier,
+                "exchange_mb_max": max(r["exchange_mb"] for r in ranks),
                 "imbalance_wait": statistics.fmean(r["wait_ms"] for r in ranks) - barrier,
             })
         run["mean"] = {key: statistics.fmean(f[key] for f in per_frame) for key in per_frame[0]}
@@ -142,7 +145,10 @@ def analyse(runs, cores):
         else:
             m["comm"] = reference["mean"]["sync_min"] * tree_depth(run["ranks"]) / tree_depth(reference["ranks"])
             m["comm_source"] = f"{reference['ranks']}-rank x {tree_depth(run['ranks'])}/{tree_depth(reference['ranks'])}"
-        m["modelled_ms"] = m["work_cpu"] + m["comm"]
+        # Band pixels of the load balancer cross the network: the busiest rank's megabytes at the
+        # link bandwidth (this machine's shared memory would be far faster; a cluster's network is not).
+        m["exchange"] = m["exchange_mb_max"] / bandwidth_gb_s
+        m["modelled_ms"] = m["work_cpu"] + m["comm"] + m["exchange"]
         m["fps_wall"] = 1e3 / m["frame_ms"]
         m["fps_model"] = 1e3 / m["modelled_ms"]
         m["mpix_wall"] = m["pixels"] * m["fps_wall"] / 1e6
@@ -188,9 +194,10 @@ def report(runs, cores):
     for run in runs:
         m = run["mean"]
         rows.append([run["ranks"], f"{m['prepare']:.1f}", f"{m['render_cpu_max']:.1f}", f"{m['render_cpu_mean']:.1f}",
-                     f"{m['imbalance']:.2f}", f"{m['comm']:.3f}", m["comm_source"], f"{m['modelled_ms']:.1f}",
+                     f"{m['imbalance']:.2f}", f"{m['comm']:.3f}", m["comm_source"], f"{m['exchange']:.2f}",
+                     f"{m['modelled_ms']:.1f}",
                      f"{m['frame_ms']:.1f}", f"{m['sync']:.3f}", f"{m['barrier']:.3f}", f"{m['imbalance_wait']:.1f}"])
-    out.append(table(["ranks", "prepare", "render cpu max", "render cpu mean", "imbalance", "comm", "comm from",
+    out.append(table(["ranks", "prepare", "render cpu max", "render cpu mean", "imbalance", "comm", "comm from", "exchange",
                       "modelled frame", "wall frame", "wall sync", "wall barrier", "wall imbalance wait"], rows))
 
     out.append(f"\nModel check where every rank has a core of its own (ranks <= {cores} cores)\n")
@@ -253,8 +260,11 @@ def main():
     parser.add_argument("runs", help="runs.csv written by launch/scaling")
     parser.add_argument("--cores", type=int, default=os.cpu_count(), help="cores of the machine that ran it (default: this one's)")
     parser.add_argument("--plot", help="write the speedup plot to this PNG (gnuplot)")
+    parser.add_argument("--bandwidth-gb-s", type=float, default=1.25,
+                        help="network bandwidth of the modelled cluster for load-balanced band pixels, GB/s "
+                             "(default 1.25: 10 Gigabit Ethernet)")
     args = parser.parse_args()
-    runs = analyse(read_runs(args.runs), args.cores)
+    runs = analyse(read_runs(args.runs), args.cores, args.bandwidth_gb_s)
     print(report(runs, args.cores))
     if args.plot:
         plot(runs, args.plot)

@@ -70,6 +70,12 @@ std::vector<BandCost> BalancedFrame::render(render::TileRenderer& renderer, cons
     for (auto& [band, pixels] : arriving)
         incoming.push_back({assignment[band], band, &pixels});
     world.exchange(outgoing, incoming);
+    size_t floats = 0;
+    for (const auto& m : outgoing)
+        floats += m.values->size();
+    for (const auto& m : incoming)
+        floats += m.values->size();
+    timing.exchangeMB = 1e-6 * static_cast<double>(floats * sizeof(float));
     for (auto& [band, pixels] : arriving) {
         const cluster::Band& b = bands_[band];
         io::Image image;

@@ -29,7 +29,7 @@ public:
     BalancedFrame(const wall::Wall& wall, std::vector<cluster::Band> bands, int rank);
 
     struct Timing {
-        double renderMs = 0.0, renderCpuMs = 0.0, exchangeMs = 0.0;
+        double renderMs = 0.0, renderCpuMs = 0.0, exchangeMs = 0.0, exchangeMB = 0.0;
     };
 
     // Needs the context whose objects it uses current (the GLFW backend: window 0).

@@ -211,7 +211,7 @@ int runRenderCommand(int argc, char** argv)
     std::vector<int> assignment;
     std::unique_ptr<BalancedFrame> balanced;
     std::unique_ptr<cluster::LoadBalancer> balancer;
-    if (options.balance) {
+    if (options.balance == "on" || (options.balance == "auto" && world.size() > 1)) {
         std::vector<cluster::Band> bands = cluster::makeBands(wallLayout, options.balanceBands);
         assignment.resize(bands.size());
         if (world.isMaster())
@@ -265,6 +265,7 @@ int runRenderCommand(int argc, char** argv)
             report.renderMs = timing.renderMs;
             report.renderCpuMs = timing.renderCpuMs;
             report.exchangeMs = timing.exchangeMs;
+            report.exchangeMB = timing.exchangeMB;
             std::vector<int> sizes;
             const std::vector<char> all = world.gatherBytes(packBandCosts(costs), sizes);
             if (world.isMaster())

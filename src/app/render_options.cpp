@@ -35,9 +35,10 @@ RenderOptions parseRenderOptions(int argc, char** argv)
         ("out", po::value(&o.outDir)->default_value(o.outDir), "output folder for images")
         ("gather", po::bool_switch(&o.gather), "rank 0 assembles the whole wall: OUT/wall.exr and OUT/wall.png")
         ("tiles", po::bool_switch(&o.tiles), "every rank writes its tiles: OUT/tile-<screen>.exr (linear, half float)")
-        ("balance", po::bool_switch(&o.balance),
-         "dynamic load balancing: every screen is cut into bands, and each frame ranks with cheap screens "
-         "render bands of expensive ones (split from measured costs, damped); the image is unchanged")
+        ("balance", po::value(&o.balance)->default_value(o.balance)->implicit_value("on"),
+         "dynamic load balancing, on|off|auto (auto: on with more than one rank): every screen is cut into "
+         "bands, and each frame ranks with cheap screens render bands of expensive ones (split from measured "
+         "costs, damped); the image is unchanged. Costs a readback and a transfer of the moved bands per frame")
         ("balance-bands", po::value(&o.balanceBands)->default_value(o.balanceBands),
          "bands per screen for --balance (1 to 256)")
         ("single-screen", po::bool_switch(&o.singleScreen),
@@ -83,6 +84,8 @@ RenderOptions parseRenderOptions(int argc, char** argv)
     }
     check(!o.outDir.empty(), "--out must not be empty");
     check(o.balanceBands >= 1 && o.balanceBands <= 256, "--balance-bands must be in [1, 256]");
+    check(o.balance == "on" || o.balance == "off" || o.balance == "auto",
+          "--balance must be on, off or auto (got '" + o.balance + "')");
     return o;
 }
 

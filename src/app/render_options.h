@@ -22,7 +22,7 @@ struct RenderOptions {
     bool gather = false;
     bool tiles = false;
     bool singleScreen = false;
-    bool balance = false;
+    std::string balance = "auto"; // on, off, or auto: on when more than one rank renders
     int balanceBands = 8;
     bool quiet = false;
     bool verbose = false;

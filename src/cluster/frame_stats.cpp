@@ -82,7 +82,7 @@ void FrameStats::write(const std::string& path) const
         for (size_t r = 0; r < ranks; ++r)
             out << ",frame_rank" << r << ",time_s_rank" << r << ",prepare_ms_rank" << r << ",prepare_cpu_ms_rank" << r
                 << ",render_ms_rank" << r
-                << ",render_cpu_ms_rank" << r << ",exchange_ms_rank" << r << ",wait_ms_rank" << r << ",swap_ms_rank" << r;
+                << ",render_cpu_ms_rank" << r << ",exchange_ms_rank" << r << ",exchange_mb_rank" << r << ",wait_ms_rank" << r << ",swap_ms_rank" << r;
         out << "\n";
         for (const FrameRecord& f : records_) {
             out << f.frame << "," << f.timeS << "," << f.frameMs << "," << 1000.0 / f.frameMs << ","
@@ -90,7 +90,7 @@ void FrameStats::write(const std::string& path) const
                 << f.imbalance();
             for (const RankReport& r : f.ranks)
                 out << "," << r.frame << "," << r.timeS << "," << r.prepareMs << "," << r.prepareCpuMs << "," << r.renderMs << ","
-                    << r.renderCpuMs << "," << r.exchangeMs << "," << r.waitMs << "," << r.swapMs;
+                    << r.renderCpuMs << "," << r.exchangeMs << "," << r.exchangeMB << "," << r.waitMs << "," << r.swapMs;
             out << "\n";
         }
     } else {
@@ -103,7 +103,7 @@ void FrameStats::write(const std::string& path) const
                 out << (r ? ", " : "") << "{\"frame\": " << f.ranks[r].frame << ", \"time_s\": " << f.ranks[r].timeS
                     << ", \"prepare_ms\": " << f.ranks[r].prepareMs << ", \"prepare_cpu_ms\": " << f.ranks[r].prepareCpuMs
                     << ", \"render_ms\": " << f.ranks[r].renderMs
-                    << ", \"render_cpu_ms\": " << f.ranks[r].renderCpuMs << ", \"exchange_ms\": " << f.ranks[r].exchangeMs
+                    << ", \"render_cpu_ms\": " << f.ranks[r].renderCpuMs << ", \"exchange_ms\": " << f.ranks[r].exchangeMs << ", \"exchange_mb\": " << f.ranks[r].exchangeMB
                     << ", \"wait_ms\": " << f.ranks[r].waitMs
                     << ", \"swap_ms\": " << f.ranks[r].swapMs << "}";
             out << "]}";

@@ -20,6 +20,7 @@ struct RankReport {
     double renderCpuMs = 0.0; // CPU time of the whole process while rendering, all threads
                               // (llvmpipe's included): the rank's own work, even on a shared machine
     double exchangeMs = 0.0;  // load balancing: sending and receiving band pixels
+    double exchangeMB = 0.0;  // megabytes of band pixels this rank sent plus received
     double waitMs = 0.0;      // from its tiles finished to the swap barrier's release
     double swapMs = 0.0;      // presenting and swapping its windows
     std::int32_t closeRequested = 0; // a window of this rank was closed

@@ -9,9 +9,9 @@ source "$(dirname "$0")/lib.sh"
 check_balance() {
     local name="$1" ranks="$2" wall="$WALLS/$1.ini"
     note "$name: $ranks ranks, static and --balance"
-    aw_mpirun "$ranks" render --wall "$wall" --scene "$SCENE" --frames 3 --gather --quiet \
+    aw_mpirun "$ranks" render --wall "$wall" --scene "$SCENE" --frames 3 --gather --quiet --balance off \
         --out "$WORK/$name-static" --stats "$WORK/$name-static.csv"
-    aw_mpirun "$ranks" render --wall "$wall" --scene "$SCENE" --frames 3 --gather --quiet --balance --balance-bands 5 \
+    aw_mpirun "$ranks" render --wall "$wall" --scene "$SCENE" --frames 3 --gather --quiet --balance on --balance-bands 5 \
         --out "$WORK/$name-balanced" --stats "$WORK/$name-balanced.csv"
     "$COMPARE" content "$WORK/$name-balanced/wall.exr" "$wall" --min-max 1e-3 --lit-above 5e-4 --min-lit-screens "$ranks"
     "$COMPARE" diff "$WORK/$name-static/wall.exr" "$WORK/$name-balanced/wall.exr" --half-ulps 0

@@ -83,6 +83,19 @@ class ModelTest(unittest.TestCase):
         self.assertAlmostEqual(self.runs[4]["comm"], 4.0)
         self.assertAlmostEqual(self.runs[4]["modelled_ms"], 135.0)
 
+    def test_exchanged_band_pixels_cost_their_megabytes_at_the_bandwidth(self):
+        # No exchange_mb column (the static split): nothing added.
+        self.assertEqual(self.runs[2]["exchange"], 0.0)
+        # 12.5 MB moved by the busiest rank at 1.25 GB/s (10 GbE) is 10 ms more per frame.
+        runs = model.read_runs(os.path.join(self.folder.name, "runs.csv"))
+        for run in runs:
+            for frame in run["frames"]:
+                for r, rank in enumerate(frame["ranks"]):
+                    rank["exchange_mb"] = 12.5 if r == 0 else 1.0
+        exchanged = {run["ranks"]: run["mean"] for run in model.analyse(runs, cores=2, bandwidth_gb_s=1.25)}
+        self.assertAlmostEqual(exchanged[2]["exchange"], 10.0)
+        self.assertAlmostEqual(exchanged[2]["modelled_ms"], self.runs[2]["modelled_ms"] + 10.0)
+
     def test_speedup_and_efficiency(self):
         self.assertAlmostEqual(self.runs[2]["speedup_model"], 2 * 116 / 128)
         self.assertAlmostEqual(self.runs[2]["efficiency_model"], 116 / 128)
