@@ -23,8 +23,9 @@ std::vector<Band> makeBands(const wall::Wall& wall, int bandsPerScreen)
     return bands;
 }
 
-LoadBalancer::LoadBalancer(std::vector<Band> bands, int ranks, double smoothing)
-    : bands_(std::move(bands)), ranks_(ranks), smoothing_(smoothing), costs_(bands_.size(), 0.0)
+LoadBalancer::LoadBalancer(std::vector<Band> bands, int ranks, double levelWeight, double trendWeight)
+    : bands_(std::move(bands)), ranks_(ranks), levelWeight_(levelWeight), trendWeight_(trendWeight),
+      level_(bands_.size(), 0.0), trend_(bands_.size(), 0.0)
 {
     for (const Band& b : bands_)
         previous_.push_back(b.owner);
@@ -32,27 +33,43 @@ LoadBalancer::LoadBalancer(std::vector<Band> bands, int ranks, double smoothing)
 
 void LoadBalancer::observe(const std::vector<double>& bandCost)
 {
-    for (size_t i = 0; i < costs_.size(); ++i) {
+    for (size_t i = 0; i < level_.size(); ++i) {
         if (!std::isfinite(bandCost[i]))
             continue;
-        costs_[i] = measured_ ? (1.0 - smoothing_) * costs_[i] + smoothing_ * bandCost[i] : bandCost[i];
+        if (measurements_ == 0) {
+            level_[i] = bandCost[i];
+            continue;
+        }
+        // Holt: L' = a x + (1 - a)(L + T), T' = b (L' - L) + (1 - b) T.
+        const double level = levelWeight_ * bandCost[i] + (1.0 - levelWeight_) * (level_[i] + trend_[i]);
+        trend_[i] = trendWeight_ * (level - level_[i]) + (1.0 - trendWeight_) * trend_[i];
+        level_[i] = level;
     }
-    measured_ = true;
+    ++measurements_;
+}
+
+std::vector<double> LoadBalancer::predictedCosts() const
+{
+    std::vector<double> predicted(level_.size());
+    for (size_t i = 0; i < level_.size(); ++i)
+        predicted[i] = std::max(level_[i] + trend_[i], 0.0);
+    return predicted;
 }
 
 std::vector<int> LoadBalancer::assign(double tolerance)
 {
-    if (!measured_)
+    if (measurements_ == 0)
         return previous_;
-    const double total = std::accumulate(costs_.begin(), costs_.end(), 0.0);
+    const std::vector<double> cost = predictedCosts();
+    const double total = std::accumulate(cost.begin(), cost.end(), 0.0);
     const double limit = (1.0 + tolerance) * total / ranks_;
     std::vector<size_t> order(bands_.size());
     std::iota(order.begin(), order.end(), size_t(0));
-    std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return costs_[a] > costs_[b]; });
+    std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return cost[a] > cost[b]; });
     std::vector<double> load(static_cast<size_t>(ranks_), 0.0);
     std::vector<int> assignment(bands_.size(), 0);
     for (size_t i : order) {
-        const double c = costs_[i];
+        const double c = cost[i];
         int rank = previous_[i];
         if (load[rank] + c > limit)
             rank = bands_[i].owner;

@@ -22,8 +22,10 @@ std::vector<Band> makeBands(const wall::Wall& wall, int bandsPerScreen);
 
 class LoadBalancer {
 public:
-    // smoothing: weight of the newest measurement in the exponential average of each band's cost.
-    LoadBalancer(std::vector<Band> bands, int ranks, double smoothing = 0.8);
+    // Each band's cost is predicted by double exponential smoothing (Holt 1957): a level that
+    // moves `levelWeight` of the way to each new measurement, and a trend (the camera keeps
+    // flying, so costs keep drifting) that moves `trendWeight` of the way to the level's change.
+    LoadBalancer(std::vector<Band> bands, int ranks, double levelWeight = 0.8, double trendWeight = 0.3);
 
     const std::vector<Band>& bands() const { return bands_; }
 
@@ -36,15 +38,15 @@ public:
     // The measured cost of each band this frame (ms, any consistent unit; NaN: not measured).
     void observe(const std::vector<double>& bandCost);
 
-    // The smoothed cost estimates.
-    const std::vector<double>& costs() const { return costs_; }
+    // The predicted cost of each band next frame: level + trend, at least 0.
+    std::vector<double> predictedCosts() const;
 
 private:
     std::vector<Band> bands_;
     int ranks_;
-    double smoothing_;
-    bool measured_ = false;
-    std::vector<double> costs_;
+    double levelWeight_, trendWeight_;
+    int measurements_ = 0;
+    std::vector<double> level_, trend_;
     std::vector<int> previous_;
 };
 

@@ -67,7 +67,7 @@ TEST(LoadBalancer, MovesWorkFromTheExpensiveScreen)
 TEST(LoadBalancer, DampedAndStableUnderSteadyCost)
 {
     // Under the same measured costs the assignment settles and stays (no oscillation), and a single
-    // outlier frame moves the estimates only half way.
+    // outlier frame moves the prediction only part of the way.
     cluster::LoadBalancer balancer(twoScreens(), 2);
     std::vector<double> cost(16, 1.0);
     std::fill(cost.begin(), cost.begin() + 8, 10.0);
@@ -82,5 +82,20 @@ TEST(LoadBalancer, DampedAndStableUnderSteadyCost)
     std::vector<double> spike = cost;
     spike[0] = 30.0;
     balancer.observe(spike);
-    EXPECT_DOUBLE_EQ(balancer.costs()[0], 20.0);
+    const double predicted = balancer.predictedCosts()[0];
+    EXPECT_GT(predicted, 10.0);
+    EXPECT_LT(predicted, 31.0); // level 26 plus 0.3 of its jump of 16 as trend: 30.8
+}
+
+TEST(LoadBalancer, FollowsACostThatKeepsDrifting)
+{
+    // A band whose cost grows by 1 every frame (the camera flying toward a curtain): the trend makes
+    // the prediction catch up with the next frame's cost instead of lagging behind it.
+    cluster::LoadBalancer balancer(twoScreens(), 2);
+    std::vector<double> cost(16, 1.0);
+    for (int frame = 0; frame < 30; ++frame) {
+        cost[0] = 10.0 + frame;
+        balancer.observe(cost);
+    }
+    EXPECT_NEAR(balancer.predictedCosts()[0], 10.0 + 30.0, 0.1);
 }
