@@ -15,7 +15,7 @@ uniform sampler2D uCurtainPolylines; // RGBA32F, row c: xyz unit vector, w arcle
 uniform vec4 uCurtainState[MAX_CURTAINS];  // peak energy flux erg cm^-2 s^-1, energy keV, point count, -
 uniform float uCurtainReachKm;       // beyond this distance from its centre line no curtain emits
 
-uniform sampler2D uFootprintMap;     // RGBA32F, nearest: curtain id, point index, distance km, -
+uniform sampler2D uFootprintMap;     // RGBA32F, nearest: curtain id, point index, distance km, other curtain
 uniform vec3 uFootprintCentre;
 uniform vec3 uFootprintEast;
 uniform float uFootprintAngularRadius;
@@ -87,11 +87,25 @@ CurtainHit sampleCurtains(vec3 p, float h)
     hit.skipKm = lowerKm - uCurtainReachKm;
     if (hit.skipKm > 0.0)
         return hit;
-    int c = int(nearest.x);
-    vec3 su = curtainCoordinates(c, int(nearest.y), n);
-    float flux = uCurtainState[c].x * curtainProfile(c, su.x, su.y);
-    if (flux > 0.0)
-        hit.radiance = flux * auroraEmissionRgbPerKm(h, uCurtainState[c].y);
+    // The nearest curtain, and where curtains overlap the nearest point of another one: the
+    // fluxes of overlapping curtains add (the map's fourth channel, src/aurora/footprint_map.h).
+    vec4 candidates = vec4(nearest.x, nearest.y, -1.0, -1.0);
+    if (nearest.w >= 0.0) {
+        float second = floor(nearest.w / 65536.0);
+        candidates.zw = vec2(second, nearest.w - 65536.0 * second);
+    }
+    for (int k = 0; k < 2; ++k) {
+        vec2 candidate = k == 0 ? candidates.xy : candidates.zw;
+        if (candidate.x < 0.0)
+            continue;
+        int c = int(candidate.x);
+        vec3 su = curtainCoordinates(c, int(candidate.y), n);
+        if (su.z > uCurtainReachKm)
+            continue;
+        float flux = uCurtainState[c].x * curtainProfile(c, su.x, su.y);
+        if (flux > 0.0)
+            hit.radiance += flux * auroraEmissionRgbPerKm(h, uCurtainState[c].y);
+    }
     return hit;
 }
 

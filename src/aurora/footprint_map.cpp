@@ -72,6 +72,44 @@ void jumpFloodPass(const std::vector<int>& src, std::vector<int>& dst, int n, in
     }
 }
 
+// The same pass for the second map: texel t takes the seed nearest to it among those NOT on the
+// curtain of its nearest seed first[t], from the candidates its 9 texels hold in either map (a
+// neighbour's nearest may well be t's second). JFA's approximation applies as for the first map.
+void jumpFloodSecondPass(const std::vector<int>& first, const std::vector<int>& src, std::vector<int>& dst, int n,
+                         int step, const std::vector<glm::dvec3>& texelDirection, const Seeds& seeds,
+                         const std::vector<char>& wanted)
+{
+    const int none = static_cast<int>(seeds.direction.size()) - 1;
+    for (int j = 0; j < n; ++j) {
+        for (int i = 0; i < n; ++i) {
+            const int t = j * n + i;
+            if (!wanted[t]) {
+                dst[t] = none;
+                continue;
+            }
+            const glm::dvec3 here = texelDirection[t];
+            const int excluded = first[t] == none ? -1 : seeds.curtain[first[t]];
+            int best = src[t];
+            double bestDot = best == none ? -2.0 : glm::dot(here, seeds.direction[best]);
+            auto consider = [&](int s) {
+                if (s == none || seeds.curtain[s] == excluded)
+                    return;
+                const double d = glm::dot(here, seeds.direction[s]);
+                const bool better = (d > bestDot) | ((d == bestDot) & (s < best));
+                best = better ? s : best;
+                bestDot = better ? d : bestDot;
+            };
+            for (int jj = j - step; jj <= j + step; jj += step)
+                for (int ii = i - step; ii <= i + step; ii += step)
+                    if (ii >= 0 && ii < n && jj >= 0 && jj < n) {
+                        consider(first[jj * n + ii]);
+                        consider(src[jj * n + ii]);
+                    }
+            dst[t] = best;
+        }
+    }
+}
+
 } // namespace
 
 glm::dvec3 footprintTexelDirection(const FootprintMap& map, int i, int j)
@@ -91,7 +129,7 @@ FootprintMap buildFootprintMap(const std::vector<CurtainPolyline>& curtains, con
         throw std::invalid_argument("buildFootprintMap: angular radius must be in (0, 90] degrees");
     if (!(planetRadiusKm > 0.0))
         throw std::invalid_argument("buildFootprintMap: planet radius must be positive");
-    if (curtains.size() >= static_cast<size_t>(kMaxExactInteger))
+    if (curtains.size() >= static_cast<size_t>(kMaxExactInteger / kSecondPointStride))
         throw std::invalid_argument("buildFootprintMap: too many curtains");
 
     FootprintMap map;
@@ -113,7 +151,7 @@ FootprintMap buildFootprintMap(const std::vector<CurtainPolyline>& curtains, con
     double longestArc = 0.0; // radians between consecutive points of a curtain
     for (size_t c = 0; c < curtains.size(); ++c) {
         const std::vector<glm::dvec3>& points = curtains[c].points;
-        if (points.size() >= static_cast<size_t>(kMaxExactInteger))
+        if (points.size() >= static_cast<size_t>(kSecondPointStride))
             throw std::invalid_argument("buildFootprintMap: too many points in a curtain");
         for (size_t k = 0; k < points.size(); ++k) {
             if (f64::footprintAngle(points[k], map.centre) > map.angularRadius)
@@ -153,9 +191,31 @@ FootprintMap buildFootprintMap(const std::vector<CurtainPolyline>& curtains, con
         jumpFloodPass(nearest, scratch, n, 1, texelDirection, seeds); // JFA+1
         std::swap(nearest, scratch);
     }
+    // The nearest seed of another curtain, where curtains come close (overlapping curtains both emit).
+    const double h = 2.0 * map.angularRadius / n;
+    map.marginKm = planetRadiusKm * (h * (std::sqrt(0.5) + kJfaErrorTexels) + 0.5 * longestArc + 2.0 * map.angularRadius * 1e-6);
+    // Only where the stored nearest distance is within secondCurtainWithinKm plus the margin (where
+    // the shader looks at curtains at all), with jumps up to that far.
+    std::vector<int> second(nearest.size(), none);
+    if (curtains.size() > 1) {
+        const double texelKm = planetRadiusKm * h;
+        const double withinKm = spec.secondCurtainWithinKm + map.marginKm + texelKm;
+        const double cosWithin = std::cos(std::min(withinKm / planetRadiusKm, kPi));
+        std::vector<char> wanted(nearest.size());
+        for (size_t t = 0; t < nearest.size(); ++t)
+            wanted[t] = nearest[t] != none && glm::dot(texelDirection[t], seeds.direction[nearest[t]]) >= cosWithin;
+        int firstStep = 1;
+        while (firstStep < n / 2 && firstStep * texelKm < withinKm)
+            firstStep *= 2;
+        for (int step = firstStep; step >= 1; step /= 2) {
+            jumpFloodSecondPass(nearest, second, scratch, n, step, texelDirection, seeds, wanted);
+            std::swap(second, scratch);
+        }
+        jumpFloodSecondPass(nearest, second, scratch, n, 1, texelDirection, seeds, wanted);
+        std::swap(second, scratch);
+    }
 
-    const double R = planetRadiusKm, h = 2.0 * map.angularRadius / n;
-    map.marginKm = R * h * (std::sqrt(0.5) + kJfaErrorTexels) + 0.5 * R * longestArc + R * 2.0 * map.angularRadius * 1e-6;
+    const double R = planetRadiusKm;
     map.texels.assign(static_cast<size_t>(n) * n * 4, 0.0f);
     for (int t = 0; t < n * n; ++t) {
         float* texel = &map.texels[4 * static_cast<size_t>(t)];
@@ -168,6 +228,8 @@ FootprintMap buildFootprintMap(const std::vector<CurtainPolyline>& curtains, con
             texel[1] = static_cast<float>(seeds.point[s]);
             texel[2] = roundedDown(R * f64::footprintAngle(texelDirection[t], seeds.direction[s]));
         }
+        const int s2 = second[t];
+        texel[3] = s2 == none ? -1.0f : static_cast<float>(seeds.curtain[s2] * kSecondPointStride + seeds.point[s2]);
     }
     return map;
 }

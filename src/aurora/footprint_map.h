@@ -35,6 +35,9 @@
 
 namespace aurorawall::aurora {
 
+// The fourth channel packs (curtain, point) of the nearest other curtain into one exact float.
+constexpr int kSecondPointStride = 65536;
+
 // Allowance for jump flooding's errors, in texel sides (see above).
 constexpr double kJfaErrorTexels = 1.0;
 
@@ -43,6 +46,10 @@ struct FootprintMapSpec {
     double centreLongitudeDeg = 0.0;  // map −y points toward this longitude from the pole
     double angularRadiusDeg = 40.0;   // Θ: the map's half width, 0 < Θ ≤ 90°
     int size = 512;                   // N texels per side, a power of two ≥ 2
+    // The nearest point of another curtain is looked for only where the nearest curtain is closer
+    // than this (km; the renderer's emitting reach) plus the map's margin: elsewhere the shader reads
+    // no curtain, and jump flooding with steps up to that distance suffices.
+    double secondCurtainWithinKm = 50.0;
 };
 
 // What the shader reads for a point (footprintMapLookup): the texel's contents and the lower bound.
@@ -62,8 +69,10 @@ struct FootprintMap {
     double angularRadius = 0.0;
     double marginKm = 0.0;      // see the header comment; uniform for footprintConservativeKm
     // RGBA32F, N × N, row-major, bottom row first: texel (i, j) at [4(jN + i)] holds (curtain id, point index,
-    // distance km from the texel centre to that point, 0). Ids and indices are integers stored exactly
-    // (< 2^24); the distance is rounded toward zero. Without curtains every texel is (−1, −1, πR, 0): no
+    // distance km from the texel centre to that point, second), where `second` is the nearest point of
+    // any OTHER curtain as curtain id · kSecondPointStride + point index (−1: none; overlapping curtains
+    // both emit, so the shader evaluates the two nearest curtains). Ids and indices are integers stored exactly
+    // (< 2^24); the distance is rounded toward zero. Without curtains every texel is (−1, −1, πR, −1): no
     // curtain is nearer than half the circumference.
     std::vector<float> texels;
 
@@ -75,7 +84,7 @@ struct FootprintMap {
 };
 
 // The map of the given curtains (all with planetRadiusKm). Throws std::invalid_argument for a bad spec,
-// a curtain point outside the cap, or more than 2^24 curtains or points per curtain.
+// a curtain point outside the cap, 256 curtains or more, or 65536 points or more in a curtain.
 FootprintMap buildFootprintMap(const std::vector<CurtainPolyline>& curtains, const FootprintMapSpec& spec,
                                double planetRadiusKm);
 

@@ -10,6 +10,7 @@
 #include "render/curtain_frames.h"
 
 #include <algorithm>
+#include <limits>
 #include <cmath>
 #include <stdexcept>
 
@@ -93,45 +94,49 @@ ReferenceModel::ReferenceModel(const scene::Scene& scene, double timeS, const fl
         lineRgb_[line] = aurora::lineLinearSrgbPerRayleigh(static_cast<aurora::EmissionLine>(line));
 }
 
-// The nearest curtain to footprint direction `unit` and the curtain coordinates on it, by exact
-// projection on its segments (segmentProjection of aurora_curtains.glsl in double, over every
-// segment that can be nearest). A point of a segment of length L is within L/2 of one of its ends,
-// so a segment whose nearer end is farther than (nearest vertex) + L_max/2 cannot be the nearest:
-// only the others are projected.
-ReferenceModel::Nearest ReferenceModel::nearestCurtain(glm::dvec3 unit) const
+// The nearest point of curtain `ci` to footprint direction `unit` and the curtain coordinates
+// there, by exact projection on its segments (segmentProjection of aurora_curtains.glsl in
+// double, over every segment that can be nearest). A point of a segment of length L is within L/2
+// of one of its ends, so a segment whose nearer end is farther than (nearest vertex) + L_max/2
+// cannot be the nearest: only the others are projected.
+ReferenceModel::Nearest ReferenceModel::nearestOn(size_t ci, glm::dvec3 unit) const
 {
     const double R = scene_.planet.radiusKm;
+    const ReferenceCurtain& c = curtains_[ci];
     Nearest best;
-    for (size_t ci = 0; ci < curtains_.size(); ++ci) {
-        const ReferenceCurtain& c = curtains_[ci];
-        double maxDot = -1.0;
-        for (const glm::dvec3& p : c.points)
-            maxDot = std::max(maxDot, glm::dot(p, unit));
-        const double nearestVertex = std::acos(std::clamp(maxDot, -1.0, 1.0));
-        // 1 km of slack for the arclength-based segment length the shader's projection uses.
-        const double limit = nearestVertex + (0.5 * c.maxSegmentKm + 1.0) / R;
-        if (R * nearestVertex - 0.5 * c.maxSegmentKm - 1.0 > best.distanceKm)
-            continue; // no segment of this curtain can be nearer than the best so far
-        const double minDot = limit >= M_PI ? -2.0 : std::cos(limit);
-        for (size_t j = 0; j + 1 < c.points.size(); ++j) {
-            const glm::dvec3& a = c.points[j];
-            const glm::dvec3& b = c.points[j + 1];
-            if (std::max(glm::dot(a, unit), glm::dot(b, unit)) < minDot)
-                continue;
-            const glm::dvec3 normal = glm::normalize(glm::cross(a, b));
-            const double along = R * std::atan2(glm::dot(glm::cross(a, unit), normal), glm::dot(a, unit));
-            const double length = c.arclengthKm[j + 1] - c.arclengthKm[j];
-            const double lateral = R * std::asin(std::clamp(glm::dot(unit, normal), -1.0, 1.0));
-            const double beyond = std::max({-along, along - length, 0.0});
-            const double distance = std::hypot(lateral, beyond);
-            if (distance < best.distanceKm) {
-                best.curtain = static_cast<int>(ci);
-                best.distanceKm = distance;
-                best.sKm = c.arclengthKm[j] + std::clamp(along, 0.0, length);
-                best.uKm = lateral;
-            }
+    double maxDot = -1.0;
+    for (const glm::dvec3& p : c.points)
+        maxDot = std::max(maxDot, glm::dot(p, unit));
+    const double nearestVertex = std::acos(std::clamp(maxDot, -1.0, 1.0));
+    // 1 km of slack for the arclength-based segment length the shader's projection uses.
+    const double limit = nearestVertex + (0.5 * c.maxSegmentKm + 1.0) / R;
+    const double minDot = limit >= M_PI ? -2.0 : std::cos(limit);
+    for (size_t j = 0; j + 1 < c.points.size(); ++j) {
+        const glm::dvec3& a = c.points[j];
+        const glm::dvec3& b = c.points[j + 1];
+        if (std::max(glm::dot(a, unit), glm::dot(b, unit)) < minDot)
+            continue;
+        const glm::dvec3 normal = glm::normalize(glm::cross(a, b));
+        const double along = R * std::atan2(glm::dot(glm::cross(a, unit), normal), glm::dot(a, unit));
+        const double length = c.arclengthKm[j + 1] - c.arclengthKm[j];
+        const double lateral = R * std::asin(std::clamp(glm::dot(unit, normal), -1.0, 1.0));
+        const double beyond = std::max({-along, along - length, 0.0});
+        const double distance = std::hypot(lateral, beyond);
+        if (distance < best.distanceKm) {
+            best.curtain = static_cast<int>(ci);
+            best.distanceKm = distance;
+            best.sKm = c.arclengthKm[j] + std::clamp(along, 0.0, length);
+            best.uKm = lateral;
         }
     }
+    return best;
+}
+
+double ReferenceModel::nearestCurtainKm(glm::dvec3 unit) const
+{
+    double best = std::numeric_limits<double>::infinity();
+    for (size_t ci = 0; ci < curtains_.size(); ++ci)
+        best = std::min(best, nearestOn(ci, unit).distanceKm);
     return best;
 }
 
@@ -169,16 +174,19 @@ glm::dvec3 ReferenceModel::auroraSegment(glm::dvec3 o, glm::dvec3 d, double t0, 
     glm::dvec3 sum(0.0);
     double t = t0;
     while (t < t1) {
-        const double gap = nearestCurtain(glm::normalize(o + t * d)).distanceKm - reachKm_;
+        const double gap = nearestCurtainKm(glm::normalize(o + t * d)) - reachKm_;
         if (gap > settings_.stepKm) {
             t += gap;
             continue;
         }
         const double h = std::min(settings_.stepKm, t1 - t);
         const glm::dvec3 p = o + (t + 0.5 * h) * d;
-        const Nearest n = nearestCurtain(glm::normalize(p));
-        if (n.curtain >= 0 && n.distanceKm <= reachKm_) {
-            const ReferenceCurtain& c = curtains_[size_t(n.curtain)];
+        // Every curtain within its reach emits: overlapping curtains add.
+        for (size_t ci = 0; ci < curtains_.size(); ++ci) {
+            const Nearest n = nearestOn(ci, glm::normalize(p));
+            if (n.distanceKm > reachKm_)
+                continue;
+            const ReferenceCurtain& c = curtains_[ci];
             const double flux = c.peakFlux * profile(c, n.sKm, n.uKm);
             if (flux > 0.0)
                 sum += flux * h * emissionRgbPerKm(glm::length(p) - R, c.energyKeV);

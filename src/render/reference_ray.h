@@ -4,9 +4,10 @@
 // their approximations. Same model, exact evaluation:
 //   - layers: the shared modules shaders/render/ray_sphere.glsl and layers.glsl compiled in double;
 //   - curtains: the same keyframes (render/curtain_frames.h) sampled into the same dense polylines
-//     (aurora::sampleCurtain); curtain coordinates (s, u) by exact projection on every segment of the
-//     nearest curtain (no footprint map); a curtain emits within reachKm of its centre line, as the
-//     shader's cut-off says (CurtainField's reach);
+//     (aurora::sampleCurtain); curtain coordinates (s, u) on EVERY curtain by exact projection on
+//     its segments (no footprint map); each curtain emits within reachKm of its centre line, as the
+//     shader's cut-off says (CurtainField's reach), and overlapping curtains add (the shader sees the
+//     two nearest curtains at a point);
 //   - emission: flux x profile(s, u) x the line emission of aurora::depositionRate, aurora::lineYield and
 //     aurora::lineLinearSrgbPerRayleigh in double (no decibel tables); the fluid profile from
 //     fluid::sampleFlux in double with the normalization of shaders/aurora/curtain_profile.glsl;
@@ -61,7 +62,8 @@ private:
         double sKm = 0.0;          // along the curtain
         double uKm = 0.0;          // signed, across it
     };
-    Nearest nearestCurtain(glm::dvec3 unit) const;
+    Nearest nearestOn(size_t curtain, glm::dvec3 unit) const;
+    double nearestCurtainKm(glm::dvec3 unit) const;
     double profile(const ReferenceCurtain& c, double sKm, double uKm) const;
     glm::dvec3 emissionRgbPerKm(double altitudeKm, double energyKeV) const;
     glm::dvec3 auroraSegment(glm::dvec3 o, glm::dvec3 d, double t0, double t1) const;

@@ -188,8 +188,65 @@ TEST(FootprintMap, TexelsHoldExactIntegers)
         ASSERT_LT(id, 4.0f);
         ASSERT_LT(index, static_cast<float>(curtains[static_cast<size_t>(id)].points.size()));
         ASSERT_GE(map.texels[t + 2], 0.0f);
-        ASSERT_EQ(map.texels[t + 3], 0.0f);
+        // The nearest point of another curtain, packed as curtain * stride + point (-1: none looked
+        // for here, or none near).
+        const float packed = map.texels[t + 3];
+        ASSERT_EQ(packed, std::floor(packed));
+        if (packed < 0.0f) {
+            ASSERT_EQ(packed, -1.0f);
+            continue;
+        }
+        const int secondCurtain = static_cast<int>(packed) / kSecondPointStride;
+        const int secondPoint = static_cast<int>(packed) % kSecondPointStride;
+        ASSERT_NE(secondCurtain, static_cast<int>(id));
+        ASSERT_LT(secondCurtain, 4);
+        ASSERT_LT(secondPoint, static_cast<int>(curtains[static_cast<size_t>(secondCurtain)].points.size()));
     }
+}
+
+// The second channel against brute force: at every texel centre in the cap whose nearest curtain is
+// within secondCurtainWithinKm, the stored point of another curtain is (nearly) the nearest point of
+// any curtain but the first's.
+TEST(FootprintMap, SecondCurtainAgainstBruteForce)
+{
+    std::mt19937_64 rng(5);
+    const std::vector<CurtainPolyline> curtains = randomCurtains(rng, 6, 1000.0, 5.0);
+    FootprintMapSpec spec;
+    spec.size = 128;
+    spec.secondCurtainWithinKm = 200.0;
+    const FootprintMap map = buildFootprintMap(curtains, spec, kR);
+    const double texelKm = kR * 2.0 * map.angularRadius / spec.size;
+    int texels = 0, exactCurtain = 0;
+    double worst = 0.0;
+    for (int j = 0; j < spec.size; ++j)
+        for (int i = 0; i < spec.size; ++i) {
+            const glm::dvec3 here = footprintTexelDirection(map, i, j);
+            if (f64::footprintAngle(here, map.centre) > map.angularRadius)
+                continue;
+            const float* texel = &map.texels[4 * (size_t(j) * spec.size + i)];
+            if (texel[2] > spec.secondCurtainWithinKm)
+                continue;
+            ASSERT_GE(texel[3], 0.0f);
+            const int first = static_cast<int>(texel[0]);
+            double best = 1e30;
+            int bestCurtain = -1;
+            for (size_t c = 0; c < curtains.size(); ++c)
+                if (static_cast<int>(c) != first)
+                    for (const glm::dvec3& p : curtains[c].points)
+                        if (kR * f64::footprintAngle(here, p) < best) {
+                            best = kR * f64::footprintAngle(here, p);
+                            bestCurtain = static_cast<int>(c);
+                        }
+            const int stored = static_cast<int>(texel[3]);
+            const glm::dvec3& p = curtains[size_t(stored / kSecondPointStride)].points[size_t(stored % kSecondPointStride)];
+            worst = std::max(worst, (kR * f64::footprintAngle(here, p) - best) / texelKm);
+            exactCurtain += stored / kSecondPointStride == bestCurtain;
+            ++texels;
+        }
+    std::printf("second curtain: %d texels, right curtain %.3f%%, worst distance error %.3f texels\n", texels,
+                100.0 * exactCurtain / texels, worst);
+    EXPECT_GE(exactCurtain, 0.99 * texels);
+    EXPECT_LT(worst, 2.0);
 }
 
 // JFA against the brute-force nearest seed at every texel centre that touches the cap.
