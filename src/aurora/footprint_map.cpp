@@ -213,6 +213,10 @@ FootprintMap buildFootprintMap(const std::vector<CurtainPolyline>& curtains, con
         }
         jumpFloodSecondPass(nearest, second, scratch, n, 1, texelDirection, seeds, wanted);
         std::swap(second, scratch);
+        // A second curtain farther than that cannot emit here: keep the shader from evaluating it.
+        for (size_t t = 0; t < second.size(); ++t)
+            if (second[t] != none && glm::dot(texelDirection[t], seeds.direction[second[t]]) < cosWithin)
+                second[t] = none;
     }
 
     const double R = planetRadiusKm;

@@ -70,8 +70,9 @@ struct FootprintMap {
     double marginKm = 0.0;      // see the header comment; uniform for footprintConservativeKm
     // RGBA32F, N × N, row-major, bottom row first: texel (i, j) at [4(jN + i)] holds (curtain id, point index,
     // distance km from the texel centre to that point, second), where `second` is the nearest point of
-    // any OTHER curtain as curtain id · kSecondPointStride + point index (−1: none; overlapping curtains
-    // both emit, so the shader evaluates the two nearest curtains). Ids and indices are integers stored exactly
+    // any OTHER curtain as curtain id · kSecondPointStride + point index, if it is within
+    // secondCurtainWithinKm plus the margin (−1: none that near; overlapping curtains both emit, so the
+    // shader evaluates the two nearest curtains). Ids and indices are integers stored exactly
     // (< 2^24); the distance is rounded toward zero. Without curtains every texel is (−1, −1, πR, −1): no
     // curtain is nearer than half the circumference.
     std::vector<float> texels;
