@@ -129,6 +129,16 @@ scene::Scene without(scene::Scene s, Component c)
 
 } // namespace
 
+void applyFinestSettings(scene::Scene& s)
+{
+    s.aurora.stepKm = 0.25;
+    s.aurora.skipEmptySpace = false;
+    s.aurora.footprintMapSize = 1024;
+    s.aurora.tableAltitudeStepKm = 0.25;
+    s.aurora.tableEnergyCount = 128;
+    s.aurora.polylineSpacingKm = 1.0;
+}
+
 scene::Scene withoutUnmodelled(scene::Scene scene)
 {
     for (Component c : {Component::Stars, Component::PlanetTexture, Component::Sky})
@@ -160,18 +170,6 @@ struct Variant {
     std::string value;
     std::function<void(scene::Scene&)> apply;
 };
-
-// The reference's settings (issue 3, part 11): 0.25 km steps everywhere, no skipping, the finest
-// tables, footprint map and polylines of the knob ranges.
-void finest(scene::Scene& s)
-{
-    s.aurora.stepKm = 0.25;
-    s.aurora.skipEmptySpace = false;
-    s.aurora.footprintMapSize = 1024;
-    s.aurora.tableAltitudeStepKm = 0.25;
-    s.aurora.tableEnergyCount = 128;
-    s.aurora.polylineSpacingKm = 1.0;
-}
 
 void finestFluid(scene::Scene& s)
 {
@@ -308,8 +306,8 @@ void printKnobTable(const scene::Scene& base, const SceneView& view, const std::
     const std::vector<glm::ivec2> all = allPixels(settings.sizePx);
 
     References common{base, {}, {}, 0.0}, fluid{base, {}, {}, 0.0};
-    finest(common.scene);
-    finest(fluid.scene);
+    applyFinestSettings(common.scene);
+    applyFinestSettings(fluid.scene);
     finestFluid(fluid.scene);
     const bool hasFluid = base.has(Component::FluidDetail);
     common.gpu = renderView(common.scene, view, shaderDir, 0);

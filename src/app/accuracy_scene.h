@@ -59,6 +59,10 @@ std::vector<glm::dvec3> referencePixels(const render::ReferenceModel& model, con
 // The scene without the components the CPU reference does not model (stars, planet_texture, sky).
 scene::Scene withoutUnmodelled(scene::Scene scene);
 
+// The GPU reference's settings (issue 3, part 11): 0.25 km steps everywhere, no skipping, the
+// finest tables, footprint map and polylines of the knob ranges.
+void applyFinestSettings(scene::Scene& scene);
+
 // argv[0] is "accuracy"; see --help. Returns 0; 2 with one line on `err` for a bad option or file;
 // 1 when no GL context or shader can be made.
 int runSceneAccuracy(int argc, char** argv, std::ostream& out, std::ostream& err);
