@@ -100,11 +100,7 @@ double nanosecondsPerEvaluation(const ShaderBenchmarkResult& result, const Shade
 
 gl::ShaderModule readShaderModule(const std::string& relativePath)
 {
-    const std::string path = dataDirectory() + "/shaders/" + relativePath;
-    std::ifstream file(path);
-    std::ostringstream text;
-    if (!file || !(text << file.rdbuf())) throw std::runtime_error("cannot read shader module " + path);
-    return {path, text.str()};
+    return gl::readShaderModule(dataDirectory() + "/shaders/" + relativePath);
 }
 
 bool isSoftwareRenderer()

@@ -46,7 +46,7 @@ double nanosecondsPerEvaluation(const ShaderBenchmarkResult& result, const Shade
                                 int itemCount, const ShaderBenchmarkSettings& settings);
 
 // A shader module read from dataDirectory()/shaders/<relativePath> — the files the C++ side includes.
-// Throws std::runtime_error naming the file when it cannot be read.
+// Throws aurorawall::InputError naming the file when it cannot be read (gl::readShaderModule).
 gl::ShaderModule readShaderModule(const std::string& relativePath);
 
 // True on Mesa's CPU renderers (llvmpipe, softpipe); the current context's GL_RENDERER.

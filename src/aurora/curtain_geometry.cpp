@@ -82,12 +82,6 @@ constexpr int kPanels = 32;
 
 } // namespace
 
-glm::dvec3 unitFromLatLon(double latitudeDeg, double longitudeDeg)
-{
-    const double lat = latitudeDeg * kDeg, lon = longitudeDeg * kDeg;
-    return {-std::cos(lat) * std::cos(lon), -std::cos(lat) * std::sin(lon), std::sin(lat)};
-}
-
 // Inverting x = −cos φ cos λ, y = −cos φ sin λ, z = sin φ: φ = atan2(z, √(x² + y²)), λ = atan2(−y, −x).
 glm::dvec2 latLonFromUnit(const glm::dvec3& unit)
 {

@@ -5,15 +5,17 @@
 // or self-intersections however unevenly they are spaced) and is renormalized onto the sphere.
 // sampleCurtain turns it into a dense polyline of great-circle arcs with the spline's arclength.
 // Planet frame of scene::planetPoint: z toward the north pole, x toward longitude 180°, y toward 90° W.
+#include "common/planet_frame.h"
+
 #include <glm/glm.hpp>
 
 #include <vector>
 
 namespace aurorawall::aurora {
 
-// Unit vector of geographic latitude/longitude in degrees (scene::planetPoint(lat, lon, 1)):
-// (−cos φ cos λ, −cos φ sin λ, sin φ).
-glm::dvec3 unitFromLatLon(double latitudeDeg, double longitudeDeg);
+// Unit vector of geographic latitude/longitude in degrees, (−cos φ cos λ, −cos φ sin λ, sin φ): the
+// planet frame's one formula (common/planet_frame.h), also behind scene::planetPoint.
+using aurorawall::unitFromLatLon;
 
 // Inverse of unitFromLatLon for a unit vector: (latitude, longitude) in degrees, longitude in [−180°, 180°].
 glm::dvec2 latLonFromUnit(const glm::dvec3& unit);

@@ -1,9 +1,11 @@
 #include "gl/shader_program.h"
 
+#include "common/input_error.h"
 #include "gl/functions.h"
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include <fstream>
 #include <regex>
 #include <sstream>
 #include <utility>
@@ -124,6 +126,15 @@ GLuint link(const std::vector<GLuint>& shaders)
 }
 
 } // namespace
+
+ShaderModule readShaderModule(const std::string& path)
+{
+    std::ifstream file(path);
+    std::ostringstream text;
+    if (!file || !(text << file.rdbuf()))
+        throw inputError(path, 0, "cannot read shader module (check --data-dir or AURORAWALL_DATA_DIR)");
+    return {path, text.str()};
+}
 
 ShaderSource fullScreenTriangleVertexShader()
 {

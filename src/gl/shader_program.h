@@ -37,6 +37,9 @@ public:
 // The full-screen triangle's vertex shader (see FullScreenTriangle); no attributes.
 ShaderSource fullScreenTriangleVertexShader();
 
+// A module read from a file; throws aurorawall::InputError "path: cannot read shader module ...".
+ShaderModule readShaderModule(const std::string& path);
+
 // A linked program, owned; belongs to the context group current at creation.
 class Program {
 public:

@@ -1,9 +1,5 @@
 #include "render/fragment_shader.h"
 
-#include "common/input_error.h"
-
-#include <fstream>
-#include <sstream>
 
 namespace aurorawall::render {
 
@@ -59,14 +55,8 @@ gl::ShaderSource fragmentShaderSource(const scene::Scene& scene, const std::stri
     for (scene::Component c : kOrder)
         if (scene.has(c))
             source.defines.push_back(defineOf(c));
-    for (const std::string& name : fragmentModuleNames(scene)) {
-        const std::string path = shaderDir + "/" + name;
-        std::ifstream file(path);
-        std::ostringstream text;
-        if (!file || !(text << file.rdbuf()))
-            throw inputError(path, 0, "cannot read shader module (check --data-dir or AURORAWALL_DATA_DIR)");
-        source.modules.push_back({path, text.str()});
-    }
+    for (const std::string& name : fragmentModuleNames(scene))
+        source.modules.push_back(gl::readShaderModule(shaderDir + "/" + name));
     return source;
 }
 

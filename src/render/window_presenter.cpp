@@ -1,23 +1,13 @@
 #include "render/window_presenter.h"
 
-#include "common/input_error.h"
-
-#include <fstream>
-#include <sstream>
-
 namespace aurorawall::render {
 
 namespace {
 
 gl::ShaderSource displayShader(const std::string& shaderDir)
 {
-    const std::string path = shaderDir + "/render/display.frag";
-    std::ifstream file(path);
-    std::ostringstream text;
-    if (!file || !(text << file.rdbuf()))
-        throw inputError(path, 0, "cannot read shader module");
     gl::ShaderSource source;
-    source.modules.push_back({path, text.str()});
+    source.modules.push_back(gl::readShaderModule(shaderDir + "/render/display.frag"));
     return source;
 }
 

@@ -1,6 +1,7 @@
 #include "scene/scene.h"
 
 #include "common/input_error.h"
+#include "common/planet_frame.h"
 #include "scene/toml_reader.h"
 
 #include <algorithm>
@@ -136,8 +137,7 @@ Curtain readCurtain(const TableReader& t)
 // Planet frame: z north, x toward longitude 180 deg, y toward 90 deg W.
 glm::dvec3 planetPoint(double latitudeDeg, double longitudeDeg, double radius)
 {
-    const double lat = latitudeDeg * kDeg, lon = longitudeDeg * kDeg;
-    return radius * glm::dvec3(-std::cos(lat) * std::cos(lon), -std::cos(lat) * std::sin(lon), std::sin(lat));
+    return radius * unitFromLatLon(latitudeDeg, longitudeDeg);
 }
 
 const char* componentName(Component c)
