@@ -1,15 +1,10 @@
 // Chapman-function airmass (requires airmass_common.glsl).
 // Ch(x, χ) is the airmass from radius r = x·H to infinity along zenith angle χ ≤ 90°, relative to the
 // vertical: ∫_r^∞ e^{−(r'−R)/H} ds = H·e^{−(r−R)/H}·Ch(r/H, χ) (S. Chapman 1931).
-// A segment is cut at the closest approach into monotone pieces; on a piece from xa to xb (0 ≤ xa ≤ xb,
-// r rising from ra to rb) the airmass is the difference of two half-line airmasses,
-//   I = H·e^{−(ra−R)/H}·(Ch(ra/H, χa) − e^{−(rb−ra)/H}·Ch(rb/H, χb)),   cos χ = x/r.
-// The difference cancels when the piece rises by less than one scale height; there the safe form is
-// 3-point Gauss–Legendre on the piece (both sides agree to ~1e-5 at the switch).
+// A segment is integrated as a difference of half-line columns (airmassChapman below).
 
 const int CHAPMAN_SCHUELER = 0;
 const int CHAPMAN_HDRP = 1;
-const int CHAPMAN_ASYMPTOTIC = 2;
 
 // Schüler's approximation (GPU Pro 3, 2012, "An approximation to the Chapman grazing-incidence function
 // for atmospheric scattering"), as distributed with its sample code: Ch ≈ c/(c·cos χ + 1), c = √x.
@@ -30,33 +25,6 @@ real chapmanHdrp(real x, real cosZenith)
     return real(0.5) * c + n / d;
 }
 
-// Huestis' exact integral (J. Quant. Spectrosc. Radiat. Transfer 69, 709 (2001), eq. 9), χ ≤ 90°:
-//   Ch(x, χ) = 1 + x·sin χ ∫_0^χ exp(x·(1 − sin χ/sin θ)) / (1 + cos θ) dθ,
-// by 8-point Gauss–Legendre over θ ∈ [χ − w, χ], w = min(χ, 6/√x): below χ − w the integrand is
-// under e^{−x·w²/2} = e^{−18}. The safe form of chapmanAsymptotic below x = 50.
-real huestisIntegrand(real x, real sinZenith, real theta)
-{
-    return exp(x * (real(1) - sinZenith / sin(theta))) / (real(1) + cos(theta));
-}
-
-real chapmanHuestis(real x, real cosZenith)
-{
-    real sinZenith = sqrt(max(real(1) - cosZenith * cosZenith, real(0)));
-    real zenith = acos(clamp(cosZenith, real(0), real(1)));
-    if (!(zenith > real(0))) return real(1);   // vertical: Ch = 1 (and no node at θ = 0)
-    real halfZenith = real(0.5) * min(zenith, real(6) / sqrt(x));
-    real middle = zenith - halfZenith;
-    real u1 = halfZenith * real(0.183434642495649805);
-    real u2 = halfZenith * real(0.525532409916328986);
-    real u3 = halfZenith * real(0.796666477413626740);
-    real u4 = halfZenith * real(0.960289856497536232);
-    real sum = real(0.362683783378361983) * (huestisIntegrand(x, sinZenith, middle - u1) + huestisIntegrand(x, sinZenith, middle + u1))
-             + real(0.313706645877887287) * (huestisIntegrand(x, sinZenith, middle - u2) + huestisIntegrand(x, sinZenith, middle + u2))
-             + real(0.222381034453374471) * (huestisIntegrand(x, sinZenith, middle - u3) + huestisIntegrand(x, sinZenith, middle + u3))
-             + real(0.101228536290376259) * (huestisIntegrand(x, sinZenith, middle - u4) + huestisIntegrand(x, sinZenith, middle + u4));
-    return real(1) + x * sinZenith * halfZenith * sum;
-}
-
 // Our design: the asymptotic expansion of Ch for large x to first order in 1/x (derivation in
 // docs/airmass.md). With w the rise in scale heights, x·cos χ = ξ(0) and ξ(w) = √(x²cos²χ + 2xw + w²),
 // Ch = ∫_0^∞ e^{−w} ξ'(w) dw; expanding ξ in w²/(2x) gives, with z = √(x/2)·cos χ and E = √π·erfcx(z),
@@ -64,29 +32,29 @@ real chapmanHuestis(real x, real cosZenith)
 // and for z ≥ 8, where that sum cancels, J₂ = (2 − 3/z² + 9/z⁴ − 37.5/z⁶ + 196.875/z⁸)/z.
 // The leading term is the exact-curvature parabola (√(πx/2) at 90°, 0.047% low at x = 796); the
 // correction is 3/(8x) at 90° and vanishes for vertical rays. The neglected term is O(1/x²):
-// 7e-6 at x = 127 (H = 50 km). Below x = 50 it switches to Huestis' integral.
+// 7e-6 at x = 127 (H = 50 km), about 4e-5 at x = 50; the expansion is meant for x = r/H ≥ 50.
+// Both J₂ forms are evaluated and one is selected (no branch): each is finite for every z ≥ 0.
 real chapmanAsymptotic(real x, real cosZenith)
 {
-    if (x < real(50)) return chapmanHuestis(x, cosZenith);
-    real z = sqrt(real(0.5) * x) * cosZenith;
+    real safeX = max(x, real(1e-6));
+    real z = sqrt(real(0.5) * safeX) * cosZenith;
     real E = sqrt(AIRMASS_PI) * airmassErfcx(z);
-    real z2 = z * z;
-    real J2;
-    if (z < real(8)) {
-        J2 = E * ((z2 - real(1)) * z2 + real(0.75)) - z * (z2 - real(1.5));
-    } else {
-        real inverseZ2 = real(1) / z2;
-        J2 = (real(2) + inverseZ2 * (real(-3) + inverseZ2 * (real(9) + inverseZ2 * (real(-37.5)
-             + inverseZ2 * real(196.875))))) / z;
-    }
-    return sqrt(real(0.5) * x) * E + J2 / (real(2) * sqrt(real(2) * x));
+    real zNear = min(z, real(8));
+    real zNear2 = zNear * zNear;
+    real J2Near = E * ((zNear2 - real(1)) * zNear2 + real(0.75)) - zNear * (zNear2 - real(1.5));
+    real zFar = max(z, real(8));
+    real inverseZ2 = real(1) / (zFar * zFar);
+    real J2Far = (real(2) + inverseZ2 * (real(-3) + inverseZ2 * (real(9) + inverseZ2 * (real(-37.5)
+                 + inverseZ2 * real(196.875))))) / zFar;
+    real J2 = z < real(8) ? J2Near : J2Far;
+    return sqrt(real(0.5) * safeX) * E + J2 / (real(2) * sqrt(real(2) * safeX));
 }
 
+// The published fits by kind (CHAPMAN_SCHUELER or CHAPMAN_HDRP).
 real chapmanApproximation(real x, real cosZenith, int kind)
 {
     if (kind == CHAPMAN_SCHUELER) return chapmanSchueler(x, cosZenith);
-    if (kind == CHAPMAN_HDRP) return chapmanHdrp(x, cosZenith);
-    return chapmanAsymptotic(x, cosZenith);
+    return chapmanHdrp(x, cosZenith);
 }
 
 // Airmass of the monotone piece 0 ≤ xa ≤ xb at closest-approach distance y, whose ends lie at radii
@@ -102,9 +70,10 @@ real airmassChapmanPiece(real y, real xa, real xb, real ra, real rb, real H, rea
     return H * exp(min((R - ra) / H, real(60))) * (chapmanA - exp(-rise) * chapmanB);
 }
 
-// Airmass of the segment [t0, t1] from Chapman functions of the given kind (signed); segments shorter
-// than H take the safe form airmassShortSegment.
-real airmassChapman(vec3 origin, vec3 direction, real t0, real t1, real H, real R, int kind)
+// Airmass of the segment [t0, t1] from Chapman functions of the given kind (signed), cut at the closest
+// approach into monotone pieces; segments shorter than H take the safe form airmassShortSegment.
+// Float geometry (airmassRayFrame); used by the published fits, whose own error (≥ 0.37%) dominates.
+real airmassChapmanPieces(vec3 origin, vec3 direction, real t0, real t1, real H, real R, int kind)
 {
     if (abs(t1 - t0) <= H) return airmassShortSegment(origin, direction, t0, t1, H, R);
     vec3 frame = airmassRayFrame(origin, direction, t0, t1);
@@ -128,17 +97,80 @@ real airmassChapman(vec3 origin, vec3 direction, real t0, real t1, real H, real 
     return segmentSign * airmass;
 }
 
+// Ch at the horizon (χ = 90°), for the closest approach: the asymptotic form at z = 0 is
+// √(πx/2)·(1 + 3/(8x)) (x·eˣK₁(x) to O(x⁻²)) and needs no erfcx.
+real chapmanAsymptoticHorizontal(real x)
+{
+    real safeX = max(x, real(1e-6));
+    return sqrt(real(0.5) * AIRMASS_PI * safeX) * (real(1) + real(0.375) / safeX);
+}
+
+// Density relative to the ground at t_ref + s, from a reference point of the ray at height hRef, radius
+// rRef and distance xRef from the closest approach: r² − rRef² = s·(2·xRef + s), so
+//   h = hRef + s·(2·xRef + s)/(rRef + r),
+// which stays accurate in float however large rRef and xRef are (the increment is formed directly).
+real airmassDensityAfter(real hRef, real rRef, real xRef, real s, real H)
+{
+    real rise = s * (real(2) * xRef + s);
+    real r = sqrt(max(rRef * rRef + rise, real(0)));
+    real h = hRef + rise / max(rRef + r, real(1e-30));
+    return exp(min(-h / H, real(60)));
+}
+
+// The safe form switches at a variation of AIRMASS_SAFE_VARIATION scale heights over the segment.
+const real AIRMASS_SAFE_VARIATION = real(0.25);
+
+// The default method: airmass of the segment [t0, t1] from the asymptotic Chapman function (signed).
+// Branch-free: every quantity below is computed for every ray and the result is selected, because SIMD
+// lanes (llvmpipe, GPU warps) that take different branches pay for all of them.
+//
+// With U(t) = e^{−h(t)/H}·Ch(r(t)/H, |x|/r) the upward half-line column from the point at |x| and
+// T = e^{−h_t/H}·Ch(y/H, 90°) the column from the closest approach to infinity, the forward half-line
+// column from t is U(t) after the closest approach (x ≥ 0) and 2T − U(t) before it, so for t_lo ≤ t_hi
+//   I/H = ±U(t_lo) ∓ U(t_hi) + 2T·[x_lo < 0 ≤ x_hi]      (+U for x ≥ 0, −U for x < 0),
+// one expression for segments after, before or across the closest approach (two Ch, one Ch at 90°).
+// Safe form: where the height varies by at most AIRMASS_SAFE_VARIATION·H over the segment (short
+// segments, segments near the closest approach), the difference cancels; there the segment is integrated
+// by 3-point Gauss–Legendre in t, with the heights formed from the lower end (airmassDensityAfter).
+// All heights come from airmassSegmentGeometry, accurate from the exact float inputs.
+real airmassChapmanAsymptotic(vec3 origin, vec3 direction, real t0, real t1, real H, real R)
+{
+    // Beyond 1e18 km the squares below would leave float's range; no scale height reaches that far.
+    real tLo = clamp(min(t0, t1), real(-1e18), real(1e18));
+    real tHi = clamp(max(t0, t1), real(-1e18), real(1e18));
+    AirmassSegmentGeometry g = airmassSegmentGeometry(origin, direction, tLo, tHi, R);
+    if (!(g.directionLength > real(0))) return real(0);
+
+    // Chapman form.
+    real cosZenithLo = min(abs(g.xLo) / max(g.rLo, real(1e-30)), real(1));
+    real cosZenithHi = min(abs(g.xHi) / max(g.rHi, real(1e-30)), real(1));
+    real upLo = exp(min(-g.hLo / H, real(60))) * chapmanAsymptotic(g.rLo / H, cosZenithLo);
+    real upHi = exp(min(-g.hHi / H, real(60))) * chapmanAsymptotic(g.rHi / H, cosZenithHi);
+    real tangent = exp(min(-g.hTangent / H, real(60))) * chapmanAsymptoticHorizontal(g.yTangent / H);
+    bool across = g.xLo < real(0) && !(g.xHi < real(0));
+    real columnLo = g.xLo < real(0) ? -upLo : upLo;
+    real columnHi = g.xHi < real(0) ? -upHi : upHi;
+    real chapman = H * (columnLo - columnHi + (across ? real(2) * tangent : real(0)));
+
+    // Safe form.
+    real lowest = across ? g.hTangent : min(g.hLo, g.hHi);
+    real variation = (max(g.hLo, g.hHi) - lowest) / H;
+    real halfWidth = real(0.5) * (tHi - tLo);
+    real offset = halfWidth * real(0.774596669241483377);   // √(3/5)
+    real gauss = halfWidth * (real(0.555555555555555556) * airmassDensityAfter(g.hLo, g.rLo, g.xLo, halfWidth - offset, H)
+                            + real(0.888888888888888889) * airmassDensityAfter(g.hLo, g.rLo, g.xLo, halfWidth, H)
+                            + real(0.555555555555555556) * airmassDensityAfter(g.hLo, g.rLo, g.xLo, halfWidth + offset, H));
+
+    real airmass = variation <= AIRMASS_SAFE_VARIATION ? gauss : chapman;
+    return t1 < t0 ? -airmass : airmass;
+}
+
 real airmassChapmanSchueler(vec3 origin, vec3 direction, real t0, real t1, real H, real R)
 {
-    return airmassChapman(origin, direction, t0, t1, H, R, CHAPMAN_SCHUELER);
+    return airmassChapmanPieces(origin, direction, t0, t1, H, R, CHAPMAN_SCHUELER);
 }
 
 real airmassChapmanHdrp(vec3 origin, vec3 direction, real t0, real t1, real H, real R)
 {
-    return airmassChapman(origin, direction, t0, t1, H, R, CHAPMAN_HDRP);
-}
-
-real airmassChapmanAsymptotic(vec3 origin, vec3 direction, real t0, real t1, real H, real R)
-{
-    return airmassChapman(origin, direction, t0, t1, H, R, CHAPMAN_ASYMPTOTIC);
+    return airmassChapmanPieces(origin, direction, t0, t1, H, R, CHAPMAN_HDRP);
 }

@@ -6,6 +6,17 @@
 
 const real AIRMASS_PI = real(3.14159265358979323846);
 
+// C++ has no `precise` qualifier; GLSL's `precise` forbids the compiler to reassociate or contract the
+// marked arithmetic, which the error-free transformations below rely on (the C++ side is compiled with
+// -ffp-contract=off, src/atmosphere/CMakeLists.txt). Veltkamp's splitter 2^⌈p/2⌉ + 1 for p mantissa bits:
+// 4097 in float, 134217729 in double.
+#ifdef __cplusplus
+#define precise
+const real AIRMASS_SPLITTER = real((1L << ((std::numeric_limits<real>::digits + 1) / 2)) + 1);
+#else
+const real AIRMASS_SPLITTER = real(4097);
+#endif
+
 // The ray in its own plane through the planet's centre. With d̂ = d/|d|, the closest approach to the
 // centre lies at t_c = −o·d̂ at distance y = |o|·sin∠(o, d̂); x = t − t_c is the distance from it, so
 // the radius along the ray is r(x) = √(x² + y²). Returns (y, x0, x1).
@@ -95,4 +106,128 @@ real winitzkiErfc(real x)
 {
     if (x > real(3)) return real(0.5) * winitzkiErfGuts(x);
     return real(1) - winitzkiErf(x);
+}
+
+// ---- Heights along the ray without cancellation (the default method's geometry) ----
+// Near 6771 km one float ulp is 0.49 m, and near 42157 km (geostationary orbit) 3.9 m, so |o + t·d̂| − R
+// in float loses what a 1 km scale height needs (1e-3 of H is 1 m). The inputs themselves are exact floats, so
+// the heights below are computed from them with error-free transformations (TwoSum, Dekker's product,
+// and Ogita–Rump–Oishi's Dot2, SIAM J. Sci. Comput. 26, 1955 (2005)): r² − R² is formed in twice the
+// float precision and only then divided, h = (r² − R²)/(r + R), which keeps h to float's relative precision.
+
+// a + b = s + e exactly (Knuth's TwoSum); returns (s, e).
+vec2 airmassTwoSum(real a, real b)
+{
+    precise real s = a + b;
+    precise real bVirtual = s - a;
+    precise real e = (a - (s - bVirtual)) + (b - bVirtual);
+    return vec2(s, e);
+}
+
+// a·b = p + e exactly (Dekker's product with Veltkamp's split; no fma, which llvmpipe does not fuse);
+// returns (p, e). Exact unless a·b under- or overflows (|a|, |b| < 1e30 here).
+vec2 airmassSplit(real a)
+{
+    precise real c = AIRMASS_SPLITTER * a;
+    precise real high = c - (c - a);
+    precise real low = a - high;
+    return vec2(high, low);
+}
+
+vec2 airmassTwoProduct(real a, real b)
+{
+    vec2 as = airmassSplit(a);
+    vec2 bs = airmassSplit(b);
+    precise real p = a * b;
+    precise real e = ((as.x * bs.x - p) + as.x * bs.y + as.y * bs.x) + as.y * bs.y;
+    return vec2(p, e);
+}
+
+// a·b of two 3-vectors as hi + lo, as accurate as if summed in twice the precision (Dot2).
+vec2 airmassDot2(vec3 a, vec3 b)
+{
+    vec2 px = airmassTwoProduct(a.x, b.x);
+    vec2 py = airmassTwoProduct(a.y, b.y);
+    vec2 pz = airmassTwoProduct(a.z, b.z);
+    vec2 sxy = airmassTwoSum(px.x, py.x);
+    vec2 s = airmassTwoSum(sxy.x, pz.x);
+    precise real lo = ((px.y + py.y) + (pz.y + sxy.y)) + s.y;
+    return vec2(s.x, lo);
+}
+
+// (a.x + a.y) + (b.x + b.y) as hi + lo.
+vec2 airmassAdd2(vec2 a, vec2 b)
+{
+    vec2 s = airmassTwoSum(a.x, b.x);
+    precise real lo = s.y + (a.y + b.y);
+    return vec2(s.x, lo);
+}
+
+// Height above R of a point whose radius r satisfies r² − R² = excess.x + excess.y (hi + lo):
+// h = (r² − R²)/(r + R), accurate to float's relative precision however close r is to R.
+real airmassHeightFromExcess(vec2 excess, real R)
+{
+    real excessSum = excess.x + excess.y;
+    real r = sqrt(max(R * R + excessSum, real(0)));
+    return excessSum / max(r + R, real(1e-30));
+}
+
+// The segment t ∈ [tLo, tHi] of the ray o + t·d̂ in the plane through the planet's centre.
+// b = o·d̂, the closest approach to the centre is at t_c = −b (radius y, height hTangent), and
+// x = t − t_c = t + b is the signed distance from it (x < 0 before it). With r0² − R² = |o|² − R²,
+//   r(t)² − R² = (|o|² − R²) + t·(2b + t),   y² − R² = (|o|² − R²) − b²,
+// each summed in twice the precision from the exact float inputs (|o|², o·d and |d|² by Dot2).
+struct AirmassSegmentGeometry {
+    real directionLength; // |d|; 0 for a zero direction (no ray)
+    real tLo;
+    real tHi;
+    real xLo;             // tLo + b
+    real xHi;
+    real hLo;             // heights above R of the ends
+    real hHi;
+    real rLo;             // radii of the ends (float; for cos χ and denominators)
+    real rHi;
+    real hTangent;        // y − R
+    real yTangent;        // y, the closest approach's radius
+};
+
+AirmassSegmentGeometry airmassSegmentGeometry(vec3 origin, vec3 direction, real tLo, real tHi, real R)
+{
+    AirmassSegmentGeometry g;
+    vec2 dd = airmassDot2(direction, direction);
+    vec2 od = airmassDot2(origin, direction);
+    vec2 oo = airmassDot2(origin, origin);
+    // |d| = L + lLo, then b = (o·d)/|d| = bHi + bLo, each with one correction step.
+    real L = sqrt(dd.x);
+    real safeL = max(L, real(1e-30));
+    vec2 lSquared = airmassTwoProduct(L, L);
+    real lLo = ((dd.x - lSquared.x) - lSquared.y + dd.y) / (real(2) * safeL);
+    real bHi = od.x / safeL;
+    vec2 bL = airmassTwoProduct(bHi, L);
+    real bLo = (((od.x - bL.x) - bL.y + od.y) - bHi * lLo) / safeL;
+    // |o|² − R²
+    vec2 rSquared = airmassTwoProduct(R, R);
+    vec2 excess0 = airmassAdd2(oo, vec2(-rSquared.x, -rSquared.y));
+    // t·(2b + t) at both ends
+    vec2 pLo = airmassTwoProduct(real(2) * bHi, tLo);
+    vec2 qLo = airmassTwoProduct(tLo, tLo);
+    vec2 excessLo = airmassAdd2(airmassAdd2(excess0, vec2(pLo.x, pLo.y + real(2) * bLo * tLo)), qLo);
+    vec2 pHi = airmassTwoProduct(real(2) * bHi, tHi);
+    vec2 qHi = airmassTwoProduct(tHi, tHi);
+    vec2 excessHi = airmassAdd2(airmassAdd2(excess0, vec2(pHi.x, pHi.y + real(2) * bLo * tHi)), qHi);
+    // −b²
+    vec2 bSquared = airmassTwoProduct(bHi, bHi);
+    vec2 excessTangent = airmassAdd2(excess0, vec2(-bSquared.x, -bSquared.y - real(2) * bHi * bLo));
+    g.directionLength = L;
+    g.tLo = tLo;
+    g.tHi = tHi;
+    g.xLo = (tLo + bHi) + bLo;
+    g.xHi = (tHi + bHi) + bLo;
+    g.hLo = airmassHeightFromExcess(excessLo, R);
+    g.hHi = airmassHeightFromExcess(excessHi, R);
+    g.rLo = R + g.hLo;
+    g.rHi = R + g.hHi;
+    g.hTangent = airmassHeightFromExcess(excessTangent, R);
+    g.yTangent = max(R + g.hTangent, real(0));
+    return g;
 }
