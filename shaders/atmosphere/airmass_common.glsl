@@ -124,34 +124,41 @@ vec2 airmassTwoSum(real a, real b)
     return vec2(s, e);
 }
 
-// a·b = p + e exactly (Dekker's product with Veltkamp's split; no fma, which llvmpipe does not fuse);
-// returns (p, e). Exact unless a·b under- or overflows (|a|, |b| < 1e30 here).
-vec2 airmassSplit(real a)
+// Veltkamp's split: a = high + low exactly, each half with at most half the mantissa bits, so that
+// products of halves are exact. Returns high (low = a − high).
+vec3 airmassSplitHigh(vec3 a)
 {
-    precise real c = AIRMASS_SPLITTER * a;
-    precise real high = c - (c - a);
-    precise real low = a - high;
-    return vec2(high, low);
+    precise vec3 c = AIRMASS_SPLITTER * a;
+    precise vec3 high = c - (c - a);
+    return high;
 }
 
+// a·b = p + e exactly (Dekker's product; no fma, which llvmpipe does not fuse), from the splits of a
+// and b; returns e for p = a·b rounded. Exact unless a·b under- or overflows (|a|, |b| < 1e18 here).
+vec3 airmassProductError(vec3 p, vec3 aHigh, vec3 aLow, vec3 bHigh, vec3 bLow)
+{
+    precise vec3 e = ((aHigh * bHigh - p) + aHigh * bLow + aLow * bHigh) + aLow * bLow;
+    return e;
+}
+
+// a·b = p + e exactly for scalars; returns (p, e).
 vec2 airmassTwoProduct(real a, real b)
 {
-    vec2 as = airmassSplit(a);
-    vec2 bs = airmassSplit(b);
+    vec3 high = airmassSplitHigh(vec3(a, b, real(0)));
+    precise vec3 low = vec3(a, b, real(0)) - high;
     precise real p = a * b;
-    precise real e = ((as.x * bs.x - p) + as.x * bs.y + as.y * bs.x) + as.y * bs.y;
-    return vec2(p, e);
+    return vec2(p, airmassProductError(vec3(p), vec3(high.x), vec3(low.x), vec3(high.y), vec3(low.y)).x);
 }
 
-// a·b of two 3-vectors as hi + lo, as accurate as if summed in twice the precision (Dot2).
-vec2 airmassDot2(vec3 a, vec3 b)
+// a·b of two 3-vectors as hi + lo, as accurate as if summed in twice the precision (Dot2), from the
+// vectors' splits.
+vec2 airmassDot2(vec3 a, vec3 aHigh, vec3 aLow, vec3 b, vec3 bHigh, vec3 bLow)
 {
-    vec2 px = airmassTwoProduct(a.x, b.x);
-    vec2 py = airmassTwoProduct(a.y, b.y);
-    vec2 pz = airmassTwoProduct(a.z, b.z);
-    vec2 sxy = airmassTwoSum(px.x, py.x);
-    vec2 s = airmassTwoSum(sxy.x, pz.x);
-    precise real lo = ((px.y + py.y) + (pz.y + sxy.y)) + s.y;
+    precise vec3 p = a * b;
+    vec3 e = airmassProductError(p, aHigh, aLow, bHigh, bLow);
+    vec2 sxy = airmassTwoSum(p.x, p.y);
+    vec2 s = airmassTwoSum(sxy.x, p.z);
+    precise real lo = ((e.x + e.y) + (e.z + sxy.y)) + s.y;
     return vec2(s.x, lo);
 }
 
@@ -174,13 +181,12 @@ real airmassHeightFromExcess(vec2 excess, real R)
 
 // The segment t ∈ [tLo, tHi] of the ray o + t·d̂ in the plane through the planet's centre.
 // b = o·d̂, the closest approach to the centre is at t_c = −b (radius y, height hTangent), and
-// x = t − t_c = t + b is the signed distance from it (x < 0 before it). With r0² − R² = |o|² − R²,
-//   r(t)² − R² = (|o|² − R²) + t·(2b + t),   y² − R² = (|o|² − R²) − b²,
-// each summed in twice the precision from the exact float inputs (|o|², o·d and |d|² by Dot2).
+// x = t − t_c = t + b is the signed distance from it (x < 0 before it). Then
+//   y² − R² = (|o|² − R²) − b²,   r(t)² − R² = (y² − R²) + x²,
+// each summed in twice the precision from the exact float inputs (|o|², o·d and |d|² by Dot2, b and
+// |d| with one correction step each), and h = (r² − R²)/(r + R).
 struct AirmassSegmentGeometry {
     real directionLength; // |d|; 0 for a zero direction (no ray)
-    real tLo;
-    real tHi;
     real xLo;             // tLo + b
     real xHi;
     real hLo;             // heights above R of the ends
@@ -191,43 +197,48 @@ struct AirmassSegmentGeometry {
     real yTangent;        // y, the closest approach's radius
 };
 
+// r² − R² at distance x = t + b (a pair) from the closest approach, given y² − R².
+vec2 airmassExcessAt(real t, vec2 b, vec2 tangentExcess)
+{
+    vec2 x = airmassTwoSum(t, b.x);
+    precise real xLow = x.y + b.y;
+    vec2 xSquared = airmassTwoProduct(x.x, x.x);
+    precise real xSquaredLow = xSquared.y + real(2) * x.x * xLow;
+    return airmassAdd2(tangentExcess, vec2(xSquared.x, xSquaredLow));
+}
+
 AirmassSegmentGeometry airmassSegmentGeometry(vec3 origin, vec3 direction, real tLo, real tHi, real R)
 {
     AirmassSegmentGeometry g;
-    vec2 dd = airmassDot2(direction, direction);
-    vec2 od = airmassDot2(origin, direction);
-    vec2 oo = airmassDot2(origin, origin);
-    // |d| = L + lLo, then b = (o·d)/|d| = bHi + bLo, each with one correction step.
+    vec3 oHigh = airmassSplitHigh(origin);
+    precise vec3 oLow = origin - oHigh;
+    vec3 dHigh = airmassSplitHigh(direction);
+    precise vec3 dLow = direction - dHigh;
+    vec2 dd = airmassDot2(direction, dHigh, dLow, direction, dHigh, dLow);
+    vec2 od = airmassDot2(origin, oHigh, oLow, direction, dHigh, dLow);
+    vec2 oo = airmassDot2(origin, oHigh, oLow, origin, oHigh, oLow);
+    // |d| = L + lLow, then b = (o·d)/|d| = bHigh + bLow.
     real L = sqrt(dd.x);
     real safeL = max(L, real(1e-30));
     vec2 lSquared = airmassTwoProduct(L, L);
-    real lLo = ((dd.x - lSquared.x) - lSquared.y + dd.y) / (real(2) * safeL);
-    real bHi = od.x / safeL;
-    vec2 bL = airmassTwoProduct(bHi, L);
-    real bLo = (((od.x - bL.x) - bL.y + od.y) - bHi * lLo) / safeL;
-    // |o|² − R²
+    precise real lLow = ((dd.x - lSquared.x) - lSquared.y + dd.y) / (real(2) * safeL);
+    real bHigh = od.x / safeL;
+    vec2 bL = airmassTwoProduct(bHigh, L);
+    precise real bLow = (((od.x - bL.x) - bL.y + od.y) - bHigh * lLow) / safeL;
+    // y² − R² = |o|² − R² − b²
     vec2 rSquared = airmassTwoProduct(R, R);
-    vec2 excess0 = airmassAdd2(oo, vec2(-rSquared.x, -rSquared.y));
-    // t·(2b + t) at both ends
-    vec2 pLo = airmassTwoProduct(real(2) * bHi, tLo);
-    vec2 qLo = airmassTwoProduct(tLo, tLo);
-    vec2 excessLo = airmassAdd2(airmassAdd2(excess0, vec2(pLo.x, pLo.y + real(2) * bLo * tLo)), qLo);
-    vec2 pHi = airmassTwoProduct(real(2) * bHi, tHi);
-    vec2 qHi = airmassTwoProduct(tHi, tHi);
-    vec2 excessHi = airmassAdd2(airmassAdd2(excess0, vec2(pHi.x, pHi.y + real(2) * bLo * tHi)), qHi);
-    // −b²
-    vec2 bSquared = airmassTwoProduct(bHi, bHi);
-    vec2 excessTangent = airmassAdd2(excess0, vec2(-bSquared.x, -bSquared.y - real(2) * bHi * bLo));
+    vec2 bSquared = airmassTwoProduct(bHigh, bHigh);
+    precise real bSquaredLow = bSquared.y + real(2) * bHigh * bLow;
+    vec2 tangentExcess = airmassAdd2(airmassAdd2(oo, vec2(-rSquared.x, -rSquared.y)), vec2(-bSquared.x, -bSquaredLow));
+    vec2 b = vec2(bHigh, bLow);
     g.directionLength = L;
-    g.tLo = tLo;
-    g.tHi = tHi;
-    g.xLo = (tLo + bHi) + bLo;
-    g.xHi = (tHi + bHi) + bLo;
-    g.hLo = airmassHeightFromExcess(excessLo, R);
-    g.hHi = airmassHeightFromExcess(excessHi, R);
+    g.xLo = (tLo + bHigh) + bLow;
+    g.xHi = (tHi + bHigh) + bLow;
+    g.hLo = airmassHeightFromExcess(airmassExcessAt(tLo, b, tangentExcess), R);
+    g.hHi = airmassHeightFromExcess(airmassExcessAt(tHi, b, tangentExcess), R);
     g.rLo = R + g.hLo;
     g.rHi = R + g.hHi;
-    g.hTangent = airmassHeightFromExcess(excessTangent, R);
+    g.hTangent = airmassHeightFromExcess(tangentExcess, R);
     g.yTangent = max(R + g.hTangent, real(0));
     return g;
 }
