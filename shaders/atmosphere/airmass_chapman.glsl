@@ -36,8 +36,8 @@ real chapmanHdrp(real x, real cosZenith)
 // Both J₂ forms are evaluated and one is selected (no branch): each is finite for every z ≥ 0.
 real chapmanAsymptotic(real x, real cosZenith)
 {
-    real safeX = max(x, real(1e-6));
-    real z = sqrt(real(0.5) * safeX) * cosZenith;
+    real halfRoot = sqrt(real(0.5) * max(x, real(1e-6)));   // √(x/2); √(2x) = 2·√(x/2)
+    real z = halfRoot * cosZenith;
     real E = sqrt(AIRMASS_PI) * airmassErfcx(z);
     real zNear = min(z, real(8));
     real zNear2 = zNear * zNear;
@@ -47,7 +47,7 @@ real chapmanAsymptotic(real x, real cosZenith)
     real J2Far = (real(2) + inverseZ2 * (real(-3) + inverseZ2 * (real(9) + inverseZ2 * (real(-37.5)
                  + inverseZ2 * real(196.875))))) / zFar;
     real J2 = z < real(8) ? J2Near : J2Far;
-    return sqrt(real(0.5) * safeX) * E + J2 / (real(2) * sqrt(real(2) * safeX));
+    return halfRoot * E + real(0.25) * J2 / halfRoot;
 }
 
 // The published fits by kind (CHAPMAN_SCHUELER or CHAPMAN_HDRP).
@@ -109,12 +109,12 @@ real chapmanAsymptoticHorizontal(real x)
 // rRef and distance xRef from the closest approach: r² − rRef² = s·(2·xRef + s), so
 //   h = hRef + s·(2·xRef + s)/(rRef + r),
 // which stays accurate in float however large rRef and xRef are (the increment is formed directly).
-real airmassDensityAfter(real hRef, real rRef, real xRef, real s, real H)
+real airmassDensityAfter(real hRef, real rRef, real xRef, real s, real inverseH)
 {
     real rise = s * (real(2) * xRef + s);
     real r = sqrt(max(rRef * rRef + rise, real(0)));
     real h = hRef + rise / max(rRef + r, real(1e-30));
-    return exp(min(-h / H, real(60)));
+    return exp(min(-h * inverseH, real(60)));
 }
 
 // The safe form switches at a variation of AIRMASS_SAFE_VARIATION scale heights over the segment.
@@ -144,9 +144,10 @@ real airmassChapmanAsymptotic(vec3 origin, vec3 direction, real t0, real t1, rea
     // Chapman form.
     real cosZenithLo = min(abs(g.xLo) / max(g.rLo, real(1e-30)), real(1));
     real cosZenithHi = min(abs(g.xHi) / max(g.rHi, real(1e-30)), real(1));
-    real upLo = exp(min(-g.hLo / H, real(60))) * chapmanAsymptotic(g.rLo / H, cosZenithLo);
-    real upHi = exp(min(-g.hHi / H, real(60))) * chapmanAsymptotic(g.rHi / H, cosZenithHi);
-    real tangent = exp(min(-g.hTangent / H, real(60))) * chapmanAsymptoticHorizontal(g.yTangent / H);
+    real inverseH = real(1) / H;
+    real upLo = exp(min(-g.hLo * inverseH, real(60))) * chapmanAsymptotic(g.rLo * inverseH, cosZenithLo);
+    real upHi = exp(min(-g.hHi * inverseH, real(60))) * chapmanAsymptotic(g.rHi * inverseH, cosZenithHi);
+    real tangent = exp(min(-g.hTangent * inverseH, real(60))) * chapmanAsymptoticHorizontal(g.yTangent * inverseH);
     bool across = g.xLo < real(0) && !(g.xHi < real(0));
     real columnLo = g.xLo < real(0) ? -upLo : upLo;
     real columnHi = g.xHi < real(0) ? -upHi : upHi;
@@ -154,12 +155,12 @@ real airmassChapmanAsymptotic(vec3 origin, vec3 direction, real t0, real t1, rea
 
     // Safe form.
     real lowest = across ? g.hTangent : min(g.hLo, g.hHi);
-    real variation = (max(g.hLo, g.hHi) - lowest) / H;
+    real variation = (max(g.hLo, g.hHi) - lowest) * inverseH;
     real halfWidth = real(0.5) * (tHi - tLo);
     real offset = halfWidth * real(0.774596669241483377);   // √(3/5)
-    real gauss = halfWidth * (real(0.555555555555555556) * airmassDensityAfter(g.hLo, g.rLo, g.xLo, halfWidth - offset, H)
-                            + real(0.888888888888888889) * airmassDensityAfter(g.hLo, g.rLo, g.xLo, halfWidth, H)
-                            + real(0.555555555555555556) * airmassDensityAfter(g.hLo, g.rLo, g.xLo, halfWidth + offset, H));
+    real gauss = halfWidth * (real(0.555555555555555556) * airmassDensityAfter(g.hLo, g.rLo, g.xLo, halfWidth - offset, inverseH)
+                            + real(0.888888888888888889) * airmassDensityAfter(g.hLo, g.rLo, g.xLo, halfWidth, inverseH)
+                            + real(0.555555555555555556) * airmassDensityAfter(g.hLo, g.rLo, g.xLo, halfWidth + offset, inverseH));
 
     real airmass = variation <= AIRMASS_SAFE_VARIATION ? gauss : chapman;
     return t1 < t0 ? -airmass : airmass;
