@@ -2,10 +2,12 @@
 
 #include "common/clock.h"
 #include "gl/functions.h"
+#include "io/half_pixels.h"
 #include "wall/tile_rays.h"
 
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <limits>
 
@@ -31,9 +33,10 @@ BalancedFrame::Target& BalancedFrame::targetFor(int width, int height)
 std::vector<BandCost> BalancedFrame::render(render::TileRenderer& renderer, const std::vector<int>& assignment,
                                             const cluster::MpiWorld& world, Timing& timing)
 {
-    // 1. Draw my bands, one at a time so each one's cost is measured alone.
+    // 1. Draw my bands, one at a time so each one's cost is measured alone. Every band, kept or sent,
+    // becomes half-float RGB (io/half_pixels.h), so the screen does not depend on who drew which band.
     std::vector<BandCost> costs;
-    std::vector<std::vector<float>> outgoingPixels;
+    std::vector<std::vector<std::uint16_t>> outgoingPixels;
     std::vector<cluster::MpiWorld::Message> outgoing, incoming;
     const auto start = SteadyClock::now();
     const double cpuStart = processCpuMilliseconds();
@@ -45,12 +48,12 @@ std::vector<BandCost> BalancedFrame::render(render::TileRenderer& renderer, cons
         Target& t = targetFor(width, b.height);
         const double bandStart = processCpuMilliseconds();
         renderer.renderTile(wall::tileRays(wall_, b.screen, {0, b.y0}), *t.target, *t.triangle);
-        io::Image pixels = io::imageFromGlReadback(width, b.height, t.target->readback());
+        std::vector<std::uint16_t> pixels = io::packRgbHalf(io::imageFromGlReadback(width, b.height, t.target->readback()));
         costs.push_back({static_cast<int>(i), processCpuMilliseconds() - bandStart});
         if (b.owner == rank_) {
-            io::pasteTile(screens_.at(b.screen), pixels, 0, b.y0);
+            io::pasteTile(screens_.at(b.screen), io::unpackRgbHalf(width, b.height, pixels), 0, b.y0);
         } else {
-            outgoingPixels.push_back(std::move(pixels.rgba));
+            outgoingPixels.push_back(std::move(pixels));
             outgoing.push_back({b.owner, static_cast<int>(i), nullptr});
         }
     }
@@ -61,28 +64,25 @@ std::vector<BandCost> BalancedFrame::render(render::TileRenderer& renderer, cons
 
     // 2. Exchange: my screens' bands drawn elsewhere come in, other screens' bands go out.
     const auto exchangeStart = SteadyClock::now();
-    std::vector<std::pair<int, std::vector<float>>> arriving;
+    std::vector<std::pair<int, std::vector<std::uint16_t>>> arriving;
     for (size_t i = 0; i < bands_.size(); ++i)
         if (bands_[i].owner == rank_ && assignment[i] != rank_)
-            arriving.emplace_back(static_cast<int>(i),
-                                  std::vector<float>(4 * size_t(wall_.screens[bands_[i].screen].widthPx) *
-                                                     bands_[i].height));
+            arriving.emplace_back(static_cast<int>(i), std::vector<std::uint16_t>(
+                                                           3 * size_t(wall_.screens[bands_[i].screen].widthPx) *
+                                                           bands_[i].height));
     for (auto& [band, pixels] : arriving)
         incoming.push_back({assignment[band], band, &pixels});
     world.exchange(outgoing, incoming);
-    size_t floats = 0;
+    size_t words = 0;
     for (const auto& m : outgoing)
-        floats += m.values->size();
+        words += m.values->size();
     for (const auto& m : incoming)
-        floats += m.values->size();
-    timing.exchangeMB = 1e-6 * static_cast<double>(floats * sizeof(float));
-    for (auto& [band, pixels] : arriving) {
+        words += m.values->size();
+    timing.exchangeMB = 1e-6 * static_cast<double>(words * sizeof(std::uint16_t));
+    for (const auto& [band, pixels] : arriving) {
         const cluster::Band& b = bands_[band];
-        io::Image image;
-        image.width = wall_.screens[b.screen].widthPx;
-        image.height = b.height;
-        image.rgba = std::move(pixels);
-        io::pasteTile(screens_.at(b.screen), image, 0, b.y0);
+        io::pasteTile(screens_.at(b.screen), io::unpackRgbHalf(wall_.screens[b.screen].widthPx, b.height, pixels), 0,
+                      b.y0);
     }
     timing.exchangeMs = millisecondsSince(exchangeStart);
     return costs;

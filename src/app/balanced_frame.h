@@ -3,7 +3,8 @@
 // the bands the master assigned to it, sends those that belong to other ranks' screens, and
 // receives its own screens' bands from whoever rendered them. Every pixel is traced with the
 // same rays as without balancing (the wall canvas makes a band's rays independent of who traces
-// them), so the balanced wall equals the unbalanced one.
+// them) and every band is rounded to half floats whoever drew it (as the unbalanced output is), so the
+// balanced wall equals the unbalanced one. Moved bands travel as half-float RGB, 6 bytes a pixel.
 #include "cluster/load_balancer.h"
 #include "cluster/mpi_world.h"
 #include "gl/float_target.h"
@@ -36,7 +37,8 @@ public:
     std::vector<BandCost> render(render::TileRenderer& renderer, const std::vector<int>& assignment,
                                  const cluster::MpiWorld& world, Timing& timing);
 
-    // The complete pixels of one of this rank's screens (top-down rows), after render().
+    // The complete pixels of one of this rank's screens (top-down rows, values rounded to half
+    // floats as io/half_pixels.h, alpha 1), after render().
     const io::Image& screenImage(int screen) const { return screens_.at(screen); }
 
 private:

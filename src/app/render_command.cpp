@@ -14,6 +14,7 @@
 #include "gl/functions.h"
 #include "io/directory.h"
 #include "io/exr.h"
+#include "io/half_pixels.h"
 #include "io/image.h"
 #include "io/png.h"
 #include "render/fragment_shader.h"
@@ -26,6 +27,7 @@
 #include <chrono>
 #include <filesystem>
 #include <cstdio>
+#include <cstdint>
 #include <cstring>
 #include <functional>
 #include <iostream>
@@ -97,6 +99,8 @@ void uploadToTarget(const io::Image& image, gl::FloatTarget& target)
 }
 
 // Tiles travel to rank 0 as [screen index, width, height] followed by top-down RGBA floats.
+// Screens travel to the master as half-float RGB (io/half_pixels.h): a header (screen, width, height),
+// then the halves.
 std::vector<char> packTiles(const std::vector<std::pair<int, io::Image>>& tiles)
 {
     std::vector<char> bytes;
@@ -104,8 +108,9 @@ std::vector<char> packTiles(const std::vector<std::pair<int, io::Image>>& tiles)
         const int header[3] = {screen, image.width, image.height};
         const char* h = reinterpret_cast<const char*>(header);
         bytes.insert(bytes.end(), h, h + sizeof header);
-        const char* p = reinterpret_cast<const char*>(image.rgba.data());
-        bytes.insert(bytes.end(), p, p + image.rgba.size() * sizeof(float));
+        const std::vector<std::uint16_t> rgb = io::packRgbHalf(image);
+        const char* p = reinterpret_cast<const char*>(rgb.data());
+        bytes.insert(bytes.end(), p, p + rgb.size() * sizeof(std::uint16_t));
     }
     return bytes;
 }
@@ -118,14 +123,12 @@ io::Image assembleWall(const wall::Wall& wall, const std::vector<char>& bytes)
         int header[3];
         std::memcpy(header, bytes.data() + at, sizeof header);
         at += sizeof header;
-        io::Image tile;
-        tile.width = header[1];
-        tile.height = header[2];
-        tile.rgba.resize(4 * size_t(tile.width) * tile.height);
-        std::memcpy(tile.rgba.data(), bytes.data() + at, tile.rgba.size() * sizeof(float));
-        at += tile.rgba.size() * sizeof(float);
+        std::vector<std::uint16_t> rgb(3 * size_t(header[1]) * header[2]);
+        std::memcpy(rgb.data(), bytes.data() + at, rgb.size() * sizeof(std::uint16_t));
+        at += rgb.size() * sizeof(std::uint16_t);
         const wall::Screen& screen = wall.screens[header[0]];
-        io::pasteTile(canvas, tile, screen.canvasOffsetPx.x, screen.canvasOffsetPx.y);
+        io::pasteTile(canvas, io::unpackRgbHalf(header[1], header[2], rgb), screen.canvasOffsetPx.x,
+                      screen.canvasOffsetPx.y);
     }
     // Bezels stay black, as on the wall; alpha 1 everywhere so viewers show them as black, not transparent.
     for (size_t i = 3; i < canvas.rgba.size(); i += 4)
@@ -327,9 +330,9 @@ int runRenderCommand(int argc, char** argv)
             if (balanced)
                 images.emplace_back(tile.screenIndex, balanced->screenImage(tile.screenIndex));
             else
-                images.emplace_back(tile.screenIndex, io::imageFromGlReadback(tile.target->width(),
-                                                                              tile.target->height(),
-                                                                              tile.target->readback()));
+                images.emplace_back(tile.screenIndex,
+                                    io::roundedToHalf(io::imageFromGlReadback(
+                                        tile.target->width(), tile.target->height(), tile.target->readback())));
             if (options.tiles)
                 io::writeExr(options.outDir + "/tile-" + wallLayout.screens[tile.screenIndex].name + ".exr",
                              images.back().second);

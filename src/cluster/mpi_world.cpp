@@ -62,12 +62,12 @@ void MpiWorld::exchange(const std::vector<Message>& outgoing, const std::vector<
     std::vector<MPI_Request> requests;
     for (const Message& m : incoming) {
         requests.emplace_back();
-        MPI_Irecv(m.values->data(), static_cast<int>(m.values->size()), MPI_FLOAT, m.rank, m.tag, MPI_COMM_WORLD,
+        MPI_Irecv(m.values->data(), static_cast<int>(m.values->size()), MPI_UINT16_T, m.rank, m.tag, MPI_COMM_WORLD,
                   &requests.back());
     }
     for (const Message& m : outgoing) {
         requests.emplace_back();
-        MPI_Isend(m.values->data(), static_cast<int>(m.values->size()), MPI_FLOAT, m.rank, m.tag, MPI_COMM_WORLD,
+        MPI_Isend(m.values->data(), static_cast<int>(m.values->size()), MPI_UINT16_T, m.rank, m.tag, MPI_COMM_WORLD,
                   &requests.back());
     }
     MPI_Waitall(static_cast<int>(requests.size()), requests.data(), MPI_STATUSES_IGNORE);

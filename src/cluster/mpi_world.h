@@ -6,6 +6,7 @@
 
 #include <mpi.h>
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -38,12 +39,13 @@ public:
     // Rank 0 receives every rank's bytes, concatenated in rank order, with their sizes.
     std::vector<char> gatherBytes(const std::vector<char>& mine, std::vector<int>& sizesOut) const;
 
-    // Point-to-point messages of floats (band pixels): every rank posts what it sends and what it
-    // expects (buffers sized by the caller) at once, so no order of sends can deadlock.
+    // Point-to-point messages of 16-bit words (band pixels as halves, io/half_pixels.h): every rank
+    // posts what it sends and what it expects (buffers sized by the caller) at once, so no order of
+    // sends can deadlock.
     struct Message {
         int rank = 0; // destination (outgoing) or source (incoming)
         int tag = 0;
-        std::vector<float>* values = nullptr;
+        std::vector<std::uint16_t>* values = nullptr;
     };
     void exchange(const std::vector<Message>& outgoing, const std::vector<Message>& incoming) const;
 

@@ -1,6 +1,7 @@
 #include "io/exr.h"
 
 #include "io/atomic_file.h"
+#include "io/half_pixels.h"
 
 #include <ImfHeader.h>
 #include <ImfRgbaFile.h>
@@ -18,11 +19,12 @@ namespace aurorawall::io {
 
 namespace {
 
-// The documented clamping: finite, within +-HALF_MAX, NaN -> 0.
+// The documented clamping of io/half_pixels.h.
 half toHalf(float value)
 {
-    const float halfMax = float(HALF_MAX); // 65504
-    return half(std::isnan(value) ? 0.0f : std::clamp(value, -halfMax, halfMax));
+    half h;
+    h.setBits(halfBits(value));
+    return h;
 }
 
 void writeTemporaryExr(const std::string& temporaryPath, const Image& image, ExrChannels channels)
