@@ -33,7 +33,19 @@ struct Seeds {
     std::vector<glm::dvec3> direction;
     std::vector<int> curtain;
     std::vector<int> point;
+    int none() const { return static_cast<int>(direction.size()) - 1; }
 };
+
+// Texel centre directions of an n × n map with the given frame.
+std::vector<glm::dvec3> texelDirections(const FootprintMap& map, int n)
+{
+    std::vector<glm::dvec3> out(static_cast<size_t>(n) * n);
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i)
+            out[static_cast<size_t>(j) * n + i] = f64::footprintMapDirection(
+                glm::dvec2((i + 0.5) / n, (j + 0.5) / n), map.centre, map.east, map.angularRadius);
+    return out;
+}
 
 // One jump flooding pass with offset `step` (Rong & Tan 2006, §3): texel t takes, among its own seed and
 // the seeds of the 8 texels t + step·(±1 or 0, ±1 or 0), the one whose direction has the largest dot product
@@ -41,7 +53,7 @@ struct Seeds {
 void jumpFloodPass(const std::vector<int>& src, std::vector<int>& dst, int n, int step,
                    const std::vector<glm::dvec3>& texelDirection, const Seeds& seeds)
 {
-    const int none = static_cast<int>(seeds.direction.size()) - 1;
+    const int none = seeds.none();
     for (int j = 0; j < n; ++j) {
         const int* rows[3];
         int rowCount = 0;
@@ -72,42 +84,92 @@ void jumpFloodPass(const std::vector<int>& src, std::vector<int>& dst, int n, in
     }
 }
 
-// The same pass for the second map: texel t takes the seed nearest to it among those NOT on the
-// curtain of its nearest seed first[t], from the candidates its 9 texels hold in either map (a
-// neighbour's nearest may well be t's second). JFA's approximation applies as for the first map.
-void jumpFloodSecondPass(const std::vector<int>& first, const std::vector<int>& src, std::vector<int>& dst, int n,
-                         int step, const std::vector<glm::dvec3>& texelDirection, const Seeds& seeds,
-                         const std::vector<char>& wanted)
+// The coarse map: every seed is offered to the 3×3 texels around its own (so a texel crossed by several
+// seeds starts with the best of them), then passes with steps n/2, n/4, …, 1 and one more step-1 pass
+// ("JFA+1"). Returns each texel's (approximately) nearest seed.
+std::vector<int> jumpFlood(const Seeds& seeds, const std::vector<glm::dvec3>& texelDirection, const FootprintMap& map,
+                           int n)
 {
-    const int none = static_cast<int>(seeds.direction.size()) - 1;
-    for (int j = 0; j < n; ++j) {
-        for (int i = 0; i < n; ++i) {
-            const int t = j * n + i;
-            if (!wanted[t]) {
-                dst[t] = none;
-                continue;
+    const int none = seeds.none();
+    std::vector<int> nearest(static_cast<size_t>(n) * n, none), scratch(nearest.size());
+    for (int s = 0; s < none; ++s) {
+        const glm::dvec2 texel = f64::footprintMapTexel(
+            f64::footprintMapCoord(seeds.direction[s], map.centre, map.east, map.angularRadius), n);
+        for (int j = std::max(int(texel.y) - 1, 0); j <= std::min(int(texel.y) + 1, n - 1); ++j)
+            for (int i = std::max(int(texel.x) - 1, 0); i <= std::min(int(texel.x) + 1, n - 1); ++i) {
+                const int t = j * n + i;
+                const int best = nearest[t];
+                // Seeds come in increasing order, so an equal dot product keeps the earlier (smaller) seed.
+                if (best == none || glm::dot(texelDirection[t], seeds.direction[s]) >
+                                        glm::dot(texelDirection[t], seeds.direction[best]))
+                    nearest[t] = s;
             }
-            const glm::dvec3 here = texelDirection[t];
-            const int excluded = first[t] == none ? -1 : seeds.curtain[first[t]];
-            int best = src[t];
-            double bestDot = best == none ? -2.0 : glm::dot(here, seeds.direction[best]);
-            auto consider = [&](int s) {
-                if (s == none || seeds.curtain[s] == excluded)
-                    return;
-                const double d = glm::dot(here, seeds.direction[s]);
-                const bool better = (d > bestDot) | ((d == bestDot) & (s < best));
-                best = better ? s : best;
-                bestDot = better ? d : bestDot;
-            };
-            for (int jj = j - step; jj <= j + step; jj += step)
-                for (int ii = i - step; ii <= i + step; ii += step)
-                    if (ii >= 0 && ii < n && jj >= 0 && jj < n) {
-                        consider(first[jj * n + ii]);
-                        consider(src[jj * n + ii]);
-                    }
-            dst[t] = best;
-        }
     }
+    if (none == 0)
+        return nearest;
+    for (int step = n / 2; step >= 1; step /= 2) {
+        jumpFloodPass(nearest, scratch, n, step, texelDirection, seeds);
+        std::swap(nearest, scratch);
+    }
+    jumpFloodPass(nearest, scratch, n, 1, texelDirection, seeds); // JFA+1
+    std::swap(nearest, scratch);
+    return nearest;
+}
+
+// The band: for every texel whose centre lies within `withinKm` of some seed, the exact nearest seed
+// and the exact nearest seed on another curtain (if that one is within withinKm too); `none` elsewhere.
+// Each seed visits the texels of a box around its own that holds every texel centre within withinKm of it:
+// a geodesic of length w from a seed in the cap stays within θ ≤ Θ + w/R, where the projection stretches
+// lengths by at most θ/sin θ, so the map distance is at most w·stretch. Seeds go in increasing order and
+// only a strictly larger dot product wins, so ties go to the smaller seed number, as in jumpFloodPass.
+struct Band {
+    std::vector<int> first, second;
+    std::vector<int> slot;             // index into `direction` of a texel a seed's box reached, else −1
+    std::vector<glm::dvec3> direction; // those texels' centre directions
+};
+
+Band exactBand(const Seeds& seeds, const FootprintMap& map, int n, double withinKm)
+{
+    const int none = seeds.none();
+    const size_t texels = static_cast<size_t>(n) * n;
+    Band band{std::vector<int>(texels, none), std::vector<int>(texels, none), std::vector<int>(texels, -1), {}};
+    const double R = map.planetRadiusKm;
+    const double within = withinKm / R;
+    const double cosWithin = std::cos(std::min(within, kPi));
+    const double thetaMax = map.angularRadius + within;
+    const double stretch = thetaMax < 3.0 ? thetaMax / std::sin(thetaMax) : 1e30;
+    const int reach = static_cast<int>(std::min(std::ceil(within * stretch / (2.0 * map.angularRadius) * n) + 1.0,
+                                                static_cast<double>(n)));
+    for (int s = 0; s < none; ++s) {
+        const glm::dvec3& seed = seeds.direction[s];
+        const glm::dvec2 texel =
+            f64::footprintMapTexel(f64::footprintMapCoord(seed, map.centre, map.east, map.angularRadius), n);
+        for (int j = std::max(int(texel.y) - reach, 0); j <= std::min(int(texel.y) + reach, n - 1); ++j)
+            for (int i = std::max(int(texel.x) - reach, 0); i <= std::min(int(texel.x) + reach, n - 1); ++i) {
+                const size_t t = static_cast<size_t>(j) * n + i;
+                if (band.slot[t] < 0) {
+                    band.slot[t] = static_cast<int>(band.direction.size());
+                    band.direction.push_back(footprintTexelDirection(map, i, j));
+                }
+                const glm::dvec3& here = band.direction[static_cast<size_t>(band.slot[t])];
+                const double d = glm::dot(here, seed);
+                if (d < cosWithin)
+                    continue;
+                int& first = band.first[t];
+                int& second = band.second[t];
+                if (first == none || d > glm::dot(here, seeds.direction[first])) {
+                    // The old first, if on another curtain than s, is the nearest seed off s's curtain;
+                    // otherwise the old second is (it is off the old first's curtain, which is s's).
+                    if (first != none && seeds.curtain[first] != seeds.curtain[s])
+                        second = first;
+                    first = s;
+                } else if (seeds.curtain[s] != seeds.curtain[first] &&
+                           (second == none || d > glm::dot(here, seeds.direction[second]))) {
+                    second = s;
+                }
+            }
+    }
+    return band;
 }
 
 } // namespace
@@ -127,6 +189,8 @@ FootprintMap buildFootprintMap(const std::vector<CurtainPolyline>& curtains, con
         throw std::invalid_argument("buildFootprintMap: size must be a power of two in [2, 8192]");
     if (!(spec.angularRadiusDeg > 0.0 && spec.angularRadiusDeg <= 90.0))
         throw std::invalid_argument("buildFootprintMap: angular radius must be in (0, 90] degrees");
+    if (!(spec.reachKm >= 0.0 && spec.reachKm <= 10000.0))
+        throw std::invalid_argument("buildFootprintMap: reach must be in [0, 10000] km");
     if (!(planetRadiusKm > 0.0))
         throw std::invalid_argument("buildFootprintMap: planet radius must be positive");
     if (curtains.size() >= static_cast<size_t>(kMaxExactInteger / kSecondPointStride))
@@ -141,12 +205,6 @@ FootprintMap buildFootprintMap(const std::vector<CurtainPolyline>& curtains, con
     map.east = glm::dvec3(std::sin(lon), -std::cos(lon), 0.0);
     map.angularRadius = spec.angularRadiusDeg * kPi / 180.0;
 
-    std::vector<glm::dvec3> texelDirection(static_cast<size_t>(n) * n);
-    for (int j = 0; j < n; ++j)
-        for (int i = 0; i < n; ++i)
-            texelDirection[j * n + i] = footprintTexelDirection(map, i, j);
-
-    // Seeds, each offered to the 3×3 texels around its own.
     Seeds seeds;
     double longestArc = 0.0; // radians between consecutive points of a curtain
     for (size_t c = 0; c < curtains.size(); ++c) {
@@ -166,75 +224,60 @@ FootprintMap buildFootprintMap(const std::vector<CurtainPolyline>& curtains, con
     }
     const int none = static_cast<int>(seeds.direction.size());
     seeds.direction.push_back(glm::dvec3(std::numeric_limits<double>::quiet_NaN()));
-    std::vector<int> nearest(static_cast<size_t>(n) * n, none), scratch(nearest.size());
-    for (int s = 0; s < none; ++s) {
-        const glm::dvec2 texel = f64::footprintMapTexel(
-            f64::footprintMapCoord(seeds.direction[s], map.centre, map.east, map.angularRadius), n);
-        for (int j = int(texel.y) - 1; j <= int(texel.y) + 1; ++j) {
-            for (int i = int(texel.x) - 1; i <= int(texel.x) + 1; ++i) {
-                if (i < 0 || i >= n || j < 0 || j >= n)
-                    continue;
-                const int t = j * n + i;
-                const int best = nearest[t];
-                const double d = glm::dot(texelDirection[t], seeds.direction[s]);
-                // Seeds come in increasing order, so an equal dot product keeps the earlier (smaller) seed.
-                if (best == none || d > glm::dot(texelDirection[t], seeds.direction[best]))
-                    nearest[t] = s;
-            }
-        }
-    }
-    if (none > 0) {
-        for (int step = n / 2; step >= 1; step /= 2) {
-            jumpFloodPass(nearest, scratch, n, step, texelDirection, seeds);
-            std::swap(nearest, scratch);
-        }
-        jumpFloodPass(nearest, scratch, n, 1, texelDirection, seeds); // JFA+1
-        std::swap(nearest, scratch);
-    }
-    // The nearest seed of another curtain, where curtains come close (overlapping curtains both emit).
-    const double h = 2.0 * map.angularRadius / n;
-    map.marginKm = planetRadiusKm * (h * (std::sqrt(0.5) + kJfaErrorTexels) + 0.5 * longestArc + 2.0 * map.angularRadius * 1e-6);
-    // Only where the stored nearest distance is within secondCurtainWithinKm plus the margin (where
-    // the shader looks at curtains at all), with jumps up to that far.
-    std::vector<int> second(nearest.size(), none);
-    if (curtains.size() > 1) {
-        const double texelKm = planetRadiusKm * h;
-        const double withinKm = spec.secondCurtainWithinKm + map.marginKm + texelKm;
-        const double cosWithin = std::cos(std::min(withinKm / planetRadiusKm, kPi));
-        std::vector<char> wanted(nearest.size());
-        for (size_t t = 0; t < nearest.size(); ++t)
-            wanted[t] = nearest[t] != none && glm::dot(texelDirection[t], seeds.direction[nearest[t]]) >= cosWithin;
-        int firstStep = 1;
-        while (firstStep < n / 2 && firstStep * texelKm < withinKm)
-            firstStep *= 2;
-        for (int step = firstStep; step >= 1; step /= 2) {
-            jumpFloodSecondPass(nearest, second, scratch, n, step, texelDirection, seeds, wanted);
-            std::swap(second, scratch);
-        }
-        jumpFloodSecondPass(nearest, second, scratch, n, 1, texelDirection, seeds, wanted);
-        std::swap(second, scratch);
-        // A second curtain farther than that cannot emit here: keep the shader from evaluating it.
-        for (size_t t = 0; t < second.size(); ++t)
-            if (second[t] != none && glm::dot(texelDirection[t], seeds.direction[second[t]]) < cosWithin)
-                second[t] = none;
-    }
 
     const double R = planetRadiusKm;
+    const double h = 2.0 * map.angularRadius / n;
+    map.marginKm = R * (h * std::sqrt(0.5) + 0.5 * longestArc + 2.0 * map.angularRadius * 1e-6);
     map.texels.assign(static_cast<size_t>(n) * n * 4, 0.0f);
-    for (int t = 0; t < n * n; ++t) {
-        float* texel = &map.texels[4 * static_cast<size_t>(t)];
-        const int s = nearest[t];
-        if (s == none) {
-            texel[0] = texel[1] = -1.0f;
-            texel[2] = roundedDown(kPi * R);
-        } else {
-            texel[0] = static_cast<float>(seeds.curtain[s]);
-            texel[1] = static_cast<float>(seeds.point[s]);
-            texel[2] = roundedDown(R * f64::footprintAngle(texelDirection[t], seeds.direction[s]));
+    if (none == 0) {
+        for (size_t t = 0; t < map.texels.size(); t += 4) {
+            map.texels[t] = map.texels[t + 1] = map.texels[t + 3] = -1.0f;
+            map.texels[t + 2] = roundedDown(kPi * R);
         }
-        const int s2 = second[t];
-        texel[3] = s2 == none ? -1.0f : static_cast<float>(seeds.curtain[s2] * kSecondPointStride + seeds.point[s2]);
+        return map;
     }
+
+    // Near the curtains (where the shader reads the stored point): exact.
+    map.exactWithinKm = spec.reachKm + map.marginKm + R * h;
+    const Band band = exactBand(seeds, map, n, map.exactWithinKm);
+
+    // Elsewhere only a lower bound of the distance matters (for skipping): a coarse jump-flooded map
+    // gives the distance from each coarse texel centre c to a seed, at most kJfaErrorTexels coarse texels
+    // more than the nearest; a fine texel centre p in that coarse texel is within R·h·(k − 1)/√2 of c, so
+    // distance(p) ≥ distance(c) − that. Every seed is also farther than exactWithinKm from p (p is not in the band).
+    const int coarse = std::min(n, kCoarseMapSize);
+    const int k = n / coarse;
+    FootprintMap coarseFrame = map;
+    coarseFrame.spec.size = coarse;
+    const std::vector<glm::dvec3> coarseDirection = texelDirections(coarseFrame, coarse);
+    const std::vector<int> coarseNearest = jumpFlood(seeds, coarseDirection, coarseFrame, coarse);
+    const double slackKm = R * h * (k * kJfaErrorTexels + (k - 1) * std::sqrt(0.5));
+    std::vector<float> coarseBound(coarseNearest.size());
+    for (size_t t = 0; t < coarseNearest.size(); ++t)
+        coarseBound[t] = roundedDown(std::max(
+            map.exactWithinKm, R * f64::footprintAngle(coarseDirection[t], seeds.direction[coarseNearest[t]]) - slackKm));
+
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+            const size_t t = static_cast<size_t>(j) * n + i;
+            float* texel = &map.texels[4 * t];
+            const int s = band.first[t];
+            if (s != none) {
+                texel[0] = static_cast<float>(seeds.curtain[s]);
+                texel[1] = static_cast<float>(seeds.point[s]);
+                texel[2] = roundedDown(
+                    R * f64::footprintAngle(band.direction[static_cast<size_t>(band.slot[t])], seeds.direction[s]));
+                const int s2 = band.second[t];
+                texel[3] = s2 == none ? -1.0f
+                                      : static_cast<float>(seeds.curtain[s2] * kSecondPointStride + seeds.point[s2]);
+            } else {
+                const size_t c = static_cast<size_t>(j / k) * coarse + i / k;
+                texel[0] = static_cast<float>(seeds.curtain[coarseNearest[c]]);
+                texel[1] = static_cast<float>(seeds.point[coarseNearest[c]]);
+                texel[2] = coarseBound[c];
+                texel[3] = -1.0f;
+            }
+        }
     return map;
 }
 

@@ -93,7 +93,7 @@ void CurtainField::update(double timeS)
     // The cap must hold every curtain's emitting band plus the map's margin (at most a few texels).
     const double extraKm = reachKm_ + 2.0 * aurora.polylineSpacingKm + 100.0;
     aurora::FootprintMapSpec spec = capAround(polylines, extraKm, R, aurora.footprintMapSize);
-    spec.secondCurtainWithinKm = reachKm_;
+    spec.reachKm = reachKm_;
     const aurora::FootprintMap map = aurora::buildFootprintMap(polylines, spec, R);
     footprint_ = std::make_unique<gl::Texture>(gl::Texture::create2D(
         map.spec.size, map.spec.size, gl::TexelFormat::RGBA32F, gl::Filter::Nearest, gl::Wrap::Clamp));
