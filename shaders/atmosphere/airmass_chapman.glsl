@@ -145,8 +145,10 @@ real airmassChapmanAsymptotic(vec3 origin, vec3 direction, real t0, real t1, rea
     real cosZenithLo = min(abs(g.xLo) / max(g.rLo, real(1e-30)), real(1));
     real cosZenithHi = min(abs(g.xHi) / max(g.rHi, real(1e-30)), real(1));
     real inverseH = real(1) / H;
-    real upLo = exp(min(-g.hLo * inverseH, real(60))) * chapmanAsymptotic(g.rLo * inverseH, cosZenithLo);
-    real upHi = exp(min(-g.hHi * inverseH, real(60))) * chapmanAsymptotic(g.rHi * inverseH, cosZenithHi);
+    real densityLo = exp(min(-g.hLo * inverseH, real(60)));
+    real densityHi = exp(min(-g.hHi * inverseH, real(60)));
+    real upLo = densityLo * chapmanAsymptotic(g.rLo * inverseH, cosZenithLo);
+    real upHi = densityHi * chapmanAsymptotic(g.rHi * inverseH, cosZenithHi);
     real tangent = exp(min(-g.hTangent * inverseH, real(60))) * chapmanAsymptoticHorizontal(g.yTangent * inverseH);
     bool across = g.xLo < real(0) && !(g.xHi < real(0));
     real columnLo = g.xLo < real(0) ? -upLo : upLo;
@@ -157,10 +159,10 @@ real airmassChapmanAsymptotic(vec3 origin, vec3 direction, real t0, real t1, rea
     real lowest = across ? g.hTangent : min(g.hLo, g.hHi);
     real variation = (max(g.hLo, g.hHi) - lowest) * inverseH;
     real halfWidth = real(0.5) * (tHi - tLo);
-    real offset = halfWidth * real(0.774596669241483377);   // √(3/5)
-    real gauss = halfWidth * (real(0.555555555555555556) * airmassDensityAfter(g.hLo, g.rLo, g.xLo, halfWidth - offset, inverseH)
-                            + real(0.888888888888888889) * airmassDensityAfter(g.hLo, g.rLo, g.xLo, halfWidth, inverseH)
-                            + real(0.555555555555555556) * airmassDensityAfter(g.hLo, g.rLo, g.xLo, halfWidth + offset, inverseH));
+    real offset = halfWidth * real(0.447213595499957939);   // √(1/5)
+    real gauss = halfWidth * (real(0.166666666666666667) * (densityLo + densityHi)
+                            + real(0.833333333333333333) * (airmassDensityAfter(g.hLo, g.rLo, g.xLo, halfWidth - offset, inverseH)
+                                                          + airmassDensityAfter(g.hLo, g.rLo, g.xLo, halfWidth + offset, inverseH)));
 
     real airmass = variation <= AIRMASS_SAFE_VARIATION ? gauss : chapman;
     return t1 < t0 ? -airmass : airmass;
