@@ -36,9 +36,11 @@ real chapmanHdrp(real x, real cosZenith)
 // Both J₂ forms are evaluated and one is selected (no branch): each is finite for every z ≥ 0.
 real chapmanAsymptotic(real x, real cosZenith)
 {
-    real halfRoot = sqrt(real(0.5) * max(x, real(1e-6)));   // √(x/2); √(2x) = 2·√(x/2)
+    real halfX = real(0.5) * max(x, real(1e-6));
+    real inverseHalfRoot = inversesqrt(halfX);             // 1/√(x/2); √(2x) = 2·√(x/2)
+    real halfRoot = halfX * inverseHalfRoot;
     real z = halfRoot * cosZenith;
-    real E = sqrt(AIRMASS_PI) * airmassErfcx(z);
+    real E = sqrt(AIRMASS_PI) * airmassErfcxPolynomial(z);
     real zNear = min(z, real(8));
     real zNear2 = zNear * zNear;
     real J2Near = E * ((zNear2 - real(1)) * zNear2 + real(0.75)) - zNear * (zNear2 - real(1.5));
@@ -47,7 +49,7 @@ real chapmanAsymptotic(real x, real cosZenith)
     real J2Far = (real(2) + inverseZ2 * (real(-3) + inverseZ2 * (real(9) + inverseZ2 * (real(-37.5)
                  + inverseZ2 * real(196.875))))) / zFar;
     real J2 = z < real(8) ? J2Near : J2Far;
-    return halfRoot * E + real(0.25) * J2 / halfRoot;
+    return halfRoot * E + real(0.25) * J2 * inverseHalfRoot;
 }
 
 // The published fits by kind (CHAPMAN_SCHUELER or CHAPMAN_HDRP).
