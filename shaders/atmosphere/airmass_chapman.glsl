@@ -133,7 +133,9 @@ const real AIRMASS_SAFE_VARIATION = real(0.25);
 // one expression for segments after, before or across the closest approach (two Ch, one Ch at 90°).
 // Safe form: where the height varies by at most AIRMASS_SAFE_VARIATION·H over the segment (short
 // segments, segments near the closest approach), the difference cancels; there the segment is integrated
-// by 3-point Gauss–Legendre in t, with the heights formed from the lower end (airmassDensityAfter).
+// by 4-point Gauss–Lobatto in t (nodes at the ends and at ±1/√5 of the half-width, weights 1/6 and 5/6):
+// the end densities are the Chapman form's, the inner heights are formed from the lower end
+// (airmassDensityAfter). Its error peaks at the switch, 7.8e-5 across the closest approach.
 // All heights come from airmassSegmentGeometry, accurate from the exact float inputs.
 real airmassChapmanAsymptotic(vec3 origin, vec3 direction, real t0, real t1, real H, real R)
 {
