@@ -14,11 +14,13 @@ std::vector<Band> makeBands(const wall::Wall& wall, int bandsPerScreen)
     std::vector<Band> bands;
     for (int s = 0; s < static_cast<int>(wall.screens.size()); ++s) {
         const wall::Screen& screen = wall.screens[s];
-        const int count = std::min(bandsPerScreen, screen.heightPx);
-        for (int b = 0; b < count; ++b) {
-            const int y0 = b * screen.heightPx / count, y1 = (b + 1) * screen.heightPx / count;
-            bands.push_back({s, y0, y1 - y0, screen.rank});
-        }
+        const int blocks = std::max(screen.heightPx / kBandRowBlock, 1);
+        const int count = std::min(bandsPerScreen, blocks);
+        auto boundary = [&](int b) {
+            return b == count ? screen.heightPx : kBandRowBlock * static_cast<int>(std::lround(double(b) * blocks / count));
+        };
+        for (int b = 0; b < count; ++b)
+            bands.push_back({s, boundary(b), boundary(b + 1) - boundary(b), screen.rank});
     }
     return bands;
 }

@@ -15,8 +15,8 @@ std::vector<cluster::Band> twoScreens()
 {
     wall::GridSpec grid;
     grid.columns = 2;
-    grid.screenPx = {64, 37};
-    grid.screenMm = {64.0, 37.0};
+    grid.screenPx = {64, 70};
+    grid.screenMm = {64.0, 70.0};
     return cluster::makeBands(wall::makeGridWall(grid), 8);
 }
 
@@ -37,11 +37,34 @@ TEST(LoadBalancer, BandsCoverEveryRowOnce)
     int rows = 0;
     for (const cluster::Band& b : bands)
         rows += b.height;
-    EXPECT_EQ(rows, 2 * 37);
+    EXPECT_EQ(rows, 2 * 70);
     EXPECT_EQ(bands[8].screen, 1);
     EXPECT_EQ(bands[8].owner, 1);
     EXPECT_EQ(bands[8].y0, 0);
-    EXPECT_EQ(bands[7].y0 + bands[7].height, 37);
+    EXPECT_EQ(bands[7].y0 + bands[7].height, 70);
+    for (size_t i = 0; i < bands.size(); ++i) {
+        EXPECT_EQ(bands[i].y0 % cluster::kBandRowBlock, 0) << "band " << i;
+        EXPECT_GE(bands[i].height, cluster::kBandRowBlock) << "band " << i;
+        if (i % 8 != 7) {
+            EXPECT_EQ(bands[i].height % cluster::kBandRowBlock, 0) << "band " << i;
+        }
+    }
+}
+
+// Fewer blocks than bands asked for: one band per block; a screen shorter than a block: one band.
+TEST(LoadBalancer, ShortScreensGetFewerBands)
+{
+    wall::GridSpec grid;
+    grid.screenPx = {64, 37};
+    grid.screenMm = {64.0, 37.0};
+    const std::vector<cluster::Band> bands = cluster::makeBands(wall::makeGridWall(grid), 8);
+    ASSERT_EQ(bands.size(), 4u);
+    EXPECT_EQ(bands[3].y0, 24);
+    EXPECT_EQ(bands[3].height, 13);
+    grid.screenPx = {64, 5};
+    const std::vector<cluster::Band> one = cluster::makeBands(wall::makeGridWall(grid), 8);
+    ASSERT_EQ(one.size(), 1u);
+    EXPECT_EQ(one[0].height, 5);
 }
 
 TEST(LoadBalancer, StartsWithEveryBandAtHome)
