@@ -19,7 +19,7 @@ struct Band {
 
 // Band boundaries fall on multiples of this many rows: rasterizers shade blocks of pixels (llvmpipe
 // 4x4, GPUs 2x2 quads in groups of 32), and a band whose height is not a multiple of the block pays
-// for the missing rows (13-row bands cost 27% more per frame than whole screens on llvmpipe).
+// for the missing rows.
 constexpr int kBandRowBlock = 8;
 
 // Every screen cut into `bandsPerScreen` bands of nearly equal height, each a multiple of
