@@ -44,10 +44,10 @@ real chapmanAsymptotic(real x, real cosZenith)
     real zNear = min(z, real(8));
     real zNear2 = zNear * zNear;
     real J2Near = E * ((zNear2 - real(1)) * zNear2 + real(0.75)) - zNear * (zNear2 - real(1.5));
-    real zFar = max(z, real(8));
-    real inverseZ2 = real(1) / (zFar * zFar);
+    real inverseZ = real(1) / max(z, real(8));
+    real inverseZ2 = inverseZ * inverseZ;
     real J2Far = (real(2) + inverseZ2 * (real(-3) + inverseZ2 * (real(9) + inverseZ2 * (real(-37.5)
-                 + inverseZ2 * real(196.875))))) / zFar;
+                 + inverseZ2 * real(196.875))))) * inverseZ;
     real J2 = z < real(8) ? J2Near : J2Far;
     return halfRoot * E + real(0.25) * J2 * inverseHalfRoot;
 }
