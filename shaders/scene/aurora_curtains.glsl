@@ -22,6 +22,8 @@ uniform float uFootprintAngularRadius;
 uniform float uFootprintSize;
 uniform float uFootprintMarginKm;
 
+int gAuroraSamples = 0; // samples this pixel's ray has taken in auroraSegment: its work (main.frag)
+
 struct CurtainHit {
     float skipKm;   // a step this long cannot reach any curtain's emitting part
     vec3 radiance;  // linear sRGB radiance added per km of path at this point
@@ -125,6 +127,7 @@ vec3 auroraSegment(vec3 o, vec3 d, vec2 seg)
         vec3 p = o + t * d;
         float h = length(p) - uPlanetRadiusKm;
         CurtainHit hit = sampleCurtains(p, h);
+        ++gAuroraSamples;
         sum += hit.radiance * min(uAuroraStepKm, seg.y - t);
         k += uSkipEmptySpace != 0 ? int(clamp(floor(hit.skipKm / uAuroraStepKm), 1.0, 4.0e6)) : 1;
     }

@@ -33,29 +33,52 @@ BalancedFrame::Target& BalancedFrame::targetFor(int width, int height)
 std::vector<BandCost> BalancedFrame::render(render::TileRenderer& renderer, const std::vector<int>& assignment,
                                             const cluster::MpiWorld& world, Timing& timing)
 {
-    // 1. Draw my bands, one at a time so each one's cost is measured alone. Every band, kept or sent,
-    // becomes half-float RGB (io/half_pixels.h), so the screen does not depend on who drew which band.
+    // 1. Draw my bands: each run of consecutive bands of one screen in one draw (a draw has a fixed
+    // cost, and rasterizers shade whole pixel blocks), its process CPU time split among the run's
+    // bands in proportion to their pixels' work (the alpha main.frag writes). Every band, kept or
+    // sent, becomes half-float RGB (io/half_pixels.h), so the screen does not depend on who drew it.
     std::vector<BandCost> costs;
     std::vector<std::vector<std::uint16_t>> outgoingPixels;
     std::vector<cluster::MpiWorld::Message> outgoing, incoming;
     const auto start = SteadyClock::now();
     const double cpuStart = processCpuMilliseconds();
-    for (size_t i = 0; i < bands_.size(); ++i) {
-        if (assignment[i] != rank_)
+    for (size_t first = 0; first < bands_.size();) {
+        if (assignment[first] != rank_) {
+            ++first;
             continue;
-        const cluster::Band& b = bands_[i];
-        const int width = wall_.screens[b.screen].widthPx;
-        Target& t = targetFor(width, b.height);
-        const double bandStart = processCpuMilliseconds();
-        renderer.renderTile(wall::tileRays(wall_, b.screen, {0, b.y0}), *t.target, *t.triangle);
-        std::vector<std::uint16_t> pixels = io::packRgbHalf(io::imageFromGlReadback(width, b.height, t.target->readback()));
-        costs.push_back({static_cast<int>(i), processCpuMilliseconds() - bandStart});
-        if (b.owner == rank_) {
-            io::pasteTile(screens_.at(b.screen), io::unpackRgbHalf(width, b.height, pixels), 0, b.y0);
-        } else {
-            outgoingPixels.push_back(std::move(pixels));
-            outgoing.push_back({b.owner, static_cast<int>(i), nullptr});
         }
+        size_t end = first + 1;
+        while (end < bands_.size() && assignment[end] == rank_ && bands_[end].screen == bands_[first].screen)
+            ++end;
+        const cluster::Band& top = bands_[first];
+        const int width = wall_.screens[top.screen].widthPx;
+        const int height = bands_[end - 1].y0 + bands_[end - 1].height - top.y0;
+        Target& t = targetFor(width, height);
+        const double runStart = processCpuMilliseconds();
+        renderer.renderTile(wall::tileRays(wall_, top.screen, {0, top.y0}), *t.target, *t.triangle);
+        const io::Image run = io::imageFromGlReadback(width, height, t.target->readback());
+        const double runMs = processCpuMilliseconds() - runStart;
+
+        std::vector<double> work(end - first, 0.0);
+        double runWork = 0.0;
+        for (size_t i = first; i < end; ++i) {
+            for (int y = bands_[i].y0 - top.y0; y < bands_[i].y0 - top.y0 + bands_[i].height; ++y)
+                for (int x = 0; x < width; ++x)
+                    work[i - first] += run.pixel(x, y)[3];
+            runWork += work[i - first];
+        }
+        for (size_t i = first; i < end; ++i) {
+            const cluster::Band& b = bands_[i];
+            costs.push_back({static_cast<int>(i), runWork > 0.0 ? runMs * work[i - first] / runWork : 0.0});
+            std::vector<std::uint16_t> pixels = io::packRgbHalf(io::crop(run, 0, b.y0 - top.y0, width, b.height));
+            if (b.owner == rank_) {
+                io::pasteTile(screens_.at(b.screen), io::unpackRgbHalf(width, b.height, pixels), 0, b.y0);
+            } else {
+                outgoingPixels.push_back(std::move(pixels));
+                outgoing.push_back({b.owner, static_cast<int>(i), nullptr});
+            }
+        }
+        first = end;
     }
     for (size_t k = 0; k < outgoing.size(); ++k)
         outgoing[k].values = &outgoingPixels[k];

@@ -22,7 +22,9 @@ namespace aurorawall::app {
 
 struct BandCost {
     int band = 0;
-    double cpuMs = 0.0; // process CPU time to draw it and read it back
+    // Process CPU time to draw and read back the run of bands it was drawn with, times its share of
+    // the run's work (the sum of the alpha main.frag writes over its pixels).
+    double cpuMs = 0.0;
 };
 
 class BalancedFrame {
