@@ -17,8 +17,9 @@ double maxRelative(const std::vector<glm::dvec3>& values, const std::vector<glm:
 }
 
 // With the same outer march (M = 64), the closed-form light depth agrees with a nested march of
-// K = 512 steps (double) within 1e-4 for 1 to 8 Sun positions; the float closed form (the shader's
-// arithmetic) within 1e-3. Measured: 2e-6 (double) and 2.2e-4 (float).
+// K = 512 steps (double) within 1e-5 for 1 to 8 Sun positions; the float closed form (the shader's
+// arithmetic) within 5e-4. Measured: 2.5e-6 (double) and 1.9e-4 (float, mostly the outer march's own
+// float positions: the airmass itself is within 1.1e-5 in float).
 TEST(Sky, ClosedFormMatchesNestedMarchForOneToEightLights)
 {
     const std::vector<SkyView> views = twilightViews(0.002);
@@ -27,8 +28,8 @@ TEST(Sky, ClosedFormMatchesNestedMarchForOneToEightLights)
         const auto reference = skyRadiances(views, kAir, suns, SkyLightMethod::NestedMarch, 64, 512, AirmassPrecision::Float64);
         const auto closed64 = skyRadiances(views, kAir, suns, SkyLightMethod::ClosedForm, 64, 0, AirmassPrecision::Float64);
         const auto closed32 = skyRadiances(views, kAir, suns, SkyLightMethod::ClosedForm, 64, 0, AirmassPrecision::Float32);
-        EXPECT_LT(maxRelative(closed64, reference), 1e-4) << lightCount << " lights";
-        EXPECT_LT(maxRelative(closed32, reference), 1e-3) << lightCount << " lights";
+        EXPECT_LT(maxRelative(closed64, reference), 1e-5) << lightCount << " lights";
+        EXPECT_LT(maxRelative(closed32, reference), 5e-4) << lightCount << " lights";
     }
 }
 
