@@ -324,11 +324,14 @@ TEST(AirmassSwitches, ContinuousAcrossSwitches)
     below.t1 *= 1 - 1e-6;
     above.t1 *= 1 + 1e-6;
     check(below, above, "vertical, variation 0.25 H");
-    // ... a short slant segment from 2 km at 4° elevation (also the old |t1 − t0| = H switch) ...
+    // ... a slant segment from 2 km at 4° elevation, to where it has risen by H/4 ...
     AirmassRay slant = groundRay(2.0, 4.0, H);
+    const double r0 = kR + 2.0, b0 = r0 * std::sin(radians(4.0)), r1 = r0 + 0.25 * H;
+    slant.t1 = -b0 + std::sqrt(b0 * b0 + (r1 - r0) * (r1 + r0));
     below = above = slant;
-    below.t1 = above.t1 = H;
-    check(below, above, "slant segment of length H");
+    below.t1 *= 1 - 1e-6;
+    above.t1 *= 1 + 1e-6;
+    check(below, above, "slant, variation 0.25 H");
     // ... and a horizontal segment across the closest approach at 5 km: √(a² + y²) = y + 0.25·H at
     // a² = 0.5·H·y + H²/16, with y = R + 5.
     const double y = kR + 5.0, a = std::sqrt(0.5 * H * y + H * H / 16.0);
