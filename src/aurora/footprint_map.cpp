@@ -36,14 +36,14 @@ struct Seeds {
     int none() const { return static_cast<int>(direction.size()) - 1; }
 };
 
-// Texel centre directions of an n × n map with the given frame.
-std::vector<glm::dvec3> texelDirections(const FootprintMap& map, int n)
+// Every texel centre's direction, row by row.
+std::vector<glm::dvec3> texelDirections(const FootprintMap& map)
 {
+    const int n = map.spec.size;
     std::vector<glm::dvec3> out(static_cast<size_t>(n) * n);
     for (int j = 0; j < n; ++j)
         for (int i = 0; i < n; ++i)
-            out[static_cast<size_t>(j) * n + i] = f64::footprintMapDirection(
-                glm::dvec2((i + 0.5) / n, (j + 0.5) / n), map.centre, map.east, map.angularRadius);
+            out[static_cast<size_t>(j) * n + i] = footprintTexelDirection(map, i, j);
     return out;
 }
 
@@ -138,14 +138,14 @@ Band exactBand(const Seeds& seeds, const FootprintMap& map, int n, double within
     const double cosWithin = std::cos(std::min(within, kPi));
     const double thetaMax = map.angularRadius + within;
     const double stretch = thetaMax < 3.0 ? thetaMax / std::sin(thetaMax) : 1e30;
-    const int reach = static_cast<int>(std::min(std::ceil(within * stretch / (2.0 * map.angularRadius) * n) + 1.0,
-                                                static_cast<double>(n)));
+    const int box = static_cast<int>(std::min(std::ceil(within * stretch / (2.0 * map.angularRadius) * n) + 1.0,
+                                              static_cast<double>(n)));
     for (int s = 0; s < none; ++s) {
         const glm::dvec3& seed = seeds.direction[s];
         const glm::dvec2 texel =
             f64::footprintMapTexel(f64::footprintMapCoord(seed, map.centre, map.east, map.angularRadius), n);
-        for (int j = std::max(int(texel.y) - reach, 0); j <= std::min(int(texel.y) + reach, n - 1); ++j)
-            for (int i = std::max(int(texel.x) - reach, 0); i <= std::min(int(texel.x) + reach, n - 1); ++i) {
+        for (int j = std::max(int(texel.y) - box, 0); j <= std::min(int(texel.y) + box, n - 1); ++j)
+            for (int i = std::max(int(texel.x) - box, 0); i <= std::min(int(texel.x) + box, n - 1); ++i) {
                 const size_t t = static_cast<size_t>(j) * n + i;
                 if (band.slot[t] < 0) {
                     band.slot[t] = static_cast<int>(band.direction.size());
@@ -249,7 +249,7 @@ FootprintMap buildFootprintMap(const std::vector<CurtainPolyline>& curtains, con
     const int k = n / coarse;
     FootprintMap coarseFrame = map;
     coarseFrame.spec.size = coarse;
-    const std::vector<glm::dvec3> coarseDirection = texelDirections(coarseFrame, coarse);
+    const std::vector<glm::dvec3> coarseDirection = texelDirections(coarseFrame);
     const std::vector<int> coarseNearest = jumpFlood(seeds, coarseDirection, coarseFrame, coarse);
     const double slackKm = R * h * (k * kJfaErrorTexels + (k - 1) * std::sqrt(0.5));
     std::vector<float> coarseBound(coarseNearest.size());
