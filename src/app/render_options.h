@@ -23,7 +23,7 @@ struct RenderOptions {
     bool tiles = false;
     bool singleScreen = false;
     std::string balance = "auto"; // on, off, or auto: on when more than one rank renders
-    int balanceBands = 16;
+    int balanceBands = 8;
     bool quiet = false;
     bool verbose = false;
     bool help = false;
