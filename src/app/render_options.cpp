@@ -40,7 +40,7 @@ RenderOptions parseRenderOptions(int argc, char** argv)
          "bands, and each frame ranks with cheap screens render bands of expensive ones (split from measured "
          "costs, damped); the image is unchanged. Costs a readback and a transfer of the moved bands per frame")
         ("balance-bands", po::value(&o.balanceBands)->default_value(o.balanceBands),
-         "bands per screen for --balance (1 to 256)")
+         "bands per screen for --balance (1 to 256; at most one per 8 rows)")
         ("single-screen", po::bool_switch(&o.singleScreen),
          "render the wall's whole canvas (bezels included) as one screen on one rank: the reference a wall must match")
         ("stats", po::value(&o.statsFile), "write per-frame timings to FILE (.csv or .json)")
