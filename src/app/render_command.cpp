@@ -98,7 +98,6 @@ void uploadToTarget(const io::Image& image, gl::FloatTarget& target)
     target.texture().upload(texels);
 }
 
-// Tiles travel to rank 0 as [screen index, width, height] followed by top-down RGBA floats.
 // Screens travel to the master as half-float RGB (io/half_pixels.h): a header (screen, width, height),
 // then the halves.
 std::vector<char> packTiles(const std::vector<std::pair<int, io::Image>>& tiles)

@@ -87,9 +87,9 @@ void jumpFloodPass(const std::vector<int>& src, std::vector<int>& dst, int n, in
 // The coarse map: every seed is offered to the 3×3 texels around its own (so a texel crossed by several
 // seeds starts with the best of them), then passes with steps n/2, n/4, …, 1 and one more step-1 pass
 // ("JFA+1"). Returns each texel's (approximately) nearest seed.
-std::vector<int> jumpFlood(const Seeds& seeds, const std::vector<glm::dvec3>& texelDirection, const FootprintMap& map,
-                           int n)
+std::vector<int> jumpFlood(const Seeds& seeds, const std::vector<glm::dvec3>& texelDirection, const FootprintMap& map)
 {
+    const int n = map.spec.size;
     const int none = seeds.none();
     std::vector<int> nearest(static_cast<size_t>(n) * n, none), scratch(nearest.size());
     for (int s = 0; s < none; ++s) {
@@ -128,8 +128,9 @@ struct Band {
     std::vector<glm::dvec3> direction; // those texels' centre directions
 };
 
-Band exactBand(const Seeds& seeds, const FootprintMap& map, int n, double withinKm)
+Band exactBand(const Seeds& seeds, const FootprintMap& map, double withinKm)
 {
+    const int n = map.spec.size;
     const int none = seeds.none();
     const size_t texels = static_cast<size_t>(n) * n;
     Band band{std::vector<int>(texels, none), std::vector<int>(texels, none), std::vector<int>(texels, -1), {}};
@@ -239,7 +240,7 @@ FootprintMap buildFootprintMap(const std::vector<CurtainPolyline>& curtains, con
 
     // Near the curtains (where the shader reads the stored point): exact.
     map.exactWithinKm = spec.reachKm + map.marginKm + R * h;
-    const Band band = exactBand(seeds, map, n, map.exactWithinKm);
+    const Band band = exactBand(seeds, map, map.exactWithinKm);
 
     // Elsewhere only a lower bound of the distance matters (for skipping): a coarse jump-flooded map
     // gives the distance from each coarse texel centre c to a seed, at most kJfaErrorTexels coarse texels
@@ -250,7 +251,7 @@ FootprintMap buildFootprintMap(const std::vector<CurtainPolyline>& curtains, con
     FootprintMap coarseFrame = map;
     coarseFrame.spec.size = coarse;
     const std::vector<glm::dvec3> coarseDirection = texelDirections(coarseFrame);
-    const std::vector<int> coarseNearest = jumpFlood(seeds, coarseDirection, coarseFrame, coarse);
+    const std::vector<int> coarseNearest = jumpFlood(seeds, coarseDirection, coarseFrame);
     const double slackKm = R * h * (k * kJfaErrorTexels + (k - 1) * std::sqrt(0.5));
     std::vector<float> coarseBound(coarseNearest.size());
     for (size_t t = 0; t < coarseNearest.size(); ++t)
