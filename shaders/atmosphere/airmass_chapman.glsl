@@ -27,29 +27,32 @@ real chapmanHdrp(real x, real cosZenith)
 
 // Our design: the asymptotic expansion of Ch for large x to first order in 1/x (derivation in
 // docs/airmass.md). With w the rise in scale heights, x·cos χ = ξ(0) and ξ(w) = √(x²cos²χ + 2xw + w²),
-// Ch = ∫_0^∞ e^{−w} ξ'(w) dw; expanding ξ in w²/(2x) gives, with z = √(x/2)·cos χ and E = √π·erfcx(z),
-//   Ch ≈ √(x/2)·E + J₂/(2√(2x)),   J₂ = ∫_0^∞ e^{−w} w²/√(w + z²) dw = E·(z⁴ − z² + 3/4) − z³ + 3z/2,
-// and for z ≥ 8, where that sum cancels, J₂ = (2 − 3/z² + 9/z⁴ − 37.5/z⁶ + 196.875/z⁸)/z.
+// Ch = ∫_0^∞ e^{−w} ξ'(w) dw; expanding ξ in w²/(2x) gives, with z = √(x/2)·cos χ,
+//   Ch ≈ √(x/2)·√π·erfcx(z) + J₂(z)/(4·√(x/2)),   J₂ = ∫_0^∞ e^{−w} w²/√(w + z²) dw.
 // The leading term is the exact-curvature parabola (√(πx/2) at 90°, 0.047% low at x = 796); the
 // correction is 3/(8x) at 90° and vanishes for vertical rays. The neglected term is O(1/x²):
-// 7e-6 at x = 127 (H = 50 km), about 4e-5 at x = 50; the expansion is meant for x = r/H ≥ 50.
-// Both J₂ forms are evaluated and one is selected (no branch): each is finite for every z ≥ 0.
-real chapmanAsymptotic(real x, real cosZenith)
+// 7e-6 at x = 127 (H = 50 km); the expansion is meant for x = r/H ≥ 50.
+// Both erfcx and J₂ are t times a polynomial in t = 1/(1 + z/2) (airmassErfcxOverT, chapmanJ2OverT):
+// one division, no exponential, no branch, finite for every z ≥ 0.
+
+// J₂(z)/t with z = 2(1/t − 1): degree 4, Chebyshev interpolation on t ∈ [0, 1] of the exact
+// J₂ = √π·erfcx(z)·(z⁴ − z² + 3/4) − z³ + 3z/2 (ours). Relative error 0.51%, at most 1.5e-5 of Ch
+// since the correction itself is at most 3/(8x). G(0) ≈ 1 gives J₂ → 2/z; G(1) ≈ Γ(5/2), the value at 90°.
+real chapmanJ2OverT(real t)
 {
-    real halfX = real(0.5) * max(x, real(1e-6));
-    real inverseHalfRoot = inversesqrt(halfX);             // 1/√(x/2); √(2x) = 2·√(x/2)
-    real halfRoot = halfX * inverseHalfRoot;
-    real z = halfRoot * cosZenith;
-    real E = sqrt(AIRMASS_PI) * airmassErfcxPolynomial(z);
-    real zNear = min(z, real(8));
-    real zNear2 = zNear * zNear;
-    real J2Near = E * ((zNear2 - real(1)) * zNear2 + real(0.75)) - zNear * (zNear2 - real(1.5));
-    real inverseZ = real(1) / max(z, real(8));
-    real inverseZ2 = inverseZ * inverseZ;
-    real J2Far = (real(2) + inverseZ2 * (real(-3) + inverseZ2 * (real(9) + inverseZ2 * (real(-37.5)
-                 + inverseZ2 * real(196.875))))) * inverseZ;
-    real J2 = z < real(8) ? J2Near : J2Far;
-    return halfRoot * E + real(0.25) * J2 * inverseHalfRoot;
+    return real(1.005127075) + t * (real(0.7470004808) + t * (real(2.506685873) + t * (real(-4.459295938)
+           + t * real(1.526047735))));
+}
+
+// Ch(r/H, χ) at a point of the ray at radius r and distance x from its closest approach (cos χ = |x|/r),
+// given 1/H. With q = r/H (at least 1e-6, so that H ≫ r stays finite) and s = 1/√(q/2):
+// √(q/2) = q·s/2 and z = √(q/2)·|x|/r = |x|·s/(2H).
+real chapmanAsymptotic(real r, real x, real inverseH)
+{
+    real q = max(r * inverseH, real(1e-6));
+    real s = inversesqrt(real(0.5) * q);
+    real t = real(1) / (real(1) + real(0.25) * abs(x) * inverseH * s);   // 1/(1 + z/2)
+    return t * (real(0.5) * q * s * sqrt(AIRMASS_PI) * airmassErfcxOverT(t) + real(0.25) * s * chapmanJ2OverT(t));
 }
 
 // The published fits by kind (CHAPMAN_SCHUELER or CHAPMAN_HDRP).
@@ -99,28 +102,10 @@ real airmassChapmanPieces(vec3 origin, vec3 direction, real t0, real t1, real H,
     return segmentSign * airmass;
 }
 
-// Ch at the horizon (χ = 90°), for the closest approach: the asymptotic form at z = 0 is
-// √(πx/2)·(1 + 3/(8x)) (x·eˣK₁(x) to O(x⁻²)) and needs no erfcx.
-real chapmanAsymptoticHorizontal(real x)
-{
-    real safeX = max(x, real(1e-6));
-    return sqrt(real(0.5) * AIRMASS_PI * safeX) * (real(1) + real(0.375) / safeX);
-}
-
-// Density relative to the ground at t_ref + s, from a reference point of the ray at height hRef, radius
-// rRef and distance xRef from the closest approach: r² − rRef² = s·(2·xRef + s), so
-//   h = hRef + s·(2·xRef + s)/(rRef + r),
-// which stays accurate in float however large rRef and xRef are (the increment is formed directly).
-real airmassDensityAfter(real hRef, real rRef, real xRef, real s, real inverseH)
-{
-    real rise = s * (real(2) * xRef + s);
-    real r = sqrt(max(rRef * rRef + rise, real(0)));
-    real h = hRef + rise / max(rRef + r, real(1e-30));
-    return exp(min(-h * inverseH, real(60)));
-}
-
-// The safe form switches at a variation of AIRMASS_SAFE_VARIATION scale heights over the segment.
-const real AIRMASS_SAFE_VARIATION = real(0.25);
+// The safe form takes over where the height varies by at most this many scale heights over the segment,
+// and by at most the second where the segment crosses the closest approach.
+const real AIRMASS_SAFE_VARIATION = real(0.08);
+const real AIRMASS_SAFE_VARIATION_ACROSS = real(0.02);
 
 // The default method: airmass of the segment [t0, t1] from the asymptotic Chapman function (signed).
 // Branch-free: every quantity below is computed for every ray and the result is selected, because SIMD
@@ -130,13 +115,13 @@ const real AIRMASS_SAFE_VARIATION = real(0.25);
 // T = e^{−h_t/H}·Ch(y/H, 90°) the column from the closest approach to infinity, the forward half-line
 // column from t is U(t) after the closest approach (x ≥ 0) and 2T − U(t) before it, so for t_lo ≤ t_hi
 //   I/H = ±U(t_lo) ∓ U(t_hi) + 2T·[x_lo < 0 ≤ x_hi]      (+U for x ≥ 0, −U for x < 0),
-// one expression for segments after, before or across the closest approach (two Ch, one Ch at 90°).
+// one expression for segments after, before or across the closest approach (three Ch).
 // Safe form: where the height varies by at most AIRMASS_SAFE_VARIATION·H over the segment (short
-// segments, segments near the closest approach), the difference cancels; there the segment is integrated
-// by 4-point Gauss–Lobatto in t (nodes at the ends and at ±1/√5 of the half-width, weights 1/6 and 5/6):
-// the end densities are the Chapman form's, the inner heights are formed from the lower end
-// (airmassDensityAfter). Its error peaks at the switch, 7.8e-5 across the closest approach.
-// All heights come from airmassSegmentGeometry, accurate from the exact float inputs.
+// segments, segments near the closest approach), that difference cancels; there the trapezoid rule with
+// the end-derivative correction (Euler–Maclaurin) integrates the density ρ = e^{−h/H} over the width w:
+//   I ≈ w/2·(ρ_lo + ρ_hi) + w²/12·(ρ'_lo − ρ'_hi),   ρ' = −ρ·(x/r)/H   (dh/dt = x/r),
+// with error w⁵·ρ⁗/720 and no density beyond the two ends. All heights come from
+// airmassSegmentGeometry, accurate from the exact float inputs.
 real airmassChapmanAsymptotic(vec3 origin, vec3 direction, real t0, real t1, real H, real R)
 {
     // Beyond 1e18 km the squares below would leave float's range; no scale height reaches that far.
@@ -144,16 +129,15 @@ real airmassChapmanAsymptotic(vec3 origin, vec3 direction, real t0, real t1, rea
     real tHi = clamp(max(t0, t1), real(-1e18), real(1e18));
     AirmassSegmentGeometry g = airmassSegmentGeometry(origin, direction, tLo, tHi, R);
     if (!(g.directionLength > real(0))) return real(0);
-
-    // Chapman form.
-    real cosZenithLo = min(abs(g.xLo) / max(g.rLo, real(1e-30)), real(1));
-    real cosZenithHi = min(abs(g.xHi) / max(g.rHi, real(1e-30)), real(1));
     real inverseH = real(1) / H;
     real densityLo = exp(min(-g.hLo * inverseH, real(60)));
     real densityHi = exp(min(-g.hHi * inverseH, real(60)));
-    real upLo = densityLo * chapmanAsymptotic(g.rLo * inverseH, cosZenithLo);
-    real upHi = densityHi * chapmanAsymptotic(g.rHi * inverseH, cosZenithHi);
-    real tangent = exp(min(-g.hTangent * inverseH, real(60))) * chapmanAsymptoticHorizontal(g.yTangent * inverseH);
+
+    // Chapman form.
+    real upLo = densityLo * chapmanAsymptotic(g.rLo, g.xLo, inverseH);
+    real upHi = densityHi * chapmanAsymptotic(g.rHi, g.xHi, inverseH);
+    real densityTangent = exp(min(-g.hTangent * inverseH, real(60)));
+    real tangent = densityTangent * chapmanAsymptotic(g.yTangent, real(0), inverseH);
     bool across = g.xLo < real(0) && !(g.xHi < real(0));
     real columnLo = g.xLo < real(0) ? -upLo : upLo;
     real columnHi = g.xHi < real(0) ? -upHi : upHi;
@@ -162,13 +146,19 @@ real airmassChapmanAsymptotic(vec3 origin, vec3 direction, real t0, real t1, rea
     // Safe form.
     real lowest = across ? g.hTangent : min(g.hLo, g.hHi);
     real variation = (max(g.hLo, g.hHi) - lowest) * inverseH;
-    real halfWidth = real(0.5) * (tHi - tLo);
-    real offset = halfWidth * real(0.447213595499957939);   // √(1/5)
-    real gauss = halfWidth * (real(0.166666666666666667) * (densityLo + densityHi)
-                            + real(0.833333333333333333) * (airmassDensityAfter(g.hLo, g.rLo, g.xLo, halfWidth - offset, inverseH)
-                                                          + airmassDensityAfter(g.hLo, g.rLo, g.xLo, halfWidth + offset, inverseH)));
+    bool safe = variation <= (across ? AIRMASS_SAFE_VARIATION_ACROSS : AIRMASS_SAFE_VARIATION);
+    real slopeLo = g.xLo / max(g.rLo, real(1e-30));
+    real slopeHi = g.xHi / max(g.rHi, real(1e-30));
+    real widthA = across ? -g.xLo : tHi - tLo;
+    real widthB = across ? g.xHi : real(0);
+    real densityMiddle = across ? densityTangent : densityHi;
+    real slopeDensityMiddle = across ? real(0) : densityHi * slopeHi;
+    real trapezoid = real(0.5) * widthA * (densityLo + densityMiddle)
+                   + widthA * widthA * inverseH * real(0.0833333333333333333) * (slopeDensityMiddle - densityLo * slopeLo)
+                   + real(0.5) * widthB * (densityMiddle + densityHi)
+                   + widthB * widthB * inverseH * real(0.0833333333333333333) * (densityHi * slopeHi - slopeDensityMiddle);
 
-    real airmass = variation <= AIRMASS_SAFE_VARIATION ? gauss : chapman;
+    real airmass = safe ? trapezoid : chapman;
     return t1 < t0 ? -airmass : airmass;
 }
 

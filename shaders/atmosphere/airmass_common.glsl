@@ -85,17 +85,14 @@ real airmassErfcx(real z)
     return t * exp(p);
 }
 
-// The same t = 1/(1 + z/2) with exp(P(t)) replaced by one polynomial F(t) = erfcx(z)/t of degree 10
-// (Chebyshev interpolation on t ∈ [0, 1] of the exact erfcx, ours): relative error 2.8e-8, 2.2e-7 when
-// evaluated in float, and no exponential. F(0) = 1/(2√π) gives erfcx → 1/(√π z). For the default method.
-real airmassErfcxPolynomial(real z)
+// The same t = 1/(1 + z/2), with exp(P(t)) replaced by one polynomial F(t) = erfcx(z)/t of degree 7
+// (Chebyshev interpolation on t ∈ [0, 1] of the exact erfcx, ours): relative error 4.0e-6 and no
+// exponential. F(0) = 1/(2√π) gives erfcx → 1/(√π z). For the default method: erfcx(z) = t·F(t).
+real airmassErfcxOverT(real t)
 {
-    real t = real(1) / (real(1) + real(0.5) * z);
-    real F = real(2.820947997e-01) + t * (real(2.820928673e-01) + t * (real(2.469135612e-01) + t * (real(1.749485964e-01)
-           + t * (real(9.582719884e-02) + t * (real(-6.795827345e-02) + t * (real(1.518851757e-01)
-           + t * (real(-4.824747554e-01) + t * (real(5.168995360e-01) + t * (real(-2.455800344e-01)
-           + t * real(4.535133626e-02))))))))));
-    return t * F;
+    return real(2.820958632e-01) + t * (real(2.819592907e-01) + t * (real(2.495031314e-01) + t * (real(1.576739706e-01)
+           + t * (real(1.391977061e-01) + t * (real(-6.300440262e-02) + t * (real(-9.317965517e-02)
+           + t * real(4.575574201e-02)))))));
 }
 
 // Winitzki's erf approximation, exactly as Lawlor publishes it (seed 001, "erf on the GPU"):

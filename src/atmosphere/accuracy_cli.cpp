@@ -23,7 +23,7 @@ constexpr int kUsageError = 2;
 constexpr int kRuntimeError = 1;
 
 struct Settings {
-    int airmassRepeat = 256;
+    int airmassRepeat = 1024;
     int copies = 0;  // the work per dispatch, in copies of the item set; 0: 1 on llvmpipe, 64 on a GPU
     int viewSteps = 16;
     int lightSteps = 8;
@@ -132,30 +132,38 @@ void printAirmass(const Settings& settings, std::ostream& out)
 {
     const std::vector<AirmassRay> rays = airmassAccuracyRays();
     const int rayCount = int(rays.size());
-    // Mixed: neighbouring invocations take different rays. Coherent: a work group per ray, with 1/64 of
-    // the repetitions, so that both do the same number of evaluations.
+    // Mixed: neighbouring invocations take different rays, one evaluation after the other (latency).
+    // Throughput: the same with 4 independent chains of evaluations per invocation, which the CPU (or a
+    // GPU's scheduler) can overlap, as it overlaps independent pixels. Coherent: a work group per ray,
+    // with 1/64 of the repetitions, so that all three do the same number of evaluations.
     ShaderBenchmarkSettings timing;
     timing.repeat = settings.airmassRepeat;
     timing.copies = copiesOf(settings);
     ShaderBenchmarkSettings coherent = timing;
     coherent.coherent = true;
     coherent.repeat = std::max(1, timing.repeat / 64);
+    ShaderBenchmarkSettings throughput = timing;
+    throughput.chains = 4;
     const std::vector<glm::vec4> inputs = airmassInputs(rays);
     const ShaderBenchmarkResult baseline = runAirmassKernel("airmassBaseline", inputs, rayCount, timing);
     const ShaderBenchmarkResult coherentBaseline = runAirmassKernel("airmassBaseline", inputs, rayCount, coherent);
+    const ShaderBenchmarkResult throughputBaseline = runAirmassKernel("airmassBaseline", inputs, rayCount, throughput);
     std::vector<double> exact;
     for (const AirmassRay& ray : rays) exact.push_back(exactAirmass(ray));
 
     out << "airmass: " << rayCount << " rays (docs/airmass.md), shader: repeat " << timing.repeat << ", copies "
         << timing.copies << ", fastest of " << timing.runs << " dispatches, empty-loop baseline "
         << format("%.2f", baseline.seconds * 1e3) << " ms per dispatch subtracted; coherent: a work group per ray, repeat "
-        << coherent.repeat << ", baseline " << format("%.2f", coherentBaseline.seconds * 1e3) << " ms\n";
-    out << "method               shader_ns  coherent_ns gpu_max_rel gpu_rms_rel gpu_nonfinite cpu32_max_rel cpu32_rms_rel "
+        << coherent.repeat << ", baseline " << format("%.2f", coherentBaseline.seconds * 1e3) << " ms; throughput: "
+        << throughput.chains << " independent chains per invocation, baseline "
+        << format("%.2f", throughputBaseline.seconds * 1e3) << " ms\n";
+    out << "method               shader_ns  throughput_ns coherent_ns gpu_max_rel gpu_rms_rel gpu_nonfinite cpu32_max_rel cpu32_rms_rel "
            "cpu64_max_rel gpu_vs_cpu32 worst ray on the GPU: altitude_km cos_zenith t0 t1 H -> gpu exact\n";
     for (const AirmassMethod& method : airmassMethods()) {
         if (method.glslFunction.empty()) continue;
         const ShaderBenchmarkResult result = runAirmassKernel(method.glslFunction, inputs, rayCount, timing);
         const ShaderBenchmarkResult coherentResult = runAirmassKernel(method.glslFunction, inputs, rayCount, coherent);
+        const ShaderBenchmarkResult throughputResult = runAirmassKernel(method.glslFunction, inputs, rayCount, throughput);
         std::vector<double> gpu, cpu32, cpu64;
         for (int i = 0; i < rayCount; ++i) {
             gpu.push_back(result.firstResults[size_t(i)].x);
@@ -166,8 +174,9 @@ void printAirmass(const Settings& settings, std::ostream& out)
         const RelativeErrors cpu32Errors = relativeErrors(cpu32, exact, kAirmassRelativeErrorFloor);
         const RelativeErrors cpu64Errors = relativeErrors(cpu64, exact, kAirmassRelativeErrorFloor);
         char line[512];
-        std::snprintf(line, sizeof line, "%-20s %-10.2f %-11.2f %-11.3g %-11.3g %-13zu %-13.3g %-13.3g %-13.3g %-12.3g %s -> %.9g %.9g\n",
+        std::snprintf(line, sizeof line, "%-20s %-10.2f %-13.2f %-11.2f %-11.3g %-11.3g %-13zu %-13.3g %-13.3g %-13.3g %-12.3g %s -> %.9g %.9g\n",
                       method.name.c_str(), nanosecondsPerEvaluation(result, baseline, rayCount, timing),
+                      nanosecondsPerEvaluation(throughputResult, throughputBaseline, rayCount, throughput),
                       nanosecondsPerEvaluation(coherentResult, coherentBaseline, rayCount, coherent),
                       gpuErrors.maxRelativeError, gpuErrors.rmsRelativeError, gpuErrors.nonFiniteCount,
                       cpu32Errors.maxRelativeError, cpu32Errors.rmsRelativeError, cpu64Errors.maxRelativeError,

@@ -33,8 +33,14 @@ const char* kMain = R"(void main()
     int item = uCoherent ? (invocation / 64) % uItemCount : invocation % uItemCount;
     bool firstOfItem = uCoherent ? invocation % 64 == 0 && invocation < 64 * uItemCount : invocation < uItemCount;
     vec4 first = evaluate(item, 0.0);
-    vec4 sum = first;
-    for (int k = 1; k < uRepeat; ++k) sum += evaluate(item, float(floatBitsToUint(sum.x) & 1u) * 1e-30);
+    vec4 chain[BENCHMARK_CHAINS];
+    for (int c = 0; c < BENCHMARK_CHAINS; ++c) chain[c] = first + vec4(float(c));
+    for (int k = BENCHMARK_CHAINS; k < uRepeat; k += BENCHMARK_CHAINS) {
+        for (int c = 0; c < BENCHMARK_CHAINS; ++c)
+            chain[c] += evaluate(item, float(floatBitsToUint(chain[c].x) & 1u) * 1e-30);
+    }
+    vec4 sum = chain[0];
+    for (int c = 1; c < BENCHMARK_CHAINS; ++c) sum += chain[c];
     if (firstOfItem) firstResults[item] = first;
     sums[invocation] = sum;
 }
@@ -57,6 +63,7 @@ ShaderBenchmarkResult runShaderBenchmark(const gl::ShaderSource& source, const s
                                          const std::function<void(gl::Program&)>& setUniforms)
 {
     gl::ShaderSource full = source;
+    full.defines.push_back("BENCHMARK_CHAINS " + std::to_string(settings.chains));
     full.modules.insert(full.modules.begin(), {"benchmark_prelude.comp", kPrelude});
     full.modules.push_back({"benchmark_main.comp", kMain});
     gl::Program program = gl::Program::compute(full);
@@ -93,7 +100,8 @@ ShaderBenchmarkResult runShaderBenchmark(const gl::ShaderSource& source, const s
 double nanosecondsPerEvaluation(const ShaderBenchmarkResult& result, const ShaderBenchmarkResult& baseline,
                                 int itemCount, const ShaderBenchmarkSettings& settings)
 {
-    double evaluations = double(itemCount) * double(settings.copies) * double(settings.repeat) *
+    const int perInvocation = 1 + settings.chains * ((settings.repeat + settings.chains - 1) / settings.chains - 1);
+    double evaluations = double(itemCount) * double(settings.copies) * double(perInvocation) *
                          (settings.coherent ? kWorkGroupSize : 1);
     return (result.seconds - baseline.seconds) * 1e9 / evaluations;
 }

@@ -8,9 +8,11 @@
 // filled): neighbouring invocations, which share SIMD lanes, take different items and pay for each
 // other's branches. With `coherent`, each work group of 64 invocations takes one item (64 times as
 // many invocations): the cost of a smooth image, where neighbouring pixels take the same branches.
-// Each invocation calls evaluate `repeat` times. Each call after the first gets jitter = 0 or 1e-30
-// taken from the lowest bit of the running sum, a dependency chain the compiler can neither hoist
-// out of the loop nor merge; the sum is stored, so nothing is eliminated. Time: GpuTimer (timestamp
+// Each invocation calls evaluate about `repeat` times. Each call after the first gets jitter = 0 or 1e-30
+// taken from the lowest bit of a running sum, a dependency chain the compiler can neither hoist out of
+// the loop nor merge; the sums are stored, so nothing is eliminated. With `chains` = 1 every call waits
+// for the previous one (the latency of the function); with several chains the calls of different chains
+// are independent and can overlap, as independent pixels do (its throughput). Time: GpuTimer (timestamp
 // queries on a GPU; glFinish and the CPU clock on llvmpipe, whose timer queries are wrong), the
 // fastest of `runs` dispatches after one warm-up dispatch (which also compiles on llvmpipe).
 #include "gl/shader_program.h"
@@ -28,6 +30,7 @@ struct ShaderBenchmarkSettings {
     int copies = 1;  // invocations = copies × items
     int runs = 3;    // timed dispatches; the fastest counts
     bool coherent = false; // a work group of 64 invocations per item
+    int chains = 1;  // independent dependency chains per invocation (see above)
 };
 
 struct ShaderBenchmarkResult {
@@ -41,7 +44,8 @@ ShaderBenchmarkResult runShaderBenchmark(const gl::ShaderSource& source, const s
                                          int itemCount, const ShaderBenchmarkSettings& settings,
                                          const std::function<void(gl::Program&)>& setUniforms);
 
-// Nanoseconds per evaluation: (seconds − baseline seconds) / (invocations × repeat).
+// Nanoseconds per evaluation: (seconds − baseline seconds) / (invocations × calls per invocation), where
+// an invocation makes 1 + chains·(⌈repeat/chains⌉ − 1) calls (repeat when chains = 1).
 double nanosecondsPerEvaluation(const ShaderBenchmarkResult& result, const ShaderBenchmarkResult& baseline,
                                 int itemCount, const ShaderBenchmarkSettings& settings);
 
