@@ -10,9 +10,9 @@
 // primary). Bruneton & Neyret, "Precomputed atmospheric scattering" (2008), eq. 1–5, single scattering.
 //
 // The integral is the midpoint rule with M equal steps ("outer march"). I_view accumulates the same
-// midpoint samples. I_l is the seed-002 point: the closed form airmassChapmanAsymptotic (the default
-// airmass method, docs/airmass.md) replaces the classic inner march, so N lights cost N closed forms
-// per step instead of N·K density samples. The nested march (K midpoint steps toward each light) is
+// midpoint samples. I_l is the seed-002 point: a closed form (airmassHalfLine, the half-line column of
+// the default airmass method, docs/airmass.md) replaces the classic inner march, so N lights cost N
+// closed forms per step instead of N·K density samples. The nested march (K midpoint steps toward each light) is
 // kept in the same text as the reference and the cost yardstick.
 
 const int SKY_MAX_LIGHTS = 8;
@@ -60,16 +60,18 @@ real skySphereExit(vec3 origin, vec3 d, real radius)
     return b > real(0) ? max(-c, real(0)) / (b + root) : root - b;
 }
 
-// Airmass (km) from the point p toward the light ŝ up to the top of the air:
+// Airmass (km) from the point p toward the light ŝ up to the top of the air,
 //   I_l = ∫_0^{t_top} exp(−(|p + t·ŝ| − R)/H) dt,
-// by the closed form (SKY_LIGHT_CLOSED_FORM) or by the midpoint rule with lightSteps steps
-// (SKY_LIGHT_NESTED_MARCH).
-real skyLightAirmass(vec3 p, vec3 s, SkyAtmosphere atmosphere, int lightMethod, int lightSteps)
+// by the midpoint rule with lightSteps steps (SKY_LIGHT_NESTED_MARCH) or by the closed form
+// (SKY_LIGHT_CLOSED_FORM), the half-line column airmassHalfLine from the ray frame (y, x) of p and ŝ.
+// The closed form runs on to infinity: the air above the top adds e^{−(top − h)/H} of the column, below
+// 4e-6 for a top 100 km above the ground and H = 8 km.
+real skyLightAirmass(vec3 p, vec3 s, vec3 frame, SkyAtmosphere atmosphere, int lightMethod, int lightSteps)
 {
     real R = atmosphere.planetRadius;
     real H = atmosphere.scaleHeight;
+    if (lightMethod == SKY_LIGHT_CLOSED_FORM) return airmassHalfLine(length(p), frame.y, frame.x, H, R);
     real tTop = skySphereExit(p, s, atmosphere.topRadius);
-    if (lightMethod == SKY_LIGHT_CLOSED_FORM) return airmassChapmanAsymptotic(p, s, real(0), tTop, H, R);
     real dt = tTop / real(lightSteps);
     real sum = real(0);
     for (int j = 0; j < lightSteps; ++j) {
@@ -79,13 +81,13 @@ real skyLightAirmass(vec3 p, vec3 s, SkyAtmosphere atmosphere, int lightMethod, 
 }
 
 // Transmittance from the top of the air to p along the light ŝ, exp(−β·I_l), or 0 when the ground
-// hides the light (V_l = 0): the ray toward it descends (p·ŝ < 0) and its closest approach to the
+// hides the light (V_l = 0): the ray toward it descends (x = p·ŝ < 0) and its closest approach to the
 // centre, y = |p|·sin∠(p, ŝ) (airmassRayFrame's accurate form), lies below the ground.
 vec3 skyLightTransmittance(vec3 p, vec3 s, SkyAtmosphere atmosphere, int lightMethod, int lightSteps)
 {
-    real closestApproach = airmassRayFrame(p, s, real(0), real(0)).x;
-    if (dot(p, s) < real(0) && closestApproach < atmosphere.planetRadius) return vec3(real(0));
-    return exp(-atmosphere.rayleighScattering * skyLightAirmass(p, s, atmosphere, lightMethod, lightSteps));
+    vec3 frame = airmassRayFrame(p, s, real(0), real(0)); // (y, x, x) with x = p·ŝ
+    if (frame.y < real(0) && frame.x < atmosphere.planetRadius) return vec3(real(0));
+    return exp(-atmosphere.rayleighScattering * skyLightAirmass(p, s, frame, atmosphere, lightMethod, lightSteps));
 }
 
 // The sky radiance L above (cd/m² when the illuminances are in lux), marched with viewSteps midpoint

@@ -230,10 +230,12 @@ void printSky(const Settings& settings, std::ostream& out)
     // Mixed: neighbouring invocations take different views. Coherent: a work group per view, as
     // neighbouring pixels of an image. The same number of pixels either way.
     ShaderBenchmarkSettings timing;
-    timing.copies = 64 * copiesOf(settings);
+    timing.copies = 256 * copiesOf(settings);
+    timing.runs = 5;
     ShaderBenchmarkSettings coherent;
-    coherent.copies = copiesOf(settings);
+    coherent.copies = 4 * copiesOf(settings);
     coherent.coherent = true;
+    coherent.runs = 5;
     const std::vector<glm::vec4> inputs = skyInputs(views);
 
     // The reference's own error: its distance from a run with half the steps, over all light counts.
