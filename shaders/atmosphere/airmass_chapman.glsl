@@ -35,13 +35,14 @@ real chapmanHdrp(real x, real cosZenith)
 // Both erfcx and J₂ are t times a polynomial in t = 1/(1 + z/2) (airmassErfcxOverT, chapmanJ2OverT):
 // one division, no exponential, no branch, finite for every z ≥ 0.
 
-// J₂(z)/t with z = 2(1/t − 1): degree 4, Chebyshev interpolation on t ∈ [0, 1] of the exact
-// J₂ = √π·erfcx(z)·(z⁴ − z² + 3/4) − z³ + 3z/2 (ours). Relative error 0.51%, at most 1.5e-5 of Ch
-// since the correction itself is at most 3/(8x). G(0) ≈ 1 gives J₂ → 2/z; G(1) ≈ Γ(5/2), the value at 90°.
+// J₂(z)/t with z = 2(1/t − 1): 1 + t·P(t) with P of degree 4, Chebyshev interpolation on t ∈ [0, 1] of
+// the exact J₂ = √π·erfcx(z)·(z⁴ − z² + 3/4) − z³ + 3z/2 (ours). Relative error 0.10%, at most 4e-6 of Ch
+// since the correction itself is at most 3/(8x). G(0) = 1 gives J₂ → 2/z, so that vertical rays keep
+// Ch = 1 + O(x⁻²); G(1) ≈ Γ(5/2), the value at 90°.
 real chapmanJ2OverT(real t)
 {
-    return real(1.005127075) + t * (real(0.7470004808) + t * (real(2.506685873) + t * (real(-4.459295938)
-           + t * real(1.526047735))));
+    return real(1) + t * (real(1.003354214) + t * (real(0.4558560040) + t * (real(1.283027695)
+           + t * (real(-5.036607845) + t * real(2.625062232)))));
 }
 
 // Ch(r/H, χ) at a point of the ray at radius r and distance x from its closest approach (cos χ = |x|/r),

@@ -139,6 +139,7 @@ void printAirmass(const Settings& settings, std::ostream& out)
     ShaderBenchmarkSettings timing;
     timing.repeat = settings.airmassRepeat;
     timing.copies = copiesOf(settings);
+    timing.runs = 7;
     ShaderBenchmarkSettings coherent = timing;
     coherent.coherent = true;
     coherent.repeat = std::max(1, timing.repeat / 64);

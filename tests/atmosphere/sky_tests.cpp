@@ -17,18 +17,20 @@ double maxRelative(const std::vector<glm::dvec3>& values, const std::vector<glm:
 }
 
 // With the same outer march (M = 64), the closed-form light depth agrees with a nested march of
-// K = 512 steps (double) within 1e-5 for 1 to 8 Sun positions; the float closed form (the shader's
-// arithmetic) within 5e-4. Measured: 2.5e-6 (double) and 1.9e-4 (float, mostly the outer march's own
-// float positions: the airmass itself is within 1.1e-5 in float).
+// K = 512 steps (double; 4096 steps move it by under 1e-6) within 2e-5 for 1 to 8 Sun positions;
+// the float closed form (the shader's arithmetic) within 5e-4. Measured: 1.1e-5 (double: the half-line
+// airmass errs by about 1e-6 on these paths, and the transmittance e^{−β·I} multiplies a relative error
+// of I by β·I, up to about 20 in blue on light paths that graze the ground) and 1.8e-4 (float, mostly
+// the outer march's own float positions).
 TEST(Sky, ClosedFormMatchesNestedMarchForOneToEightLights)
 {
     const std::vector<SkyView> views = twilightViews(0.002);
     for (int lightCount = 1; lightCount <= kSkyMaxLights; ++lightCount) {
         const std::vector<SkyLight> suns = twilightSuns(lightCount);
-        const auto reference = skyRadiances(views, kAir, suns, SkyLightMethod::NestedMarch, 64, 512, AirmassPrecision::Float64);
+        const auto reference = skyRadiances(views, kAir, suns, SkyLightMethod::NestedMarch, 64, 4096, AirmassPrecision::Float64);
         const auto closed64 = skyRadiances(views, kAir, suns, SkyLightMethod::ClosedForm, 64, 0, AirmassPrecision::Float64);
         const auto closed32 = skyRadiances(views, kAir, suns, SkyLightMethod::ClosedForm, 64, 0, AirmassPrecision::Float32);
-        EXPECT_LT(maxRelative(closed64, reference), 1e-5) << lightCount << " lights";
+        EXPECT_LT(maxRelative(closed64, reference), 2e-5) << lightCount << " lights";
         EXPECT_LT(maxRelative(closed32, reference), 5e-4) << lightCount << " lights";
     }
 }
