@@ -108,8 +108,8 @@ real airmassChapmanPieces(vec3 origin, vec3 direction, real t0, real t1, real H,
 const real AIRMASS_SAFE_VARIATION = real(0.08);
 const real AIRMASS_SAFE_VARIATION_ACROSS = real(0.02);
 
-// The default method: airmass of the segment [t0, t1] from the asymptotic Chapman function (signed).
-// Branch-free: every quantity below is computed for every ray and the result is selected, because SIMD
+// The default method's evaluation, for lengths scaled near 1 (airmassChapmanAsymptotic below): airmass
+// of the segment [t0, t1] from the asymptotic Chapman function (signed). Branch-free: every quantity below is computed for every ray and the result is selected, because SIMD
 // lanes (llvmpipe, GPU warps) that take different branches pay for all of them.
 //
 // With U(t) = e^{−h(t)/H}·Ch(r(t)/H, |x|/r) the upward half-line column from the point at |x| and
@@ -123,11 +123,10 @@ const real AIRMASS_SAFE_VARIATION_ACROSS = real(0.02);
 //   I ≈ w/2·(ρ_lo + ρ_hi) + w²/12·(ρ'_lo − ρ'_hi),   ρ' = −ρ·(x/r)/H   (dh/dt = x/r),
 // with error w⁵·ρ⁗/720 and no density beyond the two ends. All heights come from
 // airmassSegmentGeometry, accurate from the exact float inputs.
-real airmassChapmanAsymptotic(vec3 origin, vec3 direction, real t0, real t1, real H, real R)
+real airmassChapmanAsymptoticUnit(vec3 origin, vec3 direction, real t0, real t1, real H, real R)
 {
-    // Beyond 1e18 km the squares below would leave float's range; no scale height reaches that far.
-    real tLo = clamp(min(t0, t1), real(-1e18), real(1e18));
-    real tHi = clamp(max(t0, t1), real(-1e18), real(1e18));
+    real tLo = min(t0, t1);
+    real tHi = max(t0, t1);
     AirmassSegmentGeometry g = airmassSegmentGeometry(origin, direction, tLo, tHi, R);
     if (!(g.directionLength > real(0))) return real(0);
     real inverseH = real(1) / H;
@@ -148,19 +147,53 @@ real airmassChapmanAsymptotic(vec3 origin, vec3 direction, real t0, real t1, rea
     real lowest = across ? g.hTangent : min(g.hLo, g.hHi);
     real variation = (max(g.hLo, g.hHi) - lowest) * inverseH;
     bool safe = variation <= (across ? AIRMASS_SAFE_VARIATION_ACROSS : AIRMASS_SAFE_VARIATION);
-    real slopeLo = g.xLo / max(g.rLo, real(1e-30));
-    real slopeHi = g.xHi / max(g.rHi, real(1e-30));
+    // dh/dt = x/r = cos χ, clamped because r = R + h cancels deep inside the planet.
+    real slopeLo = clamp(g.xLo / max(g.rLo, real(1e-30)), real(-1), real(1));
+    real slopeHi = clamp(g.xHi / max(g.rHi, real(1e-30)), real(-1), real(1));
     real widthA = across ? -g.xLo : tHi - tLo;
     real widthB = across ? g.xHi : real(0);
     real densityMiddle = across ? densityTangent : densityHi;
-    real slopeDensityMiddle = across ? real(0) : densityHi * slopeHi;
-    real trapezoid = real(0.5) * widthA * (densityLo + densityMiddle)
-                   + widthA * widthA * inverseH * real(0.0833333333333333333) * (slopeDensityMiddle - densityLo * slopeLo)
-                   + real(0.5) * widthB * (densityMiddle + densityHi)
-                   + widthB * widthB * inverseH * real(0.0833333333333333333) * (densityHi * slopeHi - slopeDensityMiddle);
+    // The rise of each end over its part in scale heights, w·(dh/dt)/H: at most about 2·0.08 where the
+    // safe form is taken; clamped to 1 so that rounding deep inside the planet cannot overflow.
+    real riseLo = clamp(widthA * inverseH * slopeLo, real(-1), real(1));
+    real riseMiddle = across ? real(0) : clamp(widthA * inverseH * slopeHi, real(-1), real(1));
+    real riseHi = clamp(widthB * inverseH * slopeHi, real(-1), real(1));
+    real trapezoid = widthA * (real(0.5) * (densityLo + densityMiddle)
+                               + real(0.0833333333333333333) * (densityMiddle * riseMiddle - densityLo * riseLo))
+                   + widthB * (real(0.5) * (densityMiddle + densityHi) + real(0.0833333333333333333) * densityHi * riseHi);
 
     real airmass = safe ? trapezoid : chapman;
     return t1 < t0 ? -airmass : airmass;
+}
+
+// The default method for any finite input (docs/airmass.md, "Extreme inputs"). I is homogeneous in the
+// lengths, I(k·o, d, k·t0, k·t1, k·H, k·R) = k·I, and does not depend on |d|: both are scaled by powers of
+// two, which is exact in float, so that the largest of |o_i|, R and H, and the largest |d_i|, lie in
+// [1/2, 1) (up to 8 for lengths near float's maximum). Then no square above leaves float's range. After
+// scaling, segment ends beyond 1e6 are clamped (farther out the height exceeds 1e6 − 2 ≥ 1e6·H: no air),
+// H is at least 1e-20 (so that e^60·Ch stays below 1e36), and the result saturates at 1e38, which only a
+// segment deep inside the planet (density capped at e^60) with lengths near float's maximum reaches.
+// The exponent e of the power of two with x/2^e in [1/2, 1), for x ≥ 1e-30, read from the number's
+// exponent bits (cheaper than log2 in a shader; the same e in C++ float and on the GPU).
+#ifdef __cplusplus
+int airmassBinaryExponent(real x) { return std::ilogb(x) + 1; }
+#else
+int airmassBinaryExponent(real x) { return ((floatBitsToInt(x) >> 23) & 255) - 126; }
+#endif
+
+real airmassChapmanAsymptotic(vec3 origin, vec3 direction, real t0, real t1, real H, real R)
+{
+    real largest = max(max(max(abs(origin.x), abs(origin.y)), max(abs(origin.z), R)), H);
+    int exponent = min(airmassBinaryExponent(max(largest, real(1e-30))), 125); // 2^-125: still a normal float
+    real toUnit = ldexp(real(1), -exponent);
+    real largestDirection = max(max(abs(direction.x), abs(direction.y)), abs(direction.z));
+    real toUnitDirection = ldexp(real(1), -airmassBinaryExponent(max(largestDirection, real(1e-30))));
+    real airmass = airmassChapmanAsymptoticUnit(origin * toUnit, direction * toUnitDirection,
+                                                clamp(t0 * toUnit, real(-1e6), real(1e6)),
+                                                clamp(t1 * toUnit, real(-1e6), real(1e6)),
+                                                max(H * toUnit, real(1e-20)), R * toUnit);
+    real limit = real(1e38) * toUnit; // +inf when 2^exponent < 1, which clamps nothing
+    return clamp(airmass, -limit, limit) * ldexp(real(1), exponent);
 }
 
 // Airmass (km) of the half-line from a point at radius r to infinity, x the point's distance from the

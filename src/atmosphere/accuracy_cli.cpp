@@ -107,6 +107,19 @@ ShaderBenchmarkResult runAirmassKernel(const std::string& function, const std::v
     return runShaderBenchmark(source, inputs, rayCount, settings, [](gl::Program&) {});
 }
 
+} // namespace
+
+std::vector<double> evaluateAirmassInShader(const std::string& glslFunction, const std::vector<AirmassRay>& rays)
+{
+    const ShaderBenchmarkResult result =
+        runAirmassKernel(glslFunction, airmassInputs(rays), int(rays.size()), ShaderBenchmarkSettings{});
+    std::vector<double> values;
+    for (const glm::vec4& value : result.firstResults) values.push_back(value.x);
+    return values;
+}
+
+namespace {
+
 std::string describeRay(const AirmassRay& ray)
 {
     double distance = glm::length(ray.origin);
