@@ -173,27 +173,52 @@ real airmassChapmanAsymptoticUnit(vec3 origin, vec3 direction, real t0, real t1,
 // scaling, segment ends beyond 1e6 are clamped (farther out the height exceeds 1e6 − 2 ≥ 1e6·H: no air),
 // H is at least 1e-20 (so that e^60·Ch stays below 1e36), and the result saturates at 1e38, which only a
 // segment deep inside the planet (density capped at e^60) with lengths near float's maximum reaches.
-// The exponent e of the power of two with x/2^e in [1/2, 1), for x ≥ 1e-30, read from the number's
-// exponent bits (cheaper than log2 in a shader; the same e in C++ float and on the GPU).
+// The exponent e of the power of two with x/2^e in [1/2, 1), for x ≥ 1e-30, and 2^e for e in
+// [−125, 125], both from the float's bits (cheaper than log2, ldexp or libm calls; the same in C++ float
+// and on the GPU).
 #ifdef __cplusplus
-int airmassBinaryExponent(real x) { return std::ilogb(x) + 1; }
+int airmassBinaryExponent(real x)
+{
+    if constexpr (sizeof(real) == 4) {
+        std::uint32_t bits;
+        std::memcpy(&bits, &x, sizeof bits);
+        return int((bits >> 23) & 255u) - 126;
+    } else {
+        std::uint64_t bits;
+        std::memcpy(&bits, &x, sizeof bits);
+        return int((bits >> 52) & 2047u) - 1022;
+    }
+}
+real airmassPowerOfTwo(int e)
+{
+    real value;
+    if constexpr (sizeof(real) == 4) {
+        const std::uint32_t bits = std::uint32_t(e + 127) << 23;
+        std::memcpy(&value, &bits, sizeof value);
+    } else {
+        const std::uint64_t bits = std::uint64_t(e + 1023) << 52;
+        std::memcpy(&value, &bits, sizeof value);
+    }
+    return value;
+}
 #else
 int airmassBinaryExponent(real x) { return ((floatBitsToInt(x) >> 23) & 255) - 126; }
+real airmassPowerOfTwo(int e) { return intBitsToFloat((e + 127) << 23); }
 #endif
 
 real airmassChapmanAsymptotic(vec3 origin, vec3 direction, real t0, real t1, real H, real R)
 {
     real largest = max(max(max(abs(origin.x), abs(origin.y)), max(abs(origin.z), R)), H);
-    int exponent = min(airmassBinaryExponent(max(largest, real(1e-30))), 125); // 2^-125: still a normal float
-    real toUnit = ldexp(real(1), -exponent);
+    int exponent = min(airmassBinaryExponent(max(largest, real(1e-30))), 125); // 2^±125: normal floats
+    real toUnit = airmassPowerOfTwo(-exponent);
     real largestDirection = max(max(abs(direction.x), abs(direction.y)), abs(direction.z));
-    real toUnitDirection = ldexp(real(1), -airmassBinaryExponent(max(largestDirection, real(1e-30))));
+    real toUnitDirection = airmassPowerOfTwo(-min(airmassBinaryExponent(max(largestDirection, real(1e-30))), 125));
     real airmass = airmassChapmanAsymptoticUnit(origin * toUnit, direction * toUnitDirection,
                                                 clamp(t0 * toUnit, real(-1e6), real(1e6)),
                                                 clamp(t1 * toUnit, real(-1e6), real(1e6)),
                                                 max(H * toUnit, real(1e-20)), R * toUnit);
     real limit = real(1e38) * toUnit; // +inf when 2^exponent < 1, which clamps nothing
-    return clamp(airmass, -limit, limit) * ldexp(real(1), exponent);
+    return clamp(airmass, -limit, limit) * airmassPowerOfTwo(exponent);
 }
 
 // Airmass (km) of the half-line from a point at radius r to infinity, x the point's distance from the

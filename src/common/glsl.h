@@ -14,6 +14,8 @@
 //   #include "atmosphere/airmass.glsl"
 //   }
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <glm/glm.hpp>
 
 #define AURORAWALL_GLSL_PRECISION(T)                                                         \
@@ -26,4 +28,4 @@
     using glm::inversesqrt; using glm::smoothstep; using glm::step; using glm::fract;       \
     using glm::floor; using std::exp; using std::log; using std::sqrt; using std::pow;      \
     using std::sin; using std::cos; using std::tan; using std::atan; using std::acos;      \
-    using std::asin; using std::exp2; using std::log2; using std::ldexp;
+    using std::asin; using std::exp2; using std::log2;
