@@ -41,8 +41,9 @@ real chapmanHdrp(real x, real cosZenith)
 // Ch = 1 + O(x⁻²); G(1) ≈ Γ(5/2), the value at 90°.
 real chapmanJ2OverT(real t)
 {
-    return real(1) + t * (real(1.003354214) + t * (real(0.4558560040) + t * (real(1.283027695)
-           + t * (real(-5.036607845) + t * real(2.625062232)))));
+    real t2 = t * t; // Estrin's scheme, as airmassErfcxOverT
+    return real(1) + t * ((real(1.003354214) + t * real(0.4558560040)) + t2 * ((real(1.283027695) + t * real(-5.036607845))
+                          + t2 * real(2.625062232)));
 }
 
 // Ch(r/H, χ) at a point of the ray at radius r and distance x from its closest approach (cos χ = |x|/r),
@@ -54,6 +55,14 @@ real chapmanAsymptotic(real r, real x, real inverseH)
     real s = inversesqrt(real(0.5) * q);
     real t = real(1) / (real(1) + real(0.25) * abs(x) * inverseH * s);   // 1/(1 + z/2)
     return t * (real(0.5) * q * s * sqrt(AIRMASS_PI) * airmassErfcxOverT(t) + real(0.25) * s * chapmanJ2OverT(t));
+}
+
+// The same at the closest approach (χ = 90°, z = 0, t = 1): the polynomials at t = 1 fold to constants.
+real chapmanAsymptoticHorizontal(real r, real inverseH)
+{
+    real q = max(r * inverseH, real(1e-6));
+    real s = inversesqrt(real(0.5) * q);
+    return real(0.5) * q * s * sqrt(AIRMASS_PI) * airmassErfcxOverT(real(1)) + real(0.25) * s * chapmanJ2OverT(real(1));
 }
 
 // The published fits by kind (CHAPMAN_SCHUELER or CHAPMAN_HDRP).
@@ -137,7 +146,7 @@ real airmassChapmanAsymptoticUnit(vec3 origin, vec3 direction, real t0, real t1,
     real upLo = densityLo * chapmanAsymptotic(g.rLo, g.xLo, inverseH);
     real upHi = densityHi * chapmanAsymptotic(g.rHi, g.xHi, inverseH);
     real densityTangent = exp(min(-g.hTangent * inverseH, real(60)));
-    real tangent = densityTangent * chapmanAsymptotic(g.yTangent, real(0), inverseH);
+    real tangent = densityTangent * chapmanAsymptoticHorizontal(g.yTangent, inverseH);
     bool across = g.xLo < real(0) && !(g.xHi < real(0));
     real columnLo = g.xLo < real(0) ? -upLo : upLo;
     real columnHi = g.xHi < real(0) ? -upHi : upHi;
@@ -231,7 +240,7 @@ real airmassHalfLine(real r, real x, real y, real H, real R)
 {
     real inverseH = real(1) / H;
     real up = exp(min((R - r) * inverseH, real(60))) * chapmanAsymptotic(r, x, inverseH);
-    real tangent = exp(min((R - y) * inverseH, real(60))) * chapmanAsymptotic(y, real(0), inverseH);
+    real tangent = exp(min((R - y) * inverseH, real(60))) * chapmanAsymptoticHorizontal(y, inverseH);
     return H * (x < real(0) ? real(2) * tangent - up : up);
 }
 

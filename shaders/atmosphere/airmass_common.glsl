@@ -90,9 +90,12 @@ real airmassErfcx(real z)
 // exponential. F(0) = 1/(2√π) gives erfcx → 1/(√π z). For the default method: erfcx(z) = t·F(t).
 real airmassErfcxOverT(real t)
 {
-    return real(2.820944907e-01) + t * (real(2.821437503e-01) + t * (real(2.455030781e-01) + t * (real(1.903893512e-01)
-           + t * (real(8.622661503e-03) + t * (real(2.188417503e-01) + t * (real(-4.292615699e-01)
-           + t * (real(2.540236004e-01) + t * real(-5.235712482e-02))))))));
+    // Estrin's scheme: independent pairs, combined with t², t⁴ and t⁸ (a shorter dependency chain than Horner's).
+    real t2 = t * t;
+    real t4 = t2 * t2;
+    real low = (real(2.820944907e-01) + t * real(2.821437503e-01)) + t2 * (real(2.455030781e-01) + t * real(1.903893512e-01));
+    real high = (real(8.622661503e-03) + t * real(2.188417503e-01)) + t2 * (real(-4.292615699e-01) + t * real(2.540236004e-01));
+    return low + t4 * (high + t4 * real(-5.235712482e-02));
 }
 
 // Winitzki's erf approximation, exactly as Lawlor publishes it (seed 001, "erf on the GPU"):
