@@ -35,9 +35,10 @@ public:
         double renderMs = 0.0, renderCpuMs = 0.0, exchangeMs = 0.0, exchangeMB = 0.0;
     };
 
-    // Needs the context whose objects it uses current (the GLFW backend: window 0).
+    // Needs the context whose objects it uses current (the GLFW backend: window 0). The drawing takes
+    // its turn among `drawLanes` lanes (MpiWorld::beginTurn; 0: no turns).
     std::vector<BandCost> render(render::TileRenderer& renderer, const std::vector<int>& assignment,
-                                 const cluster::MpiWorld& world, Timing& timing);
+                                 const cluster::MpiWorld& world, int drawLanes, Timing& timing);
 
     // The complete pixels of one of this rank's screens (top-down rows, values rounded to half
     // floats as io/half_pixels.h, alpha 1), after render().

@@ -263,7 +263,7 @@ int runRenderCommand(int argc, char** argv)
                 assignment = balancer->assign();
             world.broadcast(assignment);
             BalancedFrame::Timing timing;
-            const std::vector<BandCost> costs = balanced->render(*renderer, assignment, world, timing);
+            const std::vector<BandCost> costs = balanced->render(*renderer, assignment, world, options.drawLanes, timing);
             report.renderMs = timing.renderMs;
             report.renderCpuMs = timing.renderCpuMs;
             report.exchangeMs = timing.exchangeMs;
@@ -278,6 +278,7 @@ int runRenderCommand(int argc, char** argv)
                     uploadToTarget(balanced->screenImage(tile.screenIndex), *tile.target);
                 }
         } else {
+            world.beginTurn(options.drawLanes);
             phase = SteadyClock::now();
             const double cpuStart = processCpuMilliseconds();
             for (Tile& tile : tiles) {
@@ -290,6 +291,7 @@ int runRenderCommand(int argc, char** argv)
             }
             report.renderMs = millisecondsSince(phase);
             report.renderCpuMs = processCpuMilliseconds() - cpuStart;
+            world.endTurn(options.drawLanes);
         }
 
         phase = SteadyClock::now();

@@ -1,10 +1,12 @@
 #include "cluster/mpi_world.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <cstring>
 #include <numeric>
 #include <set>
+#include <thread>
 
 namespace aurorawall::cluster {
 
@@ -13,9 +15,14 @@ MpiWorld::MpiWorld(int* argc, char*** argv)
     MPI_Init(argc, argv);
     MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
     MPI_Comm_size(MPI_COMM_WORLD, &size_);
+    MPI_Comm_dup(MPI_COMM_WORLD, &turns_);
 }
 
-MpiWorld::~MpiWorld() { MPI_Finalize(); }
+MpiWorld::~MpiWorld()
+{
+    MPI_Comm_free(&turns_);
+    MPI_Finalize();
+}
 
 bool MpiWorld::anyRankFailed(const std::string& myError) const
 {
@@ -82,6 +89,27 @@ std::vector<RankReport> MpiWorld::gatherReports(const RankReport& mine) const
 }
 
 void MpiWorld::swapBarrier() const { MPI_Barrier(MPI_COMM_WORLD); }
+
+void MpiWorld::beginTurn(int lanes) const
+{
+    if (lanes <= 0 || rank_ < lanes)
+        return;
+    MPI_Request request;
+    MPI_Irecv(nullptr, 0, MPI_BYTE, rank_ - lanes, 0, turns_, &request);
+    for (int done = 0;;) {
+        MPI_Test(&request, &done, MPI_STATUS_IGNORE);
+        if (done)
+            return;
+        std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    }
+}
+
+void MpiWorld::endTurn(int lanes) const
+{
+    if (lanes <= 0 || rank_ + lanes >= size_)
+        return;
+    MPI_Send(nullptr, 0, MPI_BYTE, rank_ + lanes, 0, turns_);
+}
 
 std::vector<char> MpiWorld::gatherBytes(const std::vector<char>& mine, std::vector<int>& sizesOut) const
 {

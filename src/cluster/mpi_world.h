@@ -49,9 +49,18 @@ public:
     };
     void exchange(const std::vector<Message>& outgoing, const std::vector<Message>& incoming) const;
 
+    // Turns, for benchmarks with more ranks than cores: with `lanes` > 0, rank r starts its turn only
+    // after rank r − lanes has ended its own, so at most `lanes` ranks draw at once and each draws on a
+    // core of its own, as on a dedicated node (its CPU time is not stretched by sharing caches and
+    // cores with the others). The wait polls and sleeps instead of spinning, so waiting ranks leave
+    // the cores to the drawing ones. With lanes ≤ 0 both do nothing.
+    void beginTurn(int lanes) const;
+    void endTurn(int lanes) const;
+
 private:
     int rank_ = 0;
     int size_ = 1;
+    MPI_Comm turns_ = MPI_COMM_NULL; // a communicator of its own, so no other message matches a turn
 };
 
 } // namespace aurorawall::cluster
