@@ -75,7 +75,9 @@ def read_stats(path, warmup):
                 "pixels": float(row["mpixel_per_s"]) * frame_ms * 1e3,
                 "ranks": [dict({p: float(row[f"{p}_rank{r}"]) for p in PHASES},
                                # Load balancing moves band pixels between ranks (0 for the static split).
-                               exchange_mb=float(row.get(f"exchange_mb_rank{r}") or 0.0)) for r in range(count)],
+                               exchange_mb=float(row.get(f"exchange_mb_rank{r}") or 0.0),
+                               # ... and measures each rank's drawn work (0: not measured).
+                               render_work=float(row.get(f"render_work_rank{r}") or 0.0)) for r in range(count)],
             })
     if not frames:
         sys.exit(f"scaling-model: {path} has no frames after the {warmup} warm-up frame(s)")
@@ -122,6 +124,9 @@ def analyse(runs, cores, bandwidth_gb_s=1.25):
                 "render_cpu_max": max(cpu),
                 "render_cpu_mean": statistics.fmean(cpu),
                 "imbalance": max(cpu) / statistics.fmean(cpu) if statistics.fmean(cpu) > 0 else 1.0,
+                # The same for the rays' work each rank drew (free of timing noise), where measured.
+                "work_imbalance": (max(work) / statistics.fmean(work) if min(work) > 0 else math.nan)
+                                  if (work := [r["render_work"] for r in ranks]) else math.nan,
                 "sync": fr["frame_ms"] - max(r["prepare_ms"] + r["render_ms"] for r in ranks) - max(r["swap_ms"] for r in ranks),
                 "barrier": barrier,
                 "exchange_mb_max": max(r["exchange_mb"] for r in ranks),
@@ -194,10 +199,11 @@ def report(runs, cores):
     for run in runs:
         m = run["mean"]
         rows.append([run["ranks"], f"{m['prepare']:.1f}", f"{m['render_cpu_max']:.1f}", f"{m['render_cpu_mean']:.1f}",
-                     f"{m['imbalance']:.2f}", f"{m['comm']:.3f}", m["comm_source"], f"{m['exchange']:.2f}",
+                     f"{m['imbalance']:.2f}", "-" if math.isnan(m["work_imbalance"]) else f"{m['work_imbalance']:.3f}",
+                     f"{m['comm']:.3f}", m["comm_source"], f"{m['exchange']:.2f}",
                      f"{m['modelled_ms']:.1f}",
                      f"{m['frame_ms']:.1f}", f"{m['sync']:.3f}", f"{m['barrier']:.3f}", f"{m['imbalance_wait']:.1f}"])
-    out.append(table(["ranks", "prepare", "render cpu max", "render cpu mean", "imbalance", "comm", "comm from", "exchange",
+    out.append(table(["ranks", "prepare", "render cpu max", "render cpu mean", "imbalance", "work imbalance", "comm", "comm from", "exchange",
                       "modelled frame", "wall frame", "wall sync", "wall barrier", "wall imbalance wait"], rows))
 
     out.append(f"\nModel check where every rank has a core of its own (ranks <= {cores} cores)\n")

@@ -68,6 +68,7 @@ std::vector<BandCost> BalancedFrame::render(render::TileRenderer& renderer, cons
                     work[i - first] += run.pixel(x, y)[3];
             runWork += work[i - first];
         }
+        timing.renderWork += runWork;
         for (size_t i = first; i < end; ++i) {
             const cluster::Band& b = bands_[i];
             costs.push_back({static_cast<int>(i), runWork > 0.0 ? runMs * work[i - first] / runWork : 0.0});

@@ -33,6 +33,7 @@ public:
 
     struct Timing {
         double renderMs = 0.0, renderCpuMs = 0.0, exchangeMs = 0.0, exchangeMB = 0.0;
+        double renderWork = 0.0; // the sum of main.frag's alpha (1 + aurora samples) over the drawn pixels
     };
 
     // Needs the context whose objects it uses current (the GLFW backend: window 0). The drawing takes

@@ -268,6 +268,7 @@ int runRenderCommand(int argc, char** argv)
             report.renderCpuMs = timing.renderCpuMs;
             report.exchangeMs = timing.exchangeMs;
             report.exchangeMB = timing.exchangeMB;
+            report.renderWork = timing.renderWork;
             std::vector<int> sizes;
             const std::vector<char> all = world.gatherBytes(packBandCosts(costs), sizes);
             if (world.isMaster())

@@ -82,7 +82,7 @@ void FrameStats::write(const std::string& path) const
         for (size_t r = 0; r < ranks; ++r)
             out << ",frame_rank" << r << ",time_s_rank" << r << ",prepare_ms_rank" << r << ",prepare_cpu_ms_rank" << r
                 << ",render_ms_rank" << r
-                << ",render_cpu_ms_rank" << r << ",exchange_ms_rank" << r << ",exchange_mb_rank" << r << ",wait_ms_rank" << r << ",swap_ms_rank" << r;
+                << ",render_cpu_ms_rank" << r << ",exchange_ms_rank" << r << ",exchange_mb_rank" << r << ",wait_ms_rank" << r << ",swap_ms_rank" << r << ",render_work_rank" << r;
         out << "\n";
         for (const FrameRecord& f : records_) {
             out << f.frame << "," << f.timeS << "," << f.frameMs << "," << 1000.0 / f.frameMs << ","
@@ -90,7 +90,8 @@ void FrameStats::write(const std::string& path) const
                 << f.imbalance();
             for (const RankReport& r : f.ranks)
                 out << "," << r.frame << "," << r.timeS << "," << r.prepareMs << "," << r.prepareCpuMs << "," << r.renderMs << ","
-                    << r.renderCpuMs << "," << r.exchangeMs << "," << r.exchangeMB << "," << r.waitMs << "," << r.swapMs;
+                    << r.renderCpuMs << "," << r.exchangeMs << "," << r.exchangeMB << "," << r.waitMs << "," << r.swapMs << ","
+                    << r.renderWork;
             out << "\n";
         }
     } else {
@@ -105,7 +106,7 @@ void FrameStats::write(const std::string& path) const
                     << ", \"render_ms\": " << f.ranks[r].renderMs
                     << ", \"render_cpu_ms\": " << f.ranks[r].renderCpuMs << ", \"exchange_ms\": " << f.ranks[r].exchangeMs << ", \"exchange_mb\": " << f.ranks[r].exchangeMB
                     << ", \"wait_ms\": " << f.ranks[r].waitMs
-                    << ", \"swap_ms\": " << f.ranks[r].swapMs << "}";
+                    << ", \"swap_ms\": " << f.ranks[r].swapMs << ", \"render_work\": " << f.ranks[r].renderWork << "}";
             out << "]}";
         }
         out << "\n  ]\n}\n";

@@ -21,6 +21,9 @@ struct RankReport {
                               // (llvmpipe's included): the rank's own work, even on a shared machine
     double exchangeMs = 0.0;  // load balancing: sending and receiving band pixels
     double exchangeMB = 0.0;  // megabytes of band pixels this rank sent plus received
+    double renderWork = 0.0;  // load balancing: the work of the rays it drew, the sum over its drawn
+                              // pixels of 1 + aurora samples (main.frag's alpha): a noise-free
+                              // measure of its share (0 with the static split, which reads nothing back)
     double waitMs = 0.0;      // from its tiles finished to the swap barrier's release
     double swapMs = 0.0;      // presenting and swapping its windows
     std::int32_t closeRequested = 0; // a window of this rank was closed
