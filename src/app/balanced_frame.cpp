@@ -71,7 +71,7 @@ std::vector<BandCost> BalancedFrame::render(render::TileRenderer& renderer, cons
         timing.renderWork += runWork;
         for (size_t i = first; i < end; ++i) {
             const cluster::Band& b = bands_[i];
-            costs.push_back({static_cast<int>(i), runWork > 0.0 ? runMs * work[i - first] / runWork : 0.0});
+            costs.push_back({static_cast<int>(i), runWork > 0.0 ? runMs * work[i - first] / runWork : 0.0, work[i - first]});
             std::vector<std::uint16_t> pixels = io::packRgbHalf(io::crop(run, 0, b.y0 - top.y0, width, b.height));
             if (b.owner == rank_) {
                 io::pasteTile(screens_.at(b.screen), io::unpackRgbHalf(width, b.height, pixels), 0, b.y0);
@@ -122,13 +122,13 @@ std::vector<char> packBandCosts(const std::vector<BandCost>& costs)
     return bytes;
 }
 
-std::vector<double> unpackBandCosts(const std::vector<char>& bytes, size_t bandCount)
+std::vector<double> unpackBandCosts(const std::vector<char>& bytes, size_t bandCount, BandMeasure measure)
 {
     std::vector<double> cost(bandCount, std::numeric_limits<double>::quiet_NaN());
     for (size_t at = 0; at + sizeof(BandCost) <= bytes.size(); at += sizeof(BandCost)) {
         BandCost c;
         std::memcpy(&c, bytes.data() + at, sizeof c);
-        cost[static_cast<size_t>(c.band)] = c.cpuMs;
+        cost[static_cast<size_t>(c.band)] = measure == BandMeasure::Work ? c.work : c.cpuMs;
     }
     return cost;
 }

@@ -23,9 +23,15 @@ namespace aurorawall::app {
 struct BandCost {
     int band = 0;
     // Process CPU time to draw and read back the run of bands it was drawn with, times its share of
-    // the run's work (the sum of the alpha main.frag writes over its pixels).
+    // the run's work.
     double cpuMs = 0.0;
+    // The band's work: the sum over its pixels of the alpha main.frag writes (1 + aurora samples).
+    // Unlike CPU time it does not depend on who drew the band or on the machine's noise.
+    double work = 0.0;
 };
+
+// What the load balancer balances: measured CPU time, or the rays' work.
+enum class BandMeasure { CpuTime, Work };
 
 class BalancedFrame {
 public:
@@ -62,6 +68,7 @@ private:
 // Band costs travel to the master as bytes; it turns them into one value per band (NaN where no
 // rank reported one).
 std::vector<char> packBandCosts(const std::vector<BandCost>& costs);
-std::vector<double> unpackBandCosts(const std::vector<char>& bytes, size_t bandCount);
+// Each band's cost by the measure (NaN where no rank reported it).
+std::vector<double> unpackBandCosts(const std::vector<char>& bytes, size_t bandCount, BandMeasure measure);
 
 } // namespace aurorawall::app

@@ -272,7 +272,8 @@ int runRenderCommand(int argc, char** argv)
             std::vector<int> sizes;
             const std::vector<char> all = world.gatherBytes(packBandCosts(costs), sizes);
             if (world.isMaster())
-                balancer->observe(unpackBandCosts(all, assignment.size()));
+                balancer->observe(unpackBandCosts(all, assignment.size(),
+                                                  options.balanceBy == "work" ? BandMeasure::Work : BandMeasure::CpuTime));
             if (presenter)
                 for (Tile& tile : tiles) {
                     context->makeCurrent(tile.window);

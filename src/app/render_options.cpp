@@ -41,6 +41,9 @@ RenderOptions parseRenderOptions(int argc, char** argv)
          "costs, damped); the image is unchanged. Costs a readback and a transfer of the moved bands per frame")
         ("balance-bands", po::value(&o.balanceBands)->default_value(o.balanceBands),
          "bands per screen for --balance (1 to 256; at most one per 8 rows)")
+        ("balance-by", po::value(&o.balanceBy)->default_value(o.balanceBy),
+         "what --balance equalizes: time (each band's measured CPU time) or work (each band's rays' work, "
+         "1 + aurora samples per pixel: exact and free of timing noise, but not proportional to time)")
         ("draw-lanes", po::value(&o.drawLanes)->default_value(o.drawLanes),
          "benchmarks with more ranks than cores: at most N ranks draw at once, taking turns (0: all at once), "
          "so that each rank's render CPU time is that of a core of its own; set N to the number of cores")
@@ -88,6 +91,7 @@ RenderOptions parseRenderOptions(int argc, char** argv)
     check(!o.outDir.empty(), "--out must not be empty");
     check(o.balanceBands >= 1 && o.balanceBands <= 256, "--balance-bands must be in [1, 256]");
     check(o.drawLanes >= 0 && o.drawLanes <= 4096, "--draw-lanes must be in [0, 4096]");
+    check(o.balanceBy == "work" || o.balanceBy == "time", "--balance-by must be work or time (got '" + o.balanceBy + "')");
     check(o.balance == "on" || o.balance == "off" || o.balance == "auto",
           "--balance must be on, off or auto (got '" + o.balance + "')");
     return o;

@@ -24,6 +24,7 @@ struct RenderOptions {
     bool singleScreen = false;
     std::string balance = "auto"; // on, off, or auto: on when more than one rank renders
     int balanceBands = 8;
+    std::string balanceBy = "time"; // time or work: what the balancer equalizes
     int drawLanes = 0;         // 0: every rank draws at once (MpiWorld::beginTurn)
     bool quiet = false;
     bool verbose = false;

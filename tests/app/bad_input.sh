@@ -123,6 +123,7 @@ main_cases() {
     expect_error tonemap-unknown 4 "--tonemap" --wall "$TINY" --scene "$SCENE" --tonemap reinhard
     expect_error option-unknown 4 "--bogus" --wall "$TINY" --scene "$SCENE" --bogus
     expect_error draw-lanes-negative 4 "--draw-lanes" --wall "$TINY" --scene "$SCENE" --draw-lanes -1
+    expect_error balance-by-unknown 4 "--balance-by" --wall "$TINY" --scene "$SCENE" --balance-by pixels
     expect_error option-twice 4 "--wall" --wall "$TINY" --wall "$TINY" --scene "$SCENE"
     expect_error wall-option-missing 4 "wall" --scene "$SCENE"
 }

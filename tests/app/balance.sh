@@ -22,12 +22,13 @@ check_balance() {
 }
 
 # Drawing in turns (--draw-lanes, for benchmarks with more ranks than cores) only orders the ranks'
-# drawing in time: the same wall, balanced with one lane and static with two.
+# drawing in time, and balancing the rays' work instead of time only moves bands: the same wall,
+# balanced by work with one lane and static with two.
 check_turns() {
     local name="$1" ranks="$2" wall="$WALLS/$1.ini"
     note "$name: $ranks ranks drawing in turns"
     aw_mpirun "$ranks" render --wall "$wall" --scene "$SCENE" --frames 3 --gather --quiet --balance on --balance-bands 5 \
-        --draw-lanes 1 --out "$WORK/$name-turns-balanced"
+        --draw-lanes 1 --balance-by work --out "$WORK/$name-turns-balanced"
     aw_mpirun "$ranks" render --wall "$wall" --scene "$SCENE" --frames 3 --gather --quiet --balance off \
         --draw-lanes 2 --out "$WORK/$name-turns-static"
     "$COMPARE" diff "$WORK/$name-static/wall.exr" "$WORK/$name-turns-balanced/wall.exr" --half-ulps 0
