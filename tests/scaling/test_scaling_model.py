@@ -3,6 +3,7 @@
 full-size walls against launch/scaling's generator. Usage: test_scaling_model.py SOURCE_DIR"""
 import filecmp
 import importlib.util
+import math
 import os
 import subprocess
 import sys
@@ -106,6 +107,18 @@ class ModelTest(unittest.TestCase):
     def test_imbalance_uses_cpu_time(self):
         self.assertAlmostEqual(self.runs[4]["imbalance"], (140 / 110 + 1) / 2)
         self.assertAlmostEqual(self.runs[2]["imbalance"], (120 / 110 + 110 / 100) / 2)
+
+    def test_work_imbalance_where_the_work_was_measured(self):
+        # No render_work column (the static split): not a number, printed as "-".
+        self.assertTrue(math.isnan(self.runs[2]["work_imbalance"]))
+        runs = model.read_runs(os.path.join(self.folder.name, "runs.csv"))
+        for run in runs:
+            for index, frame in enumerate(run["frames"]):
+                for r, rank in enumerate(frame["ranks"]):
+                    rank["render_work"] = 300.0 if r == 0 and index == 0 else 200.0
+        measured = {run["ranks"]: run["mean"] for run in model.analyse(runs, cores=2)}
+        self.assertAlmostEqual(measured[2]["work_imbalance"], (300 / 250 + 1) / 2)
+        self.assertAlmostEqual(measured[4]["work_imbalance"], (300 / 225 + 1) / 2)
 
     def test_report_prints_the_papers_numbers_beside_ours(self):
         runs = model.analyse(model.read_runs(os.path.join(self.folder.name, "runs.csv")), cores=2)
