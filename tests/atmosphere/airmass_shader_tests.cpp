@@ -5,44 +5,19 @@
 #include "atmosphere/airmass.h"
 #include "atmosphere/airmass_accuracy.h"
 #include "gl/context.h"
+#include "random_rays.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <random>
 
 namespace aurorawall {
 namespace {
 
-// Rays whose lengths and direction components are random finite floats from 1e-37 to 1e37 in
-// magnitude, with either sign, and some exact zeros; H > 0 and R ≥ 0 as the airmass command requires.
-std::vector<AirmassRay> randomFiniteRays(int count)
-{
-    std::mt19937_64 random(7);
-    std::uniform_real_distribution<double> exponent(-37.0, 37.0), unit(0.0, 1.0);
-    auto value = [&]() {
-        if (unit(random) < 0.05) return 0.0;
-        const double magnitude = std::pow(10.0, exponent(random));
-        return unit(random) < 0.5 ? -magnitude : magnitude;
-    };
-    std::vector<AirmassRay> rays;
-    for (int i = 0; i < count; ++i) {
-        AirmassRay ray;
-        ray.origin = {value(), value(), value()};
-        ray.direction = {value(), value(), value()};
-        ray.t0 = value();
-        ray.t1 = value();
-        ray.scaleHeight = std::abs(value()) + 1e-37;
-        ray.planetRadius = std::abs(value());
-        rays.push_back(ray);
-    }
-    return rays;
-}
-
 TEST(AirmassInShader, DefaultIsFiniteForAnyFiniteInput)
 {
     auto context = gl::createContext(gl::Backend::Egl);
-    const std::vector<AirmassRay> rays = randomFiniteRays(20000);
+    const std::vector<AirmassRay> rays = randomFiniteRays(20000, 7, -37.0, 37.0); // float's range
     const std::vector<double> values =
         evaluateAirmassInShader(findAirmassMethod(kDefaultAirmassMethod)->glslFunction, rays);
     ASSERT_EQ(values.size(), rays.size());

@@ -4,11 +4,11 @@
 #include "atmosphere/airmass_cli.h"
 #include "atmosphere/airmass_exact.h"
 #include "common/glsl.h"
+#include "random_rays.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <random>
 #include <sstream>
 
 // The shared airmass modules in double, to test their pieces directly.
@@ -335,20 +335,10 @@ TEST(AirmassExtremes, FiniteEverywhereAndDefaultCloseToExact)
 // default stays finite in float and double (its lengths are scaled by a power of two first).
 TEST(AirmassExtremes, DefaultFiniteForRandomInputsOfAnyMagnitude)
 {
-    std::mt19937_64 random(11);
-    std::uniform_real_distribution<double> exponent(-45.0, 38.0), unit(0.0, 1.0);
-    auto value = [&]() {
-        if (unit(random) < 0.05) return 0.0;
-        const double magnitude = std::pow(10.0, exponent(random));
-        return unit(random) < 0.5 ? -magnitude : magnitude;
-    };
     int nonFinite = 0;
-    for (int i = 0; i < 50000; ++i) {
-        const AirmassRay ray{{value(), value(), value()}, {value(), value(), value()}, value(), value(),
-                             std::abs(value()) + 1e-45, std::abs(value())};
+    for (const AirmassRay& ray : randomFiniteRays(50000, 11, -45.0, 38.0))
         for (AirmassPrecision precision : {AirmassPrecision::Float32, AirmassPrecision::Float64})
             if (!std::isfinite(evaluate(kDefaultAirmassMethod, ray, precision))) ++nonFinite;
-    }
     EXPECT_EQ(nonFinite, 0);
 }
 
