@@ -118,8 +118,9 @@ const real AIRMASS_SAFE_VARIATION = real(0.08);
 const real AIRMASS_SAFE_VARIATION_ACROSS = real(0.02);
 
 // The default method's evaluation, for lengths scaled near 1 (airmassChapmanAsymptotic below): airmass
-// of the segment [t0, t1] from the asymptotic Chapman function (signed). Branch-free: every quantity below is computed for every ray and the result is selected, because SIMD
-// lanes (llvmpipe, GPU warps) that take different branches pay for all of them.
+// of the segment [t0, t1] from the asymptotic Chapman function (signed). Branch-free: every quantity
+// below is computed for every ray and the result is selected, because SIMD lanes (llvmpipe, GPU warps)
+// that take different branches pay for all of them.
 //
 // With U(t) = e^{−h(t)/H}·Ch(r(t)/H, |x|/r) the upward half-line column from the point at |x| and
 // T = e^{−h_t/H}·Ch(y/H, 90°) the column from the closest approach to infinity, the forward half-line
@@ -127,11 +128,13 @@ const real AIRMASS_SAFE_VARIATION_ACROSS = real(0.02);
 //   I/H = ±U(t_lo) ∓ U(t_hi) + 2T·[x_lo < 0 ≤ x_hi]      (+U for x ≥ 0, −U for x < 0),
 // one expression for segments after, before or across the closest approach (three Ch).
 // Safe form: where the height varies by at most AIRMASS_SAFE_VARIATION·H over the segment (short
-// segments, segments near the closest approach), that difference cancels; there the trapezoid rule with
-// the end-derivative correction (Euler–Maclaurin) integrates the density ρ = e^{−h/H} over the width w:
+// segments, segments near the closest approach; AIRMASS_SAFE_VARIATION_ACROSS·H from the closest approach
+// when the segment crosses it), that difference cancels; there the trapezoid rule with the end-derivative
+// correction (Euler–Maclaurin) integrates the density ρ = e^{−h/H} over the width w:
 //   I ≈ w/2·(ρ_lo + ρ_hi) + w²/12·(ρ'_lo − ρ'_hi),   ρ' = −ρ·(x/r)/H   (dh/dt = x/r),
-// with error w⁵·ρ⁗/720 and no density beyond the two ends. All heights come from
-// airmassSegmentGeometry, accurate from the exact float inputs.
+// with error w⁵·ρ⁗/720, on each side of the closest approach (where ρ' = 0 and ρ is the tangent
+// density) when the segment crosses it: no density beyond those of the Chapman form. All heights come
+// from airmassSegmentGeometry, accurate from the exact float inputs.
 real airmassChapmanAsymptoticUnit(vec3 origin, vec3 direction, real t0, real t1, real H, real R)
 {
     real tLo = min(t0, t1);
