@@ -12,8 +12,8 @@
 // The integral is the midpoint rule with M equal steps ("outer march"). I_view accumulates the same
 // midpoint samples. I_l is the seed-002 point: a closed form (airmassHalfLine, the half-line column of
 // the default airmass method, docs/airmass.md) replaces the classic inner march, so N lights cost N
-// closed forms per step instead of N·K density samples. The nested march (K midpoint steps toward each light) is
-// kept in the same text as the reference and the cost yardstick.
+// closed forms per step instead of N·K density samples. The nested march (K midpoint steps toward
+// each light) is kept in the same text as the reference and the cost yardstick.
 
 const int SKY_MAX_LIGHTS = 8;
 const int SKY_LIGHT_CLOSED_FORM = 0;

@@ -213,6 +213,7 @@ int runRenderCommand(int argc, char** argv)
     std::vector<int> assignment;
     std::unique_ptr<BalancedFrame> balanced;
     std::unique_ptr<cluster::LoadBalancer> balancer;
+    const BandMeasure bandMeasure = options.balanceBy == "work" ? BandMeasure::Work : BandMeasure::CpuTime;
     if (options.balance == "on" || (options.balance == "auto" && world.size() > 1)) {
         std::vector<cluster::Band> bands = cluster::makeBands(wallLayout, options.balanceBands);
         assignment.resize(bands.size());
@@ -272,8 +273,7 @@ int runRenderCommand(int argc, char** argv)
             std::vector<int> sizes;
             const std::vector<char> all = world.gatherBytes(packBandCosts(costs), sizes);
             if (world.isMaster())
-                balancer->observe(unpackBandCosts(all, assignment.size(),
-                                                  options.balanceBy == "work" ? BandMeasure::Work : BandMeasure::CpuTime));
+                balancer->observe(unpackBandCosts(all, assignment.size(), bandMeasure));
             if (presenter)
                 for (Tile& tile : tiles) {
                     context->makeCurrent(tile.window);

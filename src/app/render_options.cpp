@@ -46,7 +46,7 @@ RenderOptions parseRenderOptions(int argc, char** argv)
          "1 + aurora samples per pixel: exact and free of timing noise, but not proportional to time)")
         ("draw-lanes", po::value(&o.drawLanes)->default_value(o.drawLanes),
          "benchmarks with more ranks than cores: at most N ranks draw at once, taking turns (0: all at once), "
-         "so that each rank's render CPU time is that of a core of its own; set N to the number of cores")
+         "each on a core of its own (N = the number of cores); the image is unchanged")
         ("single-screen", po::bool_switch(&o.singleScreen),
          "render the wall's whole canvas (bezels included) as one screen on one rank: the reference a wall must match")
         ("stats", po::value(&o.statsFile), "write per-frame timings to FILE (.csv or .json)")

@@ -50,10 +50,11 @@ public:
     void exchange(const std::vector<Message>& outgoing, const std::vector<Message>& incoming) const;
 
     // Turns, for benchmarks with more ranks than cores: with `lanes` > 0, rank r starts its turn only
-    // after rank r − lanes has ended its own, so at most `lanes` ranks draw at once and each draws on a
-    // core of its own, as on a dedicated node (its CPU time is not stretched by sharing caches and
-    // cores with the others). The wait polls and sleeps instead of spinning, so waiting ranks leave
-    // the cores to the drawing ones. With lanes ≤ 0 both do nothing.
+    // after rank r − lanes has ended its own, so at most `lanes` ranks draw at once, each on a core of
+    // its own as on a dedicated node (meant to keep ranks from stretching each other's CPU time; on
+    // the 2-core test machine it made no measurable difference, docs/BENCHMARKS.md). The wait polls
+    // and sleeps instead of spinning, so waiting ranks leave the cores to the drawing ones. With
+    // lanes ≤ 0 both do nothing.
     void beginTurn(int lanes) const;
     void endTurn(int lanes) const;
 
