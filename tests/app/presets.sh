@@ -1,0 +1,12 @@
+#!/bin/bash
+# Regression: every shipped camera preset renders the same pixels as the images in data/presets,
+# rendered at 192x108 by the code before the component registry was introduced. Float reordering
+# inside a component may move a value by one half-float step, so HALF_ULPS (default 2) are allowed.
+source "$(dirname "$0")/lib.sh"
+HALF_ULPS="${HALF_ULPS:-2}"
+wall="$DATA/presets/wall-192x108.ini"
+for name in benchmark-view ground-65n low-orbit far-space quiet-arc twilight; do
+    aw_mpirun 1 render --wall "$wall" --scene "$SRC_DIR/config/scenes/$name.toml" --gather --quiet --out "$WORK/$name"
+    "$COMPARE" diff "$DATA/presets/$name.exr" "$WORK/$name/wall.exr" --half-ulps "$HALF_ULPS" || fail "$name differs"
+done
+echo "PASS presets"
