@@ -1,37 +1,42 @@
-// Which layers a ray meets, and in what order (Lawlor & Genetti 2011, section 3.1, figure 8).
-// Shared by the shader and the C++ tests (src/common/glsl.h); needs render/ray_sphere.glsl.
-//
-// The ray x(t) = o + t d, t >= 0, |d| = 1, starts at the camera, `altitude` km above the ground
-// (from double precision). The layers are concentric shells that never overlap: the ground
-// (radius R), the lower atmosphere up to R + atmosphereTop, and the aurora between
-// R + auroraBottom and R + auroraTop (auroraBottom > atmosphereTop). So along any ray the order
-// is fixed: aurora -> atmosphere -> aurora -> ground or space, and each aurora part lies wholly
-// in front of or wholly behind the atmosphere. A viewer inside a layer starts mid-sequence.
-struct RayLayers {
-    bool insideGround;  // the camera is below the surface: nothing is seen
-    real groundT;       // where the ray meets the ground; negative if it never does
-    vec2 atmosphere;    // the part inside the lower atmosphere (empty when x >= y)
-    vec2 auroraNear;    // the parts inside the aurora shell, in order along the ray
-    vec2 auroraFar;
-};
+// Where a ray meets the layers (Lawlor & Genetti 2011, section 3.1, figure 8): the steps the
+// components compose. Shared by the shader and the C++ reference (src/common/glsl.h); needs
+// render/ray_sphere.glsl and render/ray.glsl.
 
-RayLayers rayLayers(vec3 o, vec3 d, real R, real altitude, real atmosphereTop, real auroraBottom, real auroraTop)
+// A ray from the camera that has met nothing yet.
+Ray beginRay(vec3 o, vec3 d, real altitude)
 {
-    RayLayers l;
-    l.insideGround = altitude < real(0.0);
-    l.groundT = real(-1.0);
-    real end = real(1e30);
-    vec2 ground = raySphere(o, d, R, altitude);
+    Ray ray;
+    ray.origin = o;
+    ray.direction = d;
+    ray.altitude = altitude;
+    ray.blocked = false;
+    ray.groundT = real(-1.0);
+    ray.end = real(1e30);
+    ray.atmosphere = vec2(real(1.0), real(-1.0));
+    ray.transmittance = vec3(real(1.0));
+    ray.radiance = vec3(real(0.0));
+    return ray;
+}
+
+// The ground (a sphere of radius R) ends the ray; a camera `altitude` km above it (from double
+// precision), and below it sees nothing.
+Ray boundByGround(Ray ray, real R, real altitude)
+{
+    ray.altitude = altitude;
+    ray.blocked = altitude < real(0.0);
+    vec2 ground = raySphere(ray.origin, ray.direction, R, ray.altitude);
     if (ground.x <= ground.y && ground.y > real(0.0)) {
-        l.groundT = max(ground.x, real(0.0));
-        end = l.groundT;
+        ray.groundT = max(ground.x, real(0.0));
+        ray.end = ray.groundT;
     }
-    l.atmosphere = raySphere(o, d, R + atmosphereTop, altitude - atmosphereTop);
-    l.atmosphere = vec2(max(l.atmosphere.x, real(0.0)), min(l.atmosphere.y, end));
-    ShellSegments shell = rayShell(o, d, R + auroraBottom, altitude - auroraBottom, R + auroraTop, altitude - auroraTop, end);
-    l.auroraNear = shell.first;
-    l.auroraFar = shell.second;
-    return l;
+    return ray;
+}
+
+// The part of the ray inside the shell from the ground up to `top` km, before the ray ends.
+vec2 lowerShellSegment(Ray ray, real R, real top)
+{
+    vec2 s = raySphere(ray.origin, ray.direction, R + top, ray.altitude - top);
+    return vec2(max(s.x, real(0.0)), min(s.y, ray.end));
 }
 
 // Does the part `segment` of the ray lie behind the lower atmosphere, so that its light is
@@ -39,4 +44,10 @@ RayLayers rayLayers(vec3 o, vec3 d, real R, real altitude, real atmosphereTop, r
 bool behindAtmosphere(vec2 segment, vec2 atmosphere)
 {
     return atmosphere.x < atmosphere.y && segment.x >= atmosphere.y;
+}
+
+// The transmittance between the camera and an emitting part of the ray.
+vec3 transmittanceTo(Ray ray, vec2 segment)
+{
+    return behindAtmosphere(segment, ray.atmosphere) ? ray.transmittance : vec3(real(1.0));
 }

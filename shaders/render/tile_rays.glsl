@@ -8,6 +8,7 @@ uniform vec3 uRayStepRight;
 uniform vec3 uRayStepDown;
 uniform vec2 uPixelOffset; // integers, exact in float
 uniform int uTileHeight;
+uniform float uPixelAngle; // angular size of one pixel at the canvas origin (radians)
 
 vec3 fragmentRayDirection()
 {

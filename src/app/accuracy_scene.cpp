@@ -7,7 +7,9 @@
 #include "gl/float_target.h"
 #include "gl/full_screen_triangle.h"
 #include "gl/functions.h"
-#include "render/curtain_detail.h"
+#include "components/aurora/aurora.h"
+#include "components/fluid_detail/curtain_detail.h"
+#include "components/registry.h"
 #include "render/tile_renderer.h"
 #include "wall/wall_file.h"
 
@@ -25,7 +27,8 @@
 
 namespace aurorawall::app {
 
-using scene::Component;
+using AuroraSettings = components::aurora::Settings;
+using FluidSettings = components::fluid_detail::Settings;
 
 SceneView sceneView(const scene::Scene& scene, const std::string& wallFile, glm::ivec2 sizePx)
 {
@@ -121,9 +124,9 @@ std::vector<glm::dvec3> referencePixels(const render::ReferenceModel& model, con
 
 namespace {
 
-scene::Scene without(scene::Scene s, Component c)
+scene::Scene without(scene::Scene s, const std::string& component)
 {
-    s.components.erase(std::remove(s.components.begin(), s.components.end(), c), s.components.end());
+    s.remove(component);
     return s;
 }
 
@@ -131,17 +134,17 @@ scene::Scene without(scene::Scene s, Component c)
 
 void applyFinestSettings(scene::Scene& s)
 {
-    s.aurora.stepKm = 0.25;
-    s.aurora.skipEmptySpace = false;
-    s.aurora.footprintMapSize = 1024;
-    s.aurora.tableAltitudeStepKm = 0.25;
-    s.aurora.tableEnergyCount = 128;
-    s.aurora.polylineSpacingKm = 1.0;
+    s.settings<AuroraSettings>().stepKm = 0.25;
+    s.settings<AuroraSettings>().skipEmptySpace = false;
+    s.settings<AuroraSettings>().footprintMapSize = 1024;
+    s.settings<AuroraSettings>().tableAltitudeStepKm = 0.25;
+    s.settings<AuroraSettings>().tableEnergyCount = 128;
+    s.settings<AuroraSettings>().polylineSpacingKm = 1.0;
 }
 
 scene::Scene withoutUnmodelled(scene::Scene scene)
 {
-    for (Component c : {Component::Stars, Component::PlanetTexture, Component::Sky})
+    for (const char* c : {"stars", "planet_texture", "sky"})
         scene = without(std::move(scene), c);
     return scene;
 }
@@ -173,8 +176,10 @@ struct Variant {
 
 void finestFluid(scene::Scene& s)
 {
-    s.aurora.detail.cellsAlong = 1024;
-    s.aurora.detail.cellsAcross = 256;
+    if (!s.has("fluid_detail"))
+        return;
+    s.settings<FluidSettings>().cellsAlong = 1024;
+    s.settings<FluidSettings>().cellsAcross = 256;
 }
 
 std::string number(double v)
@@ -189,24 +194,26 @@ std::vector<Variant> knobVariants()
     std::vector<Variant> v;
     v.push_back({"default", "-", [](scene::Scene&) {}});
     for (double step : {0.5, 1.0, 2.0, 4.0})
-        v.push_back({"step_km", number(step), [step](scene::Scene& s) { s.aurora.stepKm = step; }});
+        v.push_back({"step_km", number(step), [step](scene::Scene& s) { s.settings<AuroraSettings>().stepKm = step; }});
     for (bool skip : {true, false})
-        v.push_back({"skip_empty_space", skip ? "yes" : "no", [skip](scene::Scene& s) { s.aurora.skipEmptySpace = skip; }});
+        v.push_back({"skip_empty_space", skip ? "yes" : "no", [skip](scene::Scene& s) { s.settings<AuroraSettings>().skipEmptySpace = skip; }});
     for (int size : {128, 256, 512, 1024})
-        v.push_back({"footprint_map_size", number(size), [size](scene::Scene& s) { s.aurora.footprintMapSize = size; }});
+        v.push_back({"footprint_map_size", number(size), [size](scene::Scene& s) { s.settings<AuroraSettings>().footprintMapSize = size; }});
     for (double step : {0.25, 0.5, 1.0, 2.0})
         v.push_back({"table_altitude_step_km", number(step),
-                     [step](scene::Scene& s) { s.aurora.tableAltitudeStepKm = step; }});
+                     [step](scene::Scene& s) { s.settings<AuroraSettings>().tableAltitudeStepKm = step; }});
     for (int count : {32, 64, 128})
-        v.push_back({"table_energy_count", number(count), [count](scene::Scene& s) { s.aurora.tableEnergyCount = count; }});
+        v.push_back({"table_energy_count", number(count), [count](scene::Scene& s) { s.settings<AuroraSettings>().tableEnergyCount = count; }});
     for (int along : {256, 512, 1024})
         v.push_back({"fluid_cells", number(along) + "x" + number(along / 4), [along](scene::Scene& s) {
-                         s.aurora.detail.cellsAlong = along;
-                         s.aurora.detail.cellsAcross = along / 4;
+                         if (!s.has("fluid_detail"))
+                             return;
+                         s.settings<FluidSettings>().cellsAlong = along;
+                         s.settings<FluidSettings>().cellsAcross = along / 4;
                      }});
     for (double spacing : {1.0, 2.0, 4.0})
         v.push_back({"polyline_spacing_km", number(spacing),
-                     [spacing](scene::Scene& s) { s.aurora.polylineSpacingKm = spacing; }});
+                     [spacing](scene::Scene& s) { s.settings<AuroraSettings>().polylineSpacingKm = spacing; }});
     return v;
 }
 
@@ -220,22 +227,22 @@ std::vector<Feature> featureVariants()
 {
     return {
         {{"default", "-", [](scene::Scene&) {}}, "-"},
-        {{"no distance field (skip_empty_space = no)", "", [](scene::Scene& s) { s.aurora.skipEmptySpace = false; }}, "+350%"},
-        {{"aurora layer 100 km thicker", "", [](scene::Scene& s) { s.aurora.topKm += 100.0; }}, "+32%"},
-        {{"1 km steps instead of 2", "", [](scene::Scene& s) { s.aurora.stepKm = 1.0; }}, "+60%"},
-        {{"4 km steps instead of 2", "", [](scene::Scene& s) { s.aurora.stepKm = 4.0; }}, "-33%"},
+        {{"no distance field (skip_empty_space = no)", "", [](scene::Scene& s) { s.settings<AuroraSettings>().skipEmptySpace = false; }}, "+350%"},
+        {{"aurora layer 100 km thicker", "", [](scene::Scene& s) { s.settings<AuroraSettings>().topKm += 100.0; }}, "+32%"},
+        {{"1 km steps instead of 2", "", [](scene::Scene& s) { s.settings<AuroraSettings>().stepKm = 1.0; }}, "+60%"},
+        {{"4 km steps instead of 2", "", [](scene::Scene& s) { s.settings<AuroraSettings>().stepKm = 4.0; }}, "-33%"},
         {{"deposition table at half resolution", "", [](scene::Scene& s) {
-              s.aurora.tableAltitudeStepKm *= 2.0;
-              s.aurora.tableEnergyCount /= 2;
+              s.settings<AuroraSettings>().tableAltitudeStepKm *= 2.0;
+              s.settings<AuroraSettings>().tableEnergyCount /= 2;
           }}, "-"},
         {{"deposition table at double resolution", "", [](scene::Scene& s) {
-              s.aurora.tableAltitudeStepKm *= 0.5;
-              s.aurora.tableEnergyCount *= 2;
+              s.settings<AuroraSettings>().tableAltitudeStepKm *= 0.5;
+              s.settings<AuroraSettings>().tableEnergyCount *= 2;
           }}, "-"},
-        {{"no fluid detail", "", [](scene::Scene& s) { s = without(s, Component::FluidDetail); }}, "-"},
-        {{"no planet texture", "", [](scene::Scene& s) { s = without(s, Component::PlanetTexture); }}, "-"},
-        {{"no atmosphere", "", [](scene::Scene& s) { s = without(without(s, Component::Atmosphere), Component::Sky); }}, "-"},
-        {{"no stars", "", [](scene::Scene& s) { s = without(s, Component::Stars); }}, "-"},
+        {{"no fluid detail", "", [](scene::Scene& s) { s = without(s, "fluid_detail"); }}, "-"},
+        {{"no planet texture", "", [](scene::Scene& s) { s = without(s, "planet_texture"); }}, "-"},
+        {{"no atmosphere", "", [](scene::Scene& s) { s = without(without(s, "atmosphere"), "sky"); }}, "-"},
+        {{"no stars", "", [](scene::Scene& s) { s = without(s, "stars"); }}, "-"},
     };
 }
 
@@ -289,9 +296,9 @@ void computeReferences(References& r, const SceneView& view, const std::vector<g
 {
     const auto start = std::chrono::steady_clock::now();
     std::unique_ptr<fluid::FluxFrames> frames;
-    if (r.scene.has(Component::FluidDetail))
+    if (r.scene.has("fluid_detail"))
         frames = std::make_unique<fluid::FluxFrames>(
-            fluid::simulateCurtainDetail(render::curtainDetailSpec(r.scene.aurora.detail)));
+            fluid::simulateCurtainDetail(components::fluid_detail::curtainDetailSpec(r.scene.settings<FluidSettings>())));
     render::ReferenceSettings reference;
     reference.stepKm = settings.referenceStepKm;
     const render::ReferenceModel model(r.scene, view.frame.timeS, frames.get(), reference);
@@ -309,7 +316,7 @@ void printKnobTable(const scene::Scene& base, const SceneView& view, const std::
     applyFinestSettings(common.scene);
     applyFinestSettings(fluid.scene);
     finestFluid(fluid.scene);
-    const bool hasFluid = base.has(Component::FluidDetail);
+    const bool hasFluid = base.has("fluid_detail");
     common.gpu = renderView(common.scene, view, shaderDir, 0);
     if (hasFluid)
         fluid.gpu = renderView(fluid.scene, view, shaderDir, 0);
@@ -424,7 +431,7 @@ int runSceneAccuracy(int argc, char** argv, std::ostream& out, std::ostream& err
     scene::Scene scene;
     SceneView view;
     try {
-        scene = scene::loadScene(settings.sceneFile);
+        scene = components::loadScene(settings.sceneFile);
         if (!settings.featureCosts)
             scene = withoutUnmodelled(scene);
         view = sceneView(scene, settings.wallFile, settings.sizePx);
@@ -438,8 +445,8 @@ int runSceneAccuracy(int argc, char** argv, std::ostream& out, std::ostream& err
         out << "renderer: " << context->rendererName() << ", " << context->glVersion()
             << (threads ? ", LP_NUM_THREADS=" + std::string(threads) : std::string()) << "\n";
         out << "scene: " << settings.sceneFile << " (components:";
-        for (Component c : scene.components)
-            out << " " << scene::componentName(c);
+        for (const scene::Component* c : scene.components())
+            out << " " << c->name();
         out << "), frame 0 at t = " << view.frame.timeS << " s, " << settings.sizePx.x << "x" << settings.sizePx.y
             << " px, field of view of " << settings.wallFile << "; ms per frame: median of " << settings.runs
             << " frames (setFrame + renderTile + glFinish, CPU clock) after one warm-up\n";

@@ -20,6 +20,7 @@
 #include "render/fragment_shader.h"
 #include "render/tile_renderer.h"
 #include "render/window_presenter.h"
+#include "components/registry.h"
 #include "scene/scene.h"
 #include "wall/tile_rays.h"
 #include "wall/wall_file.h"
@@ -160,7 +161,7 @@ int runRenderCommand(int argc, char** argv)
                              (wallLayout.rankCount == 1 ? " rank" : " ranks") + ", but mpirun started " +
                              std::to_string(world.size()) + " (use mpirun -n " + std::to_string(wallLayout.rankCount) +
                              ")");
-        scene = scene::loadScene(options.sceneFile);
+        scene = components::loadScene(options.sceneFile);
         shaderDir = (options.dataDir.empty() ? dataDirectory() : options.dataDir) + "/shaders";
         render::fragmentShaderSource(scene, shaderDir); // every module readable before any window opens
         if (options.backend != "glfw" && options.frames == 0)

@@ -40,12 +40,17 @@ double radianceWattsPerM2Sr(double rayleigh, double wavelengthNm)
     return rayleigh * 1e10 / (4.0 * kPi) * kPlanckTimesLight / (wavelengthNm * 1e-9);
 }
 
-glm::dvec3 lineLinearSrgbPerRayleigh(EmissionLine line)
+glm::dvec3 lineLinearSrgbPerRayleigh(double wavelengthNm, glm::dvec3 cieXyz)
 {
     constexpr double kLumensPerWatt = 683.0;
+    const double radiance = radianceWattsPerM2Sr(1.0, wavelengthNm);
+    return desaturateIntoGamut(xyzToLinearSrgb(cieXyz)) * (kLumensPerWatt * radiance);
+}
+
+glm::dvec3 lineLinearSrgbPerRayleigh(EmissionLine line)
+{
     const LineInfo& info = lineInfo(line);
-    double radiance = radianceWattsPerM2Sr(1.0, info.wavelengthNm);
-    return desaturateIntoGamut(xyzToLinearSrgb(info.cieXyz)) * (kLumensPerWatt * radiance);
+    return lineLinearSrgbPerRayleigh(info.wavelengthNm, info.cieXyz);
 }
 
 } // namespace aurorawall::aurora

@@ -29,5 +29,7 @@ double radianceWattsPerM2Sr(double rayleigh, double wavelengthNm);
 // Linear sRGB of one rayleigh of the line, gamut mapped, scaled to absolute luminance: Y in cd/m² is
 // 683 lm/W · ȳ(λ) · radiance (CIE photopic, monochromatic). For uAuroraLineRgb.
 glm::dvec3 lineLinearSrgbPerRayleigh(EmissionLine line);
+// The same for any line, given its wavelength and CIE 1931 2° colour matching values (x̄, ȳ, z̄).
+glm::dvec3 lineLinearSrgbPerRayleigh(double wavelengthNm, glm::dvec3 cieXyz);
 
 } // namespace aurorawall::aurora

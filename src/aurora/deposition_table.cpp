@@ -9,7 +9,7 @@
 
 namespace aurorawall::aurora::f32 {
 AURORAWALL_GLSL_PRECISION(float)
-#include "aurora/deposition_coords.glsl"
+#include "components/aurora/deposition_coords.glsl"
 } // namespace aurorawall::aurora::f32
 
 namespace aurorawall::aurora {

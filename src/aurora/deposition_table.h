@@ -1,5 +1,5 @@
 #pragma once
-// The aurora tables the shader samples (shaders/aurora/deposition.glsl): deposition over altitude ×
+// The aurora tables the shader samples (shaders/components/aurora/deposition.glsl): deposition over altitude ×
 // ln energy in decibels, and the per-altitude line yields. See docs/aurora-physics.md, "Tables".
 #include "aurora/lazarev.h"
 

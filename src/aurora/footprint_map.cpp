@@ -14,7 +14,7 @@ namespace {
 
 namespace f64 {
 AURORAWALL_GLSL_PRECISION(double)
-#include "aurora/footprint_map.glsl"
+#include "components/aurora/footprint_map.glsl"
 } // namespace f64
 
 constexpr double kPi = 3.14159265358979323846;

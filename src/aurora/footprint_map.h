@@ -2,7 +2,7 @@
 // The footprint map: per frame, a 2D texture over the auroral region that gives, for the texel holding a
 // point, the nearest dense curtain point (curtain id, point index) and a lower bound of its distance — the
 // distance field of Lawlor & Genetti 2011 §3.2 extended with the identity of the nearest point.
-// The projection (azimuthal equidistant around a centre) is shaders/aurora/footprint_map.glsl, shared
+// The projection (azimuthal equidistant around a centre) is shaders/components/aurora/footprint_map.glsl, shared
 // with the shader.
 //
 // Build, in two parts, because the shader needs the nearest point only near the curtains and elsewhere
@@ -71,7 +71,7 @@ struct FootprintSample {
 struct FootprintMap {
     FootprintMapSpec spec;
     double planetRadiusKm = 0.0;
-    // Uniforms of shaders/aurora/footprint_map.glsl: centre and east unit vectors, Θ in radians.
+    // Uniforms of shaders/components/aurora/footprint_map.glsl: centre and east unit vectors, Θ in radians.
     glm::dvec3 centre{0.0};
     glm::dvec3 east{0.0};
     double angularRadius = 0.0;

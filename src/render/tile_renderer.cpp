@@ -1,7 +1,6 @@
 #include "render/tile_renderer.h"
 
 #include "render/fragment_shader.h"
-#include "render/scene_uniforms.h"
 
 namespace aurorawall::render {
 
@@ -9,18 +8,17 @@ TileRenderer::TileRenderer(const scene::Scene& scene, const std::string& shaderD
     : scene_(scene),
       program_(gl::Program::graphics(gl::fullScreenTriangleVertexShader(), fragmentShaderSource(scene, shaderDir)))
 {
-    if (scene.has(scene::Component::Aurora)) {
-        auroraTables_ = std::make_unique<AuroraTables>(scene.aurora);
-        precomputationLog_.push_back(auroraTables_->summary());
-        if (scene.has(scene::Component::FluidDetail)) {
-            curtainDetail_ = std::make_unique<CurtainDetail>(scene.aurora.detail);
-            precomputationLog_.push_back(curtainDetail_->summary());
-        }
-        curtainField_ = std::make_unique<CurtainField>(scene, curtainDetail_.get());
-    }
-    if (scene.has(scene::Component::PlanetTexture)) {
-        nightLights_ = std::make_unique<NightLights>(scene.planet);
-        precomputationLog_.push_back(nightLights_->summary());
+    for (const scene::Component* c : scene.components()) {
+        const scene::FindRenderer find = [&](const std::string& name) -> scene::ComponentRenderer* {
+            for (size_t i = 0; i < components_.size(); ++i)
+                if (scene.components()[i]->name() == name)
+                    return components_[i].get();
+            return nullptr;
+        };
+        components_.push_back(c->makeRenderer(scene, find));
+        const std::string log = components_.back()->precomputationLog();
+        if (!log.empty())
+            precomputationLog_.push_back(log);
     }
 }
 
@@ -28,12 +26,21 @@ void TileRenderer::setFrame(const cluster::FrameState& frame)
 {
     // Wall frame (x right, y up, z toward the viewer) -> camera axes in the planet frame.
     wallToPlanet_ = glm::dmat3(frame.cameraRight, frame.cameraUp, frame.cameraBack);
-    applySceneUniforms(program_, scene_, frame);
-    if (curtainField_)
-        curtainField_->update(frame.timeS);
+    program_.set("uCameraPositionKm", glm::vec3(frame.cameraPositionKm));
+    for (const auto& c : components_)
+        c->setFrame(program_, frame);
 }
 
-std::string TileRenderer::frameLog() const { return curtainField_ ? curtainField_->summary() : std::string(); }
+std::string TileRenderer::frameLog() const
+{
+    std::string log;
+    for (const auto& c : components_) {
+        const std::string line = c->frameLog();
+        if (!line.empty())
+            log += (log.empty() ? "" : "; ") + line;
+    }
+    return log;
+}
 
 void TileRenderer::renderTile(const wall::TileRays& rays, gl::FloatTarget& target,
                               const gl::FullScreenTriangle& triangle)
@@ -46,14 +53,8 @@ void TileRenderer::renderTile(const wall::TileRays& rays, gl::FloatTarget& targe
     // Angular size of one pixel at the canvas origin, for drawing point-like stars.
     program_.set("uPixelAngle", static_cast<float>(glm::length(rays.stepRight) / glm::length(rays.originDir)));
     // Texture bindings belong to the current context: bind every time.
-    if (auroraTables_)
-        auroraTables_->bind(program_);
-    if (curtainDetail_)
-        curtainDetail_->bind(program_);
-    if (curtainField_)
-        curtainField_->bind(program_);
-    if (nightLights_)
-        nightLights_->bind(program_);
+    for (const auto& c : components_)
+        c->bind(program_);
     target.bind();
     program_.use();
     triangle.draw();

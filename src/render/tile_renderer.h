@@ -6,10 +6,6 @@
 #include "gl/float_target.h"
 #include "gl/full_screen_triangle.h"
 #include "gl/shader_program.h"
-#include "render/aurora_tables.h"
-#include "render/curtain_detail.h"
-#include "render/curtain_field.h"
-#include "render/night_lights.h"
 #include "scene/scene.h"
 #include "wall/tile_rays.h"
 
@@ -37,6 +33,8 @@ public:
 
     // One line per table precomputed at start-up for the scene's components; empty when none is needed.
     const std::vector<std::string>& precomputationLog() const { return precomputationLog_; }
+    // The components' GPU parts, in registry order.
+    const std::vector<std::unique_ptr<scene::ComponentRenderer>>& components() const { return components_; }
     // What the last setFrame computed per frame (e.g. the curtains' footprint map); may be empty.
     std::string frameLog() const;
 
@@ -44,11 +42,7 @@ private:
     const scene::Scene& scene_;
     gl::Program program_;
     glm::dmat3 wallToPlanet_{1.0};
-    // Components' GPU data, present only when the scene lists the component.
-    std::unique_ptr<AuroraTables> auroraTables_;
-    std::unique_ptr<CurtainDetail> curtainDetail_;
-    std::unique_ptr<CurtainField> curtainField_;
-    std::unique_ptr<NightLights> nightLights_;
+    std::vector<std::unique_ptr<scene::ComponentRenderer>> components_;
     std::vector<std::string> precomputationLog_;
 };
 

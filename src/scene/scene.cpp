@@ -14,27 +14,6 @@ namespace {
 
 constexpr double kDeg = 3.14159265358979323846 / 180.0;
 
-const Component kAllComponents[] = {Component::Planet, Component::PlanetTexture, Component::Atmosphere,
-                                    Component::Sky,    Component::Aurora,        Component::FluidDetail,
-                                    Component::Stars};
-
-// The local horizon frame at a site: up (the zenith), north and east, all unit vectors.
-struct LocalFrame {
-    glm::dvec3 up, north, east;
-};
-
-LocalFrame localFrame(double latitudeDeg, double longitudeDeg)
-{
-    LocalFrame f;
-    f.up = planetPoint(latitudeDeg, longitudeDeg, 1.0);
-    const glm::dvec3 north = glm::dvec3(0, 0, 1) - f.up * f.up.z;
-    // At a pole "north" is undefined; take the direction away from the given meridian there.
-    f.north = glm::length(north) > 1e-12 ? glm::normalize(north)
-                                         : glm::normalize(planetPoint(0, longitudeDeg, 1) * -f.up.z);
-    f.east = glm::cross(f.north, f.up);
-    return f;
-}
-
 Camera readCamera(const TableReader& t, double planetRadiusKm)
 {
     Camera c;
@@ -71,67 +50,6 @@ Camera readCamera(const TableReader& t, double planetRadiusKm)
     return c;
 }
 
-// A light is given as seen from a site: where it stands in that sky (elevation above the
-// horizon, azimuth clockwise from north), and its illuminance above the atmosphere.
-SkyLight readSkyLight(const TableReader& t)
-{
-    SkyLight l;
-    const double lat = t.number("site_latitude_deg", -90, 90), lon = t.number("site_longitude_deg", -360, 360);
-    const double elevation = t.number("elevation_deg", -90, 90) * kDeg;
-    const double azimuth = t.number("azimuth_deg", -360, 360) * kDeg;
-    const LocalFrame local = localFrame(lat, lon);
-    l.direction = std::cos(elevation) * (std::cos(azimuth) * local.north + std::sin(azimuth) * local.east) +
-                  std::sin(elevation) * local.up;
-    const double lux = t.number("illuminance_lux", 0.0, 1e7, 1.28e5);
-    l.illuminanceLux = glm::dvec3(lux);
-    t.rejectUnknownKeys();
-    return l;
-}
-
-// The fields a key may set; `c` holds the defaults (the curtain's own keys, or the previous key).
-CurtainKey readCurtainKey(const TableReader& t, CurtainKey c)
-{
-    if (t.has("points_lat_lon_deg") || c.pointsLatLonDeg.empty())
-        c.pointsLatLonDeg = t.pairs("points_lat_lon_deg", {-90, -360}, {90, 360});
-    if (c.pointsLatLonDeg.size() < 2)
-        t.fail("points_lat_lon_deg", "needs at least 2 points");
-    c.energyFluxErgPerCm2S = t.number("energy_flux_erg_cm2_s", 0, 1e4, c.energyFluxErgPerCm2S);
-    c.energyKeV = t.number("energy_kev", 0.5, 50, c.energyKeV); // the deposition table's range
-    c.detailPhase = t.number("detail_phase", 0, 1, c.detailPhase);
-    return c;
-}
-
-// A curtain is either one state (its own keys) or a list of [[aurora.curtain.key]] tables, each
-// with time_s; a key leaves out what does not change from the key before it.
-Curtain readCurtain(const TableReader& t)
-{
-    Curtain c;
-    c.thicknessKm = t.number("thickness_km", 0.01, 1000, c.thicknessKm);
-    c.driftKmPerS = t.number("drift_km_per_s", -1e4, 1e4, c.driftKmPerS);
-    c.pulsationPeriodS = t.number("pulsation_period_s", 0, 1e6, c.pulsationPeriodS);
-    c.pulsationDepth = t.number("pulsation_depth", 0, 1, c.pulsationDepth);
-    if (!t.has("key")) {
-        c.keys.push_back(readCurtainKey(t, CurtainKey{}));
-    } else {
-        CurtainKey previous;
-        for (const TableReader& k : t.arrayOfTables("key")) {
-            CurtainKey key = readCurtainKey(k, previous);
-            key.timeS = k.number("time_s", -1e15, 1e15);
-            if (!c.keys.empty() && key.timeS <= c.keys.back().timeS)
-                k.fail("time_s", "keys must be in increasing time");
-            if (!c.keys.empty() && key.pointsLatLonDeg.size() != c.keys.front().pointsLatLonDeg.size())
-                k.fail("points_lat_lon_deg", "every key of a curtain needs the same number of points");
-            k.rejectUnknownKeys();
-            c.keys.push_back(key);
-            previous = key;
-        }
-        if (c.keys.empty())
-            t.fail("key", "needs at least one key");
-    }
-    t.rejectUnknownKeys();
-    return c;
-}
-
 } // namespace
 
 // Planet frame: z north, x toward longitude 180 deg, y toward 90 deg W.
@@ -140,27 +58,95 @@ glm::dvec3 planetPoint(double latitudeDeg, double longitudeDeg, double radius)
     return radius * unitFromLatLon(latitudeDeg, longitudeDeg);
 }
 
-const char* componentName(Component c)
+LocalFrame localFrame(double latitudeDeg, double longitudeDeg)
 {
-    switch (c) {
-    case Component::Planet: return "planet";
-    case Component::PlanetTexture: return "planet_texture";
-    case Component::FluidDetail: return "fluid_detail";
-    case Component::Sky: return "sky";
-    case Component::Atmosphere: return "atmosphere";
-    case Component::Aurora: return "aurora";
-    case Component::Stars: return "stars";
-    }
-    return "?";
+    LocalFrame f;
+    f.up = planetPoint(latitudeDeg, longitudeDeg, 1.0);
+    const glm::dvec3 north = glm::dvec3(0, 0, 1) - f.up * f.up.z;
+    // At a pole "north" is undefined; take the direction away from the given meridian there.
+    f.north = glm::length(north) > 1e-12 ? glm::normalize(north)
+                                         : glm::normalize(planetPoint(0, longitudeDeg, 1) * -f.up.z);
+    f.east = glm::cross(f.north, f.up);
+    return f;
 }
 
-bool Scene::has(Component c) const
+Scene::Scene(const Scene& other)
+    : sourceFile(other.sourceFile), name(other.name), planetRadiusKm(other.planetRadiusKm), camera(other.camera),
+      startTimeS(other.startTimeS), timeStepS(other.timeStepS), exposure(other.exposure),
+      components_(other.components_)
 {
-    return std::find(components.begin(), components.end(), c) != components.end();
+    for (const auto& [key, value] : other.settings_)
+        settings_[key] = value->clone();
+}
+
+Scene& Scene::operator=(const Scene& other)
+{
+    if (this != &other) {
+        Scene copy(other);
+        *this = std::move(copy);
+    }
+    return *this;
+}
+
+bool Scene::has(const std::string& componentName) const
+{
+    return settings_.count(componentName) != 0;
+}
+
+void Scene::add(const Component& c)
+{
+    if (!has(c.name()))
+        settings_[c.name()] = c.defaultSettings();
+    components_.push_back(&c);
+}
+
+void Scene::remove(const std::string& componentName)
+{
+    settings_.erase(componentName);
+    components_.erase(std::remove_if(components_.begin(), components_.end(),
+                                     [&](const Component* c) { return c->name() == componentName; }),
+                      components_.end());
+}
+
+// Reads scene files; a friend of Scene, which it fills.
+class SceneLoader {
+public:
+    static void listComponents(Scene& s, const TableReader& meta, const Registry& registry);
+    static Scene load(const std::string& path, const Registry& registry, int depth);
+};
+
+// Lists the components named in [scene] components, in registry order, keeping the settings of
+// those a base scene already had.
+void SceneLoader::listComponents(Scene& s, const TableReader& meta, const Registry& registry)
+{
+    const std::vector<std::string> names = meta.strings("components");
+    std::string known;
+    for (const Component* c : registry)
+        known += (known.empty() ? "" : ", ") + c->name();
+    for (const std::string& name : names) {
+        if (std::none_of(registry.begin(), registry.end(), [&](const Component* c) { return c->name() == name; }))
+            meta.fail("components", "unknown component '" + name + "' (known: " + known + ")");
+        if (std::count(names.begin(), names.end(), name) > 1)
+            meta.fail("components", "component '" + name + "' listed twice");
+    }
+    Scene listed;
+    listed.planetRadiusKm = s.planetRadiusKm;
+    for (const Component* c : registry)
+        if (std::count(names.begin(), names.end(), c->name())) {
+            listed.add(*c);
+            if (s.has(c->name()))
+                listed.settings_[c->name()] = s.settings_.at(c->name())->clone();
+        }
+    s.components_ = listed.components_;
+    s.settings_ = std::move(listed.settings_);
+    for (const Component* c : s.components_)
+        for (const std::string& needed : c->needs())
+            if (!s.has(needed))
+                meta.fail("components", "'" + c->name() + "' needs '" + needed + "'");
 }
 
 // depth counts the base scenes above this one (a guard against cycles).
-static Scene loadSceneAtDepth(const std::string& path, int depth)
+Scene SceneLoader::load(const std::string& path, const Registry& registry, int depth)
 {
     const TomlValue root = parseTomlFile(path);
     const TableReader top(root, path, "");
@@ -173,125 +159,30 @@ static Scene loadSceneAtDepth(const std::string& path, int depth)
         if (depth >= 8)
             meta.fail("base", "scenes derive from each other more than 8 deep (a cycle?)");
         const std::string base = (std::filesystem::path(path).parent_path() / meta.string("base")).string();
-        s = loadSceneAtDepth(base, depth + 1);
+        s = load(base, registry, depth + 1);
     }
     s.sourceFile = path;
     s.name = derived ? meta.string("name", s.name) : meta.string("name");
     if (!derived || meta.has("components"))
-        s.components.clear();
-    for (const std::string& name : derived && !meta.has("components") ? std::vector<std::string>{}
-                                                                        : meta.strings("components")) {
-        auto known = std::find_if(std::begin(kAllComponents), std::end(kAllComponents),
-                                  [&](Component c) { return name == componentName(c); });
-        if (known == std::end(kAllComponents))
-            meta.fail("components", "unknown component '" + name +
-                                        "' (known: planet, planet_texture, atmosphere, sky, aurora, fluid_detail, stars)");
-        if (s.has(*known))
-            meta.fail("components", "component '" + name + "' listed twice");
-        s.components.push_back(*known);
-    }
+        listComponents(s, meta, registry);
     s.startTimeS = meta.number("start_time_s", -1e15, 1e15, s.startTimeS);
     s.timeStepS = meta.number("time_step_s", 0.0, 1e9, s.timeStepS);
     s.exposure = meta.number("exposure", 1e-12, 1e12, s.exposure);
     meta.rejectUnknownKeys();
 
-    // A component's table is read only when the component is listed; a table for a component
-    // the scene does not list is reported as unknown, so nothing is silently ignored.
-    if (s.has(Component::PlanetTexture) && !s.has(Component::Planet))
-        meta.fail("components", "'planet_texture' needs 'planet'");
-    if (s.has(Component::FluidDetail) && !s.has(Component::Aurora))
-        meta.fail("components", "'fluid_detail' needs 'aurora'");
-    if (s.has(Component::Planet)) {
-        const TableReader t = top.optionalTable("planet");
-        s.planet.radiusKm = t.number("radius_km", 1.0, 1e6, s.planet.radiusKm);
-        if (s.has(Component::PlanetTexture)) {
-            s.planet.nightImage = t.string("night_image", s.planet.nightImage);
-            s.planet.nightLightsRadiance = t.number("night_lights_cd_m2", 0.0, 1e6, s.planet.nightLightsRadiance);
-        }
-        t.rejectUnknownKeys();
-    }
-    if (s.has(Component::Atmosphere)) {
-        if (!s.has(Component::Planet))
-            meta.fail("components", "'atmosphere' needs 'planet'");
-        const TableReader t = top.optionalTable("atmosphere");
-        s.atmosphere.topKm = t.number("top_km", 1.0, 1000.0, s.atmosphere.topKm);
-        s.atmosphere.scaleHeightKm = t.number("scale_height_km", 0.1, 1000.0, s.atmosphere.scaleHeightKm);
-        t.rejectUnknownKeys();
-    }
-    if (s.has(Component::Sky)) {
-        if (!s.has(Component::Atmosphere))
-            meta.fail("components", "'sky' needs 'atmosphere'");
-        const TableReader t = top.optionalTable("sky");
-        s.sky.topKm = t.number("top_km", 1.0, 1000.0, s.sky.topKm);
-        s.sky.viewSteps = static_cast<int>(t.number("view_steps", 1, 1024, s.sky.viewSteps));
-        s.sky.nestedMarch = t.choice("light_method", {"closed-form", "nested-march"}, s.sky.nestedMarch) == 1;
-        s.sky.lightSteps = static_cast<int>(t.number("light_steps", 1, 1024, s.sky.lightSteps));
-        if (t.has("light")) {
-            s.sky.lights.clear();
-            for (const TableReader& l : t.arrayOfTables("light"))
-                s.sky.lights.push_back(readSkyLight(l));
-        }
-        if (s.sky.lights.size() > 8)
-            t.fail("light", "at most 8 lights");
-        t.rejectUnknownKeys();
-    }
-    if (s.has(Component::Aurora)) {
-        if (!s.has(Component::Planet))
-            meta.fail("components", "'aurora' needs 'planet'");
-        const TableReader t = top.optionalTable("aurora");
-        s.aurora.spectrum = t.choice("spectrum", {"maxwellian", "monoenergetic"},
-                                     s.aurora.spectrum == ElectronSpectrum::Maxwellian ? 0 : 1) == 0
-                                ? ElectronSpectrum::Maxwellian
-                                : ElectronSpectrum::Monoenergetic;
-        s.aurora.bottomKm = t.number("bottom_km", 1.0, 5000.0, s.aurora.bottomKm);
-        s.aurora.topKm = t.number("top_km", 1.0, 5000.0, s.aurora.topKm);
-        if (s.aurora.topKm <= s.aurora.bottomKm)
-            t.fail("top_km", "must be above aurora.bottom_km");
-        if (s.has(Component::Atmosphere) && s.aurora.bottomKm < s.atmosphere.topKm)
-            t.fail("bottom_km", "must not be below atmosphere.top_km (the layers are composited in order)");
-        s.aurora.stepKm = t.number("step_km", 0.05, 100.0, s.aurora.stepKm);
-        s.aurora.polylineSpacingKm = t.number("polyline_spacing_km", 0.1, 100.0, s.aurora.polylineSpacingKm);
-        s.aurora.footprintMapSize = static_cast<int>(t.number("footprint_map_size", 16, 8192, s.aurora.footprintMapSize));
-        if (s.aurora.footprintMapSize & (s.aurora.footprintMapSize - 1))
-            t.fail("footprint_map_size", "must be a power of two");
-        s.aurora.skipEmptySpace = t.choice("skip_empty_space", {"no", "yes"}, s.aurora.skipEmptySpace) == 1;
-        s.aurora.tableAltitudeStepKm = t.number("table_altitude_step_km", 0.05, 10.0, s.aurora.tableAltitudeStepKm);
-        s.aurora.tableEnergyCount = static_cast<int>(t.number("table_energy_count", 2, 4096, s.aurora.tableEnergyCount));
-        if (t.has("curtain")) {
-            s.aurora.curtains.clear(); // a derived scene's curtains replace its base's
-            for (const TableReader& c : t.arrayOfTables("curtain"))
-                s.aurora.curtains.push_back(readCurtain(c));
-        }
-        if (s.aurora.curtains.size() > 16)
-            t.fail("curtain", "at most 16 curtains are supported");
-        if (s.has(Component::FluidDetail)) {
-            const TableReader d = t.optionalTable("detail");
-            FluidDetail& f = s.aurora.detail;
-            f.cellsAlong = static_cast<int>(d.number("cells_along", 16, 4096, f.cellsAlong));
-            f.cellsAcross = static_cast<int>(d.number("cells_across", 4, 4096, f.cellsAcross));
-            for (int n : {f.cellsAlong, f.cellsAcross})
-                if (n & (n - 1))
-                    d.fail(n == f.cellsAlong ? "cells_along" : "cells_across", "must be a power of two");
-            f.stripLengthKm = d.number("strip_length_km", 1.0, 1e5, f.stripLengthKm);
-            f.stripWidthKm = d.number("strip_width_km", 1.0, 1e4, f.stripWidthKm);
-            f.frames = static_cast<int>(d.number("frames", 2, 256, f.frames));
-            f.seed = static_cast<unsigned>(d.number("seed", 0, 4294967295.0, f.seed));
-            d.rejectUnknownKeys();
-        }
-        t.rejectUnknownKeys();
-    }
-    if (s.has(Component::Stars)) {
-        const TableReader t = top.optionalTable("stars");
-        s.stars.density = t.number("density", 0.0, 1.0, s.stars.density);
-        s.stars.brightness = t.number("brightness", 0.0, 1e6, s.stars.brightness);
+    // Each listed component reads its own table, in registry order; a table for a component the
+    // scene does not list is reported as unknown, so nothing is silently ignored.
+    for (const Component* c : s.components_) {
+        const TableReader t = top.optionalTable(c->name());
+        c->read(t, s, *s.settings_.at(c->name()));
         t.rejectUnknownKeys();
     }
     if (!derived || top.has("camera"))
-        s.camera = readCamera(top.table("camera"), s.planet.radiusKm);
+        s.camera = readCamera(top.table("camera"), s.planetRadiusKm);
     top.rejectUnknownKeys();
     return s;
 }
 
-Scene loadScene(const std::string& path) { return loadSceneAtDepth(path, 0); }
+Scene loadScene(const std::string& path, const Registry& registry) { return SceneLoader::load(path, registry, 0); }
 
 } // namespace aurorawall::scene

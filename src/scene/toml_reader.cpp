@@ -143,6 +143,20 @@ std::vector<std::string> TableReader::strings(const std::string& key) const
     return out;
 }
 
+glm::dvec3 TableReader::vector3(const std::string& key, double lo, double hi, glm::dvec3 fallback) const
+{
+    if (!has(key))
+        return fallback;
+    const glm::dvec3 v = vector3(key);
+    for (int i = 0; i < 3; ++i)
+        if (v[i] < lo || v[i] > hi) {
+            std::ostringstream s;
+            s << "every element must be in [" << lo << ", " << hi << "] (got " << v[i] << ")";
+            fail(key, s.str());
+        }
+    return v;
+}
+
 glm::dvec3 TableReader::vector3(const std::string& key) const
 {
     const TomlValue& v = at(key);

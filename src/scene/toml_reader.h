@@ -31,6 +31,8 @@ public:
     // One of the given words; returns its index (fallback when the key is absent).
     int choice(const std::string& key, const std::vector<std::string>& words, int fallback) const;
     glm::dvec3 vector3(const std::string& key) const;
+    // Each component finite and within [lo, hi]; fallback when the key is absent.
+    glm::dvec3 vector3(const std::string& key, double lo, double hi, glm::dvec3 fallback) const;
     // An array of [a, b] pairs, e.g. latitude/longitude control points.
     std::vector<glm::dvec2> pairs(const std::string& key, glm::dvec2 lo, glm::dvec2 hi) const;
     TableReader table(const std::string& key) const;

@@ -9,7 +9,7 @@
 
 namespace aurorawall::aurora::f64 {
 AURORAWALL_GLSL_PRECISION(double)
-#include "aurora/deposition_coords.glsl"
+#include "components/aurora/deposition_coords.glsl"
 } // namespace aurorawall::aurora::f64
 
 namespace aurorawall::aurora {

@@ -13,11 +13,11 @@
 // Named (not anonymous) namespaces, so the functions this file does not call raise no warnings.
 namespace aurorawall::aurora::footprint_tests_f64 {
 AURORAWALL_GLSL_PRECISION(double)
-#include "aurora/footprint_map.glsl"
+#include "components/aurora/footprint_map.glsl"
 } // namespace aurorawall::aurora::footprint_tests_f64
 namespace aurorawall::aurora::footprint_tests_f32 {
 AURORAWALL_GLSL_PRECISION(float)
-#include "aurora/footprint_map.glsl"
+#include "components/aurora/footprint_map.glsl"
 } // namespace aurorawall::aurora::footprint_tests_f32
 
 namespace aurorawall::aurora {

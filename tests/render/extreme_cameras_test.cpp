@@ -6,11 +6,16 @@
 #include "gl/full_screen_triangle.h"
 #include "io/image.h"
 #include "render/tile_renderer.h"
+#include "components/aurora/aurora.h"
+#include "components/fluid_detail/fluid_detail.h"
+#include "components/registry.h"
 #include "scene/scene.h"
 #include "wall/tile_rays.h"
 #include "wall/wall.h"
 
 #include <gtest/gtest.h>
+
+#include <algorithm>
 
 #include <cmath>
 #include <memory>
@@ -26,7 +31,7 @@ protected:
     static void SetUpTestSuite()
     {
         context_ = gl::createContext(gl::Backend::Egl);
-        scene_ = std::make_unique<scene::Scene>(scene::loadScene(kSource + "/config/scenes/substorm.toml"));
+        scene_ = std::make_unique<scene::Scene>(components::loadScene(kSource + "/config/scenes/substorm.toml"));
         renderer_ = std::make_unique<render::TileRenderer>(*scene_, kSource + "/shaders");
     }
     static void TearDownTestSuite()
@@ -155,14 +160,14 @@ TEST_F(ExtremeCameras, ZeroAndMaximumCurtains)
     // same view without the aurora component; the brightest ones are far above the usual ~1e-2.
     const glm::dvec3 up = site(), position = up * (6371.0 + 110.0);
     scene::Scene withoutAurora = *scene_;
-    withoutAurora.components = {scene::Component::Planet, scene::Component::PlanetTexture,
-                                scene::Component::Atmosphere, scene::Component::Stars};
+    withoutAurora.remove("fluid_detail");
+    withoutAurora.remove("aurora");
     render::TileRenderer plain(withoutAurora, kSource + "/shaders");
     const io::Image reference = renderWith(plain, position, north(up), up, 180.0);
     for (double flux : {0.0, 1e4}) {
         scene::Scene s = *scene_;
-        for (scene::Curtain& c : s.aurora.curtains)
-            for (scene::CurtainKey& k : c.keys) {
+        for (components::aurora::Curtain& c : s.settings<components::aurora::Settings>().curtains)
+            for (components::aurora::CurtainKey& k : c.keys) {
                 k.energyFluxErgPerCm2S = flux;
                 k.energyKeV = flux > 0 ? 50.0 : k.energyKeV;
             }
@@ -180,23 +185,24 @@ TEST_F(ExtremeCameras, PrecomputesOnlyForListedComponents)
 {
     // The precomputation log names one table per listed component that needs one, and nothing
     // for components the scene leaves out (the shader source side is tests/render/fragment_shader_test).
-    auto logOf = [](std::vector<scene::Component> components) {
+    auto logOf = [](const std::vector<std::string>& components) {
         scene::Scene s = *scene_;
-        s.components = std::move(components);
+        for (const scene::Component* c : scene_->components())
+            if (std::find(components.begin(), components.end(), c->name()) == components.end())
+                s.remove(c->name());
         render::TileRenderer renderer(s, kSource + "/shaders");
         std::string log;
         for (const std::string& line : renderer.precomputationLog())
             log += line + "\n";
         return log;
     };
-    using C = scene::Component;
-    const std::string starsOnly = logOf({C::Planet, C::Stars});
+    const std::string starsOnly = logOf({"planet", "stars"});
     EXPECT_EQ(starsOnly, "");
-    const std::string aurora = logOf({C::Planet, C::Atmosphere, C::Aurora});
+    const std::string aurora = logOf({"planet", "atmosphere", "aurora"});
     EXPECT_NE(aurora.find("aurora deposition table"), std::string::npos) << aurora;
     EXPECT_EQ(aurora.find("fluid_detail"), std::string::npos) << aurora;
     EXPECT_EQ(aurora.find("planet_texture"), std::string::npos) << aurora;
-    const std::string all = logOf({C::Planet, C::PlanetTexture, C::Atmosphere, C::Aurora, C::FluidDetail});
+    const std::string all = logOf({"planet", "planet_texture", "atmosphere", "aurora", "fluid_detail"});
     EXPECT_NE(all.find("fluid_detail: 512 x 128 cells"), std::string::npos) << all;
     EXPECT_NE(all.find("planet_texture"), std::string::npos) << all;
 }

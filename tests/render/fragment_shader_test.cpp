@@ -1,4 +1,7 @@
 #include "render/fragment_shader.h"
+#include "components/planet/planet.h"
+#include "components/registry.h"
+#include "components/stars/stars.h"
 #include "scene/scene.h"
 
 #include <gtest/gtest.h>
@@ -19,7 +22,8 @@ bool contains(const std::vector<std::string>& v, const std::string& x)
 TEST(FragmentShader, CompilesOnlyTheListedComponents)
 {
     scene::Scene s;
-    s.components = {scene::Component::Planet, scene::Component::Stars};
+    s.add(components::planet::component());
+    s.add(components::stars::component());
     const gl::ShaderSource source = render::fragmentShaderSource(s, kShaders);
     EXPECT_TRUE(contains(source.defines, "HAS_PLANET"));
     EXPECT_TRUE(contains(source.defines, "HAS_STARS"));
@@ -33,21 +37,39 @@ TEST(FragmentShader, CompilesOnlyTheListedComponents)
 
 TEST(FragmentShader, FullSceneHasEveryModule)
 {
-    const scene::Scene s = scene::loadScene(std::string(AURORAWALL_SOURCE_DIR) + "/config/scenes/substorm.toml");
+    const scene::Scene s = components::loadScene(std::string(AURORAWALL_SOURCE_DIR) + "/config/scenes/substorm.toml");
     const std::vector<std::string> names = render::fragmentModuleNames(s);
-    EXPECT_TRUE(contains(names, "scene/aurora_curtains.glsl"));
-    EXPECT_TRUE(contains(names, "scene/atmosphere.glsl"));
+    EXPECT_TRUE(contains(names, "components/aurora/aurora_curtains.glsl"));
+    EXPECT_TRUE(contains(names, "components/atmosphere/atmosphere.glsl"));
     EXPECT_EQ(names.back(), "render/main.frag");
 }
 
 TEST(FragmentShader, MissingShaderFolderNamesTheFile)
 {
     scene::Scene s;
-    s.components = {scene::Component::Planet};
+    s.add(components::planet::component());
     try {
         render::fragmentShaderSource(s, "/nonexistent/shaders");
         FAIL() << "no error";
     } catch (const std::exception& e) {
         EXPECT_EQ(std::string(e.what()).rfind("/nonexistent/shaders/render/ray_sphere.glsl: ", 0), 0u) << e.what();
     }
+}
+
+TEST(FragmentShader, ShadeRayCallsTheListedComponentsInCompositingOrder)
+{
+    // Registry order planet, atmosphere, aurora, stars; compositing order atmosphere (10),
+    // aurora (40), ground (60), stars (70), after the planet's geometry step.
+    const scene::Scene s = components::loadScene(std::string(AURORAWALL_SOURCE_DIR) + "/config/scenes/quiet-arc.toml");
+    const std::string code = render::compositingSource(s);
+    const size_t ground = code.find("boundByGround("), atmosphere = code.find("shadeAtmosphere("),
+                 aurora = code.find("shadeAurora("), planet = code.find("shadeGround("), stars = code.find("shadeStars(");
+    ASSERT_NE(ground, std::string::npos) << code;
+    ASSERT_NE(stars, std::string::npos) << code;
+    EXPECT_LT(ground, atmosphere);
+    EXPECT_LT(atmosphere, aurora);
+    EXPECT_LT(aurora, planet);
+    EXPECT_LT(planet, stars);
+    EXPECT_EQ(code.find("shadeSky("), std::string::npos) << code;
+    EXPECT_EQ(code.find("shadeNightLights("), std::string::npos) << code;
 }

@@ -1,4 +1,5 @@
-// The compositing order of shaders/render/layers.glsl for hand-built rays: every case of the
+// The ray steps of shaders/render/layers.glsl, composed as the planet, atmosphere and aurora
+// components compose them, for hand-built rays: every case of the
 // paper's figure 8 (viewer outside the atmosphere), plus viewers inside the aurora layer, inside
 // the lower atmosphere and below the ground.
 #include "common/glsl.h"
@@ -12,7 +13,31 @@ namespace {
 namespace f64 {
 AURORAWALL_GLSL_PRECISION(double)
 #include "render/ray_sphere.glsl"
+#include "render/ray.glsl"
 #include "render/layers.glsl"
+
+// What the planet, atmosphere and aurora components find along a ray, in their order.
+struct RayLayers {
+    bool insideGround;
+    real groundT;
+    vec2 atmosphere;
+    vec2 auroraNear;
+    vec2 auroraFar;
+};
+
+RayLayers rayLayers(vec3 o, vec3 d, real R, real altitude, real atmosphereTop, real auroraBottom, real auroraTop)
+{
+    Ray ray = boundByGround(beginRay(o, d, real(0.0)), R, altitude);
+    RayLayers l;
+    l.insideGround = ray.blocked;
+    l.groundT = ray.groundT;
+    l.atmosphere = lowerShellSegment(ray, R, atmosphereTop);
+    ShellSegments shell = rayShell(o, d, R + auroraBottom, altitude - auroraBottom, R + auroraTop,
+                                   altitude - auroraTop, ray.end);
+    l.auroraNear = shell.first;
+    l.auroraFar = shell.second;
+    return l;
+}
 } // namespace f64
 } // namespace
 

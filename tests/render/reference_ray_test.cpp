@@ -4,7 +4,8 @@
 #include "app/accuracy_scene.h"
 #include "fluid/curtain_detail.h"
 #include "gl/context.h"
-#include "render/curtain_detail.h"
+#include "components/fluid_detail/curtain_detail.h"
+#include "components/registry.h"
 #include "render/reference_ray.h"
 #include "scene/scene.h"
 
@@ -23,7 +24,7 @@ const std::string kSource = AURORAWALL_SOURCE_DIR;
 // tables and footprint map, 1 km polylines.
 scene::Scene finestSubstorm()
 {
-    scene::Scene s = app::withoutUnmodelled(scene::loadScene(kSource + "/config/scenes/substorm.toml"));
+    scene::Scene s = app::withoutUnmodelled(components::loadScene(kSource + "/config/scenes/substorm.toml"));
     app::applyFinestSettings(s);
     return s;
 }
@@ -48,7 +49,7 @@ protected:
         context_ = gl::createContext(gl::Backend::Egl);
         scene_ = new scene::Scene(finestSubstorm());
         view_ = new app::SceneView(app::sceneView(*scene_, kSource + "/config/walls/single.ini", {64, 36}));
-        frames_ = new fluid::FluxFrames(fluid::simulateCurtainDetail(render::curtainDetailSpec(scene_->aurora.detail)));
+        frames_ = new fluid::FluxFrames(fluid::simulateCurtainDetail(components::fluid_detail::curtainDetailSpec(scene_->settings<components::fluid_detail::Settings>())));
     }
     static void TearDownTestSuite()
     {
@@ -122,7 +123,7 @@ TEST_F(ReferenceRay, ReferenceConverges)
 
 TEST_F(ReferenceRay, RejectsWhatItDoesNotModel)
 {
-    const scene::Scene full = scene::loadScene(kSource + "/config/scenes/substorm.toml");
+    const scene::Scene full = components::loadScene(kSource + "/config/scenes/substorm.toml");
     EXPECT_THROW(render::ReferenceModel(full, 0.0, frames_), std::invalid_argument);
     EXPECT_THROW(render::ReferenceModel(*scene_, 0.0, nullptr), std::invalid_argument);
 }

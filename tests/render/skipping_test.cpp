@@ -4,6 +4,9 @@
 // jumps over whole steps of the naive march's grid, so the samples it takes are the naive march's.
 #include "app/accuracy_scene.h"
 #include "gl/context.h"
+#include "components/aurora/aurora.h"
+#include "components/fluid_detail/fluid_detail.h"
+#include "components/registry.h"
 #include "scene/scene.h"
 
 #include <gtest/gtest.h>
@@ -25,12 +28,12 @@ struct Difference {
 // on and off: per-pixel relative difference over the pixels above one 8-bit step of the preview.
 Difference skipAgainstNaive(const std::string& preset, double stepKm)
 {
-    scene::Scene s = scene::loadScene(kSource + "/config/scenes/" + preset);
-    s.aurora.stepKm = stepKm;
+    scene::Scene s = components::loadScene(kSource + "/config/scenes/" + preset);
+    s.settings<components::aurora::Settings>().stepKm = stepKm;
     const app::SceneView view = app::sceneView(s, kSource + "/config/walls/single.ini", {64, 36});
-    s.aurora.skipEmptySpace = true;
+    s.settings<components::aurora::Settings>().skipEmptySpace = true;
     const app::TimedRender skip = app::renderView(s, view, kSource + "/shaders", 1);
-    s.aurora.skipEmptySpace = false;
+    s.settings<components::aurora::Settings>().skipEmptySpace = false;
     const app::TimedRender naive = app::renderView(s, view, kSource + "/shaders", 1);
     std::vector<glm::dvec3> a, b;
     for (int y = 0; y < 36; ++y)

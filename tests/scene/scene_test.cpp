@@ -1,4 +1,7 @@
 #include "common/input_error.h"
+#include "components/aurora/aurora.h"
+#include "components/fluid_detail/fluid_detail.h"
+#include "components/registry.h"
 #include "scene/scene.h"
 
 #include <gtest/gtest.h>
@@ -17,7 +20,7 @@ const std::string kScenes = SCENE_CONFIG_DIR;
 std::string loadError(const std::string& file)
 {
     try {
-        scene::loadScene(file);
+        components::loadScene(file);
     } catch (const InputError& e) {
         return e.what();
     }
@@ -28,18 +31,18 @@ std::string loadError(const std::string& file)
 
 TEST(Scene, SubstormListsItsComponentsAndCurtains)
 {
-    const scene::Scene s = scene::loadScene(kScenes + "/substorm.toml");
-    EXPECT_TRUE(s.has(scene::Component::Planet));
-    EXPECT_TRUE(s.has(scene::Component::Aurora));
-    EXPECT_GE(s.aurora.curtains.size(), 3u);
-    EXPECT_DOUBLE_EQ(s.planet.radiusKm, 6371.0);
+    const scene::Scene s = components::loadScene(kScenes + "/substorm.toml");
+    EXPECT_TRUE(s.has("planet"));
+    EXPECT_TRUE(s.has("aurora"));
+    EXPECT_GE(s.settings<components::aurora::Settings>().curtains.size(), 3u);
+    EXPECT_DOUBLE_EQ(s.planetRadiusKm, 6371.0);
 }
 
 TEST(Scene, BenchmarkCameraIsThePapersView)
 {
     // reference.md: |C| = 1.011017 radii, about 70 km above southern Finland (59.2 N, 25.6 E),
     // heading 299 deg, 10.4 deg above the horizontal.
-    const scene::Scene s = scene::loadScene(kScenes + "/substorm.toml");
+    const scene::Scene s = components::loadScene(kScenes + "/substorm.toml");
     const glm::dvec3 c = s.camera.positionKm;
     EXPECT_NEAR(glm::length(c) / 6371.0, 1.011017, 1e-6);
     EXPECT_NEAR(glm::length(c) - 6371.0, 70.0, 0.2);
@@ -61,10 +64,10 @@ TEST(Scene, GeographicCameraMatchesExplicitVectors)
 
 TEST(Scene, ComponentsNotListedAreLeftOut)
 {
-    const scene::Scene s = scene::loadScene(kData + "/minimal.toml");
-    EXPECT_TRUE(s.has(scene::Component::Stars));
-    EXPECT_FALSE(s.has(scene::Component::Aurora));
-    EXPECT_FALSE(s.has(scene::Component::Atmosphere));
+    const scene::Scene s = components::loadScene(kData + "/minimal.toml");
+    EXPECT_TRUE(s.has("stars"));
+    EXPECT_FALSE(s.has("aurora"));
+    EXPECT_FALSE(s.has("atmosphere"));
     EXPECT_NEAR(glm::length(s.camera.positionKm) - 6371.0, 0.001, 1e-9);
 }
 

@@ -1,0 +1,20 @@
+// One pixel's ray as the components composite it, front to back (Lawlor & Genetti 2011,
+// section 3.1, figure 8). Shared by the shader and the C++ reference (src/common/glsl.h): the
+// generated shadeRay (src/render/fragment_shader.cpp) passes it through each listed component's
+// geometry step, then through each shading step in compositing order.
+//
+// The ray x(t) = origin + t direction, t >= 0 in km, |direction| = 1, starts at the camera,
+// `altitude` km above the ground (from double precision). The layers are concentric shells that
+// never overlap (ground, lower atmosphere, airglow and aurora above it), so along any ray each
+// emitting part lies wholly in front of or wholly behind the lower atmosphere.
+struct Ray {
+    vec3 origin;
+    vec3 direction;
+    real altitude;      // camera above the ground, km (0 without a planet)
+    bool blocked;       // nothing is seen (the camera is below the ground)
+    real groundT;       // where the ray meets the ground; negative if it never does
+    real end;           // where the ray stops: the ground, else 1e30
+    vec2 atmosphere;    // the part inside the lower atmosphere (empty when x >= y)
+    vec3 transmittance; // of the lower atmosphere, for whatever lies behind it
+    vec3 radiance;      // gathered so far (cd/m^2, linear sRGB)
+};

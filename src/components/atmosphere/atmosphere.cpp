@@ -1,0 +1,88 @@
+#include "components/atmosphere/atmosphere.h"
+
+#include "atmosphere/airmass_exact.h"
+#include "gl/shader_program.h"
+#include "scene/ray_steps.h"
+#include "scene/scene.h"
+
+namespace aurorawall::components::atmosphere {
+
+namespace {
+
+class Renderer : public scene::ComponentRenderer {
+public:
+    explicit Renderer(const Settings& s) : s_(s) {}
+    void setFrame(gl::Program& program, const cluster::FrameState&) override
+    {
+        program.set("uAtmosphereTopKm", static_cast<float>(s_.topKm));
+        program.set("uScaleHeightKm", static_cast<float>(s_.scaleHeightKm));
+        program.set("uExtinctionPerKm", glm::vec3(s_.extinctionPerKm));
+        program.set("uSkyGlow", glm::vec3(s_.skyGlow));
+    }
+
+private:
+    const Settings& s_;
+};
+
+// shadeAtmosphere with the exact airmass (adaptive Gauss-Kronrod) instead of the closed form.
+class Reference : public scene::ReferenceShader {
+public:
+    Reference(const Settings& s, double radiusKm) : s_(s), radiusKm_(radiusKm) {}
+    f64::Ray shade(f64::Ray ray) const override
+    {
+        ray.atmosphere = f64::lowerShellSegment(ray, radiusKm_, s_.topKm);
+        if (ray.atmosphere.x < ray.atmosphere.y) {
+            const double airmass = exactAirmass(ray.origin, ray.direction, ray.atmosphere.x, ray.atmosphere.y,
+                                                s_.scaleHeightKm, radiusKm_);
+            ray.transmittance = glm::exp(-s_.extinctionPerKm * airmass);
+            ray.radiance += s_.skyGlow * (1.0 - ray.transmittance);
+        }
+        return ray;
+    }
+
+private:
+    const Settings& s_;
+    double radiusKm_;
+};
+
+class Atmosphere : public scene::Component {
+public:
+    std::string name() const override { return Settings::kComponent; }
+    std::vector<std::string> needs() const override { return {"planet"}; }
+    std::unique_ptr<scene::ComponentSettings> defaultSettings() const override { return std::make_unique<Settings>(); }
+    void read(const scene::TableReader& t, scene::Scene&, scene::ComponentSettings& settings) const override
+    {
+        auto& s = dynamic_cast<Settings&>(settings);
+        s.topKm = t.number("top_km", 1.0, 1000.0, s.topKm);
+        s.scaleHeightKm = t.number("scale_height_km", 0.1, 1000.0, s.scaleHeightKm);
+        s.extinctionPerKm = t.vector3("extinction_per_km", 0.0, 1e3, s.extinctionPerKm);
+        s.skyGlow = t.vector3("sky_glow_cd_m2", 0.0, 1e6, s.skyGlow);
+    }
+    std::vector<std::string> shaderModules() const override
+    {
+        return {"atmosphere/airmass_common.glsl", "atmosphere/airmass_chapman.glsl",
+                "components/atmosphere/atmosphere.glsl"};
+    }
+    std::string shaderShadeCall() const override { return "shadeAtmosphere(ray)"; }
+    int compositingOrder() const override { return 10; }
+    std::unique_ptr<scene::ComponentRenderer> makeRenderer(const scene::Scene& scene,
+                                                           const scene::FindRenderer&) const override
+    {
+        return std::make_unique<Renderer>(scene.settings<Settings>());
+    }
+    std::unique_ptr<scene::ReferenceShader> makeReference(const scene::Scene& scene,
+                                                          const scene::ReferenceContext&) const override
+    {
+        return std::make_unique<Reference>(scene.settings<Settings>(), scene.planetRadiusKm);
+    }
+};
+
+} // namespace
+
+const scene::Component& component()
+{
+    static const Atmosphere instance;
+    return instance;
+}
+
+} // namespace aurorawall::components::atmosphere

@@ -1,0 +1,157 @@
+#include "components/aurora/aurora.h"
+
+#include "components/aurora/aurora_reference.h"
+#include "components/aurora/aurora_tables.h"
+#include "components/aurora/curtain_field.h"
+#include "components/atmosphere/atmosphere.h"
+#include "components/fluid_detail/curtain_detail.h"
+#include "gl/shader_program.h"
+#include "scene/scene.h"
+
+namespace aurorawall::components::aurora {
+
+namespace {
+
+class Renderer : public scene::ComponentRenderer {
+public:
+    Renderer(const Settings& s, double planetRadiusKm, const fluid_detail::CurtainDetail* detail)
+        : s_(s), tables_(s), model_(s, planetRadiusKm, detail ? &detail->shape() : nullptr), field_(model_)
+    {
+    }
+    std::string precomputationLog() const override { return tables_.summary(); }
+    void setFrame(gl::Program& program, const cluster::FrameState& frame) override
+    {
+        program.set("uAuroraBottomKm", static_cast<float>(s_.bottomKm));
+        program.set("uAuroraTopKm", static_cast<float>(s_.topKm));
+        program.set("uAuroraStepKm", static_cast<float>(s_.stepKm));
+        program.set("uSkipEmptySpace", s_.skipEmptySpace ? 1 : 0);
+        field_.update(frame.timeS);
+    }
+    void bind(gl::Program& program) const override
+    {
+        tables_.bind(program);
+        field_.bind(program);
+    }
+    std::string frameLog() const override { return field_.summary(); }
+
+private:
+    const Settings& s_;
+    AuroraTables tables_;
+    CurtainModel model_;
+    CurtainField field_;
+};
+
+// The fields a key may set; `c` holds the defaults (the curtain's own keys, or the previous key).
+CurtainKey readCurtainKey(const scene::TableReader& t, CurtainKey c)
+{
+    if (t.has("points_lat_lon_deg") || c.pointsLatLonDeg.empty())
+        c.pointsLatLonDeg = t.pairs("points_lat_lon_deg", {-90, -360}, {90, 360});
+    if (c.pointsLatLonDeg.size() < 2)
+        t.fail("points_lat_lon_deg", "needs at least 2 points");
+    c.energyFluxErgPerCm2S = t.number("energy_flux_erg_cm2_s", 0, 1e4, c.energyFluxErgPerCm2S);
+    c.energyKeV = t.number("energy_kev", 0.5, 50, c.energyKeV); // the deposition table's range
+    c.detailPhase = t.number("detail_phase", 0, 1, c.detailPhase);
+    return c;
+}
+
+// A curtain is either one state (its own keys) or a list of [[aurora.curtain.key]] tables, each
+// with time_s; a key leaves out what does not change from the key before it.
+Curtain readCurtain(const scene::TableReader& t)
+{
+    Curtain c;
+    c.thicknessKm = t.number("thickness_km", 0.01, 1000, c.thicknessKm);
+    c.driftKmPerS = t.number("drift_km_per_s", -1e4, 1e4, c.driftKmPerS);
+    c.pulsationPeriodS = t.number("pulsation_period_s", 0, 1e6, c.pulsationPeriodS);
+    c.pulsationDepth = t.number("pulsation_depth", 0, 1, c.pulsationDepth);
+    if (!t.has("key")) {
+        c.keys.push_back(readCurtainKey(t, CurtainKey{}));
+    } else {
+        CurtainKey previous;
+        for (const scene::TableReader& k : t.arrayOfTables("key")) {
+            CurtainKey key = readCurtainKey(k, previous);
+            key.timeS = k.number("time_s", -1e15, 1e15);
+            if (!c.keys.empty() && key.timeS <= c.keys.back().timeS)
+                k.fail("time_s", "keys must be in increasing time");
+            if (!c.keys.empty() && key.pointsLatLonDeg.size() != c.keys.front().pointsLatLonDeg.size())
+                k.fail("points_lat_lon_deg", "every key of a curtain needs the same number of points");
+            k.rejectUnknownKeys();
+            c.keys.push_back(key);
+            previous = key;
+        }
+        if (c.keys.empty())
+            t.fail("key", "needs at least one key");
+    }
+    t.rejectUnknownKeys();
+    return c;
+}
+
+class Aurora : public scene::Component {
+public:
+    std::string name() const override { return Settings::kComponent; }
+    std::vector<std::string> needs() const override { return {"planet"}; }
+    std::unique_ptr<scene::ComponentSettings> defaultSettings() const override { return std::make_unique<Settings>(); }
+    void read(const scene::TableReader& t, scene::Scene& scene, scene::ComponentSettings& settings) const override
+    {
+        auto& a = dynamic_cast<Settings&>(settings);
+        a.spectrum = t.choice("spectrum", {"maxwellian", "monoenergetic"},
+                              a.spectrum == physics::Spectrum::Maxwellian ? 0 : 1) == 0
+                         ? physics::Spectrum::Maxwellian
+                         : physics::Spectrum::Monoenergetic;
+        a.bottomKm = t.number("bottom_km", 1.0, 5000.0, a.bottomKm);
+        a.topKm = t.number("top_km", 1.0, 5000.0, a.topKm);
+        if (a.topKm <= a.bottomKm)
+            t.fail("top_km", "must be above aurora.bottom_km");
+        if (scene.has("atmosphere") && a.bottomKm < scene.settings<atmosphere::Settings>().topKm)
+            t.fail("bottom_km", "must not be below atmosphere.top_km (the layers are composited in order)");
+        a.stepKm = t.number("step_km", 0.05, 100.0, a.stepKm);
+        a.polylineSpacingKm = t.number("polyline_spacing_km", 0.1, 100.0, a.polylineSpacingKm);
+        a.footprintMapSize = static_cast<int>(t.number("footprint_map_size", 16, 8192, a.footprintMapSize));
+        if (a.footprintMapSize & (a.footprintMapSize - 1))
+            t.fail("footprint_map_size", "must be a power of two");
+        a.skipEmptySpace = t.choice("skip_empty_space", {"no", "yes"}, a.skipEmptySpace) == 1;
+        a.tableAltitudeStepKm = t.number("table_altitude_step_km", 0.05, 10.0, a.tableAltitudeStepKm);
+        a.tableEnergyCount = static_cast<int>(t.number("table_energy_count", 2, 4096, a.tableEnergyCount));
+        if (t.has("curtain")) {
+            a.curtains.clear(); // a derived scene's curtains replace its base's
+            for (const scene::TableReader& c : t.arrayOfTables("curtain"))
+                a.curtains.push_back(readCurtain(c));
+        }
+        if (a.curtains.size() > 16)
+            t.fail("curtain", "at most 16 curtains are supported");
+    }
+    std::vector<std::string> shaderModules() const override
+    {
+        return {"components/aurora/deposition_coords.glsl", "components/aurora/deposition.glsl",
+                "components/aurora/footprint_map.glsl", "components/aurora/curtain_profile.glsl",
+                "components/aurora/aurora_curtains.glsl"};
+    }
+    std::string shaderShadeCall() const override { return "shadeAurora(ray)"; }
+    int compositingOrder() const override { return 40; }
+    std::unique_ptr<scene::ComponentRenderer> makeRenderer(const scene::Scene& scene,
+                                                           const scene::FindRenderer& find) const override
+    {
+        const auto* detail = dynamic_cast<const fluid_detail::CurtainDetail*>(find("fluid_detail"));
+        return std::make_unique<Renderer>(scene.settings<Settings>(), scene.planetRadiusKm, detail);
+    }
+    std::unique_ptr<scene::ReferenceShader> makeReference(const scene::Scene& scene,
+                                                          const scene::ReferenceContext& context) const override
+    {
+        if (scene.has("fluid_detail") != (context.fluidFrames != nullptr))
+            throw std::invalid_argument("the reference needs the fluid frames exactly when the scene lists fluid_detail");
+        const fluid::CurtainDetailSpec spec =
+            context.fluidFrames ? fluid_detail::curtainDetailSpec(scene.settings<fluid_detail::Settings>())
+                                : fluid::CurtainDetailSpec{};
+        return std::make_unique<AuroraReference>(scene.settings<Settings>(), scene.planetRadiusKm, context.timeS,
+                                                 context.stepKm, context.fluidFrames, spec);
+    }
+};
+
+} // namespace
+
+const scene::Component& component()
+{
+    static const Aurora instance;
+    return instance;
+}
+
+} // namespace aurorawall::components::aurora

@@ -1,0 +1,52 @@
+#pragma once
+// The aurora component (Lawlor & Genetti 2011): keyframed curtains of precipitating electrons in
+// an emissive shell, their light from Lazarev deposition and the emission lines' yields.
+#include "aurora/lazarev.h"
+#include "scene/component.h"
+
+#include <glm/glm.hpp>
+
+#include <vector>
+
+
+namespace aurorawall::components::aurora {
+
+namespace physics = ::aurorawall::aurora; // src/aurora: deposition, emission lines, curtain geometry
+
+// One keyframe of a curtain: its footprint (a spline on the sphere through latitude/longitude
+// control points) and its electrons at one moment of the substorm.
+struct CurtainKey {
+    double timeS = 0.0;
+    std::vector<glm::dvec2> pointsLatLonDeg;
+    double energyFluxErgPerCm2S = 1.0; // peak precipitating energy flux on the centre line
+    double energyKeV = 5.0;            // (characteristic) electron energy: sets the curtain's height
+    double detailPhase = 0.0;          // fluid detail: 0 the smooth start ... 1 fully turbulent
+};
+
+// An auroral curtain, keyframed through the phases of a substorm; between keys everything is
+// interpolated smoothly (curtain_frames.h). Every key has the same number of points.
+struct Curtain {
+    std::vector<CurtainKey> keys;  // ordered by time
+    double thicknessKm = 1.0;      // across the curtain: twice the standard deviation of its flux
+    double driftKmPerS = 0.0;      // the detail pattern slides along the curtain
+    double pulsationPeriodS = 0.0; // pulsating aurora (recovery): brightness modulated; 0 = steady
+    double pulsationDepth = 0.0;   // 0..1: fraction of the brightness that pulsates
+};
+
+struct Settings : scene::SettingsOf<Settings> {
+    static constexpr const char* kComponent = "aurora";
+    physics::Spectrum spectrum = physics::Spectrum::Maxwellian; // of the precipitating electrons
+    double bottomKm = 85.0;
+    double topKm = 300.0;
+    double stepKm = 2.0;              // march step inside curtains
+    double polylineSpacingKm = 2.0;   // curtain splines are sampled this finely for the shader
+    int footprintMapSize = 512;       // texels per side of the jump-flooded footprint map
+    bool skipEmptySpace = true;       // long steps where the footprint map proves no curtain is near
+    double tableAltitudeStepKm = 0.5; // deposition table resolution (src/aurora/deposition_table.h)
+    int tableEnergyCount = 128;
+    std::vector<Curtain> curtains;
+};
+
+const scene::Component& component();
+
+} // namespace aurorawall::components::aurora

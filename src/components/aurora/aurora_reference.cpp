@@ -1,0 +1,159 @@
+#include "components/aurora/aurora_reference.h"
+
+#include "aurora/colour.h"
+#include "aurora/deposition_table.h"
+#include "aurora/emission.h"
+#include "scene/ray_steps.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace aurorawall::components::aurora {
+
+namespace {
+
+// Angle between unit vectors, accurate at all angles (Kahan): 2 atan(|a - b| / |a + b|).
+double angleBetween(glm::dvec3 a, glm::dvec3 b)
+{
+    return 2.0 * std::atan(glm::length(a - b) / glm::length(a + b));
+}
+
+} // namespace
+
+AuroraReference::AuroraReference(const Settings& aurora, double planetRadiusKm, double timeS, double stepKm,
+                                 const fluid::FluxFrames* frames, const fluid::CurtainDetailSpec& spec)
+    : aurora_(aurora), planetRadiusKm_(planetRadiusKm), stepKm_(stepKm), frames_(frames),
+      stripWidthKm_(spec.stripWidthKm)
+{
+    if (frames)
+        shape_ = fluid_detail::detailShape(spec, *frames);
+    model_.emplace(aurora, planetRadiusKm, shape_ ? &*shape_ : nullptr);
+    for (CurtainNow& now : model_->at(timeS)) {
+        Curtain c;
+        c.points = std::move(now.polyline.points);
+        c.arclengthKm = std::move(now.polyline.arclengthKm);
+        for (size_t j = 0; j + 1 < c.points.size(); ++j)
+            c.maxSegmentKm = std::max(c.maxSegmentKm, planetRadiusKm * angleBetween(c.points[j], c.points[j + 1]));
+        c.state = now.state;
+        c.lateralScale = now.lateralScale;
+        curtains_.push_back(std::move(c));
+    }
+    for (int line = 0; line < physics::kLineCount; ++line)
+        lineRgb_[line] = physics::lineLinearSrgbPerRayleigh(static_cast<physics::EmissionLine>(line));
+}
+
+// The nearest point of curtain `c` to footprint direction `unit` and the curtain coordinates
+// there, by exact projection on its segments (segmentProjection of aurora_curtains.glsl in
+// double, over every segment that can be nearest). A point of a segment of length L is within L/2
+// of one of its ends, so a segment whose nearer end is farther than (nearest vertex) + L_max/2
+// cannot be the nearest: only the others are projected.
+AuroraReference::Nearest AuroraReference::nearestOn(const Curtain& c, glm::dvec3 unit) const
+{
+    const double R = planetRadiusKm_;
+    Nearest best;
+    double maxDot = -1.0;
+    for (const glm::dvec3& p : c.points)
+        maxDot = std::max(maxDot, glm::dot(p, unit));
+    const double nearestVertex = std::acos(std::clamp(maxDot, -1.0, 1.0));
+    // 1 km of slack for the arclength-based segment length the shader's projection uses.
+    const double limit = nearestVertex + (0.5 * c.maxSegmentKm + 1.0) / R;
+    const double minDot = limit >= M_PI ? -2.0 : std::cos(limit);
+    for (size_t j = 0; j + 1 < c.points.size(); ++j) {
+        const glm::dvec3& a = c.points[j];
+        const glm::dvec3& b = c.points[j + 1];
+        if (std::max(glm::dot(a, unit), glm::dot(b, unit)) < minDot)
+            continue;
+        const glm::dvec3 normal = glm::normalize(glm::cross(a, b));
+        const double along = R * std::atan2(glm::dot(glm::cross(a, unit), normal), glm::dot(a, unit));
+        const double length = c.arclengthKm[j + 1] - c.arclengthKm[j];
+        const double lateral = R * std::asin(std::clamp(glm::dot(unit, normal), -1.0, 1.0));
+        const double beyond = std::max({-along, along - length, 0.0});
+        const double distance = std::hypot(lateral, beyond);
+        if (distance < best.distanceKm) {
+            best.distanceKm = distance;
+            best.sKm = c.arclengthKm[j] + std::clamp(along, 0.0, length);
+            best.uKm = lateral;
+        }
+    }
+    return best;
+}
+
+double AuroraReference::nearestCurtainKm(glm::dvec3 unit) const
+{
+    double best = std::numeric_limits<double>::infinity();
+    for (const Curtain& c : curtains_)
+        best = std::min(best, nearestOn(c, unit).distanceKm);
+    return best;
+}
+
+// curtain_profile.glsl in double: with fluid detail, peakScale x F(s + offset, u x scale, phase)
+// (fluid::sampleFlux), zero beyond half the strip width; else exp(-(u scale)^2 / 2).
+double AuroraReference::profile(const Curtain& c, double sKm, double uKm) const
+{
+    const double across = uKm * c.lateralScale;
+    if (!frames_)
+        return std::exp(-0.5 * across * across);
+    if (std::abs(across) >= 0.5 * stripWidthKm_)
+        return 0.0;
+    return shape_->peakScale * fluid::sampleFlux(*frames_, sKm + c.state.detailOffsetKm, across, c.state.detailPhase);
+}
+
+// auroraEmissionRgbPerKm of deposition.glsl without tables: 1 photon cm^-3 s^-1 over 1 km is
+// 0.1 R, so the radiance per km per erg cm^-2 s^-1 is
+// sum over lines of 0.1 depositionRate(z, E) lineYield(line, z) lineRgb(line).
+glm::dvec3 AuroraReference::emissionRgbPerKm(double altitudeKm, double energyKeV) const
+{
+    const double deposition = physics::depositionRate(altitudeKm, energyKeV, aurora_.spectrum);
+    glm::dvec3 rgb(0.0);
+    for (int line = 0; line < physics::kLineCount; ++line)
+        rgb += 0.1 * deposition * physics::lineYield(static_cast<physics::EmissionLine>(line), altitudeKm) *
+               lineRgb_[line];
+    return rgb;
+}
+
+// Integral of the emission over [t0, t1] of the ray o + t d (|d| = 1): the midpoint rule with
+// steps of stepKm_ where a curtain is within reach, and jumps of (distance - reach) elsewhere: a
+// km along the ray moves the footprint by at most R / |p| <= 1 km on the planet (|p| >= R in the
+// shell), so the jump ends at or before the first point within reach.
+glm::dvec3 AuroraReference::segment(glm::dvec3 o, glm::dvec3 d, double t0, double t1) const
+{
+    const double reach = model_->reachKm();
+    glm::dvec3 sum(0.0);
+    double t = t0;
+    while (t < t1) {
+        const double gap = nearestCurtainKm(glm::normalize(o + t * d)) - reach;
+        if (gap > stepKm_) {
+            t += gap;
+            continue;
+        }
+        const double h = std::min(stepKm_, t1 - t);
+        const glm::dvec3 p = o + (t + 0.5 * h) * d;
+        // Every curtain within its reach emits: overlapping curtains add.
+        for (const Curtain& c : curtains_) {
+            const Nearest n = nearestOn(c, glm::normalize(p));
+            if (n.distanceKm > reach)
+                continue;
+            const double flux = c.state.energyFluxErgPerCm2S * profile(c, n.sKm, n.uKm);
+            if (flux > 0.0)
+                sum += flux * h * emissionRgbPerKm(glm::length(p) - planetRadiusKm_, c.state.energyKeV);
+        }
+        t += h;
+    }
+    return sum;
+}
+
+// shadeAurora of aurora_curtains.glsl in double.
+f64::Ray AuroraReference::shade(f64::Ray ray) const
+{
+    const double R = planetRadiusKm_;
+    const f64::ShellSegments shell = f64::rayShell(ray.origin, ray.direction, R + aurora_.bottomKm,
+                                                   ray.altitude - aurora_.bottomKm, R + aurora_.topKm,
+                                                   ray.altitude - aurora_.topKm, ray.end);
+    for (const glm::dvec2 part : {shell.first, shell.second})
+        if (part.x < part.y)
+            ray.radiance += segment(ray.origin, ray.direction, part.x, part.y) * f64::transmittanceTo(ray, part);
+    return ray;
+}
+
+} // namespace aurorawall::components::aurora

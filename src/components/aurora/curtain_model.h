@@ -1,0 +1,47 @@
+#pragma once
+// The curtains of a scene as one CPU model, used by the renderer's curtain field and by the CPU
+// reference alike: at an animation time, each curtain's keyframes (curtain_frames.h) sampled into
+// a dense polyline on the sphere, its peak flux, electron energy and fluid-detail offset and phase;
+// and the lateral shape shared by all: how the profile is scaled across a curtain and how far from
+// its centre line it emits (its reach). With fluid detail the strip is sampled at
+// u * sigma_sim / sigma_curtain and emits within the frames' reach; without, the profile is a
+// Gaussian exp(-(u / sigma)^2 / 2), cut off at 4 sigma (sigma = thickness / 2).
+#include "aurora/curtain_geometry.h"
+#include "components/aurora/aurora.h"
+#include "components/aurora/curtain_frames.h"
+#include "components/fluid_detail/curtain_detail.h"
+
+#include <optional>
+#include <vector>
+
+namespace aurorawall::components::aurora {
+
+struct CurtainNow {
+    physics::CurtainPolyline polyline;
+    CurtainState state;
+    double lateralScale = 0.0; // profile coordinate per km across the curtain
+};
+
+class CurtainModel {
+public:
+    // detail: the fluid_detail frames' shape, or null when the scene does not list it.
+    CurtainModel(const Settings& aurora, double planetRadiusKm, const fluid_detail::DetailShape* detail);
+
+    // Every curtain at animation time timeS, in the scene's order.
+    std::vector<CurtainNow> at(double timeS) const;
+
+    // Beyond this distance from its centre line (km on the ground) no curtain emits.
+    double reachKm() const { return reachKm_; }
+    const fluid_detail::DetailShape* detail() const { return detail_ ? &*detail_ : nullptr; }
+    const Settings& settings() const { return aurora_; }
+    double planetRadiusKm() const { return planetRadiusKm_; }
+
+private:
+    const Settings& aurora_;
+    double planetRadiusKm_;
+    std::optional<fluid_detail::DetailShape> detail_;
+    std::vector<double> lateralScale_;
+    double reachKm_ = 0.0;
+};
+
+} // namespace aurorawall::components::aurora

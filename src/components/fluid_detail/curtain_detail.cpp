@@ -1,0 +1,67 @@
+#include "components/fluid_detail/curtain_detail.h"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+
+namespace aurorawall::components::fluid_detail {
+
+fluid::CurtainDetailSpec curtainDetailSpec(const Settings& detail)
+{
+    fluid::CurtainDetailSpec spec;
+    spec.nx = detail.cellsAlong;
+    spec.ny = detail.cellsAcross;
+    spec.stripLengthKm = detail.stripLengthKm;
+    spec.stripWidthKm = detail.stripWidthKm;
+    spec.frames = detail.frames;
+    spec.seed = detail.seed;
+    return spec;
+}
+
+double lateralReachKm(const fluid::FluxFrames& f, double stripWidthKm)
+{
+    float peak = 0.0f;
+    for (float v : f.flux)
+        peak = std::max(peak, v);
+    double reach = 0.0;
+    for (int k = 0; k < f.frames; ++k)
+        for (int iy = 0; iy < f.ny; ++iy)
+            for (int ix = 0; ix < f.nx; ++ix)
+                if (f.at(k, ix, iy) > 1e-3f * peak)
+                    reach = std::max(reach, std::abs((iy + 0.5) * f.texelKmY - 0.5 * stripWidthKm) + f.texelKmY);
+    return reach;
+}
+
+DetailShape detailShape(const fluid::CurtainDetailSpec& spec, const fluid::FluxFrames& frames)
+{
+    DetailShape d;
+    d.fluxWidthKm = spec.fluxWidthKm;
+    d.reachKm = lateralReachKm(frames, spec.stripWidthKm);
+    d.stripLengthKm = spec.stripLengthKm;
+    d.peakScale = spec.fluxWidthKm * std::sqrt(2.0 * M_PI);
+    return d;
+}
+
+CurtainDetail::CurtainDetail(const Settings& detail)
+    : spec_(curtainDetailSpec(detail)),
+      frames_(gl::Texture::create3D(1, 1, 1, gl::TexelFormat::R32F, gl::Filter::Linear, gl::Wrap::Repeat))
+{
+    const auto start = std::chrono::steady_clock::now();
+    const fluid::FluxFrames f = fluid::simulateCurtainDetail(spec_);
+    frames_ = gl::Texture::create3D(f.nx, f.ny, f.frames, gl::TexelFormat::R32F, gl::Filter::Linear, gl::Wrap::Repeat);
+    frames_.upload(f.flux);
+    shape_ = detailShape(spec_, f);
+    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    char text[160];
+    std::snprintf(text, sizeof text, "fluid_detail: %d x %d cells, %d frames, reach %.1f km: %.0f ms", f.nx, f.ny,
+                  f.frames, shape_.reachKm, ms);
+    summary_ = text;
+}
+
+void CurtainDetail::bind(gl::Program& program) const
+{
+    program.bindTexture("uFluxFrames", 3, frames_.id());
+    program.set("uFluxStrip", glm::vec4(spec_.stripLengthKm, spec_.stripWidthKm, spec_.frames, static_cast<float>(shape_.peakScale)));
+}
+
+} // namespace aurorawall::components::fluid_detail

@@ -1,0 +1,52 @@
+#pragma once
+// The fluid_detail component on the GPU: the Kelvin-Helmholtz flux frames of src/fluid as a 3D
+// texture (along the curtain x, across it y, frame z; linear filtering, periodic along), with the
+// constants that turn a lookup into a profile of peak 1. Simulated once per rank at start-up;
+// the simulation is deterministic, so every rank holds the same frames.
+#include "fluid/curtain_detail.h"
+#include "gl/shader_program.h"
+#include "gl/texture.h"
+#include "components/fluid_detail/fluid_detail.h"
+#include "scene/component.h"
+
+#include <string>
+
+namespace aurorawall::components::fluid_detail {
+
+// How the frames shape a curtain across and along it: what the aurora's curtain model needs.
+struct DetailShape {
+    double fluxWidthKm = 0.0;   // standard deviation of the flux across the strip at frame 0 (km)
+    double reachKm = 0.0;       // lateralReachKm of the frames (strip km)
+    double stripLengthKm = 0.0; // the pattern's period along the curtain
+    // Frame 0 is a Gaussian of unit integral across: its peak is 1/(sigma sqrt(2 pi)); scaling by
+    // sigma sqrt(2 pi) makes the smooth curtain's peak 1.
+    double peakScale = 1.0;
+};
+DetailShape detailShape(const fluid::CurtainDetailSpec& spec, const fluid::FluxFrames& frames);
+
+class CurtainDetail : public scene::ComponentRenderer {
+public:
+    explicit CurtainDetail(const Settings& detail);
+
+    std::string precomputationLog() const override { return summary_; }
+    void setFrame(gl::Program&, const cluster::FrameState&) override {}
+    // Texture unit 3 and the uniforms of shaders/components/aurora/curtain_profile.glsl.
+    void bind(gl::Program& program) const override;
+
+    const DetailShape& shape() const { return shape_; }
+
+private:
+    fluid::CurtainDetailSpec spec_;
+    gl::Texture frames_;
+    DetailShape shape_;
+    std::string summary_;
+};
+
+// The simulation parameters for a scene's fluid_detail table (docs/fluid.md).
+fluid::CurtainDetailSpec curtainDetailSpec(const Settings& detail);
+
+// Beyond this lateral distance from the strip's centre line (strip km) no frame holds more than
+// 1e-3 of the peak flux: the largest |u| + one texel of any such cell.
+double lateralReachKm(const fluid::FluxFrames& frames, double stripWidthKm);
+
+} // namespace aurorawall::components::fluid_detail

@@ -1,0 +1,52 @@
+#include "components/fluid_detail/fluid_detail.h"
+
+#include "components/fluid_detail/curtain_detail.h"
+#include "scene/scene.h"
+
+namespace aurorawall::components::fluid_detail {
+
+namespace {
+
+// The aurora's curtain profile samples these frames (shaders/components/aurora/curtain_profile.glsl
+// under HAS_FLUID_DETAIL), and the aurora's reference samples them in double: the component adds no
+// shader module and no reference step of its own.
+class FluidDetail : public scene::Component {
+public:
+    std::string name() const override { return Settings::kComponent; }
+    std::vector<std::string> needs() const override { return {"aurora"}; }
+    std::unique_ptr<scene::ComponentSettings> defaultSettings() const override { return std::make_unique<Settings>(); }
+    void read(const scene::TableReader& t, scene::Scene&, scene::ComponentSettings& settings) const override
+    {
+        auto& f = dynamic_cast<Settings&>(settings);
+        f.cellsAlong = static_cast<int>(t.number("cells_along", 16, 4096, f.cellsAlong));
+        f.cellsAcross = static_cast<int>(t.number("cells_across", 4, 4096, f.cellsAcross));
+        for (int n : {f.cellsAlong, f.cellsAcross})
+            if (n & (n - 1))
+                t.fail(n == f.cellsAlong ? "cells_along" : "cells_across", "must be a power of two");
+        f.stripLengthKm = t.number("strip_length_km", 1.0, 1e5, f.stripLengthKm);
+        f.stripWidthKm = t.number("strip_width_km", 1.0, 1e4, f.stripWidthKm);
+        f.frames = static_cast<int>(t.number("frames", 2, 256, f.frames));
+        f.seed = static_cast<unsigned>(t.number("seed", 0, 4294967295.0, f.seed));
+    }
+    std::vector<std::string> shaderModules() const override { return {}; }
+    std::unique_ptr<scene::ComponentRenderer> makeRenderer(const scene::Scene& scene,
+                                                           const scene::FindRenderer&) const override
+    {
+        return std::make_unique<CurtainDetail>(scene.settings<Settings>());
+    }
+    std::unique_ptr<scene::ReferenceShader> makeReference(const scene::Scene&,
+                                                          const scene::ReferenceContext&) const override
+    {
+        return nullptr;
+    }
+};
+
+} // namespace
+
+const scene::Component& component()
+{
+    static const FluidDetail instance;
+    return instance;
+}
+
+} // namespace aurorawall::components::fluid_detail

@@ -1,0 +1,58 @@
+#include "components/planet_texture/planet_texture.h"
+
+#include "components/planet_texture/night_lights.h"
+#include "scene/scene.h"
+
+namespace aurorawall::components::planet_texture {
+
+namespace {
+
+class Renderer : public scene::ComponentRenderer {
+public:
+    explicit Renderer(const Settings& s) : lights_(s) {}
+    std::string precomputationLog() const override { return lights_.summary(); }
+    void setFrame(gl::Program&, const cluster::FrameState&) override {}
+    void bind(gl::Program& program) const override { lights_.bind(program); }
+
+private:
+    NightLights lights_;
+};
+
+class PlanetTexture : public scene::Component {
+public:
+    std::string name() const override { return Settings::kComponent; }
+    std::vector<std::string> needs() const override { return {"planet"}; }
+    std::unique_ptr<scene::ComponentSettings> defaultSettings() const override { return std::make_unique<Settings>(); }
+    void read(const scene::TableReader& t, scene::Scene&, scene::ComponentSettings& settings) const override
+    {
+        auto& s = dynamic_cast<Settings&>(settings);
+        s.nightImage = t.string("night_image", s.nightImage);
+        s.nightLightsRadiance = t.number("night_lights_cd_m2", 0.0, 1e6, s.nightLightsRadiance);
+    }
+    std::vector<std::string> shaderModules() const override
+    {
+        return {"components/planet_texture/night_lights.glsl"};
+    }
+    std::string shaderShadeCall() const override { return "shadeNightLights(ray)"; }
+    int compositingOrder() const override { return 61; }
+    std::unique_ptr<scene::ComponentRenderer> makeRenderer(const scene::Scene& scene,
+                                                           const scene::FindRenderer&) const override
+    {
+        return std::make_unique<Renderer>(scene.settings<Settings>());
+    }
+    std::unique_ptr<scene::ReferenceShader> makeReference(const scene::Scene&,
+                                                          const scene::ReferenceContext&) const override
+    {
+        throw scene::NotInReference("planet_texture is an image lookup, not a model the reference evaluates");
+    }
+};
+
+} // namespace
+
+const scene::Component& component()
+{
+    static const PlanetTexture instance;
+    return instance;
+}
+
+} // namespace aurorawall::components::planet_texture

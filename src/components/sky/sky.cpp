@@ -1,0 +1,96 @@
+#include "components/sky/sky.h"
+
+#include "gl/shader_program.h"
+#include "scene/scene.h"
+
+#include <cmath>
+
+namespace aurorawall::components::sky {
+
+namespace {
+
+constexpr int kMaxLights = 8; // SKY_MAX_LIGHTS of shaders/atmosphere/sky.glsl
+
+class Renderer : public scene::ComponentRenderer {
+public:
+    explicit Renderer(const Settings& s) : s_(s) {}
+    void setFrame(gl::Program& program, const cluster::FrameState&) override
+    {
+        program.set("uSkyViewSteps", s_.viewSteps);
+        program.set("uSkyLightMethod", s_.nestedMarch ? 1 : 0); // SKY_LIGHT_NESTED_MARCH : SKY_LIGHT_CLOSED_FORM
+        program.set("uSkyLightSteps", s_.lightSteps);
+        program.set("uSkyLightCount", static_cast<int>(s_.lights.size()));
+        for (size_t i = 0; i < s_.lights.size(); ++i) {
+            const std::string index = "[" + std::to_string(i) + "]";
+            program.set("uSkyLightDirection" + index, glm::vec3(s_.lights[i].direction));
+            program.set("uSkyLightIlluminanceLux" + index, glm::vec3(s_.lights[i].illuminanceLux));
+        }
+    }
+
+private:
+    const Settings& s_;
+};
+
+// A light is given as seen from a site: where it stands in that sky (elevation above the
+// horizon, azimuth clockwise from north), and its illuminance above the atmosphere.
+Light readLight(const scene::TableReader& t)
+{
+    constexpr double degree = 3.14159265358979323846 / 180.0;
+    Light l;
+    const double lat = t.number("site_latitude_deg", -90, 90), lon = t.number("site_longitude_deg", -360, 360);
+    const double elevation = t.number("elevation_deg", -90, 90) * degree;
+    const double azimuth = t.number("azimuth_deg", -360, 360) * degree;
+    const scene::LocalFrame local = scene::localFrame(lat, lon);
+    l.direction = std::cos(elevation) * (std::cos(azimuth) * local.north + std::sin(azimuth) * local.east) +
+                  std::sin(elevation) * local.up;
+    l.illuminanceLux = glm::dvec3(t.number("illuminance_lux", 0.0, 1e7, 1.28e5));
+    t.rejectUnknownKeys();
+    return l;
+}
+
+class Sky : public scene::Component {
+public:
+    std::string name() const override { return Settings::kComponent; }
+    std::vector<std::string> needs() const override { return {"atmosphere"}; }
+    std::unique_ptr<scene::ComponentSettings> defaultSettings() const override { return std::make_unique<Settings>(); }
+    void read(const scene::TableReader& t, scene::Scene&, scene::ComponentSettings& settings) const override
+    {
+        auto& s = dynamic_cast<Settings&>(settings);
+        s.viewSteps = static_cast<int>(t.number("view_steps", 1, 1024, s.viewSteps));
+        s.nestedMarch = t.choice("light_method", {"closed-form", "nested-march"}, s.nestedMarch) == 1;
+        s.lightSteps = static_cast<int>(t.number("light_steps", 1, 1024, s.lightSteps));
+        if (t.has("light")) {
+            s.lights.clear();
+            for (const scene::TableReader& l : t.arrayOfTables("light"))
+                s.lights.push_back(readLight(l));
+        }
+        if (s.lights.size() > kMaxLights)
+            t.fail("light", "at most " + std::to_string(kMaxLights) + " lights");
+    }
+    std::vector<std::string> shaderModules() const override
+    {
+        return {"atmosphere/sky.glsl", "components/sky/sky.glsl"};
+    }
+    std::string shaderShadeCall() const override { return "shadeSky(ray)"; }
+    int compositingOrder() const override { return 20; }
+    std::unique_ptr<scene::ComponentRenderer> makeRenderer(const scene::Scene& scene,
+                                                           const scene::FindRenderer&) const override
+    {
+        return std::make_unique<Renderer>(scene.settings<Settings>());
+    }
+    std::unique_ptr<scene::ReferenceShader> makeReference(const scene::Scene&,
+                                                          const scene::ReferenceContext&) const override
+    {
+        throw scene::NotInReference("the sky has its own reference (aurorawall accuracy --sky), not this one");
+    }
+};
+
+} // namespace
+
+const scene::Component& component()
+{
+    static const Sky instance;
+    return instance;
+}
+
+} // namespace aurorawall::components::sky

@@ -1,0 +1,126 @@
+#pragma once
+// The one interface a scene component implements (planet, atmosphere, aurora, airglow, ...).
+// A component owns, in its own folder (src/components/NAME, shaders/components/NAME):
+//   - its settings, read from its table of the scene file ([NAME]) with units and bounds;
+//   - its GLSL modules and its place in the compositing order along a ray;
+//   - its GPU part: precomputed tables, per-frame data, uniforms and textures (ComponentRenderer);
+//   - its part of the double-precision CPU reference of a ray (ReferenceShader), or a refusal.
+// The registry (src/components/registry.h) lists every component; the scene loader, the shader
+// assembly, the renderer and the reference all iterate over the components a scene lists, so a
+// scene that does not list a component compiles and precomputes none of it.
+#include "cluster/frame_state.h"
+#include "common/glsl.h"
+#include "scene/toml_reader.h"
+
+#include <functional>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace aurorawall::gl {
+class Program;
+}
+namespace aurorawall::fluid {
+struct FluxFrames;
+}
+
+namespace aurorawall::f64 {
+AURORAWALL_GLSL_PRECISION(double)
+#include "render/ray.glsl"
+} // namespace aurorawall::f64
+
+namespace aurorawall::scene {
+
+struct Scene;
+
+// A component's parameters. Each component derives its own struct from SettingsOf<itself>.
+struct ComponentSettings {
+    virtual ~ComponentSettings() = default;
+    virtual std::unique_ptr<ComponentSettings> clone() const = 0;
+};
+
+template <class Derived>
+struct SettingsOf : ComponentSettings {
+    std::unique_ptr<ComponentSettings> clone() const override
+    {
+        return std::make_unique<Derived>(static_cast<const Derived&>(*this));
+    }
+};
+
+// The GPU part of a component for one rank, made once the GL context is current.
+class ComponentRenderer {
+public:
+    virtual ~ComponentRenderer() = default;
+    // What was precomputed at start-up and what it cost ("deposition table 1081x128: 35 ms"); empty: nothing.
+    virtual std::string precomputationLog() const { return {}; }
+    // Once per frame, before its tiles: per-frame data and the uniforms of this component.
+    virtual void setFrame(gl::Program& program, const cluster::FrameState& frame) = 0;
+    // Before each tile: texture bindings (they belong to the current context).
+    virtual void bind(gl::Program&) const {}
+    // What the last setFrame computed (e.g. a footprint map); empty: nothing.
+    virtual std::string frameLog() const { return {}; }
+};
+
+// Finds the renderer of another listed component (null when the scene does not list it).
+using FindRenderer = std::function<ComponentRenderer*(const std::string& name)>;
+
+// What a component's part of the CPU reference may use besides the scene.
+struct ReferenceContext {
+    double timeS = 0.0;                         // animation time
+    double stepKm = 0.05;                       // fine fixed step for emission integrals
+    const fluid::FluxFrames* fluidFrames = nullptr; // the fluid_detail frames, when listed
+};
+
+// A component's part of shadeRay in double precision: the same model as its shader, evaluated
+// without the shader's approximations (exact integrals, no lookup tables).
+class ReferenceShader {
+public:
+    virtual ~ReferenceShader() = default;
+    // The geometry step (see Component::shaderGeometryCall); most components have none.
+    virtual f64::Ray bound(f64::Ray ray) const { return ray; }
+    virtual f64::Ray shade(f64::Ray ray) const = 0;
+};
+
+// Thrown by Component::makeReference for a component the reference does not model.
+class NotInReference : public std::invalid_argument {
+public:
+    using std::invalid_argument::invalid_argument;
+};
+
+class Component {
+public:
+    virtual ~Component() = default;
+
+    // The name in a scene's component list, its table name and its shader define HAS_<NAME>.
+    virtual std::string name() const = 0;
+    // Components that must be listed with this one.
+    virtual std::vector<std::string> needs() const { return {}; }
+
+    virtual std::unique_ptr<ComponentSettings> defaultSettings() const = 0;
+    // Reads the component's table into `settings` (which holds the defaults, or a base scene's
+    // values); `scene` holds the settings of the components read before this one (registry order),
+    // and the planet sets the scene's radius here. Errors name file, line and key (TableReader::fail).
+    virtual void read(const TableReader& table, Scene& scene, ComponentSettings& settings) const = 0;
+
+    // Shader modules (paths under shaders/), in order; shared helpers first.
+    virtual std::vector<std::string> shaderModules() const = 0;
+    // GLSL expressions of type Ray applied to `ray` in shadeRay: the geometry step (before any
+    // shading: what ends or blocks the ray) and the shading step. Empty: none.
+    virtual std::string shaderGeometryCall() const { return {}; }
+    virtual std::string shaderShadeCall() const { return {}; }
+    // Position of the shading step along the ray, front to back (lower first). The layers are
+    // concentric shells: 10 lower atmosphere, 20 its sky light, 30 airglow, 40 aurora,
+    // 60 ground, 61 ground lights, 70 stars behind everything.
+    virtual int compositingOrder() const { return 0; }
+
+    // The GPU part (needs a current GL context): precomputes its tables.
+    virtual std::unique_ptr<ComponentRenderer> makeRenderer(const Scene& scene, const FindRenderer& find) const = 0;
+    // Its part of the CPU reference; null when it adds nothing by itself (e.g. data another
+    // component uses). Throws NotInReference when the reference cannot model it.
+    virtual std::unique_ptr<ReferenceShader> makeReference(const Scene& scene, const ReferenceContext& context) const = 0;
+};
+
+using Registry = std::vector<const Component*>;
+
+} // namespace aurorawall::scene
