@@ -1,0 +1,148 @@
+// airglow_cost: error against run time of the airglow column along a ray, on the CPU in float (the
+// GPU's precision): the closed form of airglow_layer.glsl against midpoint marches of N steps over
+// the same shell parts, each against a fine march in double (0.01 km). The rays: 12 random
+// directions and the grazing ones from the ground, 1 m, 50 km, inside the layer, 400 km and
+// 36000 km, for the green and the red layer. Not a test (timings); run by launch/accuracy-airglow.
+#include "common/glsl.h"
+#include "components/airglow/airglow.h"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <functional>
+#include <random>
+#include <vector>
+
+namespace aurorawall::airglow_cost::f32 {
+AURORAWALL_GLSL_PRECISION(float)
+#include "render/ray_sphere.glsl"
+#include "atmosphere/airmass_common.glsl"
+#include "atmosphere/airmass_chapman.glsl"
+#include "components/airglow/airglow_layer.glsl"
+} // namespace aurorawall::airglow_cost::f32
+
+using namespace aurorawall;
+namespace f32 = aurorawall::airglow_cost::f32;
+using components::airglow::Layer;
+using components::airglow::LayerProfile;
+
+namespace {
+
+constexpr double R = 6371.0;
+constexpr double kTop = 40.0;
+
+struct Case {
+    LayerProfile p;
+    glm::vec3 o, d;
+    f32::ShellSegments shell;
+    double exact = 0.0;
+};
+
+double groundDistance(glm::dvec3 o, glm::dvec3 d)
+{
+    const double b = glm::dot(o, d), c = glm::dot(o, o) - R * R, disc = b * b - c;
+    if (c < 0.0)
+        return 0.0;
+    if (disc < 0.0)
+        return 1e30;
+    const double t = -b - std::sqrt(disc);
+    return t > 0.0 ? t : 1e30;
+}
+
+double fineMarch(const LayerProfile& p, glm::dvec3 o, glm::dvec3 d)
+{
+    const double rTop = R + p.baseKm + kTop * p.upperScaleHeightKm;
+    const double b = glm::dot(o, d), c = glm::dot(o, o) - rTop * rTop, disc = b * b - c;
+    if (disc < 0.0)
+        return 0.0;
+    const double t0 = std::max(0.0, -b - std::sqrt(disc)), t1 = std::min(-b + std::sqrt(disc), groundDistance(o, d));
+    double sum = 0.0;
+    for (double t = t0; t < t1; t += 0.01) {
+        const double h = std::min(0.01, t1 - t);
+        sum += h * components::airglow::volumeEmission(p, glm::length(o + (t + 0.5 * h) * d) - R);
+    }
+    return sum;
+}
+
+float closedForm(const Case& c)
+{
+    const glm::vec4 l(c.p.baseKm, c.p.upperScaleHeightKm, c.p.lowerScaleHeightKm, c.p.rayleighPerKm);
+    float sum = 0.0f;
+    for (const glm::vec2 part : {c.shell.first, c.shell.second})
+        if (part.x < part.y)
+            sum += f32::airglowColumn(c.o, c.d, part.x, part.y, l, float(R + c.p.baseKm));
+    return sum;
+}
+
+float march(const Case& c, int steps)
+{
+    const float base = float(c.p.baseKm), hu = float(c.p.upperScaleHeightKm), hl = float(c.p.lowerScaleHeightKm);
+    float sum = 0.0f;
+    for (const glm::vec2 part : {c.shell.first, c.shell.second}) {
+        if (!(part.x < part.y))
+            continue;
+        const float h = (part.y - part.x) / float(steps);
+        for (int k = 0; k < steps; ++k) {
+            const float x = glm::length(c.o + (part.x + (float(k) + 0.5f) * h) * c.d) - float(R) - base;
+            sum += h * (x > 0.0f ? std::exp(-x / hu) - std::exp(-x / hl) : 0.0f);
+        }
+    }
+    return float(c.p.rayleighPerKm) * sum;
+}
+
+} // namespace
+
+int main()
+{
+    std::vector<Case> cases;
+    std::mt19937 random(7);
+    std::uniform_real_distribution<double> uniform(-1.0, 1.0);
+    const std::vector<Layer> layers = components::airglow::Settings().layers;
+    for (const Layer& layer : {layers[0], layers[2]}) {
+        const LayerProfile p = components::airglow::layerProfile(layer);
+        for (double altitude : {0.0, 0.001, 50.0, layer.peakKm, 400.0, 36000.0}) {
+            const glm::dvec3 o(0.0, 0.0, R + altitude);
+            std::vector<glm::dvec3> directions;
+            for (int i = 0; i < 12; ++i)
+                directions.push_back(glm::normalize(glm::dvec3(uniform(random), uniform(random), uniform(random))));
+            for (double h : {layer.peakKm, p.baseKm + 0.01})
+                if (altitude > h) {
+                    const double s = (R + h) / (R + altitude);
+                    directions.push_back({s, 0.0, -std::sqrt(1.0 - s * s)});
+                }
+            for (const glm::dvec3& d : directions) {
+                Case c{p, glm::vec3(o), glm::vec3(d), {}, fineMarch(p, o, d)};
+                if (c.exact < 1e-3 * layer.zenithRayleigh)
+                    continue;
+                const double base = p.baseKm, top = base + kTop * p.upperScaleHeightKm;
+                c.shell = f32::rayShell(c.o, c.d, float(R + base), float(altitude - base), float(R + top),
+                                        float(altitude - top), float(groundDistance(o, d)));
+                cases.push_back(c);
+            }
+        }
+    }
+    std::printf("method,max_rel_error,rms_rel_error,ns_per_ray\n");
+    auto report = [&](const char* name, const std::function<float(const Case&)>& f) {
+        double worst = 0.0, sq = 0.0, sink = 0.0;
+        for (const Case& c : cases) {
+            const double e = std::abs(f(c) - c.exact) / c.exact;
+            worst = std::max(worst, e);
+            sq += e * e;
+        }
+        const int repeats = 200;
+        const auto start = std::chrono::steady_clock::now();
+        for (int r = 0; r < repeats; ++r)
+            for (const Case& c : cases)
+                sink += f(c);
+        const double ns = std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - start).count() /
+                          (double(repeats) * cases.size());
+        std::printf("%s,%.3g,%.3g,%.1f%s\n", name, worst, std::sqrt(sq / cases.size()), ns, sink < 0 ? " " : "");
+    };
+    report("closed-form", closedForm);
+    for (int n : {16, 64, 256, 1024}) {
+        const std::string name = "march" + std::to_string(n);
+        report(name.c_str(), [n](const Case& c) { return march(c, n); });
+    }
+    std::printf("rays,%zu\n", cases.size());
+    return 0;
+}
