@@ -47,7 +47,7 @@ protected:
     {
         context_ = gl::createContext(gl::Backend::Egl);
         scene_ = new scene::Scene(finestSubstorm());
-        view_ = new app::SceneView(app::sceneView(*scene_, kSource + "/config/walls/single.ini", {64, 36}));
+        view_ = new app::SceneView(app::sceneView(*scene_, kSource + "/config/walls/single.toml", {64, 36}));
         frames_ = new fluid::FluxFrames(fluid::simulateCurtainDetail(render::curtainDetailSpec(scene_->aurora.detail)));
     }
     static void TearDownTestSuite()
