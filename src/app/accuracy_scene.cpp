@@ -397,7 +397,7 @@ int runSceneAccuracy(int argc, char** argv, std::ostream& out, std::ostream& err
     std::string size = "320x180";
     options.add_options()("help,h", "show this help")("scene", po::value<std::string>(&settings.sceneFile), "scene file")(
         "wall", po::value<std::string>(&settings.wallFile),
-        "wall file whose single-screen equivalent sets the field of view (default config/walls/single.ini)")(
+        "wall file whose single-screen equivalent sets the field of view (default config/walls/single.toml)")(
         "size", po::value<std::string>(&size)->default_value(size), "render size WxH in pixels")(
         "pixels", po::value<int>(&settings.pixels)->default_value(settings.pixels), "pixels of the CPU reference")(
         "runs", po::value<int>(&settings.runs)->default_value(settings.runs),
@@ -426,7 +426,7 @@ int runSceneAccuracy(int argc, char** argv, std::ostream& out, std::ostream& err
     }
     const std::string dataDir = dataDirectory();
     if (settings.wallFile.empty())
-        settings.wallFile = dataDir + "/config/walls/single.ini";
+        settings.wallFile = dataDir + "/config/walls/single.toml";
 
     scene::Scene scene;
     SceneView view;

@@ -20,7 +20,7 @@ RenderOptions parseRenderOptions(int argc, char** argv)
         "owns the camera and the clock and broadcasts them every frame.\n\nOptions");
     desc.add_options()
         ("help,h", "show this help")
-        ("wall", po::value(&o.wallFile)->required(), "wall file (config/walls/*.ini): screens, bezels, eye, ranks")
+        ("wall", po::value(&o.wallFile)->required(), "wall file (config/walls/*.toml): screens, bezels, eye, ranks")
         ("scene", po::value(&o.sceneFile)->required(), "scene file (config/scenes/*.toml): components and parameters")
         ("backend", po::value(&o.backend)->default_value(o.backend),
          "OpenGL backend: egl (headless; GPU or Mesa llvmpipe), osmesa (headless), glfw (one window per screen)")

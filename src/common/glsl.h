@@ -28,4 +28,6 @@
     using glm::inversesqrt; using glm::smoothstep; using glm::step; using glm::fract;       \
     using glm::floor; using std::exp; using std::log; using std::sqrt; using std::pow;      \
     using std::sin; using std::cos; using std::tan; using std::atan; using std::acos;      \
-    using std::asin; using std::exp2; using std::log2;
+    using std::asin; using std::exp2; using std::log2;                                       \
+    /* GLSL's two-argument atan is atan2. */                                                 \
+    [[maybe_unused]] inline real atan(real y, real x) { return std::atan2(y, x); }

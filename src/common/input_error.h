@@ -1,7 +1,7 @@
 #pragma once
 // An error in what the user gave us: a config file, an option, a path.
 // what() is one line that names the file and line (or the option) and the problem,
-// e.g. "config/walls/x.ini:7: bezel.horizontal_mm must be >= 0 (got -3)".
+// e.g. "config/walls/x.toml:7: grid.bezel_horizontal_mm: must be a finite number in [0, 1e+06] (got -3)".
 #include <stdexcept>
 #include <string>
 

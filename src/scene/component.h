@@ -10,7 +10,7 @@
 // scene that does not list a component compiles and precomputes none of it.
 #include "cluster/frame_state.h"
 #include "common/glsl.h"
-#include "scene/toml_reader.h"
+#include "config/toml_reader.h"
 
 #include <functional>
 #include <memory>
@@ -101,7 +101,7 @@ public:
     // Reads the component's table into `settings` (which holds the defaults, or a base scene's
     // values); `scene` holds the settings of the components read before this one (registry order),
     // and the planet sets the scene's radius here. Errors name file, line and key (TableReader::fail).
-    virtual void read(const TableReader& table, Scene& scene, ComponentSettings& settings) const = 0;
+    virtual void read(const config::TableReader& table, Scene& scene, ComponentSettings& settings) const = 0;
 
     // Shader modules (paths under shaders/), in order; shared helpers first.
     virtual std::vector<std::string> shaderModules() const = 0;

@@ -2,13 +2,15 @@
 
 #include "common/input_error.h"
 #include "common/planet_frame.h"
-#include "scene/toml_reader.h"
+#include "config/toml_reader.h"
 
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
 
 namespace aurorawall::scene {
+
+using config::parseTomlFile, config::TableReader, config::TomlValue;
 
 namespace {
 

@@ -1,16 +1,13 @@
 #include "wall/wall_file.h"
 
 #include "common/input_error.h"
+#include "config/toml_reader.h"
 
-#include <boost/program_options/options_description.hpp>
-#include <boost/program_options/parsers.hpp>
-
-#include <cerrno>
-#include <cmath>
-#include <cstdlib>
+#include <algorithm>
+#include <filesystem>
 #include <fstream>
-#include <map>
 #include <optional>
+#include <regex>
 #include <set>
 #include <sstream>
 #include <stdexcept>
@@ -18,7 +15,8 @@
 namespace aurorawall::wall {
 namespace {
 
-namespace po = boost::program_options;
+using config::TableReader;
+using config::TomlValue;
 
 // Bounds that catch unit mix-ups (metres for millimetres, a canvas for a screen) and garbage.
 constexpr double maxMm = 1e6;
@@ -28,24 +26,16 @@ constexpr int maxRank = 65535;
 constexpr int maxMonitor = 63;
 constexpr double maxWindowScale = 16.0;
 
-// The keys each section accepts; [screen.NAME] sections share one list.
-const std::map<std::string, std::set<std::string>> knownKeys = {
-    {"grid", {"columns", "rows", "width_px", "height_px", "width_mm", "height_mm", "bezel_horizontal_mm",
-              "bezel_vertical_mm"}},
-    {"screen", {"width_px", "height_px", "width_mm", "height_mm", "x_mm", "y_mm", "rank", "monitor",
-                "window_x_px", "window_y_px"}},
-    {"eye", {"x_mm", "y_mm", "z_mm"}},
-    {"ranks", {"screens_per_rank", "stacking", "per_screen", "count"}},
-    {"windows", {"mode", "origin_x_px", "origin_y_px", "scale", "monitors"}},
-};
+const std::vector<std::string> topKeys = {"grid", "screen", "eye", "ranks", "windows"};
+const std::vector<std::string> gridKeys = {"columns",  "rows",      "width_px",           "height_px",
+                                           "width_mm", "height_mm", "bezel_horizontal_mm", "bezel_vertical_mm"};
+const std::vector<std::string> screenKeys = {"name", "width_px", "height_px", "width_mm",    "height_mm",  "x_mm",
+                                             "y_mm", "rank",     "monitor",   "window_x_px", "window_y_px"};
+const std::vector<std::string> eyeKeys = {"x_mm", "y_mm", "z_mm"};
+const std::vector<std::string> rankKeys = {"screens_per_rank", "stacking", "per_screen", "count"};
+const std::vector<std::string> windowKeys = {"mode", "origin_x_px", "origin_y_px", "scale", "monitors"};
 
-std::string trim(const std::string& s)
-{
-    const auto first = s.find_first_not_of(" \t\r");
-    if (first == std::string::npos)
-        return {};
-    return s.substr(first, s.find_last_not_of(" \t\r") - first + 1);
-}
+const std::string convertHint = "INI wall files are no longer read; convert to TOML (see docs/walls.md)";
 
 std::string show(double x)
 {
@@ -54,364 +44,29 @@ std::string show(double x)
     return out.str();
 }
 
-bool isScreenSection(const std::string& section) { return section.rfind("screen.", 0) == 0 && section.size() > 7; }
-
-struct Entry {
-    std::string section, key, value;
-    int line = 0;
-};
-
-struct SectionHeader {
-    std::string name;
-    int line = 0;
-};
-
-// One wall file: the scan that knows where each key is (Boost.Program_options reports no lines),
-// typed, range-checked access to the values Boost parsed, and the assembly of the wall.
-class WallFile {
-public:
-    explicit WallFile(std::string path) : path_(std::move(path)) {}
-    Wall load();
-
-private:
-    [[noreturn]] void fail(int line, const std::string& message) const { throw inputError(path_, line, message); }
-
-    void scan(std::istream& in, std::ostringstream& text);
-    void parseWithBoost(const std::string& text);
-    void checkNames() const;
-
-    const SectionHeader* section(const std::string& name) const;
-    int sectionLine(const std::string& name) const { return section(name) ? section(name)->line : 0; }
-    const Entry* find(const std::string& sectionName, const std::string& key) const;
-    const Entry& require(const std::string& sectionName, const std::string& key, const std::string& meaning) const;
-
-    double realOf(const Entry& e, double lo, double hi, bool loOpen, const std::string& meaning = {}) const;
-    int integerOf(const Entry& e, const std::string& text, long long lo, long long hi) const;
-    double real(const std::string& s, const std::string& k, double lo, double hi, bool loOpen, const std::string& meaning) const
-    {
-        return realOf(require(s, k, meaning), lo, hi, loOpen, meaning);
-    }
-    double real(const std::string& s, const std::string& k, double lo, double hi, bool loOpen, double fallback) const
-    {
-        const Entry* e = find(s, k);
-        return e ? realOf(*e, lo, hi, loOpen) : fallback;
-    }
-    int integer(const std::string& s, const std::string& k, int lo, int hi, const std::string& meaning) const
-    {
-        const Entry& e = require(s, k, meaning);
-        return integerOf(e, e.value, lo, hi);
-    }
-    std::optional<int> optionalInteger(const std::string& s, const std::string& k, int lo, int hi) const
-    {
-        const Entry* e = find(s, k);
-        return e ? std::optional<int>(integerOf(*e, e->value, lo, hi)) : std::nullopt;
-    }
-    std::vector<int> integerList(const Entry& e, int lo, int hi, std::size_t count) const;
-    std::string word(const std::string& s, const std::string& k, const std::set<std::string>& choices,
-                     const std::string& fallback) const;
-    void forbid(const std::string& s, const std::string& k, const std::string& reason) const
-    {
-        if (const Entry* e = find(s, k))
-            fail(e->line, s + "." + k + " " + reason);
-    }
-
-    Wall gridWall();
-    Wall screenListWall();
-    void checkRanks(const std::vector<int>& ranks, const std::vector<int>& lines) const;
-    void checkRankCount(const Wall& wall) const;
-    void placeWindows(Wall& wall) const;
-
-    std::string path_;
-    std::vector<SectionHeader> sections_;  // in file order
-    std::map<std::string, Entry> entries_; // by "section.key", Boost's naming
-};
-
-Wall WallFile::load()
+// The old INI form, recognised by the lines TOML reads differently or not at all: "[screen.NAME]"
+// sections (TOML: a nested table, not a screen list), unquoted words ("mode = windowed") and
+// space-separated lists ("per_screen = 0 1 2 3"). Returns the first such line, or 0.
+int oldIniLine(const std::string& path)
 {
-    std::ifstream in(path_);
-    if (!in)
-        fail(0, "cannot open the wall file");
-    std::ostringstream text;
-    scan(in, text);
-    parseWithBoost(text.str());
-    checkNames();
-
-    const bool hasGrid = section("grid") != nullptr;
-    for (const SectionHeader& s : sections_)
-        if (hasGrid && isScreenSection(s.name))
-            fail(s.line, "[" + s.name + "] cannot be combined with [grid]: describe the wall as a grid or as a list of screens");
-    Wall wall = hasGrid ? gridWall() : screenListWall();
-    checkRankCount(wall);
-    placeWindows(wall);
-    return wall;
+    static const std::regex iniOnly(R"(\s*(\[screen\.[^\]]*\]|(mode|stacking)\s*=\s*[A-Za-z]|(per_screen|monitors)\s*=\s*[0-9]).*)");
+    std::ifstream in(path);
+    std::string text;
+    for (int line = 1; std::getline(in, text); ++line)
+        if (std::regex_match(text, iniOnly))
+            return line;
+    return 0;
 }
 
-// Mirrors Boost's config-file grammar: '#' starts a comment, "[section]" prefixes the keys that
-// follow with "section.", every other non-blank line is "key = value".
-void WallFile::scan(std::istream& in, std::ostringstream& text)
+void forbid(const TableReader& t, const std::string& key, const std::string& reason)
 {
-    std::string raw, current;
-    int line = 0;
-    while (std::getline(in, raw)) {
-        ++line;
-        text << raw << '\n';
-        const std::string s = trim(raw.substr(0, raw.find('#')));
-        if (s.empty())
-            continue;
-        if (s.front() == '[') {
-            if (s.back() != ']' || s.size() < 3)
-                fail(line, "syntax error: expected '[section]' (got '" + s + "')");
-            current = s.substr(1, s.size() - 2);
-            if (const SectionHeader* previous = section(current))
-                fail(line, "duplicate section [" + current + "] (first on line " + std::to_string(previous->line) + ")");
-            sections_.push_back({current, line});
-            continue;
-        }
-        const auto equals = s.find('=');
-        if (equals == std::string::npos)
-            fail(line, "syntax error: expected 'key = value' or '[section]' (got '" + s + "')");
-        const std::string key = trim(s.substr(0, equals));
-        if (key.empty())
-            fail(line, "syntax error: no key before '='");
-        const std::string name = current.empty() ? key : current + "." + key;
-        if (const auto it = entries_.find(name); it != entries_.end())
-            fail(line, "duplicate key " + name + " (first on line " + std::to_string(it->second.line) + ")");
-        entries_[name] = {current, key, trim(s.substr(equals + 1)), line};
-    }
+    if (t.has(key))
+        t.fail(key, reason);
 }
 
-void WallFile::parseWithBoost(const std::string& text)
-{
-    std::istringstream in(text);
-    try {
-        const po::parsed_options parsed = po::parse_config_file(in, po::options_description(), true);
-        for (const po::option& option : parsed.options) {
-            const auto it = entries_.find(option.string_key);
-            if (it == entries_.end())
-                fail(0, "unexpected key " + option.string_key);
-            it->second.value = option.value.empty() ? std::string() : option.value.front();
-        }
-    } catch (const po::error& e) {
-        fail(0, std::string("syntax error: ") + e.what());
-    }
-}
-
-void WallFile::checkNames() const
-{
-    for (const SectionHeader& s : sections_)
-        if (!knownKeys.count(s.name) && !isScreenSection(s.name))
-            fail(s.line, "unknown section [" + s.name + "]; expected [grid], [screen.NAME], [eye], [ranks] or [windows]");
-    for (const auto& [name, e] : entries_) {
-        if (e.section.empty())
-            fail(e.line, "key '" + e.key + "' is outside any section");
-        const std::set<std::string>& keys = knownKeys.at(isScreenSection(e.section) ? "screen" : e.section);
-        if (!keys.count(e.key)) {
-            std::string known;
-            for (const std::string& k : keys)
-                known += (known.empty() ? "" : ", ") + k;
-            fail(e.line, "unknown key '" + e.key + "' in [" + e.section + "]; known keys: " + known);
-        }
-    }
-}
-
-const SectionHeader* WallFile::section(const std::string& name) const
-{
-    for (const SectionHeader& s : sections_)
-        if (s.name == name)
-            return &s;
-    return nullptr;
-}
-
-const Entry* WallFile::find(const std::string& sectionName, const std::string& key) const
-{
-    const auto it = entries_.find(sectionName + "." + key);
-    return it == entries_.end() ? nullptr : &it->second;
-}
-
-const Entry& WallFile::require(const std::string& sectionName, const std::string& key, const std::string& meaning) const
-{
-    if (const Entry* e = find(sectionName, key))
-        return *e;
-    fail(sectionLine(sectionName), "[" + sectionName + "] needs " + key + " (" + meaning + ")");
-}
-
-double WallFile::realOf(const Entry& e, double lo, double hi, bool loOpen, const std::string& meaning) const
-{
-    const std::string name = e.section + "." + e.key;
-    const char* begin = e.value.c_str();
-    char* end = nullptr;
-    errno = 0;
-    const double x = std::strtod(begin, &end);
-    if (e.value.empty() || *end != '\0')
-        fail(e.line, name + " must be a number (got '" + e.value + "')");
-    if (!std::isfinite(x) || errno == ERANGE)
-        fail(e.line, name + " must be a finite number (got '" + e.value + "')");
-    if (x > hi || x < lo || (loOpen && x == lo))
-        fail(e.line, name + " must be " + (loOpen ? "> " : ">= ") + show(lo) + " and <= " + show(hi) + " (got " + e.value +
-                         ")" + (meaning.empty() ? "" : ": " + meaning));
-    return x;
-}
-
-int WallFile::integerOf(const Entry& e, const std::string& text, long long lo, long long hi) const
-{
-    const std::string name = e.section + "." + e.key;
-    char* end = nullptr;
-    errno = 0;
-    const long long x = std::strtoll(text.c_str(), &end, 10);
-    if (text.empty() || *end != '\0')
-        fail(e.line, name + " must be an integer (got '" + text + "')");
-    if (errno == ERANGE || x < lo || x > hi)
-        fail(e.line, name + " must be >= " + std::to_string(lo) + " and <= " + std::to_string(hi) + " (got " + text + ")");
-    return int(x);
-}
-
-std::vector<int> WallFile::integerList(const Entry& e, int lo, int hi, std::size_t count) const
-{
-    std::istringstream in(e.value);
-    std::vector<int> values;
-    for (std::string item; in >> item;)
-        values.push_back(integerOf(e, item, lo, hi));
-    if (values.size() != count)
-        fail(e.line, e.section + "." + e.key + " must list " + std::to_string(count) + " integers, one per screen row-major (got " +
-                         std::to_string(values.size()) + ")");
-    return values;
-}
-
-std::string WallFile::word(const std::string& s, const std::string& k, const std::set<std::string>& choices,
-                           const std::string& fallback) const
-{
-    const Entry* e = find(s, k);
-    if (!e)
-        return fallback;
-    if (!choices.count(e->value)) {
-        std::string list;
-        for (const std::string& c : choices)
-            list += (list.empty() ? "" : " or ") + c;
-        fail(e->line, s + "." + k + " must be " + list + " (got '" + e->value + "')");
-    }
-    return e->value;
-}
-
-Wall WallFile::gridWall()
-{
-    GridSpec grid;
-    grid.columns = integer("grid", "columns", 1, maxGridSide, "the number of screens across");
-    grid.rows = integer("grid", "rows", 1, maxGridSide, "the number of screens down");
-    grid.screenPx = {integer("grid", "width_px", 1, maxPx, "one screen's width in pixels"),
-                     integer("grid", "height_px", 1, maxPx, "one screen's height in pixels")};
-    grid.screenMm = {real("grid", "width_mm", 0.0, maxMm, true, "one screen's active width in millimetres"),
-                     real("grid", "height_mm", 0.0, maxMm, true, "one screen's active height in millimetres")};
-    grid.bezelMm = {real("grid", "bezel_horizontal_mm", 0.0, maxMm, false, 0.0),
-                    real("grid", "bezel_vertical_mm", 0.0, maxMm, false, 0.0)};
-    grid.eyeFromCentreMm = {real("eye", "x_mm", -maxMm, maxMm, false, 0.0), real("eye", "y_mm", -maxMm, maxMm, false, 0.0),
-                            real("eye", "z_mm", 0.0, maxMm, true, "the eye's distance in front of the wall")};
-
-    const Entry* perScreen = find("ranks", "per_screen");
-    if (perScreen) {
-        forbid("ranks", "screens_per_rank", "cannot be combined with ranks.per_screen");
-        forbid("ranks", "stacking", "cannot be combined with ranks.per_screen");
-    } else {
-        grid.stacking = word("ranks", "stacking", {"horizontal", "vertical"}, "horizontal") == "vertical" ? Stacking::vertical
-                                                                                                         : Stacking::horizontal;
-        grid.screensPerRank = optionalInteger("ranks", "screens_per_rank", 1, maxRank).value_or(1);
-        const bool vertical = grid.stacking == Stacking::vertical;
-        const int stacked = vertical ? grid.rows : grid.columns;
-        if (stacked % grid.screensPerRank != 0)
-            fail(find("ranks", "screens_per_rank")->line,
-                 "ranks.screens_per_rank = " + std::to_string(grid.screensPerRank) + " must divide grid." +
-                     (vertical ? "rows = " : "columns = ") + std::to_string(stacked) + " (stacking = " +
-                     (vertical ? "vertical" : "horizontal") + ")");
-    }
-    Wall wall;
-    try {
-        wall = makeGridWall(grid);
-        if (perScreen) {
-            const std::vector<int> ranks = integerList(*perScreen, 0, maxRank, wall.screens.size());
-            checkRanks(ranks, std::vector<int>(ranks.size(), perScreen->line));
-            for (std::size_t i = 0; i < ranks.size(); ++i)
-                wall.screens[i].rank = ranks[i];
-            wall = assembleWall(std::move(wall.screens), wall.eyeMm);
-        }
-    } catch (const std::invalid_argument& e) {
-        fail(0, e.what());
-    }
-    wall.sourceFile = path_;
-    return wall;
-}
-
-Wall WallFile::screenListWall()
-{
-    forbid("ranks", "stacking", "applies only to a [grid]");
-    forbid("ranks", "per_screen", "applies only to a [grid]; give each [screen.NAME] a rank");
-    std::vector<Screen> screens;
-    std::vector<int> sectionLines, rankLines;
-    const SectionHeader* firstWithoutRank = nullptr;
-    for (const SectionHeader& header : sections_) {
-        if (!isScreenSection(header.name))
-            continue;
-        const std::string& s = header.name;
-        Screen screen;
-        screen.name = s.substr(7);
-        screen.widthPx = integer(s, "width_px", 1, maxPx, "width in pixels");
-        screen.heightPx = integer(s, "height_px", 1, maxPx, "height in pixels");
-        screen.widthMm = real(s, "width_mm", 0.0, maxMm, true, "active width in millimetres");
-        screen.heightMm = real(s, "height_mm", 0.0, maxMm, true, "active height in millimetres");
-        screen.lowerLeftMm = {real(s, "x_mm", -maxMm, maxMm, false, "the active area's left edge in millimetres"),
-                              real(s, "y_mm", -maxMm, maxMm, false, "the active area's bottom edge in millimetres")};
-        for (std::size_t j = 0; j < screens.size(); ++j) {
-            const Screen& other = screens[j];
-            const double overlapX = std::min(screen.lowerRight().x, other.lowerRight().x) -
-                                    std::max(screen.lowerLeftMm.x, other.lowerLeftMm.x);
-            const double overlapY = std::min(screen.upperLeft().y, other.upperLeft().y) -
-                                    std::max(screen.lowerLeftMm.y, other.lowerLeftMm.y);
-            if (overlapX > 1e-6 && overlapY > 1e-6)
-                fail(header.line, "screen '" + screen.name + "' overlaps screen '" + other.name + "' (line " +
-                                      std::to_string(sectionLines[j]) + ") by " + show(overlapX) + " x " + show(overlapY) + " mm");
-        }
-        if (const Entry* rank = find(s, "rank")) {
-            screen.rank = integerOf(*rank, rank->value, 0, maxRank);
-            rankLines.push_back(rank->line);
-        } else if (!firstWithoutRank) {
-            firstWithoutRank = &header;
-        }
-        screens.push_back(screen);
-        sectionLines.push_back(header.line);
-    }
-    if (screens.empty())
-        fail(0, "no screens: the file needs a [grid] section or [screen.NAME] sections");
-
-    if (!rankLines.empty()) {
-        if (firstWithoutRank)
-            fail(firstWithoutRank->line, "[" + firstWithoutRank->name + "] has no rank while other screens do: give every screen a rank or none");
-        forbid("ranks", "screens_per_rank", "cannot be combined with a rank in each [screen.NAME]");
-        std::vector<int> ranks;
-        for (const Screen& screen : screens)
-            ranks.push_back(screen.rank);
-        checkRanks(ranks, rankLines);
-    } else {
-        const int perRank = optionalInteger("ranks", "screens_per_rank", 1, maxRank).value_or(1);
-        for (std::size_t i = 0; i < screens.size(); ++i)
-            screens[i].rank = int(i) / perRank;
-    }
-
-    // The eye is given relative to the centre of the screens' bounding box.
-    glm::dvec2 lo = screens.front().lowerLeftMm, hi = lo;
-    for (const Screen& screen : screens) {
-        lo = glm::min(lo, screen.lowerLeftMm);
-        hi = glm::max(hi, glm::dvec2(screen.upperRight()));
-    }
-    const glm::dvec3 eye = glm::dvec3((lo + hi) / 2.0, 0.0) +
-                           glm::dvec3(real("eye", "x_mm", -maxMm, maxMm, false, 0.0), real("eye", "y_mm", -maxMm, maxMm, false, 0.0),
-                                      real("eye", "z_mm", 0.0, maxMm, true, "the eye's distance in front of the wall"));
-    try {
-        return assembleWall(std::move(screens), eye, path_);
-    } catch (const std::invalid_argument& e) {
-        fail(0, e.what());
-    }
-}
-
-// Explicit ranks must be 0..N-1 without gaps; a gap is reported at the first rank above it.
-void WallFile::checkRanks(const std::vector<int>& ranks, const std::vector<int>& lines) const
+// Explicit ranks must be 0..N-1 without gaps. Returns the index of the first screen whose rank is
+// the one above a gap, and the missing rank.
+std::optional<std::pair<std::size_t, int>> rankGap(const std::vector<int>& ranks)
 {
     const std::set<int> used(ranks.begin(), ranks.end());
     for (int r = 0; r < *used.rbegin(); ++r) {
@@ -420,42 +75,219 @@ void WallFile::checkRanks(const std::vector<int>& ranks, const std::vector<int>&
         const int above = *used.upper_bound(r);
         for (std::size_t i = 0; i < ranks.size(); ++i)
             if (ranks[i] == above)
-                fail(lines[i], "ranks must be numbered 0..N-1 without gaps: rank " + std::to_string(r) +
-                                   " owns no screen, but rank " + std::to_string(above) + " does");
+                return std::make_pair(i, r);
+    }
+    return std::nullopt;
+}
+
+std::string gapProblem(int missing, int above)
+{
+    return "ranks must be numbered 0..N-1 without gaps: rank " + std::to_string(missing) + " owns no screen, but rank " +
+           std::to_string(above) + " does";
+}
+
+// One parsed wall file: its tables, read once each through a TableReader, and the assembly of the wall.
+class WallFile {
+public:
+    WallFile(const TomlValue& root, const std::string& path)
+        : path_(path), top_(root, path, ""), ranks_(top_.optionalTable("ranks")), windows_(top_.optionalTable("windows"))
+    {
+    }
+    Wall load();
+
+private:
+    [[noreturn]] void failFile(const std::string& problem) const { throw inputError(path_, 0, problem); }
+    glm::dvec3 eyeOffset() const;
+    Wall gridWall();
+    Wall screenListWall();
+    void checkRankCount(const Wall& wall) const;
+    void placeWindows(Wall& wall) const;
+
+    std::string path_;
+    TableReader top_;
+    TableReader ranks_, windows_;
+    std::vector<TableReader> screens_; // the [[screen]] tables in file order; empty for a grid
+};
+
+Wall WallFile::load()
+{
+    top_.rejectKeysOutside(topKeys);
+    ranks_.rejectKeysOutside(rankKeys);
+    windows_.rejectKeysOutside(windowKeys);
+    if (top_.has("grid") && top_.has("screen"))
+        top_.fail("screen", "[[screen]] cannot be combined with [grid]: describe the wall as a grid or as a list of screens");
+    if (!top_.has("grid") && !top_.has("screen"))
+        failFile("no screens: the file needs a [grid] table or [[screen]] tables");
+    Wall wall = top_.has("grid") ? gridWall() : screenListWall();
+    checkRankCount(wall);
+    placeWindows(wall);
+    return wall;
+}
+
+// The eye relative to the centre of the screens' bounding box; z is its distance from the wall.
+glm::dvec3 WallFile::eyeOffset() const
+{
+    if (!top_.has("eye"))
+        failFile("missing table [eye] (z_mm: the eye's distance in front of the wall)");
+    const TableReader eye = top_.table("eye");
+    eye.rejectKeysOutside(eyeKeys);
+    return {eye.number("x_mm", -maxMm, maxMm, 0.0), eye.number("y_mm", -maxMm, maxMm, 0.0),
+            eye.numberAbove("z_mm", 0.0, maxMm)};
+}
+
+Wall WallFile::gridWall()
+{
+    const TableReader g = top_.table("grid");
+    g.rejectKeysOutside(gridKeys);
+    GridSpec grid;
+    grid.columns = g.integer("columns", 1, maxGridSide);
+    grid.rows = g.integer("rows", 1, maxGridSide);
+    grid.screenPx = {g.integer("width_px", 1, maxPx), g.integer("height_px", 1, maxPx)};
+    grid.screenMm = {g.numberAbove("width_mm", 0.0, maxMm), g.numberAbove("height_mm", 0.0, maxMm)};
+    grid.bezelMm = {g.number("bezel_horizontal_mm", 0.0, maxMm, 0.0), g.number("bezel_vertical_mm", 0.0, maxMm, 0.0)};
+    grid.eyeFromCentreMm = eyeOffset();
+
+    const bool perScreen = ranks_.has("per_screen");
+    if (perScreen) {
+        forbid(ranks_, "screens_per_rank", "cannot be combined with ranks.per_screen");
+        forbid(ranks_, "stacking", "cannot be combined with ranks.per_screen");
+    } else {
+        const bool vertical = ranks_.choice("stacking", {"horizontal", "vertical"}, 0) == 1;
+        grid.stacking = vertical ? Stacking::vertical : Stacking::horizontal;
+        grid.screensPerRank = ranks_.integer("screens_per_rank", 1, maxRank, 1);
+        const int stacked = vertical ? grid.rows : grid.columns;
+        if (stacked % grid.screensPerRank != 0)
+            ranks_.fail("screens_per_rank", std::to_string(grid.screensPerRank) + " must divide grid." +
+                                                (vertical ? "rows = " : "columns = ") + std::to_string(stacked) +
+                                                " (stacking = " + (vertical ? "vertical" : "horizontal") + ")");
+    }
+    Wall wall;
+    try {
+        wall = makeGridWall(grid);
+        if (perScreen) {
+            const std::vector<int> ranks = ranks_.integers("per_screen", 0, maxRank);
+            if (ranks.size() != wall.screens.size())
+                ranks_.fail("per_screen", "must list " + std::to_string(wall.screens.size()) +
+                                              " ranks, one per screen row-major (got " + std::to_string(ranks.size()) + ")");
+            if (const auto gap = rankGap(ranks))
+                ranks_.fail("per_screen", gapProblem(gap->second, ranks[gap->first]));
+            for (std::size_t i = 0; i < ranks.size(); ++i)
+                wall.screens[i].rank = ranks[i];
+            wall = assembleWall(std::move(wall.screens), wall.eyeMm);
+        }
+    } catch (const std::invalid_argument& e) {
+        failFile(e.what());
+    }
+    wall.sourceFile = path_;
+    return wall;
+}
+
+Wall WallFile::screenListWall()
+{
+    forbid(ranks_, "stacking", "applies only to a [grid]");
+    forbid(ranks_, "per_screen", "applies only to a [grid]; give each [[screen]] a rank");
+    screens_ = top_.arrayOfTables("screen");
+    std::vector<Screen> screens;
+    bool anyRank = false;
+    std::optional<std::size_t> firstWithoutRank;
+    for (const TableReader& s : screens_) {
+        s.rejectKeysOutside(screenKeys);
+        Screen screen;
+        screen.name = s.string("name");
+        // The name becomes part of file names (tile-NAME.exr) and window titles.
+        static const std::regex fileNameSafe("[A-Za-z0-9_.-]+");
+        if (!std::regex_match(screen.name, fileNameSafe))
+            s.fail("name", "must be letters, digits, '_', '.' or '-' (got \"" + screen.name + "\")");
+        for (std::size_t j = 0; j < screens.size(); ++j)
+            if (screens[j].name == screen.name)
+                s.fail("name", "\"" + screen.name + "\" is already the name of the screen on line " +
+                                   std::to_string(screens_[j].line()));
+        screen.widthPx = s.integer("width_px", 1, maxPx);
+        screen.heightPx = s.integer("height_px", 1, maxPx);
+        screen.widthMm = s.numberAbove("width_mm", 0.0, maxMm);
+        screen.heightMm = s.numberAbove("height_mm", 0.0, maxMm);
+        screen.lowerLeftMm = {s.number("x_mm", -maxMm, maxMm), s.number("y_mm", -maxMm, maxMm)};
+        for (std::size_t j = 0; j < screens.size(); ++j) {
+            const Screen& other = screens[j];
+            const double overlapX = std::min(screen.lowerRight().x, other.lowerRight().x) -
+                                    std::max(screen.lowerLeftMm.x, other.lowerLeftMm.x);
+            const double overlapY = std::min(screen.upperLeft().y, other.upperLeft().y) -
+                                    std::max(screen.lowerLeftMm.y, other.lowerLeftMm.y);
+            if (overlapX > 1e-6 && overlapY > 1e-6)
+                throw inputError(path_, s.line(),
+                                 "screen '" + screen.name + "' overlaps screen '" + other.name + "' (line " +
+                                     std::to_string(screens_[j].line()) + ") by " + show(overlapX) + " x " + show(overlapY) + " mm");
+        }
+        if (s.has("rank")) {
+            screen.rank = s.integer("rank", 0, maxRank);
+            anyRank = true;
+        } else if (!firstWithoutRank) {
+            firstWithoutRank = screens.size();
+        }
+        screens.push_back(screen);
+    }
+
+    if (anyRank) {
+        if (firstWithoutRank)
+            throw inputError(path_, screens_[*firstWithoutRank].line(),
+                             "screen '" + screens[*firstWithoutRank].name +
+                                 "' has no rank while other screens do: give every screen a rank or none");
+        forbid(ranks_, "screens_per_rank", "cannot be combined with a rank in each [[screen]]");
+        std::vector<int> ranks;
+        for (const Screen& screen : screens)
+            ranks.push_back(screen.rank);
+        if (const auto gap = rankGap(ranks))
+            screens_[gap->first].fail("rank", gapProblem(gap->second, ranks[gap->first]));
+    } else {
+        const int perRank = ranks_.integer("screens_per_rank", 1, maxRank, 1);
+        for (std::size_t i = 0; i < screens.size(); ++i)
+            screens[i].rank = int(i) / perRank;
+    }
+
+    glm::dvec2 lo = screens.front().lowerLeftMm, hi = lo;
+    for (const Screen& screen : screens) {
+        lo = glm::min(lo, screen.lowerLeftMm);
+        hi = glm::max(hi, glm::dvec2(screen.upperRight()));
+    }
+    const glm::dvec3 eyeMm = glm::dvec3((lo + hi) / 2.0, 0.0) + eyeOffset();
+    try {
+        return assembleWall(std::move(screens), eyeMm, path_);
+    } catch (const std::invalid_argument& e) {
+        failFile(e.what());
     }
 }
 
 void WallFile::checkRankCount(const Wall& wall) const
 {
-    const Entry* count = find("ranks", "count");
-    if (!count)
+    if (!ranks_.has("count"))
         return;
-    const int n = integerOf(*count, count->value, 1, maxRank + 1);
+    const int n = ranks_.integer("count", 1, maxRank + 1);
+    const std::string used = "but the screens use ranks 0.." + std::to_string(wall.rankCount - 1);
     if (n > wall.rankCount)
-        fail(count->line, "ranks.count = " + std::to_string(n) + " but the screens use ranks 0.." +
-                              std::to_string(wall.rankCount - 1) + ": rank " + std::to_string(wall.rankCount) + " owns no screen");
+        ranks_.fail("count", std::to_string(n) + " " + used + ": rank " + std::to_string(wall.rankCount) + " owns no screen");
     if (n < wall.rankCount)
-        fail(count->line, "ranks.count = " + std::to_string(n) + " but the screens use ranks 0.." + std::to_string(wall.rankCount - 1));
+        ranks_.fail("count", std::to_string(n) + " " + used);
 }
 
 void WallFile::placeWindows(Wall& wall) const
 {
-    const bool fullscreen = word("windows", "mode", {"windowed", "fullscreen"}, "windowed") == "fullscreen";
+    const bool fullscreen = windows_.choice("mode", {"windowed", "fullscreen"}, 0) == 1;
     if (!fullscreen) {
-        forbid("windows", "monitors", "applies only to windows.mode = fullscreen");
-        const glm::ivec2 origin{optionalInteger("windows", "origin_x_px", -maxPx, maxPx).value_or(0),
-                                optionalInteger("windows", "origin_y_px", -maxPx, maxPx).value_or(0)};
-        placeWindowsOnCanvas(wall, origin, real("windows", "scale", 0.0, maxWindowScale, true, 1.0));
-        for (Screen& screen : wall.screens) {
-            const std::string s = "screen." + screen.name;
-            forbid(s, "monitor", "applies only to windows.mode = fullscreen");
-            screen.window.x = optionalInteger(s, "window_x_px", -maxPx, maxPx).value_or(screen.window.x);
-            screen.window.y = optionalInteger(s, "window_y_px", -maxPx, maxPx).value_or(screen.window.y);
+        forbid(windows_, "monitors", "applies only to windows.mode = \"fullscreen\"");
+        const glm::ivec2 origin{windows_.integer("origin_x_px", -maxPx, maxPx, 0),
+                                windows_.integer("origin_y_px", -maxPx, maxPx, 0)};
+        placeWindowsOnCanvas(wall, origin, windows_.numberAbove("scale", 0.0, maxWindowScale, 1.0));
+        for (std::size_t i = 0; i < screens_.size(); ++i) {
+            const TableReader& s = screens_[i];
+            WindowPlacement& window = wall.screens[i].window;
+            forbid(s, "monitor", "applies only to windows.mode = \"fullscreen\"");
+            window.x = s.integer("window_x_px", -maxPx, maxPx, window.x);
+            window.y = s.integer("window_y_px", -maxPx, maxPx, window.y);
         }
         return;
     }
     for (const char* key : {"origin_x_px", "origin_y_px", "scale"})
-        forbid("windows", key, "applies only to windows.mode = windowed");
+        forbid(windows_, key, "applies only to windows.mode = \"windowed\"");
     std::vector<int> monitors(wall.screens.size());
     // Default: a rank's k-th screen goes to its k-th monitor.
     for (int rank = 0; rank < wall.rankCount; ++rank) {
@@ -463,24 +295,40 @@ void WallFile::placeWindows(Wall& wall) const
         for (std::size_t k = 0; k < owned.size(); ++k)
             monitors[owned[k]] = int(k);
     }
-    if (const Entry* list = find("windows", "monitors")) {
-        if (!section("grid"))
-            fail(list->line, "windows.monitors applies only to a [grid]; give each [screen.NAME] a monitor");
-        monitors = integerList(*list, 0, maxMonitor, wall.screens.size());
+    if (windows_.has("monitors")) {
+        if (!screens_.empty())
+            windows_.fail("monitors", "applies only to a [grid]; give each [[screen]] a monitor");
+        monitors = windows_.integers("monitors", 0, maxMonitor);
+        if (monitors.size() != wall.screens.size())
+            windows_.fail("monitors", "must list " + std::to_string(wall.screens.size()) +
+                                          " monitors, one per screen row-major (got " + std::to_string(monitors.size()) + ")");
     }
     for (std::size_t i = 0; i < wall.screens.size(); ++i) {
         Screen& screen = wall.screens[i];
-        const std::string s = "screen." + screen.name;
-        forbid(s, "window_x_px", "applies only to windows.mode = windowed");
-        forbid(s, "window_y_px", "applies only to windows.mode = windowed");
         screen.window = WindowPlacement{};
         screen.window.fullscreen = true;
-        screen.window.monitor = optionalInteger(s, "monitor", 0, maxMonitor).value_or(monitors[i]);
+        screen.window.monitor = monitors[i];
+        if (i < screens_.size()) {
+            const TableReader& s = screens_[i];
+            forbid(s, "window_x_px", "applies only to windows.mode = \"windowed\"");
+            forbid(s, "window_y_px", "applies only to windows.mode = \"windowed\"");
+            screen.window.monitor = s.integer("monitor", 0, maxMonitor, monitors[i]);
+        }
     }
 }
 
 } // namespace
 
-Wall loadWall(const std::string& path) { return WallFile(path).load(); }
+Wall loadWall(const std::string& path)
+{
+    if (!std::filesystem::is_regular_file(path) || !std::ifstream(path))
+        throw inputError(path, 0, "cannot open the wall file");
+    if (std::filesystem::path(path).extension() == ".ini")
+        throw inputError(path, 0, convertHint);
+    if (const int line = oldIniLine(path))
+        throw inputError(path, line, "old INI syntax: " + convertHint);
+    const TomlValue root = config::parseTomlFile(path);
+    return WallFile(root, path).load();
+}
 
 } // namespace aurorawall::wall

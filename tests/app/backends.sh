@@ -2,7 +2,7 @@
 # Test 3, EGL vs OSMesa: the same wall rendered with either headless backend gives identical
 # pixels (both are Mesa llvmpipe here), tile by tile and gathered.
 source "$(dirname "$0")/lib.sh"
-wall="$WALLS/desktop-3x1.ini"
+wall="$WALLS/desktop-3x1.toml"
 
 for backend in egl osmesa; do
     t0=$(now)

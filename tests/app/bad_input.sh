@@ -12,7 +12,7 @@
 source "$(dirname "$0")/lib.sh"
 set_name="${1:-main}"
 WALL_DATA="$SRC_DIR/tests/wall/data"
-TINY="$DATA/tiny-2x2.ini"
+TINY="$DATA/tiny-2x2.toml"
 MAX_SECONDS=15
 failures=0 cases=0
 
@@ -90,14 +90,18 @@ main_cases() {
     local f
     for f in missing-key negative-size unknown-key rank-without-screen grid-rank-gap nan syntax-error \
              eye-behind-wall; do
-        expect_error "wall-$f" 4 "$(at_marked_line "$WALL_DATA/$f.ini")" --wall "$WALL_DATA/$f.ini" --scene "$SCENE"
+        expect_error "wall-$f" 4 "$(at_marked_line "$WALL_DATA/$f.toml")" --wall "$WALL_DATA/$f.toml" --scene "$SCENE"
     done
     # Two-screen walls, two ranks.
     for f in overlap rank-gap; do
-        expect_error "wall-$f" 2 "$(at_marked_line "$WALL_DATA/$f.ini")" --wall "$WALL_DATA/$f.ini" --scene "$SCENE"
+        expect_error "wall-$f" 2 "$(at_marked_line "$WALL_DATA/$f.toml")" --wall "$WALL_DATA/$f.toml" --scene "$SCENE"
     done
-    expect_error wall-missing-file 4 "nonexistent-wall\.ini" --wall "$WORK/nonexistent-wall.ini" --scene "$SCENE"
-    expect_error wall-wrong-rank-count 3 "desktop-2x2\.ini.*4 ranks.*3" --wall "$WALLS/desktop-2x2.ini" --scene "$SCENE"
+    expect_error wall-missing-file 4 "nonexistent-wall\.toml" --wall "$WORK/nonexistent-wall.toml" --scene "$SCENE"
+    expect_error wall-wrong-rank-count 3 "desktop-2x2\.toml.*4 ranks.*3" --wall "$WALLS/desktop-2x2.toml" --scene "$SCENE"
+    expect_error wall-ini-file 4 "old-desktop-2x2\.ini: INI wall files are no longer read; convert to TOML" \
+        --wall "$WALL_DATA/old-desktop-2x2.ini" --scene "$SCENE"
+    expect_error wall-ini-syntax 4 "$(at_marked_line "$WALL_DATA/old-ini-words.toml").*INI wall files are no longer read" \
+        --wall "$WALL_DATA/old-ini-words.toml" --scene "$SCENE"
 
     # Scene files.
     expect_error scene-missing-file 4 "nonexistent-scene\.toml" --wall "$TINY" --scene "$WORK/nonexistent-scene.toml"

@@ -7,7 +7,7 @@
 source "$(dirname "$0")/lib.sh"
 
 check_balance() {
-    local name="$1" ranks="$2" wall="$WALLS/$1.ini"
+    local name="$1" ranks="$2" wall="$WALLS/$1.toml"
     note "$name: $ranks ranks, static and --balance"
     aw_mpirun "$ranks" render --wall "$wall" --scene "$SCENE" --frames 3 --gather --quiet --balance off \
         --out "$WORK/$name-static" --stats "$WORK/$name-static.csv"
@@ -25,7 +25,7 @@ check_balance() {
 # drawing in time, and balancing the rays' work instead of time only moves bands: the same wall,
 # balanced by work with one lane and static with two.
 check_turns() {
-    local name="$1" ranks="$2" wall="$WALLS/$1.ini"
+    local name="$1" ranks="$2" wall="$WALLS/$1.toml"
     note "$name: $ranks ranks drawing in turns"
     aw_mpirun "$ranks" render --wall "$wall" --scene "$SCENE" --frames 3 --gather --quiet --balance on --balance-bands 5 \
         --draw-lanes 1 --balance-by work --out "$WORK/$name-turns-balanced"

@@ -3,7 +3,7 @@
 # render on the screens, and is exactly black on the bezels (which the reference shows lit).
 source "$(dirname "$0")/lib.sh"
 HALF_ULPS="${HALF_ULPS:-1}"
-wall="$WALLS/desktop-2x2-bezel.ini"
+wall="$WALLS/desktop-2x2-bezel.toml"
 
 t0=$(now)
 aw_mpirun 4 render --wall "$wall" --scene "$SCENE" --gather --quiet --out "$WORK/wall"

@@ -2,15 +2,15 @@
 //
 //   compare_walls diff REF.exr OTHER.exr [--half-ulps N]
 //       Same size; every channel of every pixel within N half-float ulps (default 0: identical).
-//   compare_walls content IMAGE.exr WALL.ini [--min-max V] [--min-lit-screens K] [--lit-above L]
+//   compare_walls content IMAGE.exr WALL.toml [--min-max V] [--min-lit-screens K] [--lit-above L]
 //       No non-finite or clamped (HALF_MAX) values, brightest channel >= V, and at least K screens
 //       of the wall (their canvas rectangles) with at least 1% and at most 99% of their pixels
 //       brighter than L (default 1e-4) in some channel: structure, not a flat fill.
-//   compare_walls bezel WALL.ini REF.exr GATHERED.exr [--half-ulps N]
+//   compare_walls bezel WALL.toml REF.exr GATHERED.exr [--half-ulps N]
 //       REF is the --single-screen render of the wall's whole canvas, GATHERED the wall's
 //       --gather: screen pixels as in diff, bezel pixels (in no screen) exactly black in GATHERED
 //       and, so that the check means something, not all black in REF.
-//   compare_walls tiles WALL.ini REF.exr TILE_DIR [--half-ulps N]
+//   compare_walls tiles WALL.toml REF.exr TILE_DIR [--half-ulps N]
 //       TILE_DIR/tile-<screen>.exr equals REF cropped at the screen's canvas offset, for every screen.
 //
 // Every command prints its measurements on one line ("max_abs=... max_rel=...") and exits 0 when
@@ -189,7 +189,7 @@ int contentCommand(int argc, char** argv)
 {
     const Args a = parseArgs(argc, argv, {"min-max", "min-lit-screens", "lit-above"});
     if (a.positional.size() != 2)
-        usage("content IMAGE.exr WALL.ini [--min-max V] [--min-lit-screens K] [--lit-above L]");
+        usage("content IMAGE.exr WALL.toml [--min-max V] [--min-lit-screens K] [--lit-above L]");
     const Image image = aurorawall::io::readExr(a.positional[0]);
     const aurorawall::wall::Wall wall = aurorawall::wall::loadWall(a.positional[1]);
     const double minMax = a.option("min-max", 1e-3);
@@ -252,7 +252,7 @@ int bezelCommand(int argc, char** argv)
 {
     const Args a = parseArgs(argc, argv, {"half-ulps"});
     if (a.positional.size() != 3)
-        usage("bezel WALL.ini REF.exr GATHERED.exr [--half-ulps N]");
+        usage("bezel WALL.toml REF.exr GATHERED.exr [--half-ulps N]");
     const aurorawall::wall::Wall wall = aurorawall::wall::loadWall(a.positional[0]);
     const Image ref = aurorawall::io::readExr(a.positional[1]);
     const Image gathered = aurorawall::io::readExr(a.positional[2]);
@@ -314,7 +314,7 @@ int tilesCommand(int argc, char** argv)
 {
     const Args a = parseArgs(argc, argv, {"half-ulps"});
     if (a.positional.size() != 3)
-        usage("tiles WALL.ini REF.exr TILE_DIR [--half-ulps N]");
+        usage("tiles WALL.toml REF.exr TILE_DIR [--half-ulps N]");
     const aurorawall::wall::Wall wall = aurorawall::wall::loadWall(a.positional[0]);
     const Image ref = aurorawall::io::readExr(a.positional[1]);
     const double halfUlps = a.option("half-ulps", 0);

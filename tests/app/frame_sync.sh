@@ -3,7 +3,7 @@
 # animation time the master broadcast: the per-rank columns of --stats equal the frame's, and
 # the frames and times follow --start-time and --dt.
 source "$(dirname "$0")/lib.sh"
-wall="$DATA/tiny-2x2.ini"
+wall="$DATA/tiny-2x2.toml"
 ranks=4 frames=5 dt=0.25
 
 # CSV, start time 0.

@@ -3,7 +3,7 @@
 # screen (4 windows titled "aurorawall <screen>", counted with xwininfo while it runs) and gathers
 # the same wall.exr as the headless EGL backend. Exits 77 (skipped) when xvfb-run is missing.
 source "$(dirname "$0")/lib.sh"
-wall="$WALLS/desktop-2x2.ini"
+wall="$WALLS/desktop-2x2.toml"
 args=(render --wall "$wall" --scene "$SCENE" --frames 2 --gather)
 
 if [ "${1:-}" = --inside-x ]; then

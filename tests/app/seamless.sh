@@ -8,7 +8,7 @@ source "$(dirname "$0")/lib.sh"
 HALF_ULPS="${HALF_ULPS:-1}"
 
 check_wall() {
-    local name="$1" ranks="$2" wall="$WALLS/$1.ini"
+    local name="$1" ranks="$2" wall="$WALLS/$1.toml"
     note "$name: $ranks ranks, --gather --tiles"
     local t0; t0=$(now)
     aw_mpirun "$ranks" render --wall "$wall" --scene "$SCENE" --gather --tiles --quiet --out "$WORK/$name-wall"

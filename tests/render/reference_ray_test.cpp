@@ -48,7 +48,7 @@ protected:
     {
         context_ = gl::createContext(gl::Backend::Egl);
         scene_ = new scene::Scene(finestSubstorm());
-        view_ = new app::SceneView(app::sceneView(*scene_, kSource + "/config/walls/single.ini", {64, 36}));
+        view_ = new app::SceneView(app::sceneView(*scene_, kSource + "/config/walls/single.toml", {64, 36}));
         frames_ = new fluid::FluxFrames(fluid::simulateCurtainDetail(components::fluid_detail::curtainDetailSpec(scene_->settings<components::fluid_detail::Settings>())));
     }
     static void TearDownTestSuite()

@@ -24,13 +24,13 @@ struct Difference {
     double skipMs = 0.0, naiveMs = 0.0;
 };
 
-// The preset at 64x36 (field of view of config/walls/single.ini), frame 0, with `stepKm`, skipping
+// The preset at 64x36 (field of view of config/walls/single.toml), frame 0, with `stepKm`, skipping
 // on and off: per-pixel relative difference over the pixels above one 8-bit step of the preview.
 Difference skipAgainstNaive(const std::string& preset, double stepKm)
 {
     scene::Scene s = components::loadScene(kSource + "/config/scenes/" + preset);
     s.settings<components::aurora::Settings>().stepKm = stepKm;
-    const app::SceneView view = app::sceneView(s, kSource + "/config/walls/single.ini", {64, 36});
+    const app::SceneView view = app::sceneView(s, kSource + "/config/walls/single.toml", {64, 36});
     s.settings<components::aurora::Settings>().skipEmptySpace = true;
     const app::TimedRender skip = app::renderView(s, view, kSource + "/shaders", 1);
     s.settings<components::aurora::Settings>().skipEmptySpace = false;

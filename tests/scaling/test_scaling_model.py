@@ -134,7 +134,7 @@ class WallsTest(unittest.TestCase):
             subprocess.run([os.path.join(SOURCE, "launch/scaling"), "--dry-run", "--scale", "1", "--out", out],
                            check=True, stdout=subprocess.DEVNULL)
             for n in (1, 2, 4, 8, 10):
-                name = f"scaling-{n}.ini"
+                name = f"scaling-{n}.toml"
                 self.assertTrue(filecmp.cmp(os.path.join(out, "walls", name),
                                             os.path.join(SOURCE, "config/walls", name), shallow=False), name)
 

@@ -38,7 +38,7 @@ void expectCornersOnNdcCorners(const Wall& wall, glm::dvec3 eye)
 
 TEST(Frustum, CornersOfEveryShippedScreenLandOnNdcCorners)
 {
-    for (const char* name : {"desktop-2x2.ini", "single.ini", "uaf-powerwall.ini", "desktop-3x1.ini", "desktop-2x2-bezel.ini"}) {
+    for (const char* name : {"desktop-2x2.toml", "single.toml", "uaf-powerwall.toml", "desktop-3x1.toml", "desktop-2x2-bezel.toml"}) {
         const Wall wall = loadWall(std::string(WALL_CONFIG_DIR) + "/" + name);
         expectCornersOnNdcCorners(wall, wall.eyeMm);
         // An eye far off to the side and low: every frustum is strongly asymmetric.
@@ -48,7 +48,7 @@ TEST(Frustum, CornersOfEveryShippedScreenLandOnNdcCorners)
 
 TEST(Frustum, SingleScreenBenchmarkViewHasA70DegreeVerticalField)
 {
-    const Wall wall = loadWall(std::string(WALL_CONFIG_DIR) + "/single.ini");
+    const Wall wall = loadWall(std::string(WALL_CONFIG_DIR) + "/single.toml");
     const Frustum f = offAxisFrustum(wall.screens[0], wall.eyeMm, 10.0, 1e4);
     const double fovDeg = glm::degrees(std::atan(f.top / f.nearPlane) - std::atan(f.bottom / f.nearPlane));
     EXPECT_NEAR(fovDeg, 70.0, 1e-9);
@@ -58,7 +58,7 @@ TEST(Frustum, SingleScreenBenchmarkViewHasA70DegreeVerticalField)
 
 TEST(Frustum, CentredEyeViewIsATranslation)
 {
-    const Wall wall = loadWall(std::string(WALL_CONFIG_DIR) + "/single.ini");
+    const Wall wall = loadWall(std::string(WALL_CONFIG_DIR) + "/single.toml");
     const Frustum f = offAxisFrustum(wall.screens[0], wall.eyeMm, 10.0, 1e4);
     const glm::dvec4 eyeInView = f.view * glm::dvec4(wall.eyeMm, 1.0);
     EXPECT_NEAR(glm::length(glm::dvec3(eyeInView)), 0.0, 1e-12);
@@ -71,7 +71,7 @@ TEST(Frustum, CentredEyeViewIsATranslation)
 
 TEST(Frustum, EyeOnOrBehindTheScreenIsRejected)
 {
-    const Wall wall = loadWall(std::string(WALL_CONFIG_DIR) + "/single.ini");
+    const Wall wall = loadWall(std::string(WALL_CONFIG_DIR) + "/single.toml");
     EXPECT_THROW(offAxisFrustum(wall.screens[0], {160, 90, 0}, 1.0, 10.0), std::invalid_argument);
     EXPECT_THROW(offAxisFrustum(wall.screens[0], {160, 90, -100}, 1.0, 10.0), std::invalid_argument);
     EXPECT_THROW(offAxisFrustum(wall.screens[0], {160, 90, 100}, 10.0, 1.0), std::invalid_argument);

@@ -66,7 +66,7 @@ void expectRaysProjectToTheirPixels(const Wall& wall)
 
 TEST(TileRays, RayThroughEachPixelCentreProjectsToThatPixel)
 {
-    for (const char* name : {"desktop-2x2.ini", "single.ini", "uaf-powerwall.ini", "desktop-3x1.ini", "desktop-2x2-bezel.ini"})
+    for (const char* name : {"desktop-2x2.toml", "single.toml", "uaf-powerwall.toml", "desktop-3x1.toml", "desktop-2x2-bezel.toml"})
         expectRaysProjectToTheirPixels(shipped(name));
     expectRaysProjectToTheirPixels(seamlessUafPitchWall());
 }
@@ -87,7 +87,7 @@ TEST(TileRays, UnsharedCanvasRaysProjectToTheirPixels)
 
 TEST(TileRays, RegionOffsetShiftsTheTile)
 {
-    const Wall wall = shipped("desktop-2x2-bezel.ini");
+    const Wall wall = shipped("desktop-2x2-bezel.toml");
     const TileRays whole = tileRays(wall, 3), region = tileRays(wall, 3, {100, 60});
     EXPECT_EQ(region.pixelOffset, whole.pixelOffset + glm::ivec2(100, 60));
     EXPECT_EQ(region.originDir, whole.originDir);
@@ -137,7 +137,7 @@ std::vector<TileRays> allTileRays(const Wall& wall)
 
 TEST(TileRays, ZeroBezelSeamsShareBitIdenticalFloatRays)
 {
-    for (const Wall& wall : {shipped("desktop-2x2.ini"), shipped("desktop-3x1.ini"), seamlessUafPitchWall()}) {
+    for (const Wall& wall : {shipped("desktop-2x2.toml"), shipped("desktop-3x1.toml"), seamlessUafPitchWall()}) {
         SCOPED_TRACE(wall.sourceFile);
         ASSERT_TRUE(wall.sharedCanvas);
         EXPECT_EQ(seamMismatches(wall, allTileRays(wall)), 0);
@@ -182,8 +182,8 @@ void expectBezelWallIsCutOutOfSingleScreen(const Wall& wall)
 
 TEST(TileRays, BezelWallIsTheSingleScreenWithBezelPixelsCutOut)
 {
-    expectBezelWallIsCutOutOfSingleScreen(shipped("desktop-2x2-bezel.ini"));
-    expectBezelWallIsCutOutOfSingleScreen(shipped("uaf-powerwall.ini"));
+    expectBezelWallIsCutOutOfSingleScreen(shipped("desktop-2x2-bezel.toml"));
+    expectBezelWallIsCutOutOfSingleScreen(shipped("uaf-powerwall.toml"));
 }
 
 } // namespace

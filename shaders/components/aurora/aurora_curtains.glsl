@@ -33,15 +33,9 @@ struct CurtainHit {
 // length km, signed lateral distance km, distance beyond the segment's ends km).
 vec4 segmentProjection(int c, int j, vec3 n)
 {
-    float R = uPlanetRadiusKm;
     vec4 a = texelFetch(uCurtainPolylines, ivec2(j, c), 0);
     vec4 b = texelFetch(uCurtainPolylines, ivec2(j + 1, c), 0);
-    // cross(a, b - a), not cross(a, b): for points kilometres apart the latter cancels to about 4
-    // digits in float and tilts the great circle by up to a kilometre at the segment's end.
-    vec3 normal = normalize(cross(a.xyz, b.xyz - a.xyz));
-    float along = R * atan(dot(cross(a.xyz, n), normal), dot(a.xyz, n));
-    float length = b.w - a.w;
-    return vec4(along, length, R * asin(clamp(dot(n, normal), -1.0, 1.0)), max(max(-along, along - length), 0.0));
+    return projectOnSegment(a.xyz, b.xyz, b.w - a.w, n, uPlanetRadiusKm);
 }
 
 // Curtain coordinates of direction n relative to curtain c, starting from polyline point i (the

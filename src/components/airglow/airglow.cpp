@@ -79,7 +79,7 @@ private:
     std::vector<glm::dvec3> rgb_;
 };
 
-Layer readLayer(const scene::TableReader& t)
+Layer readLayer(const config::TableReader& t)
 {
     Layer l;
     if (!t.has("line"))
@@ -97,12 +97,12 @@ public:
     std::string name() const override { return Settings::kComponent; }
     std::vector<std::string> needs() const override { return {"planet"}; }
     std::unique_ptr<scene::ComponentSettings> defaultSettings() const override { return std::make_unique<Settings>(); }
-    void read(const scene::TableReader& t, scene::Scene& scene, scene::ComponentSettings& settings) const override
+    void read(const config::TableReader& t, scene::Scene& scene, scene::ComponentSettings& settings) const override
     {
         auto& s = dynamic_cast<Settings&>(settings);
         if (t.has("layer")) {
             s.layers.clear();
-            for (const scene::TableReader& l : t.arrayOfTables("layer"))
+            for (const config::TableReader& l : t.arrayOfTables("layer"))
                 s.layers.push_back(readLayer(l));
         }
         if (s.layers.size() > Settings::kMaxLayers)

@@ -42,7 +42,7 @@ private:
 };
 
 // The fields a key may set; `c` holds the defaults (the curtain's own keys, or the previous key).
-CurtainKey readCurtainKey(const scene::TableReader& t, CurtainKey c)
+CurtainKey readCurtainKey(const config::TableReader& t, CurtainKey c)
 {
     if (t.has("points_lat_lon_deg") || c.pointsLatLonDeg.empty())
         c.pointsLatLonDeg = t.pairs("points_lat_lon_deg", {-90, -360}, {90, 360});
@@ -56,7 +56,7 @@ CurtainKey readCurtainKey(const scene::TableReader& t, CurtainKey c)
 
 // A curtain is either one state (its own keys) or a list of [[aurora.curtain.key]] tables, each
 // with time_s; a key leaves out what does not change from the key before it.
-Curtain readCurtain(const scene::TableReader& t)
+Curtain readCurtain(const config::TableReader& t)
 {
     Curtain c;
     c.thicknessKm = t.number("thickness_km", 0.01, 1000, c.thicknessKm);
@@ -67,7 +67,7 @@ Curtain readCurtain(const scene::TableReader& t)
         c.keys.push_back(readCurtainKey(t, CurtainKey{}));
     } else {
         CurtainKey previous;
-        for (const scene::TableReader& k : t.arrayOfTables("key")) {
+        for (const config::TableReader& k : t.arrayOfTables("key")) {
             CurtainKey key = readCurtainKey(k, previous);
             key.timeS = k.number("time_s", -1e15, 1e15);
             if (!c.keys.empty() && key.timeS <= c.keys.back().timeS)
@@ -90,7 +90,7 @@ public:
     std::string name() const override { return Settings::kComponent; }
     std::vector<std::string> needs() const override { return {"planet"}; }
     std::unique_ptr<scene::ComponentSettings> defaultSettings() const override { return std::make_unique<Settings>(); }
-    void read(const scene::TableReader& t, scene::Scene& scene, scene::ComponentSettings& settings) const override
+    void read(const config::TableReader& t, scene::Scene& scene, scene::ComponentSettings& settings) const override
     {
         auto& a = dynamic_cast<Settings&>(settings);
         a.spectrum = t.choice("spectrum", {"maxwellian", "monoenergetic"},
@@ -113,7 +113,7 @@ public:
         a.tableEnergyCount = static_cast<int>(t.number("table_energy_count", 2, 4096, a.tableEnergyCount));
         if (t.has("curtain")) {
             a.curtains.clear(); // a derived scene's curtains replace its base's
-            for (const scene::TableReader& c : t.arrayOfTables("curtain"))
+            for (const config::TableReader& c : t.arrayOfTables("curtain"))
                 a.curtains.push_back(readCurtain(c));
         }
         if (a.curtains.size() > 16)
@@ -123,6 +123,7 @@ public:
     {
         return {"components/aurora/deposition_coords.glsl", "components/aurora/deposition.glsl",
                 "components/aurora/footprint_map.glsl", "components/aurora/curtain_profile.glsl",
+                "components/aurora/segment_projection.glsl",
                 "components/aurora/aurora_curtains.glsl"};
     }
     std::string shaderShadeCall() const override { return "shadeAurora(ray)"; }

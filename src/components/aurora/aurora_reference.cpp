@@ -5,6 +5,12 @@
 #include "aurora/emission.h"
 #include "scene/ray_steps.h"
 
+namespace aurorawall::f64 {
+namespace {
+#include "components/aurora/segment_projection.glsl"
+} // namespace
+} // namespace aurorawall::f64
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -44,8 +50,8 @@ AuroraReference::AuroraReference(const Settings& aurora, double planetRadiusKm, 
 }
 
 // The nearest point of curtain `c` to footprint direction `unit` and the curtain coordinates
-// there, by exact projection on its segments (segmentProjection of aurora_curtains.glsl in
-// double, over every segment that can be nearest). A point of a segment of length L is within L/2
+// there, by exact projection on its segments (the shader's projectOnSegment in double, over every
+// segment that can be nearest, not only those around the footprint map's point). A point of a segment of length L is within L/2
 // of one of its ends, so a segment whose nearer end is farther than (nearest vertex) + L_max/2
 // cannot be the nearest: only the others are projected.
 AuroraReference::Nearest AuroraReference::nearestOn(const Curtain& c, glm::dvec3 unit) const
@@ -64,16 +70,12 @@ AuroraReference::Nearest AuroraReference::nearestOn(const Curtain& c, glm::dvec3
         const glm::dvec3& b = c.points[j + 1];
         if (std::max(glm::dot(a, unit), glm::dot(b, unit)) < minDot)
             continue;
-        const glm::dvec3 normal = glm::normalize(glm::cross(a, b));
-        const double along = R * std::atan2(glm::dot(glm::cross(a, unit), normal), glm::dot(a, unit));
-        const double length = c.arclengthKm[j + 1] - c.arclengthKm[j];
-        const double lateral = R * std::asin(std::clamp(glm::dot(unit, normal), -1.0, 1.0));
-        const double beyond = std::max({-along, along - length, 0.0});
-        const double distance = std::hypot(lateral, beyond);
+        const glm::dvec4 p = f64::projectOnSegment(a, b, c.arclengthKm[j + 1] - c.arclengthKm[j], unit, R);
+        const double distance = std::hypot(p.z, p.w);
         if (distance < best.distanceKm) {
             best.distanceKm = distance;
-            best.sKm = c.arclengthKm[j] + std::clamp(along, 0.0, length);
-            best.uKm = lateral;
+            best.sKm = c.arclengthKm[j] + std::clamp(p.x, 0.0, p.y);
+            best.uKm = p.z;
         }
     }
     return best;

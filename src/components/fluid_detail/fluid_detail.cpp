@@ -15,7 +15,7 @@ public:
     std::string name() const override { return Settings::kComponent; }
     std::vector<std::string> needs() const override { return {"aurora"}; }
     std::unique_ptr<scene::ComponentSettings> defaultSettings() const override { return std::make_unique<Settings>(); }
-    void read(const scene::TableReader& t, scene::Scene&, scene::ComponentSettings& settings) const override
+    void read(const config::TableReader& t, scene::Scene&, scene::ComponentSettings& settings) const override
     {
         auto& f = dynamic_cast<Settings&>(settings);
         f.cellsAlong = static_cast<int>(t.number("cells_along", 16, 4096, f.cellsAlong));

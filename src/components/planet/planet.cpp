@@ -47,7 +47,7 @@ class Planet : public scene::Component {
 public:
     std::string name() const override { return Settings::kComponent; }
     std::unique_ptr<scene::ComponentSettings> defaultSettings() const override { return std::make_unique<Settings>(); }
-    void read(const scene::TableReader& t, scene::Scene& scene, scene::ComponentSettings& settings) const override
+    void read(const config::TableReader& t, scene::Scene& scene, scene::ComponentSettings& settings) const override
     {
         auto& s = dynamic_cast<Settings&>(settings);
         scene.planetRadiusKm = t.number("radius_km", 1.0, 1e6, scene.planetRadiusKm);

@@ -33,7 +33,7 @@ private:
 
 // A light is given as seen from a site: where it stands in that sky (elevation above the
 // horizon, azimuth clockwise from north), and its illuminance above the atmosphere.
-Light readLight(const scene::TableReader& t)
+Light readLight(const config::TableReader& t)
 {
     constexpr double degree = 3.14159265358979323846 / 180.0;
     Light l;
@@ -53,7 +53,7 @@ public:
     std::string name() const override { return Settings::kComponent; }
     std::vector<std::string> needs() const override { return {"atmosphere"}; }
     std::unique_ptr<scene::ComponentSettings> defaultSettings() const override { return std::make_unique<Settings>(); }
-    void read(const scene::TableReader& t, scene::Scene&, scene::ComponentSettings& settings) const override
+    void read(const config::TableReader& t, scene::Scene&, scene::ComponentSettings& settings) const override
     {
         auto& s = dynamic_cast<Settings&>(settings);
         s.viewSteps = static_cast<int>(t.number("view_steps", 1, 1024, s.viewSteps));
@@ -61,7 +61,7 @@ public:
         s.lightSteps = static_cast<int>(t.number("light_steps", 1, 1024, s.lightSteps));
         if (t.has("light")) {
             s.lights.clear();
-            for (const scene::TableReader& l : t.arrayOfTables("light"))
+            for (const config::TableReader& l : t.arrayOfTables("light"))
                 s.lights.push_back(readLight(l));
         }
         if (s.lights.size() > kMaxLights)

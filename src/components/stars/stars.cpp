@@ -24,7 +24,7 @@ class Stars : public scene::Component {
 public:
     std::string name() const override { return Settings::kComponent; }
     std::unique_ptr<scene::ComponentSettings> defaultSettings() const override { return std::make_unique<Settings>(); }
-    void read(const scene::TableReader& t, scene::Scene&, scene::ComponentSettings& settings) const override
+    void read(const config::TableReader& t, scene::Scene&, scene::ComponentSettings& settings) const override
     {
         auto& s = dynamic_cast<Settings&>(settings);
         s.density = t.number("density", 0.0, 1.0, s.density);

@@ -1,7 +1,7 @@
 #pragma once
-// Reading a TOML scene file with errors that name file and line (toml11 from Debian).
-// Every table is read through a TableReader, which knows which keys it has consumed,
-// so a misspelt key is reported instead of silently ignored.
+// Reading a TOML config file (a wall, a scene) with errors that name file, line and key
+// (toml11 from Debian). Every table is read through a TableReader, which knows which keys it has
+// consumed, so a misspelt key is reported instead of silently ignored.
 #include <glm/glm.hpp>
 #include <toml.hpp>
 
@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-namespace aurorawall::scene {
+namespace aurorawall::config {
 
 using TomlValue = toml::basic_value<toml::discard_comments>;
 
@@ -25,6 +25,14 @@ public:
     // Numbers must be finite and within [lo, hi]; integers are accepted where floats are asked for.
     double number(const std::string& key, double lo, double hi) const;
     double number(const std::string& key, double lo, double hi, double fallback) const;
+    // A finite number in (lo, hi]: lo itself excluded, e.g. a size or a distance that must be > 0.
+    double numberAbove(const std::string& key, double lo, double hi) const;
+    double numberAbove(const std::string& key, double lo, double hi, double fallback) const;
+    // A TOML integer (not a float, even 2.0) within [lo, hi].
+    int integer(const std::string& key, int lo, int hi) const;
+    int integer(const std::string& key, int lo, int hi, int fallback) const;
+    // An array of TOML integers, each within [lo, hi].
+    std::vector<int> integers(const std::string& key, int lo, int hi) const;
     std::string string(const std::string& key) const;
     std::string string(const std::string& key, const std::string& fallback) const;
     std::vector<std::string> strings(const std::string& key) const;
@@ -42,6 +50,9 @@ public:
 
     // Throws for the first key that was never read (a typo, or a key of a component not listed).
     void rejectUnknownKeys() const;
+    // Throws for the first key (in file order) that is not one of known, listing them: called
+    // before reading, it reports a typo as itself rather than as the key it should have been.
+    void rejectKeysOutside(const std::vector<std::string>& known) const;
 
     int line() const;
     int lineOf(const std::string& key) const;
@@ -58,4 +69,4 @@ private:
     mutable std::set<std::string> read_;
 };
 
-} // namespace aurorawall::scene
+} // namespace aurorawall::config

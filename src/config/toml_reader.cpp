@@ -1,12 +1,13 @@
-#include "scene/toml_reader.h"
+#include "config/toml_reader.h"
 
 #include "common/input_error.h"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <sstream>
 
-namespace aurorawall::scene {
+namespace aurorawall::config {
 
 namespace {
 
@@ -100,6 +101,70 @@ double TableReader::number(const std::string& key, double lo, double hi) const
 double TableReader::number(const std::string& key, double lo, double hi, double fallback) const
 {
     return has(key) ? number(key, lo, hi) : fallback;
+}
+
+double TableReader::numberAbove(const std::string& key, double lo, double hi) const
+{
+    double x = 0;
+    if (!toNumber(at(key), x))
+        fail(key, "expected a number");
+    if (!std::isfinite(x) || x <= lo || x > hi) {
+        std::ostringstream s;
+        s << "must be a finite number in (" << lo << ", " << hi << "] (got " << x << ")";
+        fail(key, s.str());
+    }
+    return x;
+}
+
+double TableReader::numberAbove(const std::string& key, double lo, double hi, double fallback) const
+{
+    return has(key) ? numberAbove(key, lo, hi) : fallback;
+}
+
+// Integers are TOML integers: a float, even 2.0, is not a count of screens or pixels.
+static bool toInteger(const TomlValue& v, int lo, int hi, int& out)
+{
+    if (!v.is_integer() || v.as_integer() < lo || v.as_integer() > hi)
+        return false;
+    out = static_cast<int>(v.as_integer());
+    return true;
+}
+
+static std::string integerProblem(const TomlValue& v, int lo, int hi)
+{
+    if (!v.is_integer())
+        return "expected an integer";
+    return "must be an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "] (got " +
+           std::to_string(v.as_integer()) + ")";
+}
+
+int TableReader::integer(const std::string& key, int lo, int hi) const
+{
+    const TomlValue& v = at(key);
+    int x = 0;
+    if (!toInteger(v, lo, hi, x))
+        fail(key, integerProblem(v, lo, hi));
+    return x;
+}
+
+int TableReader::integer(const std::string& key, int lo, int hi, int fallback) const
+{
+    return has(key) ? integer(key, lo, hi) : fallback;
+}
+
+std::vector<int> TableReader::integers(const std::string& key, int lo, int hi) const
+{
+    const TomlValue& v = at(key);
+    if (!v.is_array())
+        fail(key, "expected an array of integers");
+    std::vector<int> out;
+    for (const auto& item : v.as_array()) {
+        int x = 0;
+        if (!toInteger(item, lo, hi, x))
+            fail(key, "item " + std::to_string(out.size()) + ": " + integerProblem(item, lo, hi));
+        out.push_back(x);
+    }
+    return out;
 }
 
 std::string TableReader::string(const std::string& key) const
@@ -219,6 +284,22 @@ std::vector<TableReader> TableReader::arrayOfTables(const std::string& key) cons
     return out;
 }
 
+void TableReader::rejectKeysOutside(const std::vector<std::string>& known) const
+{
+    const std::pair<const std::string, TomlValue>* first = nullptr;
+    for (const auto& entry : table_.as_table())
+        if (std::find(known.begin(), known.end(), entry.first) == known.end() &&
+            (!first || entry.second.location().line() < first->second.location().line()))
+            first = &entry;
+    if (!first)
+        return;
+    std::string list;
+    for (const std::string& k : known)
+        list += (list.empty() ? "" : ", ") + k;
+    throw inputError(file_, static_cast<int>(first->second.location().line()),
+                     "unknown key '" + qualified(first->first) + "'; known keys: " + list);
+}
+
 void TableReader::rejectUnknownKeys() const
 {
     for (const auto& [key, value] : table_.as_table())
@@ -227,4 +308,4 @@ void TableReader::rejectUnknownKeys() const
                              "unknown key '" + qualified(key) + "'");
 }
 
-} // namespace aurorawall::scene
+} // namespace aurorawall::config
