@@ -42,10 +42,9 @@ public:
         double renderWork = 0.0; // the sum of main.frag's alpha (1 + aurora samples) over the drawn pixels
     };
 
-    // Needs the context whose objects it uses current (the GLFW backend: window 0). The drawing takes
-    // its turn among `drawLanes` lanes (MpiWorld::beginTurn; 0: no turns).
+    // Needs the context whose objects it uses current (the GLFW backend: window 0).
     std::vector<BandCost> render(render::TileRenderer& renderer, const std::vector<int>& assignment,
-                                 const cluster::MpiWorld& world, int drawLanes, Timing& timing);
+                                 const cluster::MpiWorld& world, Timing& timing);
 
     // The complete pixels of one of this rank's screens (top-down rows, values rounded to half
     // floats as io/half_pixels.h, alpha 1), after render().
