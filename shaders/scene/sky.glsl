@@ -1,6 +1,6 @@
 // sky: single-scattering Rayleigh sky lit by up to SKY_MAX_LIGHTS sources (the Sun, the Moon,
 // or several Sun positions), each source's light-side optical depth from the closed-form airmass
-// (shaders/atmosphere/sky.glsl; seed 002). Radiance in cd/m^2 for illuminances in lux.
+// (shaders/atmosphere/sky.glsl; after C. Davis, Tectonics.js). Radiance in cd/m^2 for illuminances in lux.
 uniform float uSkyTopKm;
 uniform int uSkyViewSteps;
 uniform int uSkyLightMethod; // SKY_LIGHT_CLOSED_FORM or SKY_LIGHT_NESTED_MARCH (the reference)

@@ -192,7 +192,7 @@ std::vector<Variant> knobVariants()
     return v;
 }
 
-// The paper's table 2 (../shared/reference.md): the features it timed, each toggled alone.
+// Lawlor & Genetti's table 2: the features they timed, each toggled alone, and their published change.
 struct Feature {
     Variant variant;
     const char* paper; // the paper's change in frame time, or "-"

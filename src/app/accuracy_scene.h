@@ -1,6 +1,6 @@
 #pragma once
-// `aurorawall accuracy --scene FILE`: error against run time of the aurora's quality knobs (issue 3,
-// part 11) and the cost of each feature (the paper's table 2), on one headless EGL context in one
+// `aurorawall accuracy --scene FILE`: error against run time of the aurora's quality knobs and the
+// cost of each feature (Lawlor & Genetti's table 2), on one headless EGL context in one
 // process (no MPI). The renders and the CPU reference (render/reference_ray.h) are also the tools of
 // tests/render/reference_ray_test.cpp and skipping_test.cpp.
 #include "cluster/frame_state.h"
@@ -61,7 +61,7 @@ std::vector<glm::dvec3> referencePixels(const render::ReferenceModel& model, con
 // The scene without the components the CPU reference does not model (stars, planet_texture, sky).
 scene::Scene withoutUnmodelled(scene::Scene scene);
 
-// The GPU reference's settings (issue 3, part 11): 0.25 km steps everywhere, no skipping, the
+// The GPU reference's settings: 0.25 km steps everywhere, no skipping, the
 // finest tables, footprint map and polylines of the knob ranges.
 void applyFinestSettings(scene::Scene& scene);
 

@@ -1,5 +1,5 @@
 #pragma once
-// This rank's part of a load-balanced frame (issue 5, src/cluster/load_balancer.h): it renders
+// This rank's part of a load-balanced frame (src/cluster/load_balancer.h): it renders
 // the bands the master assigned to it, sends those that belong to other ranks' screens, and
 // receives its own screens' bands from whoever rendered them. Every pixel is traced with the
 // same rays as without balancing (the wall canvas makes a band's rays independent of who traces

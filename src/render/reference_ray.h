@@ -1,5 +1,5 @@
 #pragma once
-// A double-precision CPU reference of the renderer's model for single rays (issue 3, part 11): the
+// A double-precision CPU reference of the renderer's model for single rays: the
 // radiance shaders/render/composite.glsl and shaders/scene/aurora_curtains.glsl compute, without
 // their approximations. Same model, exact evaluation:
 //   - layers: the shared modules shaders/render/ray_sphere.glsl and layers.glsl compiled in double;

@@ -3,7 +3,7 @@
 // (config/scenes/*.toml; the format is described in docs/scenes.md).
 // Units: kilometres, degrees, seconds. Planet frame: centre at the origin, z toward the
 // north pole, x toward longitude 180 deg and y toward longitude 90 deg W, the frame of the
-// paper's published benchmark camera (../shared/reference.md).
+// benchmark camera published with the public GLSL version of Lawlor & Genetti's renderer.
 #include <glm/glm.hpp>
 
 #include <string>
@@ -57,7 +57,7 @@ struct SkyLight {
 };
 
 // Single-scattering sky (Rayleigh) lit by up to 8 sources, each source's light-side optical depth
-// from the closed-form airmass (seed 002: several lights for the price of one).
+// from the closed-form airmass (after C. Davis, Tectonics.js: several lights for the price of one).
 struct Sky {
     double topKm = 100.0; // air above this height is not lit in the model
     int viewSteps = 16;   // march steps along the view ray

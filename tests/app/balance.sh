@@ -1,5 +1,5 @@
 #!/bin/bash
-# Issue 5, dynamic load balancing: the wall rendered with --balance (bands of expensive screens
+# Dynamic load balancing: the wall rendered with --balance (bands of expensive screens
 # drawn by ranks with cheap ones, the split changing every frame) equals the wall rendered
 # without it, pixel for pixel, on an uneven wall (3x1, odd sizes) and a 2x2 wall with 3 frames
 # so the split has moved away from the static one; and the balanced run's stats show bands

@@ -1,4 +1,4 @@
-// Tests of the airmass methods (issue 4): exact reference, published error figures, extreme cases, CLI.
+// Tests of the airmass methods: exact reference, published error figures, extreme cases.
 #include "atmosphere/airmass.h"
 #include "atmosphere/airmass_accuracy.h"
 #include "atmosphere/airmass_exact.h"
@@ -60,7 +60,7 @@ TEST(ScaledBesselK1, SeriesMatchesStandardLibraryAndChapmanValue)
         EXPECT_NEAR(std::sqrt(M_PI / (2.0 * x)) * sum / scaledBesselK1(x), 1.0, 1e-12) << x;
     }
     EXPECT_NEAR(scaledBesselK1(500.0 - 1e-9) / scaledBesselK1(500.0), 1.0, 1e-11);
-    EXPECT_NEAR(796.375 * scaledBesselK1(796.375), 35.38532, 5e-6); // reference.md
+    EXPECT_NEAR(796.375 * scaledBesselK1(796.375), 35.38532, 5e-6); // Ch(x, 90°) = x·eˣ·K₁(x), published value
 }
 
 TEST(ExactAirmass, ChapmanValuesOfReference)
