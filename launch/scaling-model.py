@@ -49,7 +49,7 @@ import subprocess
 import sys
 import tempfile
 
-# The MPIglut paper's table (../shared/reference.md): GPUs -> (resolution, fps, speedup).
+# The MPIglut paper's published powerwall table: GPUs -> (resolution, fps, speedup).
 PAPER = {
     1: ("1680x2100", 35, 1.0),
     2: ("3360x2100", 30, 1.6),

@@ -98,7 +98,7 @@ real airmassErfcxOverT(real t)
     return low + t4 * (high + t4 * real(-5.235712482e-02));
 }
 
-// Winitzki's erf approximation, exactly as Lawlor publishes it (seed 001, "erf on the GPU"):
+// Winitzki's erf approximation, exactly as Lawlor publishes it ("Raytracing a Planet's Atmosphere", "erf on the GPU"):
 // erf(x) ≈ sign(x)·√(1 − exp(−x²·(4/π + a·x²)/(1 + a·x²))), a = 8(π − 3)/(3π(4 − π)) ≈ 0.140012.
 real winitzkiErfGuts(real x)
 {

@@ -1,11 +1,11 @@
 // Lawlor's parabola airmass (requires airmass_common.glsl).
-// Sources: O. S. Lawlor, "Raytracing a Planet's Atmosphere" (CS 481/681 lecture, UAF 2010; seed 001)
-// and Lawlor & Genetti, interactive aurora rendering, appendix A (seed 000).
+// Sources: O. S. Lawlor, "Raytracing a Planet's Atmosphere" (CS 481/681 lecture, UAF 2010)
+// and Lawlor & Genetti, "Interactive Volume Rendering Aurora on the GPU", appendix A.
 // The height along the ray, r(x) − R with r(x) = √(x² + y²), is replaced by a parabola A + C·x²
 // through the radii r1 (the lowest radius the segment reaches) and r2 = r1 + 2H; then
 //   I ≈ e^{−A/H}·√(π/(4k))·(erf(√k·x1) − erf(√k·x0)),   k = C/H.
 
-// Parabola fit of seed 001 (steps 2–4), with k = 1/H, refHt = R, refDen = 1: returns (A, C).
+// Parabola fit of Lawlor's lecture (steps 2–4), with k = 1/H, refHt = R, refDen = 1: returns (A, C).
 vec2 lawlorParabola(real y, real xL, real xR, real H, real R)
 {
     real ySqr = y * y;
@@ -24,7 +24,7 @@ vec2 lawlorParabola(real y, real xL, real xR, real H, real R)
     return vec2(A, C);
 }
 
-// Baseline, exactly as published in seed 001 with Winitzki's erf and `0.5·guts` erfc, including
+// Baseline, exactly as published in Lawlor's lecture with Winitzki's erf and `0.5·guts` erfc, including
 // its closest-approach distance y = √(tc²a + tc·b + c) (clamped at 0 so that rounding cannot give a NaN).
 // Published as |result|; here signed like every method: I(t1, t0) = −I(t0, t1).
 real airmassLawlorWinitzki(vec3 start, vec3 direction, real tstart, real tend, real H, real R)

@@ -1,5 +1,5 @@
 // Tectonics.js quadratic-height airmass (requires airmass_common.glsl).
-// Source: C. Davis, "Atmospheric scattering with multiple lights" (Tectonics.js blog, seed 002),
+// Source: C. Davis, "Atmospheric scattering with multiple lights" (Tectonics.js blog),
 // raymarching.glsl.c. Around x_b, a fraction b = 0.45 of the way from the surface crossing x0 to the
 // top of the atmosphere (6H), the height is replaced by a quadratic stretched by a = 0.45:
 //   h(x) ≈ ½·a·h''(x_b)·(x − x_b)² + h'(x_b)·(x − x_b) + h(x_b),

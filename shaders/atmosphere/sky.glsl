@@ -1,4 +1,4 @@
-// Single-scattering sky lit by several sources (issue 4, part 6; requires airmass_common.glsl and
+// Single-scattering sky lit by several sources (requires airmass_common.glsl and
 // airmass_chapman.glsl). One text for GLSL and C++ (src/common/glsl.h).
 //
 // Rayleigh single scattering along the view ray o + t·d̂, t ∈ [ta, tb] (the part inside the air):

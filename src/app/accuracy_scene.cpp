@@ -13,8 +13,6 @@
 #include "render/tile_renderer.h"
 #include "wall/wall_file.h"
 
-#include <boost/program_options.hpp>
-
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -151,22 +149,6 @@ scene::Scene withoutUnmodelled(scene::Scene scene)
 
 namespace {
 
-namespace po = boost::program_options;
-
-constexpr int kUsageError = 2;
-constexpr int kRuntimeError = 1;
-
-struct Settings {
-    std::string sceneFile;
-    std::string wallFile;
-    glm::ivec2 sizePx{320, 180};
-    int pixels = 48;
-    int runs = 3;
-    int threads = 2;
-    double referenceStepKm = 0.05;
-    bool featureCosts = false;
-};
-
 // A scene changed by one knob or feature, with its table label.
 struct Variant {
     std::string knob;
@@ -217,7 +199,7 @@ std::vector<Variant> knobVariants()
     return v;
 }
 
-// The paper's table 2 (../shared/reference.md): the features it timed, each toggled alone.
+// Lawlor & Genetti's table 2: the features they timed, each toggled alone, and their published change.
 struct Feature {
     Variant variant;
     const char* paper; // the paper's change in frame time, or "-"
@@ -292,7 +274,7 @@ struct References {
     double cpuSeconds = 0.0;
 };
 
-void computeReferences(References& r, const SceneView& view, const std::vector<glm::ivec2>& pixels, const Settings& settings)
+void computeReferences(References& r, const SceneView& view, const std::vector<glm::ivec2>& pixels, const SceneAccuracySettings& settings)
 {
     const auto start = std::chrono::steady_clock::now();
     std::unique_ptr<fluid::FluxFrames> frames;
@@ -307,7 +289,7 @@ void computeReferences(References& r, const SceneView& view, const std::vector<g
 }
 
 void printKnobTable(const scene::Scene& base, const SceneView& view, const std::string& shaderDir,
-                    const Settings& settings, std::ostream& out)
+                    const SceneAccuracySettings& settings, std::ostream& out)
 {
     const double floor = 1.0 / (255.0 * base.exposure);
     const std::vector<glm::ivec2> all = allPixels(settings.sizePx);
@@ -354,7 +336,7 @@ void printKnobTable(const scene::Scene& base, const SceneView& view, const std::
 }
 
 void printFeatureCosts(const scene::Scene& base, const SceneView& view, const std::string& shaderDir,
-                       const Settings& settings, std::ostream& out)
+                       const SceneAccuracySettings& settings, std::ostream& out)
 {
     out << "feature                                   ms_per_frame change   paper\n";
     double defaultMs = 0.0;
@@ -371,94 +353,36 @@ void printFeatureCosts(const scene::Scene& base, const SceneView& view, const st
     }
 }
 
-bool parseSize(const std::string& text, glm::ivec2& size)
-{
-    int w = 0, h = 0;
-    char x = 0, rest = 0;
-    if (std::sscanf(text.c_str(), "%d%c%d%c", &w, &x, &h, &rest) != 3 || x != 'x' || w < 1 || h < 1)
-        return false;
-    size = {w, h};
-    return true;
-}
-
 } // namespace
 
-int runSceneAccuracy(int argc, char** argv, std::ostream& out, std::ostream& err)
+std::unique_ptr<gl::Context> openAccuracyContext(std::ostream& out)
 {
-    po::options_description options(
-        "Usage: aurorawall accuracy --scene FILE [--wall FILE] [--size WxH] [--pixels N] [--feature-costs]\n"
-        "Error against run time of the aurora's quality knobs (docs/ACCURACY.md, \"Aurora\"): the scene's first\n"
-        "frame at a small size, each knob varied alone around the scene's defaults, compared with the GPU\n"
-        "render at the finest settings (every pixel) and the double-precision CPU reference (N sampled pixels).\n"
-        "Stars, planet_texture and sky are removed (the CPU reference does not model them).\n"
-        "--feature-costs: instead, the frame time of each feature toggled alone, the full scene (paper table 2).\n"
-        "One headless EGL context, one process (no mpirun).\nOptions");
-    Settings settings;
-    std::string size = "320x180";
-    options.add_options()("help,h", "show this help")("scene", po::value<std::string>(&settings.sceneFile), "scene file")(
-        "wall", po::value<std::string>(&settings.wallFile),
-        "wall file whose single-screen equivalent sets the field of view (default config/walls/single.toml)")(
-        "size", po::value<std::string>(&size)->default_value(size), "render size WxH in pixels")(
-        "pixels", po::value<int>(&settings.pixels)->default_value(settings.pixels), "pixels of the CPU reference")(
-        "runs", po::value<int>(&settings.runs)->default_value(settings.runs),
-        "timed frames per setting after one warm-up (the median is reported)")(
-        "threads", po::value<int>(&settings.threads)->default_value(settings.threads), "CPU reference threads")(
-        "reference-step-km", po::value<double>(&settings.referenceStepKm)->default_value(settings.referenceStepKm),
-        "CPU reference step where a curtain is in reach")("feature-costs", "the paper's table 2 instead of the knobs");
-    po::variables_map variables;
-    try {
-        po::store(po::command_line_parser(argc, argv).options(options).run(), variables);
-        po::notify(variables);
-    } catch (const po::error& e) {
-        err << "aurorawall accuracy: " << e.what() << "\n";
-        return kUsageError;
-    }
-    if (variables.count("help")) {
-        out << options;
-        return 0;
-    }
-    settings.featureCosts = variables.count("feature-costs") > 0;
-    if (settings.sceneFile.empty() || !parseSize(size, settings.sizePx) || settings.pixels < 1 || settings.runs < 1 ||
-        settings.threads < 1 || !(settings.referenceStepKm > 0.0)) {
-        err << "aurorawall accuracy: --scene FILE is required; --size is WxH; --pixels, --runs, --threads and "
-               "--reference-step-km must be positive\n";
-        return kUsageError;
-    }
-    const std::string dataDir = dataDirectory();
-    if (settings.wallFile.empty())
-        settings.wallFile = dataDir + "/config/walls/single.toml";
+    auto context = gl::createContext(gl::Backend::Egl);
+    const char* threads = std::getenv("LP_NUM_THREADS");
+    out << "renderer: " << context->rendererName() << ", " << context->glVersion()
+        << (threads ? ", LP_NUM_THREADS=" + std::string(threads) : std::string()) << "\n";
+    return context;
+}
 
-    scene::Scene scene;
-    SceneView view;
-    try {
-        scene = components::loadScene(settings.sceneFile);
-        if (!settings.featureCosts)
-            scene = withoutUnmodelled(scene);
-        view = sceneView(scene, settings.wallFile, settings.sizePx);
-    } catch (const std::exception& e) {
-        err << "aurorawall accuracy: " << e.what() << "\n";
-        return kUsageError;
-    }
-    try {
-        auto context = gl::createContext(gl::Backend::Egl);
-        const char* threads = std::getenv("LP_NUM_THREADS");
-        out << "renderer: " << context->rendererName() << ", " << context->glVersion()
-            << (threads ? ", LP_NUM_THREADS=" + std::string(threads) : std::string()) << "\n";
-        out << "scene: " << settings.sceneFile << " (components:";
-        for (const scene::Component* c : scene.components())
-            out << " " << c->name();
-        out << "), frame 0 at t = " << view.frame.timeS << " s, " << settings.sizePx.x << "x" << settings.sizePx.y
-            << " px, field of view of " << settings.wallFile << "; ms per frame: median of " << settings.runs
-            << " frames (setFrame + renderTile + glFinish, CPU clock) after one warm-up\n";
-        if (settings.featureCosts)
-            printFeatureCosts(scene, view, dataDir + "/shaders", settings, out);
-        else
-            printKnobTable(scene, view, dataDir + "/shaders", settings, out);
-    } catch (const std::exception& e) {
-        err << "aurorawall accuracy: " << e.what() << "\n";
-        return kRuntimeError;
-    }
-    return 0;
+void runSceneAccuracy(const SceneAccuracySettings& settings, std::ostream& out)
+{
+    const std::string dataDir = dataDirectory();
+    const std::string wallFile = settings.wallFile.empty() ? dataDir + "/config/walls/single.toml" : settings.wallFile;
+    scene::Scene scene = components::loadScene(settings.sceneFile);
+    if (!settings.featureCosts)
+        scene = withoutUnmodelled(scene);
+    const SceneView view = sceneView(scene, wallFile, settings.sizePx);
+    const auto context = openAccuracyContext(out);
+    out << "scene: " << settings.sceneFile << " (components:";
+    for (const scene::Component* c : scene.components())
+        out << " " << c->name();
+    out << "), frame 0 at t = " << view.frame.timeS << " s, " << settings.sizePx.x << "x" << settings.sizePx.y
+        << " px, field of view of " << wallFile << "; ms per frame: median of " << settings.runs
+        << " frames (setFrame + renderTile + glFinish, CPU clock) after one warm-up\n";
+    if (settings.featureCosts)
+        printFeatureCosts(scene, view, dataDir + "/shaders", settings, out);
+    else
+        printKnobTable(scene, view, dataDir + "/shaders", settings, out);
 }
 
 } // namespace aurorawall::app

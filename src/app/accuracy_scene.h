@@ -1,9 +1,10 @@
 #pragma once
-// `aurorawall accuracy --scene FILE`: error against run time of the aurora's quality knobs (issue 3,
-// part 11) and the cost of each feature (the paper's table 2), on one headless EGL context in one
+// `aurorawall accuracy --scene FILE`: error against run time of the aurora's quality knobs and the
+// cost of each feature (Lawlor & Genetti's table 2), on one headless EGL context in one
 // process (no MPI). The renders and the CPU reference (render/reference_ray.h) are also the tools of
 // tests/render/reference_ray_test.cpp and skipping_test.cpp.
 #include "cluster/frame_state.h"
+#include "gl/context.h"
 #include "io/image.h"
 #include "render/reference_ray.h"
 #include "scene/scene.h"
@@ -13,6 +14,7 @@
 #include <glm/glm.hpp>
 
 #include <iosfwd>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -59,12 +61,26 @@ std::vector<glm::dvec3> referencePixels(const render::ReferenceModel& model, con
 // The scene without the components the CPU reference does not model (stars, planet_texture, sky).
 scene::Scene withoutUnmodelled(scene::Scene scene);
 
-// The GPU reference's settings (issue 3, part 11): 0.25 km steps everywhere, no skipping, the
+// The GPU reference's settings: 0.25 km steps everywhere, no skipping, the
 // finest tables, footprint map and polylines of the knob ranges.
 void applyFinestSettings(scene::Scene& scene);
 
-// argv[0] is "accuracy"; see --help. Returns 0; 2 with one line on `err` for a bad option or file;
-// 1 when no GL context or shader can be made.
-int runSceneAccuracy(int argc, char** argv, std::ostream& out, std::ostream& err);
+// Opens the headless EGL context of the accuracy runs and prints "renderer: NAME, GL VERSION".
+std::unique_ptr<gl::Context> openAccuracyContext(std::ostream& out);
+
+struct SceneAccuracySettings {
+    std::string sceneFile;
+    std::string wallFile;         // its single-screen equivalent sets the field of view; empty: config/walls/single.ini
+    glm::ivec2 sizePx{320, 180};  // the render size
+    int pixels = 48;              // pixels of the CPU reference
+    int runs = 3;                 // timed frames per setting after one warm-up (the median is reported)
+    int threads = 2;              // CPU reference threads
+    double referenceStepKm = 0.05; // CPU reference step where a curtain is in reach
+    bool featureCosts = false;    // the frame time of each feature toggled alone instead of the knobs
+};
+
+// The knob table (or, with featureCosts, the feature costs) on `out`. Throws when a file cannot be
+// read or is malformed, and when no GL context or shader can be made.
+void runSceneAccuracy(const SceneAccuracySettings& settings, std::ostream& out);
 
 } // namespace aurorawall::app

@@ -31,7 +31,7 @@ BalancedFrame::Target& BalancedFrame::targetFor(int width, int height)
 }
 
 std::vector<BandCost> BalancedFrame::render(render::TileRenderer& renderer, const std::vector<int>& assignment,
-                                            const cluster::MpiWorld& world, int drawLanes, Timing& timing)
+                                            const cluster::MpiWorld& world, Timing& timing)
 {
     // 1. Draw my bands: each run of consecutive bands of one screen in one draw (a draw has a fixed
     // cost, and rasterizers shade whole pixel blocks), its process CPU time split among the run's
@@ -40,7 +40,6 @@ std::vector<BandCost> BalancedFrame::render(render::TileRenderer& renderer, cons
     std::vector<BandCost> costs;
     std::vector<std::vector<std::uint16_t>> outgoingPixels;
     std::vector<cluster::MpiWorld::Message> outgoing, incoming;
-    world.beginTurn(drawLanes);
     const auto start = SteadyClock::now();
     const double cpuStart = processCpuMilliseconds();
     for (size_t first = 0; first < bands_.size();) {
@@ -86,7 +85,6 @@ std::vector<BandCost> BalancedFrame::render(render::TileRenderer& renderer, cons
         outgoing[k].values = &outgoingPixels[k];
     timing.renderMs = millisecondsSince(start);
     timing.renderCpuMs = processCpuMilliseconds() - cpuStart;
-    world.endTurn(drawLanes);
 
     // 2. Exchange: my screens' bands drawn elsewhere come in, other screens' bands go out.
     const auto exchangeStart = SteadyClock::now();

@@ -1,5 +1,5 @@
 #pragma once
-// This rank's part of a load-balanced frame (issue 5, src/cluster/load_balancer.h): it renders
+// This rank's part of a load-balanced frame (src/cluster/load_balancer.h): it renders
 // the bands the master assigned to it, sends those that belong to other ranks' screens, and
 // receives its own screens' bands from whoever rendered them. Every pixel is traced with the
 // same rays as without balancing (the wall canvas makes a band's rays independent of who traces
@@ -42,10 +42,9 @@ public:
         double renderWork = 0.0; // the sum of main.frag's alpha (1 + aurora samples) over the drawn pixels
     };
 
-    // Needs the context whose objects it uses current (the GLFW backend: window 0). The drawing takes
-    // its turn among `drawLanes` lanes (MpiWorld::beginTurn; 0: no turns).
+    // Needs the context whose objects it uses current (the GLFW backend: window 0).
     std::vector<BandCost> render(render::TileRenderer& renderer, const std::vector<int>& assignment,
-                                 const cluster::MpiWorld& world, int drawLanes, Timing& timing);
+                                 const cluster::MpiWorld& world, Timing& timing);
 
     // The complete pixels of one of this rank's screens (top-down rows, values rounded to half
     // floats as io/half_pixels.h, alpha 1), after render().

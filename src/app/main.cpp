@@ -1,12 +1,10 @@
-// aurorawall: one binary, several subcommands.
-#include "app/accuracy_scene.h"
+// aurorawall: one binary, several commands.
+#include "app/accuracy_command.h"
+#include "app/airmass_command.h"
+#include "app/cli/exit_status.h"
 #include "app/render_command.h"
-#include "atmosphere/accuracy_cli.h"
-#include "atmosphere/airmass_cli.h"
-#include "aurora/tables_cli.h"
+#include "app/tables_command.h"
 
-#include <cstdio>
-#include <cstring>
 #include <iostream>
 #include <string>
 
@@ -22,31 +20,46 @@ const char* kUsage =
     "            (mpirun -n RANKS aurorawall render --wall FILE --scene FILE ...)\n"
     "  airmass   airmass integrals along rays read from standard input (CSV), by a chosen method\n"
     "  tables    print the precomputed physics tables (e.g. tables deposition --energy-kev 5)\n"
-    "  accuracy  error against cost of the approximations (accuracy --airmass | --sky | --scene FILE)\n";
+    "  accuracy  error against cost of the approximations (accuracy --airmass | --sky | --scene FILE)\n"
+    "\n"
+    "Exit status, the same for every command (and, under mpirun, on every rank):\n"
+    "  0  success\n"
+    "  1  runtime failure: the command line was accepted, but the run failed: a file that cannot be read\n"
+    "     or written, a wall, scene or input file whose contents are malformed (the error names FILE:LINE),\n"
+    "     no GL context, a shader that does not compile\n"
+    "  2  usage error: the command line itself is wrong: an unknown command, an unknown, missing or\n"
+    "     repeated option, a malformed value, a value out of range or not among the allowed words,\n"
+    "     options that contradict each other, or a number of MPI ranks other than the wall file's\n"
+    "Errors are one line on stderr: \"aurorawall COMMAND: ...\", naming the option or FILE:LINE.\n";
+
+const char* kCommands = "render, airmass, tables, accuracy";
 
 } // namespace
 
 int main(int argc, char** argv)
 {
-    if (argc < 2 || !std::strcmp(argv[1], "--help") || !std::strcmp(argv[1], "-h") || !std::strcmp(argv[1], "help")) {
-        std::fputs(kUsage, argc < 2 ? stderr : stdout);
-        return argc < 2 ? 2 : 0;
+    using namespace aurorawall;
+    const std::string command = argc > 1 ? argv[1] : "";
+    const std::string seeHelp = " (see aurorawall --help)";
+    if (command == "--help" || command == "-h") {
+        std::cout << kUsage;
+        return cli::kSuccess;
     }
-    const std::string command = argv[1];
     // Each command sees its own name as argv[0].
     if (command == "render")
-        return aurorawall::app::runRenderCommand(argc - 1, argv + 1);
+        return app::runRenderCommand(argc - 1, argv + 1);
     if (command == "airmass")
-        return aurorawall::runAirmassCommand(argc - 1, argv + 1, std::cin, std::cout, std::cerr);
-    if (command == "accuracy") {
-        // --scene: the aurora's quality knobs (src/app/accuracy_scene.h); else airmass and sky.
-        for (int i = 2; i < argc; ++i)
-            if (!std::strcmp(argv[i], "--scene"))
-                return aurorawall::app::runSceneAccuracy(argc - 1, argv + 1, std::cout, std::cerr);
-        return aurorawall::runAccuracyCommand(argc - 1, argv + 1, std::cout, std::cerr);
-    }
+        return app::runAirmassCommand(argc - 1, argv + 1, std::cin, std::cout, std::cerr);
     if (command == "tables")
-        return aurorawall::aurora::runTablesCommand(argc - 1, argv + 1, std::cout, std::cerr);
-    std::fprintf(stderr, "aurorawall: unknown command '%s'\n%s", command.c_str(), kUsage);
-    return 2;
+        return app::runTablesCommand(argc - 1, argv + 1, std::cout, std::cerr);
+    if (command == "accuracy")
+        return app::runAccuracyCommand(argc - 1, argv + 1, std::cout, std::cerr);
+    if (command.empty())
+        std::cerr << cli::errorLine("", std::string("missing command (allowed: ") + kCommands + ")" + seeHelp) << "\n";
+    else if (command[0] == '-')
+        std::cerr << cli::errorLine("", "unrecognised option '" + command + "'" + seeHelp) << "\n";
+    else
+        std::cerr << cli::errorLine("", "unknown command '" + command + "' (allowed: " + kCommands + ")" + seeHelp)
+                  << "\n";
+    return cli::kUsageError;
 }

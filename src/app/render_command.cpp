@@ -1,6 +1,7 @@
 #include "app/render_command.h"
 
 #include "app/balanced_frame.h"
+#include "app/cli/exit_status.h"
 #include "app/render_options.h"
 #include "cluster/load_balancer.h"
 #include "cluster/frame_stats.h"
@@ -39,19 +40,22 @@ namespace aurorawall::app {
 
 namespace {
 
-// Runs one set-up step on every rank and agrees on its outcome: returns false on every rank
-// if any rank threw (rank 0 has printed the reasons).
-bool setUpStep(const cluster::MpiWorld& world, const std::function<void()>& step)
+// Runs one set-up step on every rank and agrees on its outcome: returns the largest exit status
+// over the ranks (app/cli/exit_status.h; 0 if no rank threw), on every rank (rank 0 has printed
+// the reasons).
+int setUpStep(const cluster::MpiWorld& world, const std::function<void()>& step)
 {
     std::string error;
+    int status = cli::kSuccess;
     try {
         step();
     } catch (const std::exception& e) {
         error = e.what();
         if (error.empty())
             error = "unknown error";
+        status = cli::exitStatusOf(e);
     }
-    return !world.anyRankFailed(error);
+    return world.agreedStatus(status, error, "aurorawall render");
 }
 
 // One screen this rank draws: where its pixels come from and where they go.
@@ -84,7 +88,7 @@ std::vector<gl::WindowSpec> windowsFor(const wall::Wall& wall, const std::vector
 io::ToneMap toneMapFor(const RenderOptions& options, double exposure)
 {
     io::ToneMap t;
-    t.curve = options.toneMap == "aces" ? io::ToneMap::Curve::AcesFilmic : io::ToneMap::Curve::MagnitudeGamma;
+    t.curve = options.toneMap;
     t.exposure = exposure;
     return t;
 }
@@ -148,7 +152,7 @@ int runRenderCommand(int argc, char** argv)
     scene::Scene scene;
     std::vector<int> myScreens;
     std::string shaderDir;
-    const bool configured = setUpStep(world, [&] {
+    const int configured = setUpStep(world, [&] {
         options = parseRenderOptions(argc, argv);
         if (options.help)
             return;
@@ -156,7 +160,7 @@ int runRenderCommand(int argc, char** argv)
         if (options.singleScreen)
             wallLayout = wall::singleScreenEquivalent(wallLayout);
         if (wallLayout.rankCount != world.size())
-            throw InputError(options.wallFile + (options.singleScreen ? " with --single-screen" : "") +
+            throw UsageError(options.wallFile + (options.singleScreen ? " with --single-screen" : "") +
                              ": the wall is driven by " + std::to_string(wallLayout.rankCount) +
                              (wallLayout.rankCount == 1 ? " rank" : " ranks") + ", but mpirun started " +
                              std::to_string(world.size()) + " (use mpirun -n " + std::to_string(wallLayout.rankCount) +
@@ -164,9 +168,6 @@ int runRenderCommand(int argc, char** argv)
         scene = components::loadScene(options.sceneFile);
         shaderDir = (options.dataDir.empty() ? dataDirectory() : options.dataDir) + "/shaders";
         render::fragmentShaderSource(scene, shaderDir); // every module readable before any window opens
-        if (options.backend != "glfw" && options.frames == 0)
-            throw InputError("--frames 0 (until a window is closed) needs --backend glfw");
-        gl::parseBackend(options.backend);
         if (options.gather || options.tiles)
             io::ensureWritableDirectory(options.outDir, "--out");
         if (!options.statsFile.empty()) {
@@ -175,8 +176,8 @@ int runRenderCommand(int argc, char** argv)
         }
         myScreens = wallLayout.screensOfRank(world.rank());
     });
-    if (!configured)
-        return 1;
+    if (configured != cli::kSuccess)
+        return configured;
     if (options.help) {
         if (world.isMaster())
             std::cout << options.helpText;
@@ -184,13 +185,13 @@ int runRenderCommand(int argc, char** argv)
     }
 
     // 2. Graphics: a context (and windows) per rank, the raymarcher compiled for this scene.
-    const gl::Backend backend = gl::parseBackend(options.backend);
+    const gl::Backend backend = options.backend;
     std::unique_ptr<gl::Context> context;
     std::unique_ptr<render::TileRenderer> renderer;
     std::unique_ptr<render::WindowPresenter> presenter;
     std::vector<Tile> tiles;
     const double exposure = options.exposure > 0 ? options.exposure : scene.exposure;
-    const bool graphicsReady = setUpStep(world, [&] {
+    const int graphicsReady = setUpStep(world, [&] {
         context = gl::createContext(backend, windowsFor(wallLayout, myScreens));
         renderer = std::make_unique<render::TileRenderer>(scene, shaderDir);
         if (backend == gl::Backend::Glfw)
@@ -207,15 +208,15 @@ int runRenderCommand(int argc, char** argv)
             tiles.push_back(std::move(tile));
         }
     });
-    if (!graphicsReady)
-        return 1;
+    if (graphicsReady != cli::kSuccess)
+        return graphicsReady;
 
     // Load balancing: the master splits the bands, every rank renders its share.
     std::vector<int> assignment;
     std::unique_ptr<BalancedFrame> balanced;
     std::unique_ptr<cluster::LoadBalancer> balancer;
-    const BandMeasure bandMeasure = options.balanceBy == "work" ? BandMeasure::Work : BandMeasure::CpuTime;
-    if (options.balance == "on" || (options.balance == "auto" && world.size() > 1)) {
+    const BandMeasure bandMeasure = options.balanceBy;
+    if (options.balance == Balance::On || (options.balance == Balance::Auto && world.size() > 1)) {
         std::vector<cluster::Band> bands = cluster::makeBands(wallLayout, options.balanceBands);
         assignment.resize(bands.size());
         if (world.isMaster())
@@ -225,7 +226,7 @@ int runRenderCommand(int argc, char** argv)
     if (world.isMaster() && !options.quiet) {
         std::printf("aurorawall: %d ranks, %zu screens, canvas %dx%d, backend %s on %s\n", world.size(),
                     wallLayout.screens.size(), wallLayout.canvasSizePx.x, wallLayout.canvasSizePx.y,
-                    options.backend.c_str(), context->rendererName().c_str());
+                    gl::backendName(options.backend).c_str(), context->rendererName().c_str());
         for (const std::string& line : renderer->precomputationLog())
             std::printf("precomputed %s\n", line.c_str());
     }
@@ -265,7 +266,7 @@ int runRenderCommand(int argc, char** argv)
                 assignment = balancer->assign();
             world.broadcast(assignment);
             BalancedFrame::Timing timing;
-            const std::vector<BandCost> costs = balanced->render(*renderer, assignment, world, options.drawLanes, timing);
+            const std::vector<BandCost> costs = balanced->render(*renderer, assignment, world, timing);
             report.renderMs = timing.renderMs;
             report.renderCpuMs = timing.renderCpuMs;
             report.exchangeMs = timing.exchangeMs;
@@ -281,7 +282,6 @@ int runRenderCommand(int argc, char** argv)
                     uploadToTarget(balanced->screenImage(tile.screenIndex), *tile.target);
                 }
         } else {
-            world.beginTurn(options.drawLanes);
             phase = SteadyClock::now();
             const double cpuStart = processCpuMilliseconds();
             for (Tile& tile : tiles) {
@@ -294,7 +294,6 @@ int runRenderCommand(int argc, char** argv)
             }
             report.renderMs = millisecondsSince(phase);
             report.renderCpuMs = processCpuMilliseconds() - cpuStart;
-            world.endTurn(options.drawLanes);
         }
 
         phase = SteadyClock::now();
@@ -328,7 +327,7 @@ int runRenderCommand(int argc, char** argv)
 
     // 4. Output of the last frame: tiles from every rank, the assembled wall from the master.
     std::vector<std::pair<int, io::Image>> images;
-    bool written = setUpStep(world, [&] {
+    int status = setUpStep(world, [&] {
         for (Tile& tile : tiles) {
             context->makeCurrent(tile.window);
             if (balanced)
@@ -343,27 +342,28 @@ int runRenderCommand(int argc, char** argv)
         }
     });
     std::vector<char> gathered;
-    if (written && options.gather) {
+    if (status == cli::kSuccess && options.gather) {
         std::vector<int> sizes;
         gathered = world.gatherBytes(packTiles(images), sizes);
     }
-    written = written && setUpStep(world, [&] {
-        if (!world.isMaster())
-            return;
-        if (options.gather) {
-            const io::Image canvas = assembleWall(wallLayout, gathered);
-            io::writeExr(options.outDir + "/wall.exr", canvas);
-            io::writePng(options.outDir + "/wall.png", canvas, toneMapFor(options, exposure));
-        }
-        if (!options.statsFile.empty())
-            stats.write(options.statsFile);
-    });
+    if (status == cli::kSuccess)
+        status = setUpStep(world, [&] {
+            if (!world.isMaster())
+                return;
+            if (options.gather) {
+                const io::Image canvas = assembleWall(wallLayout, gathered);
+                io::writeExr(options.outDir + "/wall.exr", canvas);
+                io::writePng(options.outDir + "/wall.png", canvas, toneMapFor(options, exposure));
+            }
+            if (!options.statsFile.empty())
+                stats.write(options.statsFile);
+        });
     if (world.isMaster()) {
         std::printf("%s\n", stats.summary().c_str());
-        if (written && options.gather)
+        if (status == cli::kSuccess && options.gather)
             std::printf("wrote %s/wall.exr and %s/wall.png\n", options.outDir.c_str(), options.outDir.c_str());
     }
-    return written ? 0 : 1;
+    return status;
 }
 
 } // namespace aurorawall::app

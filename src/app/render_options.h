@@ -1,18 +1,24 @@
 #pragma once
-// The options of `aurorawall render`, parsed with Boost.Program_options.
-#include <cstdint>
+// The options of `aurorawall render`, parsed through app/cli/command_line.h.
+#include "app/balanced_frame.h"
+#include "gl/backend.h"
+#include "io/tone_map.h"
+
 #include <string>
 
 namespace aurorawall::app {
 
+// --balance: whether ranks share their screens' bands; Auto: when more than one rank renders.
+enum class Balance { On, Off, Auto };
+
 struct RenderOptions {
     std::string wallFile;
     std::string sceneFile;
-    std::string backend = "egl";
+    gl::Backend backend = gl::Backend::Egl;
     std::string outDir = "out";
     std::string statsFile;
     std::string dataDir; // empty: see common/data_dir.h
-    std::string toneMap = "aces";
+    io::ToneMap::Curve toneMap = io::ToneMap::Curve::AcesFilmic;
     long long frames = 1;
     double timeStepS = -1.0;   // < 0: the scene's
     double startTimeS = 0.0;
@@ -22,17 +28,16 @@ struct RenderOptions {
     bool gather = false;
     bool tiles = false;
     bool singleScreen = false;
-    std::string balance = "auto"; // on, off, or auto: on when more than one rank renders
+    Balance balance = Balance::Auto;
     int balanceBands = 8;
-    std::string balanceBy = "time"; // time or work: what the balancer equalizes
-    int drawLanes = 0;         // 0: every rank draws at once (MpiWorld::beginTurn)
+    BandMeasure balanceBy = BandMeasure::CpuTime; // what the balancer equalizes
     bool quiet = false;
     bool verbose = false;
     bool help = false;
     std::string helpText;
 };
 
-// Throws InputError naming the option for malformed or absurd values.
+// Throws UsageError naming the option for an unknown, missing, malformed or absurd option.
 RenderOptions parseRenderOptions(int argc, char** argv);
 
 } // namespace aurorawall::app

@@ -1,6 +1,5 @@
 #pragma once
-// Accuracy sweep of the airmass methods against the exact reference (issue 4, part 5); the future
-// `aurorawall accuracy --airmass` calls measureAirmassAccuracy.
+// Accuracy sweep of the airmass methods against the exact reference (docs/airmass.md).
 #include "atmosphere/airmass.h"
 
 #include <string>

@@ -1,6 +1,6 @@
 #pragma once
 // Cost of a GLSL function measured inside a compute shader, and its float results as the GPU
-// computes them (issue 4, part 4). Works on any GL 4.5 context: llvmpipe here, a GPU when one is lent.
+// computes them. Works on any GL 4.5 context: llvmpipe here, a GPU when one is lent.
 //
 // The caller's source defines `vec4 evaluate(int item, float jitter)`, which reads its inputs from
 // `inputs[]` (a std430 buffer of vec4, declared by the harness before the caller's modules). The

@@ -1,5 +1,5 @@
 #pragma once
-// Single-scattering sky lit by several sources (issue 4, part 6). The shader text is
+// Single-scattering sky lit by several sources. The shader text is
 // shaders/atmosphere/sky.glsl; this header evaluates the same text on the CPU in float (the GPU's
 // arithmetic) and in double (the reference).
 #include "atmosphere/airmass.h"

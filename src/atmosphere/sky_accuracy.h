@@ -1,5 +1,5 @@
 #pragma once
-// The twilight test case of the several-lights sky (issue 4, part 6) and its error measure.
+// The twilight test case of the several-lights sky and its error measure.
 #include "atmosphere/airmass_accuracy.h"
 #include "atmosphere/sky.h"
 

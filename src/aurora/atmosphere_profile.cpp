@@ -19,7 +19,7 @@ struct TablePoint {
     double value;
 };
 
-// USSA76 mass density, kg/m³. 75–1000 km: reference.md ("Atmosphere"); 50, 60, 70 km: USSA76 Table I.
+// US Standard Atmosphere 1976 (USSA76) mass density, kg/m³, its published values at 50–1000 km.
 constexpr std::array<TablePoint, 17> kDensityKgM3{{
     {50, 1.0269e-3}, {60, 3.0968e-4}, {70, 8.2829e-5}, {75, 3.9921e-5}, {85, 8.2196e-6},
     {100, 5.604e-7}, {115, 4.289e-8}, {130, 8.152e-9}, {150, 2.076e-9}, {175, 6.339e-10},

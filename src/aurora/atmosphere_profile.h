@@ -5,7 +5,7 @@
 
 namespace aurorawall::aurora {
 
-// Mass density D(z), g/cm³: USSA76 values (reference.md, 75–1000 km, plus 50/60/70 km),
+// Mass density D(z), g/cm³: US Standard Atmosphere 1976 values (75–1000 km, plus 50/60/70 km),
 // interpolated log-linearly, i.e. exponential between table altitudes; below the first and above
 // the last altitude the nearest segment's exponential continues.
 double massDensity(double altitudeKm);

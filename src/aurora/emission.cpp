@@ -7,7 +7,7 @@
 namespace aurorawall::aurora {
 namespace {
 
-// CIE 1931 2° values at 427.8, 557.7, 630.0 nm: reference.md; at 670 nm: the CIE 1931 table (CIE 015).
+// CIE 1931 2° colour-matching values (x̄, ȳ, z̄) at the lines' wavelengths, 427.8, 557.7, 630.0 and 670 nm (CIE 015).
 const LineInfo kLines[kLineCount] = {
     {"427.8nm", 427.8, {0.25600, 0.00960, 1.24420}},
     {"557.7nm", 557.7, {0.55625, 0.99862, 0.00464}},
@@ -24,7 +24,7 @@ constexpr double kFirstPositivePerBlue = 1.0;
 // calibrated so that a 5 keV beam gives the commonly quoted 1 kR per erg cm⁻² s⁻¹ (Omholt 1971).
 constexpr double kGreenPhotonsPerKeV = 2.213;
 // O(1D) atoms per keV deposited in the atomic-oxygen share: calibrated so that 630.0 nm outshines
-// 557.7 nm (linear sRGB red > green) above ≈ 220 km, as photographs show (reference.md).
+// 557.7 nm (linear sRGB red > green) above ≈ 220 km, as photographs show (red 630.0 nm dominates above ~200 km).
 constexpr double kO1DPerKeV = 8.0;
 constexpr double kRedBranching = 5.63e-3 / 7.45e-3; // A(630.0)/A(1D) (NIST ASD)
 

@@ -1,5 +1,5 @@
 #pragma once
-// Lazarev energy deposition of auroral electrons (seed 000 §2.1, after Lummerzheim 1992), over the
+// Lazarev energy deposition of auroral electrons (Lawlor & Genetti §2.1, after Lummerzheim 1992), over the
 // USSA76 profile of aurora/atmosphere_profile.h. See docs/aurora-physics.md, "Deposition".
 
 namespace aurorawall::aurora {

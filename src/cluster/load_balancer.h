@@ -1,5 +1,5 @@
 #pragma once
-// Dynamic load balancing across the wall (issue 5; the idea of Equalizer's load equalizer,
+// Dynamic load balancing across the wall (the idea of Equalizer's load equalizer,
 // Eilemann et al. 2009): every screen is cut into horizontal bands; each frame every band is
 // rendered by some rank, and bands rendered away from their screen's rank travel to it before the
 // swap. The split follows the measured cost of each band, smoothed so it does not oscillate.

@@ -1,12 +1,10 @@
 #include "cluster/mpi_world.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cstdio>
 #include <cstring>
 #include <numeric>
 #include <set>
-#include <thread>
 
 namespace aurorawall::cluster {
 
@@ -15,21 +13,19 @@ MpiWorld::MpiWorld(int* argc, char*** argv)
     MPI_Init(argc, argv);
     MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
     MPI_Comm_size(MPI_COMM_WORLD, &size_);
-    MPI_Comm_dup(MPI_COMM_WORLD, &turns_);
 }
 
 MpiWorld::~MpiWorld()
 {
-    MPI_Comm_free(&turns_);
     MPI_Finalize();
 }
 
-bool MpiWorld::anyRankFailed(const std::string& myError) const
+int MpiWorld::agreedStatus(int myStatus, const std::string& myError, const std::string& prefix) const
 {
-    int failed = myError.empty() ? 0 : 1, anyFailed = 0;
-    MPI_Allreduce(&failed, &anyFailed, 1, MPI_INT, MPI_LOR, MPI_COMM_WORLD);
-    if (!anyFailed)
-        return false;
+    int agreed = 0;
+    MPI_Allreduce(&myStatus, &agreed, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
+    if (agreed == 0)
+        return 0;
     std::vector<char> mine(myError.begin(), myError.end());
     std::vector<int> sizes;
     const std::vector<char> all = gatherBytes(mine, sizes);
@@ -45,13 +41,13 @@ bool MpiWorld::anyRankFailed(const std::string& myError) const
             if (message.empty() || !printed.insert(message).second)
                 continue;
             if (failures == size_ || size_ == 1)
-                std::fprintf(stderr, "aurorawall: %s\n", message.c_str());
+                std::fprintf(stderr, "%s: %s\n", prefix.c_str(), message.c_str());
             else
-                std::fprintf(stderr, "aurorawall: rank %d: %s\n", r, message.c_str());
+                std::fprintf(stderr, "%s: rank %d: %s\n", prefix.c_str(), r, message.c_str());
         }
         std::fflush(stderr);
     }
-    return true;
+    return agreed;
 }
 
 void MpiWorld::broadcast(FrameState& state) const
@@ -89,27 +85,6 @@ std::vector<RankReport> MpiWorld::gatherReports(const RankReport& mine) const
 }
 
 void MpiWorld::swapBarrier() const { MPI_Barrier(MPI_COMM_WORLD); }
-
-void MpiWorld::beginTurn(int lanes) const
-{
-    if (lanes <= 0 || rank_ < lanes)
-        return;
-    MPI_Request request;
-    MPI_Irecv(nullptr, 0, MPI_BYTE, rank_ - lanes, 0, turns_, &request);
-    for (int done = 0;;) {
-        MPI_Test(&request, &done, MPI_STATUS_IGNORE);
-        if (done)
-            return;
-        std::this_thread::sleep_for(std::chrono::milliseconds(1));
-    }
-}
-
-void MpiWorld::endTurn(int lanes) const
-{
-    if (lanes <= 0 || rank_ + lanes >= size_)
-        return;
-    MPI_Send(nullptr, 0, MPI_BYTE, rank_ + lanes, 0, turns_);
-}
 
 std::vector<char> MpiWorld::gatherBytes(const std::vector<char>& mine, std::vector<int>& sizesOut) const
 {

@@ -23,10 +23,11 @@ public:
     int size() const { return size_; }
     bool isMaster() const { return rank_ == 0; }
 
-    // Called by every rank after a set-up step with its own error (empty: it went well).
-    // Returns true on every rank if any rank failed; rank 0 then prints each distinct message
-    // once on stderr ("aurorawall: ..." or, if only some ranks failed, "aurorawall: rank 2: ...").
-    bool anyRankFailed(const std::string& myError) const;
+    // Called by every rank after a set-up step with its own exit status (0: it went well) and error
+    // message. Returns the largest status over the ranks, on every rank; if it is not 0, rank 0 prints
+    // each distinct message once on stderr as "PREFIX: message" (or, if only some ranks failed,
+    // "PREFIX: rank 2: message").
+    int agreedStatus(int myStatus, const std::string& myError, const std::string& prefix) const;
 
     void broadcast(FrameState& state) const;
     // Rank 0's values to every rank (the size must already match on every rank).
@@ -49,19 +50,9 @@ public:
     };
     void exchange(const std::vector<Message>& outgoing, const std::vector<Message>& incoming) const;
 
-    // Turns, for benchmarks with more ranks than cores: with `lanes` > 0, rank r starts its turn only
-    // after rank r − lanes has ended its own, so at most `lanes` ranks draw at once, each on a core of
-    // its own as on a dedicated node (meant to keep ranks from stretching each other's CPU time; on
-    // the 2-core test machine it made no measurable difference, docs/BENCHMARKS.md). The wait polls
-    // and sleeps instead of spinning, so waiting ranks leave the cores to the drawing ones. With
-    // lanes ≤ 0 both do nothing.
-    void beginTurn(int lanes) const;
-    void endTurn(int lanes) const;
-
 private:
     int rank_ = 0;
     int size_ = 1;
-    MPI_Comm turns_ = MPI_COMM_NULL; // a communicator of its own, so no other message matches a turn
 };
 
 } // namespace aurorawall::cluster

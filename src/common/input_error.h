@@ -12,6 +12,15 @@ public:
     using std::runtime_error::runtime_error;
 };
 
+// A mistake on the command line itself: an unknown, missing or repeated option, a malformed value, a
+// value out of range or not among the allowed words, options that contradict each other, or (render)
+// a number of MPI ranks other than the wall file's. Commands exit with status 2 for it and 1 for any
+// other error, a malformed file included (app/cli/exit_status.h).
+class UsageError : public InputError {
+public:
+    using InputError::InputError;
+};
+
 // "file:line: message" (line 0 means the whole file).
 inline InputError inputError(const std::string& file, int line, const std::string& message)
 {

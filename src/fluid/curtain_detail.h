@@ -1,5 +1,5 @@
 #pragma once
-// The curtain-detail fluid simulation (issue 3, part 6; specification section 2): a
+// The curtain-detail fluid simulation (Lawlor & Genetti, section 2): a
 // Kelvin–Helmholtz shear layer along the flux centre of an auroral curtain, in a strip periodic
 // along and across the curtain, carrying the electron flux as a passive scalar. Its output, a
 // few flux frames from smooth to turbulent, is wrapped along the curtain splines by the renderer.

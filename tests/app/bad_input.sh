@@ -1,9 +1,11 @@
 #!/bin/bash
-# Test 5, bad input: every mistake in a wall file, scene file, option or path ends the run
-#   - with a non-zero exit status on EVERY rank (each rank's status is recorded by rank_wrapper.sh,
-#     which exits 0 itself so that mpirun lets every rank finish on its own; a rank killed by a
-#     signal or one that never ends (timeout) is a failure),
-#   - with exactly one line on the ranks' stderr together: "aurorawall: ..." naming the file:line
+# Bad input: every mistake in a wall file, scene file, option or path ends the run
+#   - with the same exit status on EVERY rank: 2 for a usage error (an option, or a rank count
+#     other than the wall's), 1 for a runtime failure (a file that cannot be read or written or
+#     whose contents are malformed). Each rank's status is recorded by rank_wrapper.sh, which exits
+#     0 itself so that mpirun lets every rank finish on its own; a rank killed by a signal or one
+#     that never ends (timeout) is a failure,
+#   - with exactly one line on the ranks' stderr together: "aurorawall render: ..." naming the file:line
 #     (for files whose offending line carries a '# <- error' comment) or the option,
 #   - within 15 s (a hang is caught by timeout 30),
 #   - without leaving anything in the --out folder (no wall.exr, wall.png, stats, temporaries).
@@ -25,10 +27,11 @@ marked_line() {
 # The pattern "NAME:LINE:" for a marked file.
 at_marked_line() { echo "$(basename "$1"):$(marked_line "$1"):"; }
 
-# expect_error NAME RANKS REGEX ARGS...: runs mpirun -n RANKS aurorawall render ARGS plus --gather,
-# --out OUT and --stats OUT/stats.csv (unless ARGS has its own --out or --stats).
+# expect_error NAME RANKS STATUS REGEX ARGS...: runs mpirun -n RANKS aurorawall render ARGS plus
+# --gather, --out OUT and --stats OUT/stats.csv (unless ARGS has its own --out or --stats); every rank
+# must exit with STATUS.
 expect_error() {
-    local name="$1" ranks="$2" regex="$3"; shift 3
+    local name="$1" ranks="$2" status="$3" regex="$4"; shift 4
     local out="$WORK/$name/out" rankdir="$WORK/$name/ranks"
     mkdir -p "$rankdir"
     local args=("$@") has_out=0 has_stats=0 a
@@ -56,7 +59,7 @@ expect_error() {
             problems+=("rank $r did not exit by itself (killed?)")
         else
             rank_rc=$(cat "$rankdir/rc.$r")
-            [ "$rank_rc" != 0 ] || problems+=("rank $r exited 0")
+            [ "$rank_rc" = "$status" ] || problems+=("rank $r exited $rank_rc, expected $status")
             [ "$rank_rc" -lt 128 ] || problems+=("rank $r died with status $rank_rc (a signal?)")
         fi
     done
@@ -64,7 +67,7 @@ expect_error() {
     stderr_text=$(cat "$rankdir"/stderr.* 2>/dev/null | sed '/^[[:space:]]*$/d')
     lines=$(printf '%s' "$stderr_text" | grep -c '' || true)
     [ "$lines" = 1 ] || problems+=("$lines lines on stderr, expected 1")
-    grep -q '^aurorawall: ' <<<"$stderr_text" || problems+=("stderr does not start with 'aurorawall: '")
+    grep -q '^aurorawall render: ' <<<"$stderr_text" || problems+=("stderr does not start with 'aurorawall render: '")
     grep -Eq -e "$regex" <<<"$stderr_text" || problems+=("stderr does not match /$regex/")
     if grep -Eiq 'segmentation|exited on signal|core dumped|terminate called|MPI_ABORT' "$WORK/$name/mpirun-stderr" "$rankdir"/stderr.* 2>/dev/null; then
         problems+=("a crash or abort was reported")
@@ -86,57 +89,62 @@ expect_error() {
 }
 
 main_cases() {
-    # Wall files (tests/wall/data, each with its offending line marked).
+    # Wall files (tests/wall/data, each with its offending line marked): runtime failures.
     local f
     for f in missing-key negative-size unknown-key rank-without-screen grid-rank-gap nan syntax-error \
              eye-behind-wall; do
-        expect_error "wall-$f" 4 "$(at_marked_line "$WALL_DATA/$f.toml")" --wall "$WALL_DATA/$f.toml" --scene "$SCENE"
+        expect_error "wall-$f" 4 1 "$(at_marked_line "$WALL_DATA/$f.toml")" --wall "$WALL_DATA/$f.toml" --scene "$SCENE"
     done
     # Two-screen walls, two ranks.
     for f in overlap rank-gap; do
-        expect_error "wall-$f" 2 "$(at_marked_line "$WALL_DATA/$f.toml")" --wall "$WALL_DATA/$f.toml" --scene "$SCENE"
+        expect_error "wall-$f" 2 1 "$(at_marked_line "$WALL_DATA/$f.toml")" --wall "$WALL_DATA/$f.toml" --scene "$SCENE"
     done
-    expect_error wall-missing-file 4 "nonexistent-wall\.toml" --wall "$WORK/nonexistent-wall.toml" --scene "$SCENE"
-    expect_error wall-wrong-rank-count 3 "desktop-2x2\.toml.*4 ranks.*3" --wall "$WALLS/desktop-2x2.toml" --scene "$SCENE"
-    expect_error wall-ini-file 4 "old-desktop-2x2\.ini: INI wall files are no longer read; convert to TOML" \
+    expect_error wall-missing-file 4 1 "nonexistent-wall\.toml" --wall "$WORK/nonexistent-wall.toml" --scene "$SCENE"
+    # mpirun -n other than the wall's rank count: a usage error.
+    expect_error wall-wrong-rank-count 3 2 "desktop-2x2\.toml.*4 ranks.*3" --wall "$WALLS/desktop-2x2.toml" --scene "$SCENE"
+    expect_error wall-ini-file 4 1 "old-desktop-2x2\.ini: INI wall files are no longer read; convert to TOML" \
         --wall "$WALL_DATA/old-desktop-2x2.ini" --scene "$SCENE"
-    expect_error wall-ini-syntax 4 "$(at_marked_line "$WALL_DATA/old-ini-words.toml").*INI wall files are no longer read" \
+    expect_error wall-ini-syntax 4 1 "$(at_marked_line "$WALL_DATA/old-ini-words.toml").*INI wall files are no longer read" \
         --wall "$WALL_DATA/old-ini-words.toml" --scene "$SCENE"
 
-    # Scene files.
-    expect_error scene-missing-file 4 "nonexistent-scene\.toml" --wall "$TINY" --scene "$WORK/nonexistent-scene.toml"
+    # Scene files: runtime failures.
+    expect_error scene-missing-file 4 1 "nonexistent-scene\.toml" --wall "$TINY" --scene "$WORK/nonexistent-scene.toml"
     for f in syntax unknown-key nan absurd unknown-component; do
-        expect_error "scene-$f" 4 "$(at_marked_line "$DATA/bad-$f.toml")" --wall "$TINY" --scene "$DATA/bad-$f.toml"
+        expect_error "scene-$f" 4 1 "$(at_marked_line "$DATA/bad-$f.toml")" --wall "$TINY" --scene "$DATA/bad-$f.toml"
     done
 
-    # Paths.
-    expect_error data-dir-missing 4 "/nonexistent" --wall "$TINY" --scene "$SCENE" --data-dir /nonexistent
-    expect_error out-in-proc 4 "--out /proc/forbidden" --wall "$TINY" --scene "$SCENE" --out /proc/forbidden
+    # Paths that cannot be read or written: runtime failures.
+    expect_error data-dir-missing 4 1 "/nonexistent" --wall "$TINY" --scene "$SCENE" --data-dir /nonexistent
+    expect_error out-in-proc 4 1 "--out /proc/forbidden" --wall "$TINY" --scene "$SCENE" --out /proc/forbidden
     touch "$WORK/regular-file"
-    expect_error out-under-file 4 "--out $WORK/regular-file/sub" --wall "$TINY" --scene "$SCENE" \
+    expect_error out-under-file 4 1 "--out $WORK/regular-file/sub" --wall "$TINY" --scene "$SCENE" \
         --out "$WORK/regular-file/sub"
 
-    # Options.
-    expect_error frames-negative 4 "--frames" --wall "$TINY" --scene "$SCENE" --frames -1
-    expect_error frames-zero-headless 4 "--frames 0" --wall "$TINY" --scene "$SCENE" --frames 0
-    expect_error frames-fraction 4 "--frames" --wall "$TINY" --scene "$SCENE" --frames 1.5
-    expect_error backend-vulkan 4 "--backend.*vulkan" --wall "$TINY" --scene "$SCENE" --backend vulkan
-    expect_error dt-nan 4 "--dt" --wall "$TINY" --scene "$SCENE" --dt nan
-    expect_error start-time-inf 4 "--start-time" --wall "$TINY" --scene "$SCENE" --start-time inf
-    expect_error exposure-negative 4 "--exposure" --wall "$TINY" --scene "$SCENE" --exposure -1
-    expect_error tonemap-unknown 4 "--tonemap" --wall "$TINY" --scene "$SCENE" --tonemap reinhard
-    expect_error option-unknown 4 "--bogus" --wall "$TINY" --scene "$SCENE" --bogus
-    expect_error draw-lanes-negative 4 "--draw-lanes" --wall "$TINY" --scene "$SCENE" --draw-lanes -1
-    expect_error balance-by-unknown 4 "--balance-by" --wall "$TINY" --scene "$SCENE" --balance-by pixels
-    expect_error option-twice 4 "--wall" --wall "$TINY" --wall "$TINY" --scene "$SCENE"
-    expect_error wall-option-missing 4 "wall" --scene "$SCENE"
+    # Options: usage errors.
+    expect_error frames-negative 4 2 "--frames" --wall "$TINY" --scene "$SCENE" --frames -1
+    expect_error frames-zero-headless 4 2 "--frames 0" --wall "$TINY" --scene "$SCENE" --frames 0
+    expect_error frames-fraction 4 2 "--frames" --wall "$TINY" --scene "$SCENE" --frames 1.5
+    expect_error backend-vulkan 4 2 "--backend.*vulkan.*egl, osmesa, glfw" --wall "$TINY" --scene "$SCENE" --backend vulkan
+    expect_error dt-nan 4 2 "--dt" --wall "$TINY" --scene "$SCENE" --dt nan
+    expect_error start-time-inf 4 2 "--start-time" --wall "$TINY" --scene "$SCENE" --start-time inf
+    expect_error exposure-negative 4 2 "--exposure" --wall "$TINY" --scene "$SCENE" --exposure -1
+    expect_error tonemap-unknown 4 2 "--tonemap.*reinhard.*aces, magnitude-gamma" --wall "$TINY" --scene "$SCENE" \
+        --tonemap reinhard
+    expect_error option-unknown 4 2 "unrecognised option '--bogus'" --wall "$TINY" --scene "$SCENE" --bogus
+    expect_error draw-lanes-removed 4 2 "unrecognised option '--draw-lanes'" --wall "$TINY" --scene "$SCENE" \
+        --draw-lanes 1
+    expect_error balance-unknown 4 2 "--balance.*maybe.*on, off, auto" --wall "$TINY" --scene "$SCENE" --balance maybe
+    expect_error balance-by-unknown 4 2 "--balance-by.*pixels.*time, work" --wall "$TINY" --scene "$SCENE" \
+        --balance-by pixels
+    expect_error option-twice 4 2 "--wall" --wall "$TINY" --wall "$TINY" --scene "$SCENE"
+    expect_error wall-option-missing 4 2 "wall" --scene "$SCENE"
 }
 
 # Mistakes in --stats that the program only notices when it writes the file, after rendering.
 late_output_cases() {
     touch "$WORK/regular-file"
-    expect_error stats-extension 4 "--stats" --wall "$TINY" --scene "$SCENE" --frames 3 --stats "$WORK/s.txt"
-    expect_error stats-under-file 4 "--stats.*regular-file" --wall "$TINY" --scene "$SCENE" --frames 3 \
+    expect_error stats-extension 4 2 "--stats" --wall "$TINY" --scene "$SCENE" --frames 3 --stats "$WORK/s.txt"
+    expect_error stats-under-file 4 1 "--stats.*regular-file" --wall "$TINY" --scene "$SCENE" --frames 3 \
         --stats "$WORK/regular-file/s.csv"
 }
 

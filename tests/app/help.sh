@@ -1,11 +1,14 @@
 #!/bin/bash
-# Test 7, help: the top-level help lists the subcommands, `render --help` mentions every option,
-# an unknown subcommand fails.
+# Help and the command-line convention: the top-level help lists the commands and the exit status,
+# `render --help` mentions every option; for every command (and aurorawall itself) --help prints
+# usage on stdout with status 0, an unknown option exits 2 with one line on stderr naming it, a word
+# not among an option's choices exits 2 naming the option and the allowed words, and a runtime
+# failure exits 1 with one line.
 source "$(dirname "$0")/lib.sh"
 
 top=$("$AW" --help)
 echo "$top"
-for command in render airmass; do
+for command in render airmass tables accuracy; do
     grep -Eq "^ +$command " <<<"$top" || fail "aurorawall --help does not list the command '$command'"
 done
 
@@ -17,7 +20,8 @@ for option in help wall scene backend frames dt start-time realtime exposure ton
     grep -Eq -e "--$option( |$)" <<<"$render_help" || fail "aurorawall render --help does not mention --$option"
 done
 # Every option the parser declares, read from its source, so that a new option needs help text.
-declared=$(grep -oE '^ *\("[a-z][a-z-]*[",]' "$SRC_DIR/src/app/render_options.cpp" | grep -oE '[a-z][a-z-]*' || true)
+declared=$(grep -oE '^ *\("[a-z][a-z-]*[",]|addChoice\("[a-z-]+"' "$SRC_DIR/src/app/render_options.cpp" |
+           sed 's/addChoice//' | grep -oE '[a-z][a-z-]*' || true)
 [ "$(wc -w <<<"$declared")" -ge 15 ] || fail "could not read the options from src/app/render_options.cpp: $declared"
 for option in $declared; do
     grep -Eq -e "--$option( |$)" <<<"$render_help" || fail "aurorawall render --help does not mention --$option"
@@ -29,12 +33,61 @@ done
 mpi_help=$(aw_mpirun 2 render --help)
 [ "$(grep -c -e '--single-screen' <<<"$mpi_help")" = 1 ] || fail "mpirun -n 2 aurorawall render --help: not printed exactly once"
 
+# expect STATUS REGEX COMMAND...: runs aurorawall COMMAND (stdin from $STDIN, default empty); it must
+# exit with STATUS, and for STATUS != 0 print exactly one line on stderr matching REGEX and nothing on
+# stdout; for 0, usage on stdout matching REGEX and nothing on stderr.
+expect() {
+    local status="$1" regex="$2"; shift 2
+    local rc=0
+    "$AW" "$@" <"${STDIN:-/dev/null}" >"$WORK/out" 2>"$WORK/err" || rc=$?
+    local what="aurorawall $*"
+    [ "$rc" = "$status" ] || fail "$what: exit status $rc, expected $status; stderr: $(cat "$WORK/err")"
+    if [ "$status" = 0 ]; then
+        grep -q "Usage" "$WORK/out" || fail "$what: no usage on stdout"
+        grep -Eq -e "$regex" "$WORK/out" || fail "$what: stdout does not match /$regex/"
+        [ ! -s "$WORK/err" ] || fail "$what: wrote on stderr: $(cat "$WORK/err")"
+    else
+        [ "$(grep -c '' "$WORK/err")" = 1 ] || fail "$what: $(grep -c '' "$WORK/err") lines on stderr, expected 1"
+        grep -Eq -e "$regex" "$WORK/err" || fail "$what: stderr does not match /$regex/: $(cat "$WORK/err")"
+        [ ! -s "$WORK/out" ] || fail "$what: wrote on stdout: $(head -c 200 "$WORK/out")"
+    fi
+    echo "ok   $status  $what: $(head -1 "$WORK/err")"
+}
+
+# aurorawall itself.
+expect 0 "Exit status" --help
+expect 2 "^aurorawall: unrecognised option '--bogus'" --bogus
+expect 2 "^aurorawall: unknown command 'bogus' \(allowed: render, airmass, tables, accuracy\)" bogus
+expect 2 "^aurorawall: missing command" 
+
+# render (a singleton MPI process without mpirun).
+expect 0 "--backend" render --help
+expect 2 "^aurorawall render: unrecognised option '--bogus'" render --bogus
+expect 2 "^aurorawall render: --backend: unknown value 'vulkan' \(allowed: egl, osmesa, glfw\)" \
+    render --wall "$DATA/tiny-2x2.toml" --scene "$SCENE" --backend vulkan
+expect 1 "^aurorawall render: .*nonexistent-wall\.toml" render --wall "$WORK/nonexistent-wall.toml" --scene "$SCENE"
+
+# airmass
+expect 0 "--method" airmass --help
+expect 2 "^aurorawall airmass: unrecognised option '--bogus'" airmass --bogus
+expect 2 "^aurorawall airmass: --method: unknown value 'nope' \(allowed: list, exact, .*\)" airmass --method nope
+printf '0,6371,0,0,1,0,0,100,8,6371\n1,2,3\n' >"$WORK/bad-rays.csv"
+STDIN="$WORK/bad-rays.csv" expect 1 "^aurorawall airmass: line 2: " airmass
+
+# tables
+expect 0 "--energy-kev" tables --help
+expect 2 "^aurorawall tables: unrecognised option '--bogus'" tables deposition --energy-kev 5 --bogus
+expect 2 "^aurorawall tables: unknown table 'ozone' \(allowed: deposition\)" tables ozone --energy-kev 5
 rc=0
-"$AW" bogus >"$WORK/out" 2>"$WORK/err" || rc=$?
-cat "$WORK/err"
-[ $rc -ne 0 ] || fail "aurorawall bogus exited 0"
-grep -q "bogus" "$WORK/err" || fail "aurorawall bogus: the error does not name the command"
-rc=0
-"$AW" >/dev/null 2>&1 || rc=$?
-[ $rc -ne 0 ] || fail "aurorawall without a command exited 0"
+"$AW" tables deposition --energy-kev 5 >/dev/full 2>"$WORK/err" || rc=$?
+[ $rc = 1 ] && [ "$(grep -c '' "$WORK/err")" = 1 ] && grep -q "^aurorawall tables: " "$WORK/err" ||
+    fail "aurorawall tables >/dev/full: exit status $rc, expected 1 with one error line: $(cat "$WORK/err")"
+echo "ok   1  aurorawall tables deposition --energy-kev 5 >/dev/full: $(cat "$WORK/err")"
+
+# accuracy: one parser for --airmass, --sky and --scene.
+expect 0 "--scene" accuracy --help
+expect 2 "^aurorawall accuracy: unrecognised option '--bogus'" accuracy --bogus
+expect 2 "^aurorawall accuracy: choose --airmass, --sky or --scene FILE" accuracy
+expect 2 "^aurorawall accuracy: --repeat applies to --airmass and --sky only" accuracy --scene "$SCENE" --repeat 4
+expect 1 "^aurorawall accuracy: .*nonexistent-scene\.toml" accuracy --scene "$WORK/nonexistent-scene.toml"
 echo "PASS help"

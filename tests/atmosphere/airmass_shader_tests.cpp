@@ -1,7 +1,7 @@
-// The default airmass method as the GPU runs it (issue 4, part 5): the shared GLSL text compiled by the
+// The default airmass method as the GPU runs it: the shared GLSL text compiled by the
 // GL driver (llvmpipe in CI) returns a finite value for finite inputs of any magnitude, as the C++
 // float and double evaluations of the same text do (tests/atmosphere/airmass_tests.cpp).
-#include "atmosphere/accuracy_cli.h"
+#include "atmosphere/accuracy_report.h"
 #include "atmosphere/airmass.h"
 #include "atmosphere/airmass_accuracy.h"
 #include "gl/context.h"

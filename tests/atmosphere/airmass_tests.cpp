@@ -1,7 +1,6 @@
-// Tests of the airmass methods (issue 4): exact reference, published error figures, extreme cases, CLI.
+// Tests of the airmass methods: exact reference, published error figures, extreme cases.
 #include "atmosphere/airmass.h"
 #include "atmosphere/airmass_accuracy.h"
-#include "atmosphere/airmass_cli.h"
 #include "atmosphere/airmass_exact.h"
 #include "common/glsl.h"
 #include "random_rays.h"
@@ -61,7 +60,7 @@ TEST(ScaledBesselK1, SeriesMatchesStandardLibraryAndChapmanValue)
         EXPECT_NEAR(std::sqrt(M_PI / (2.0 * x)) * sum / scaledBesselK1(x), 1.0, 1e-12) << x;
     }
     EXPECT_NEAR(scaledBesselK1(500.0 - 1e-9) / scaledBesselK1(500.0), 1.0, 1e-11);
-    EXPECT_NEAR(796.375 * scaledBesselK1(796.375), 35.38532, 5e-6); // reference.md
+    EXPECT_NEAR(796.375 * scaledBesselK1(796.375), 35.38532, 5e-6); // Ch(x, 90°) = x·eˣ·K₁(x), published value
 }
 
 TEST(ExactAirmass, ChapmanValuesOfReference)
@@ -448,57 +447,6 @@ TEST(AirmassHalfLine, MatchesExactIntegralToInfinity)
     EXPECT_GT(checked, 5000);
     EXPECT_LE(worst64, 6e-5);
     EXPECT_LE(worst32, 1.0); // relative to bound32
-}
-
-// ---- command line ----
-
-int runCli(std::vector<std::string> args, const std::string& input, std::string& out, std::string& err)
-{
-    std::vector<char*> argv;
-    for (std::string& arg : args) argv.push_back(arg.data());
-    std::istringstream in(input);
-    std::ostringstream outStream, errStream;
-    int status = runAirmassCommand(int(argv.size()), argv.data(), in, outStream, errStream);
-    out = outStream.str();
-    err = errStream.str();
-    return status;
-}
-
-TEST(AirmassCli, ListsMethodsAndComputes)
-{
-    std::string out, err;
-    ASSERT_EQ(runCli({"airmass", "--method", "list"}, "", out, err), 0);
-    EXPECT_NE(out.find("exact\n"), std::string::npos);
-    EXPECT_NE(out.find(std::string(kDefaultAirmassMethod) + "\n"), std::string::npos);
-    std::string input = "ox,oy,oz,dx,dy,dz,t0,t1,H,R\n\n0,6371,0,0,1,0,0,100,8,6371\n0,6371,0,0,1,0,100,0,8,6371\n";
-    ASSERT_EQ(runCli({"airmass", "--method", "exact"}, input, out, err), 0);
-    double expected = 8.0 * (1.0 - std::exp(-100.0 / 8.0));
-    std::istringstream lines(out);
-    double first = 0.0, second = 0.0;
-    lines >> first >> second;
-    EXPECT_NEAR(first, expected, 1e-9);
-    EXPECT_NEAR(second, -expected, 1e-9);
-    ASSERT_EQ(runCli({"airmass"}, input, out, err), 0); // the default, float32
-    std::istringstream defaultLines(out);
-    defaultLines >> first;
-    EXPECT_NEAR(first, expected, 1e-5 * expected);
-    ASSERT_EQ(runCli({"airmass", "--help"}, "", out, err), 0);
-    EXPECT_NE(out.find("--method"), std::string::npos);
-}
-
-TEST(AirmassCli, MalformedLinesFailWithLineNumber)
-{
-    for (const std::string& bad : {std::string("1,2,3\n"), std::string("0,6371,0,0,1,0,0,x,8,6371\n"),
-                                   std::string("0,6371,0,0,1,0,0,nan,8,6371\n"), std::string("0,6371,0,0,1,0,0,inf,8,6371\n"),
-                                   std::string("0,6371,0,0,1,0,0,1,0,6371\n"), std::string("0,6371,0,0,1,0,0,1,8,-1\n"),
-                                   std::string("0,6371,0,0,1,0,0,1,8,6371,\n")}) {
-        std::string out, err;
-        EXPECT_EQ(runCli({"airmass"}, "0,6371,0,0,1,0,0,100,8,6371\n\n" + bad, out, err), 2) << bad;
-        EXPECT_EQ(out, "") << bad;
-        EXPECT_NE(err.find("line 3"), std::string::npos) << err;
-    }
-    std::string out, err;
-    EXPECT_EQ(runCli({"airmass", "--method", "nope"}, "", out, err), 2);
 }
 
 } // namespace

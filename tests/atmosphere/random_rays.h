@@ -1,5 +1,5 @@
 #pragma once
-// Rays for the "any finite input" tests of the default airmass method (issue 4, part 5).
+// Rays for the "any finite input" tests of the default airmass method.
 #include "atmosphere/airmass.h"
 
 #include <cmath>

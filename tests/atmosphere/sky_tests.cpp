@@ -1,4 +1,4 @@
-// Tests of the several-lights sky (issue 4, part 6): closed form against the nested-march reference,
+// Tests of the several-lights sky: closed form against the nested-march reference,
 // linearity in the lights, extreme geometries.
 #include "atmosphere/sky_accuracy.h"
 

@@ -36,7 +36,7 @@ TEST(Lazarev, RateIntegralMatchesAdaptiveQuadrature)
 
 TEST(Lazarev, PeakAltitudesMatchReference)
 {
-    // reference.md: 1 keV 157 km, 5 keV 112.5 km, 10 keV 104.7 km.
+    // Published peak altitudes of the Lazarev profile over USSA76: 1 keV 157 km, 5 keV 112.5 km, 10 keV 104.7 km.
     const double expected[][2] = {{1.0, 157.0}, {5.0, 112.5}, {10.0, 104.7}};
     for (const auto& [energy, altitude] : expected) {
         double peak = peakAltitude([&](double z) { return depositionPerElectron(z, energy); }, 80.0, 300.0);

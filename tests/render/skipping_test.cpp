@@ -1,4 +1,4 @@
-// Empty-space skipping (issue 3, part 7): on every camera preset, the image with
+// Empty-space skipping: on every camera preset, the image with
 // skip_empty_space = yes equals the naive march (no) with the same step. A skip ends where the
 // footprint map's conservative distance allows, so it never crosses an emitting region, and it
 // jumps over whole steps of the naive march's grid, so the samples it takes are the naive march's.

@@ -40,7 +40,7 @@ TEST(Scene, SubstormListsItsComponentsAndCurtains)
 
 TEST(Scene, BenchmarkCameraIsThePapersView)
 {
-    // reference.md: |C| = 1.011017 radii, about 70 km above southern Finland (59.2 N, 25.6 E),
+    // The published benchmark camera: |C| = 1.011017 radii, about 70 km above southern Finland (59.2 N, 25.6 E),
     // heading 299 deg, 10.4 deg above the horizontal.
     const scene::Scene s = components::loadScene(kScenes + "/substorm.toml");
     const glm::dvec3 c = s.camera.positionKm;

@@ -1,4 +1,4 @@
-#include "atmosphere/accuracy_cli.h"
+#include "atmosphere/accuracy_report.h"
 
 #include "atmosphere/airmass_accuracy.h"
 #include "atmosphere/airmass_exact.h"
@@ -6,7 +6,6 @@
 #include "atmosphere/sky_accuracy.h"
 #include "gl/context.h"
 
-#include <boost/program_options.hpp>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -17,20 +16,8 @@
 namespace aurorawall {
 namespace {
 
-namespace po = boost::program_options;
-
-constexpr int kUsageError = 2;
-constexpr int kRuntimeError = 1;
-
-struct Settings {
-    int airmassRepeat = 1024;
-    int copies = 0;  // the work per dispatch, in copies of the item set; 0: 1 on llvmpipe, 64 on a GPU
-    int viewSteps = 16;
-    int lightSteps = 8;
-};
-
 // Copies of the item set per dispatch: enough invocations to fill a GPU, few on llvmpipe.
-int copiesOf(const Settings& settings)
+int copiesOf(const AccuracyReportSettings& settings)
 {
     if (settings.copies > 0) return settings.copies;
     return isSoftwareRenderer() ? 1 : 64;
@@ -141,7 +128,9 @@ double maxRelativeDifference(const std::vector<double>& a, const std::vector<dou
     return worst;
 }
 
-void printAirmass(const Settings& settings, std::ostream& out)
+} // namespace
+
+void printAirmassAccuracy(const AccuracyReportSettings& settings, std::ostream& out)
 {
     const std::vector<AirmassRay> rays = airmassAccuracyRays();
     const int rayCount = int(rays.size());
@@ -201,6 +190,8 @@ void printAirmass(const Settings& settings, std::ostream& out)
     }
 }
 
+namespace {
+
 std::vector<glm::vec4> skyInputs(const std::vector<SkyView>& views)
 {
     std::vector<glm::vec4> inputs;
@@ -214,7 +205,7 @@ std::vector<glm::vec4> skyInputs(const std::vector<SkyView>& views)
 // SKY_BASELINE, SKY_NESTED or nothing (closed form) as `variant`.
 ShaderBenchmarkResult runSkyKernel(const std::string& variant, const std::vector<glm::vec4>& inputs, int viewCount,
                                    const SkyAtmosphereParameters& atmosphere, const std::vector<SkyLight>& lights,
-                                   const Settings& settings, const ShaderBenchmarkSettings& timing)
+                                   const AccuracyReportSettings& settings, const ShaderBenchmarkSettings& timing)
 {
     gl::ShaderSource source;
     if (!variant.empty()) source.defines.push_back(variant);
@@ -236,7 +227,9 @@ ShaderBenchmarkResult runSkyKernel(const std::string& variant, const std::vector
     });
 }
 
-void printSky(const Settings& settings, std::ostream& out)
+} // namespace
+
+void printSkyAccuracy(const AccuracyReportSettings& settings, std::ostream& out)
 {
     const std::vector<SkyView> views = twilightViews(0.002);
     const int viewCount = int(views.size());
@@ -312,63 +305,6 @@ void printSky(const Settings& settings, std::ostream& out)
             out << line;
         }
     }
-}
-
-} // namespace
-
-int runAccuracyCommand(int argc, char** argv, std::ostream& out, std::ostream& err)
-{
-    po::options_description options(
-        "Usage: aurorawall accuracy --airmass | --sky [options]\n"
-        "Accuracy and shader cost (docs/ACCURACY.md). --airmass: every airmass method over the sweep's rays;\n"
-        "--sky: the single-scattering sky with 1, 2, 4 and 8 lights, closed form against nested march.\n"
-        "Errors are against the double-precision reference, for the float results read back from the GPU\n"
-        "and for the CPU float32/float64 evaluations of the same shader text. Costs are ns per evaluation\n"
-        "inside a compute shader on this machine's GL renderer (EGL), an empty loop subtracted.\nOptions");
-    Settings settings;
-    options.add_options()("help,h", "show this help")("airmass", "airmass methods (issue 4, part 4)")(
-        "sky", "several-lights sky (issue 4, part 6)")(
-        "repeat", po::value<int>(&settings.airmassRepeat)->default_value(settings.airmassRepeat),
-        "airmass evaluations per shader invocation")(
-        "copies", po::value<int>(), "work per dispatch in copies of the ray set (default: 1 on llvmpipe, 64 on a GPU)")(
-        "view-steps", po::value<int>(&settings.viewSteps)->default_value(settings.viewSteps), "sky: outer march steps M")(
-        "light-steps", po::value<int>(&settings.lightSteps)->default_value(settings.lightSteps),
-        "sky: nested-march steps K per light");
-    po::variables_map variables;
-    try {
-        po::store(po::command_line_parser(argc, argv).options(options).run(), variables);
-        po::notify(variables);
-    } catch (const po::error& e) {
-        err << "aurorawall accuracy: " << e.what() << "\n";
-        return kUsageError;
-    }
-    if (variables.count("help")) {
-        out << options;
-        return 0;
-    }
-    if (!variables.count("airmass") && !variables.count("sky")) {
-        err << "aurorawall accuracy: choose --airmass or --sky (see --help)\n";
-        return kUsageError;
-    }
-    if (settings.airmassRepeat < 1 || settings.viewSteps < 1 || settings.lightSteps < 1 ||
-        (variables.count("copies") && variables["copies"].as<int>() < 1)) {
-        err << "aurorawall accuracy: --repeat, --copies, --view-steps and --light-steps must be >= 1\n";
-        return kUsageError;
-    }
-    if (variables.count("copies")) settings.copies = variables["copies"].as<int>();
-
-    try {
-        auto context = gl::createContext(gl::Backend::Egl);
-        const char* threads = std::getenv("LP_NUM_THREADS");
-        out << "renderer: " << context->rendererName() << ", " << context->glVersion()
-            << (threads ? ", LP_NUM_THREADS=" + std::string(threads) : std::string()) << "\n";
-        if (variables.count("airmass")) printAirmass(settings, out);
-        if (variables.count("sky")) printSky(settings, out);
-    } catch (const std::exception& e) {
-        err << "aurorawall accuracy: " << e.what() << "\n";
-        return kRuntimeError;
-    }
-    return 0;
 }
 
 } // namespace aurorawall

@@ -1,0 +1,119 @@
+#include "app/accuracy_command.h"
+
+#include "app/accuracy_scene.h"
+#include "app/cli/command_line.h"
+#include "app/cli/exit_status.h"
+#include "atmosphere/accuracy_report.h"
+
+#include <cstdio>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace aurorawall::app {
+namespace {
+
+namespace po = boost::program_options;
+
+// The options of each kind of run; giving one to the other kind is a usage error.
+const std::vector<std::string> kShaderOptions = {"repeat", "copies", "view-steps", "light-steps"};
+const std::vector<std::string> kSceneOptions = {"wall", "size", "pixels", "runs",
+                                                "threads", "reference-step-km", "feature-costs"};
+
+const char* kUsage =
+    "Usage: aurorawall accuracy --airmass | --sky [options]\n"
+    "       aurorawall accuracy --scene FILE [--wall FILE] [--size WxH] [--pixels N] [--feature-costs]\n"
+    "Error against cost of the approximations (docs/ACCURACY.md), on one headless EGL context in one\n"
+    "process (no mpirun).\n"
+    "--airmass: every airmass method over the sweep's rays; --sky: the single-scattering sky with 1, 2, 4 and\n"
+    "8 lights, closed form against nested march. Errors are against the double-precision reference, for the\n"
+    "float results read back from the GPU and for the CPU float32/float64 evaluations of the same shader\n"
+    "text. Costs are ns per evaluation inside a compute shader on this machine's GL renderer, an empty loop\n"
+    "subtracted.\n"
+    "--scene: error against run time of the aurora's quality knobs: the scene's first frame at a small size,\n"
+    "each knob varied alone around the scene's defaults, compared with the GPU render at the finest settings\n"
+    "(every pixel) and the double-precision CPU reference (N sampled pixels). Stars, planet_texture and sky\n"
+    "are removed (the CPU reference does not model them). --feature-costs: instead, the frame time of each\n"
+    "feature toggled alone, the full scene (the paper's table 2).\n"
+    "Exit status: 0 success, 1 runtime failure (a file, no GL context, a shader), 2 usage error.\n";
+
+// "WxH" with positive W and H.
+bool parseSize(const std::string& text, glm::ivec2& size)
+{
+    int w = 0, h = 0;
+    char x = 0, rest = 0;
+    if (std::sscanf(text.c_str(), "%d%c%d%c", &w, &x, &h, &rest) != 3 || x != 'x' || w < 1 || h < 1)
+        return false;
+    size = {w, h};
+    return true;
+}
+
+} // namespace
+
+int runAccuracyCommand(int argc, char** argv, std::ostream& out, std::ostream& err)
+{
+    return cli::runCommand("accuracy", out, err, [&] {
+        cli::CommandLine cli("accuracy", kUsage);
+        bool airmass = false, sky = false;
+        AccuracyReportSettings shader;
+        SceneAccuracySettings scene;
+        std::string size = "320x180";
+        cli.add()
+            ("airmass", po::bool_switch(&airmass), "the airmass methods")
+            ("sky", po::bool_switch(&sky), "the several-lights sky")
+            ("scene", po::value(&scene.sceneFile), "the aurora's quality knobs on this scene file")
+            ("repeat", po::value(&shader.airmassRepeat)->default_value(shader.airmassRepeat),
+             "--airmass: airmass evaluations per shader invocation")
+            ("copies", po::value(&shader.copies),
+             "--airmass, --sky: work per dispatch in copies of the ray set (default: 1 on llvmpipe, 64 on a GPU)")
+            ("view-steps", po::value(&shader.viewSteps)->default_value(shader.viewSteps), "--sky: outer march steps M")
+            ("light-steps", po::value(&shader.lightSteps)->default_value(shader.lightSteps),
+             "--sky: nested-march steps K per light")
+            ("wall", po::value(&scene.wallFile),
+             "--scene: wall file whose single-screen equivalent sets the field of view (default "
+             "config/walls/single.ini)")
+            ("size", po::value(&size)->default_value(size), "--scene: render size WxH in pixels")
+            ("pixels", po::value(&scene.pixels)->default_value(scene.pixels), "--scene: pixels of the CPU reference")
+            ("runs", po::value(&scene.runs)->default_value(scene.runs),
+             "--scene: timed frames per setting after one warm-up (the median is reported)")
+            ("threads", po::value(&scene.threads)->default_value(scene.threads), "--scene: CPU reference threads")
+            ("reference-step-km", po::value(&scene.referenceStepKm)->default_value(scene.referenceStepKm),
+             "--scene: CPU reference step where a curtain is in reach")
+            ("feature-costs", po::bool_switch(&scene.featureCosts),
+             "--scene: the paper's table 2 (frame time of each feature) instead of the knobs");
+        if (!cli.parse(argc, argv)) {
+            out << cli.help();
+            return;
+        }
+        const bool sceneRun = cli.given("scene");
+        if (sceneRun && (airmass || sky))
+            throw cli.usageError("--scene cannot be combined with --airmass or --sky");
+        if (!sceneRun && !airmass && !sky)
+            throw cli.usageError("choose --airmass, --sky or --scene FILE");
+        for (const std::string& option : sceneRun ? kShaderOptions : kSceneOptions)
+            if (cli.given(option))
+                throw cli.usageError("--" + option + " applies to " +
+                                     (sceneRun ? "--airmass and --sky" : "--scene") + " only");
+
+        if (sceneRun) {
+            if (scene.sceneFile.empty())
+                throw cli.usageError("--scene needs a file name");
+            if (!parseSize(size, scene.sizePx))
+                throw cli.usageError("--size must be WxH with positive whole W and H (got '" + size + "')");
+            if (scene.pixels < 1 || scene.runs < 1 || scene.threads < 1 || !(scene.referenceStepKm > 0.0))
+                throw cli.usageError("--pixels, --runs, --threads and --reference-step-km must be positive");
+            runSceneAccuracy(scene, out);
+            return;
+        }
+        if (shader.airmassRepeat < 1 || shader.viewSteps < 1 || shader.lightSteps < 1 ||
+            (cli.given("copies") && shader.copies < 1))
+            throw cli.usageError("--repeat, --copies, --view-steps and --light-steps must be >= 1");
+        const auto context = openAccuracyContext(out);
+        if (airmass)
+            printAirmassAccuracy(shader, out);
+        if (sky)
+            printSkyAccuracy(shader, out);
+    });
+}
+
+} // namespace aurorawall::app

@@ -1,0 +1,52 @@
+#include "app/cli/command_line.h"
+
+#include <sstream>
+
+namespace aurorawall::cli {
+
+CommandLine::CommandLine(std::string command, const std::string& usage)
+    : command_(std::move(command)), visible_(usage + "\nOptions")
+{
+    visible_.add_options()("help,h", "show this help and exit");
+}
+
+void CommandLine::addPositional(const char* name, std::string* value)
+{
+    hidden_.add_options()(name, po::value(value));
+    positional_.add(name, 1);
+}
+
+bool CommandLine::parse(int argc, char** argv)
+{
+    po::options_description all;
+    all.add(visible_).add(hidden_);
+    try {
+        po::store(po::command_line_parser(argc, argv).options(all).positional(positional_).run(), values_);
+        if (values_.count("help"))
+            return false;
+        po::notify(values_);
+    } catch (const po::error& e) {
+        throw usageError(e.what());
+    }
+    return true;
+}
+
+bool CommandLine::given(const std::string& option) const
+{
+    const auto found = values_.find(option);
+    return found != values_.end() && !found->second.defaulted();
+}
+
+std::string CommandLine::help() const
+{
+    std::ostringstream text;
+    text << visible_;
+    return text.str();
+}
+
+UsageError CommandLine::usageError(const std::string& message) const
+{
+    return UsageError(message + " (see aurorawall" + (command_.empty() ? "" : " " + command_) + " --help)");
+}
+
+} // namespace aurorawall::cli

@@ -1,0 +1,26 @@
+#pragma once
+// The exit status of every aurorawall command, and the one-line error on stderr.
+//   0  success
+//   1  runtime failure: the command line was accepted but the run failed (a file that cannot be read
+//      or written or whose contents are malformed, no GL context, a shader that does not compile)
+//   2  usage error: the command line itself is wrong (common/input_error.h, UsageError)
+#include <exception>
+#include <functional>
+#include <iosfwd>
+#include <string>
+
+namespace aurorawall::cli {
+
+enum ExitStatus : int { kSuccess = 0, kRuntimeFailure = 1, kUsageError = 2 };
+
+// kUsageError for a UsageError, kRuntimeFailure for any other exception.
+int exitStatusOf(const std::exception& error);
+
+// "aurorawall tables: message" (command "" gives "aurorawall: message"), one line.
+std::string errorLine(const std::string& command, const std::string& message);
+
+// Runs a command's body and turns what it throws into the exit status and one error line on `err`.
+// Output that could not be written (a full disk, a closed pipe) is a runtime failure too.
+int runCommand(const std::string& command, std::ostream& out, std::ostream& err, const std::function<void()>& body);
+
+} // namespace aurorawall::cli

@@ -1,0 +1,325 @@
+// The command front ends without a GL context or MPI: the command-line convention (app/cli), the
+// options of `render`, and the `tables`, `airmass` and `accuracy` commands up to their first GL call.
+#include "app/accuracy_command.h"
+#include "app/airmass_command.h"
+#include "app/cli/command_line.h"
+#include "app/cli/exit_status.h"
+#include "app/render_options.h"
+#include "app/tables_command.h"
+#include "atmosphere/airmass.h"
+#include "aurora/deposition_table.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace aurorawall::app {
+namespace {
+
+// argv as the commands see it.
+struct Args {
+    explicit Args(std::vector<std::string> words) : words_(std::move(words))
+    {
+        for (std::string& w : words_) pointers_.push_back(w.data());
+    }
+    int argc() const { return static_cast<int>(pointers_.size()); }
+    char** argv() { return pointers_.data(); }
+
+private:
+    std::vector<std::string> words_;
+    std::vector<char*> pointers_;
+};
+
+std::vector<std::string> lines(const std::string& text)
+{
+    std::vector<std::string> result;
+    std::istringstream in(text);
+    for (std::string line; std::getline(in, line);) result.push_back(line);
+    return result;
+}
+
+// ---- the convention ----
+
+enum class Colour { Red, Green };
+const cli::Choices<Colour> kColours = {{"red", Colour::Red}, {"green", Colour::Green}};
+
+TEST(CommandLine, ChoiceBecomesTheEnum)
+{
+    Colour colour = Colour::Red;
+    cli::CommandLine cli("paint", "Usage: aurorawall paint\n");
+    cli.addChoice("colour", &colour, kColours, "the colour");
+    Args args({"paint", "--colour", "green"});
+    ASSERT_TRUE(cli.parse(args.argc(), args.argv()));
+    EXPECT_EQ(colour, Colour::Green);
+    EXPECT_TRUE(cli.given("colour"));
+    EXPECT_NE(cli.help().find("--colour red|green"), std::string::npos) << cli.help();
+}
+
+TEST(CommandLine, DefaultChoiceIsNotGiven)
+{
+    Colour colour = Colour::Green;
+    cli::CommandLine cli("paint", "Usage: aurorawall paint\n");
+    cli.addChoice("colour", &colour, kColours, "the colour");
+    Args args({"paint"});
+    ASSERT_TRUE(cli.parse(args.argc(), args.argv()));
+    EXPECT_EQ(colour, Colour::Green);
+    EXPECT_FALSE(cli.given("colour"));
+}
+
+TEST(CommandLine, UnknownWordNamesTheOptionAndTheAllowedWords)
+{
+    Colour colour = Colour::Red;
+    cli::CommandLine cli("paint", "Usage: aurorawall paint\n");
+    cli.addChoice("colour", &colour, kColours, "the colour");
+    Args args({"paint", "--colour", "blue"});
+    try {
+        cli.parse(args.argc(), args.argv());
+        FAIL() << "no error for --colour blue";
+    } catch (const UsageError& e) {
+        const std::string what = e.what();
+        EXPECT_NE(what.find("--colour"), std::string::npos) << what;
+        EXPECT_NE(what.find("'blue'"), std::string::npos) << what;
+        EXPECT_NE(what.find("red, green"), std::string::npos) << what;
+        EXPECT_NE(what.find("(see aurorawall paint --help)"), std::string::npos) << what;
+    }
+}
+
+TEST(CommandLine, HelpStopsBeforeRequiredOptions)
+{
+    int count = 0;
+    cli::CommandLine cli("paint", "Usage: aurorawall paint --count N\n");
+    cli.add()("count", cli::po::value(&count)->required(), "how many");
+    Args help({"paint", "--help"});
+    EXPECT_FALSE(cli.parse(help.argc(), help.argv()));
+    EXPECT_NE(cli.help().find("Usage: aurorawall paint"), std::string::npos);
+    EXPECT_NE(cli.help().find("--count"), std::string::npos);
+    cli::CommandLine missing("paint", "Usage: aurorawall paint --count N\n");
+    missing.add()("count", cli::po::value(&count)->required(), "how many");
+    Args none({"paint"});
+    EXPECT_THROW(missing.parse(none.argc(), none.argv()), UsageError);
+}
+
+TEST(ExitStatus, UsageErrorIsTwoEverythingElseOne)
+{
+    EXPECT_EQ(cli::exitStatusOf(UsageError("--x")), 2);
+    EXPECT_EQ(cli::exitStatusOf(InputError("wall.ini:3: bad")), 1);
+    EXPECT_EQ(cli::exitStatusOf(std::runtime_error("no context")), 1);
+    std::ostringstream out, err;
+    EXPECT_EQ(cli::runCommand("paint", out, err, [] { throw UsageError("--x is bad"); }), 2);
+    EXPECT_EQ(err.str(), "aurorawall paint: --x is bad\n");
+    EXPECT_EQ(cli::runCommand("paint", out, err, [] {}), 0);
+}
+
+TEST(ExitStatus, OutputThatCannotBeWrittenIsARuntimeFailure)
+{
+    std::ostringstream out, err;
+    out.setstate(std::ios::badbit);
+    EXPECT_EQ(cli::runCommand("paint", out, err, [&] { out << "x"; }), 1);
+    EXPECT_EQ(lines(err.str()).size(), 1u);
+}
+
+// ---- render's options ----
+
+RenderOptions parseRender(std::vector<std::string> words)
+{
+    words.insert(words.begin(), "render");
+    Args args(std::move(words));
+    return parseRenderOptions(args.argc(), args.argv());
+}
+
+TEST(RenderOptions, EnumOptionsAreParsedOnce)
+{
+    const RenderOptions defaults = parseRender({"--wall", "w.ini", "--scene", "s.toml"});
+    EXPECT_EQ(defaults.backend, gl::Backend::Egl);
+    EXPECT_EQ(defaults.toneMap, io::ToneMap::Curve::AcesFilmic);
+    EXPECT_EQ(defaults.balance, Balance::Auto);
+    EXPECT_EQ(defaults.balanceBy, BandMeasure::CpuTime);
+    const RenderOptions o = parseRender({"--wall", "w.ini", "--scene", "s.toml", "--backend", "osmesa", "--tonemap",
+                                         "magnitude-gamma", "--balance", "off", "--balance-by", "work"});
+    EXPECT_EQ(o.backend, gl::Backend::Osmesa);
+    EXPECT_EQ(o.toneMap, io::ToneMap::Curve::MagnitudeGamma);
+    EXPECT_EQ(o.balance, Balance::Off);
+    EXPECT_EQ(o.balanceBy, BandMeasure::Work);
+    EXPECT_EQ(parseRender({"--wall", "w.ini", "--scene", "s.toml", "--balance"}).balance, Balance::On);
+}
+
+TEST(RenderOptions, MistakesAreUsageErrorsNamingTheOption)
+{
+    const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
+        {{"--backend", "vulkan"}, "--backend: unknown value 'vulkan' (allowed: egl, osmesa, glfw)"},
+        {{"--tonemap", "reinhard"}, "(allowed: aces, magnitude-gamma)"},
+        {{"--balance", "maybe"}, "(allowed: on, off, auto)"},
+        {{"--balance-by", "pixels"}, "(allowed: time, work)"},
+        {{"--bogus"}, "unrecognised option '--bogus'"},
+        {{"--frames", "0"}, "--frames 0"},
+        {{"--balance-bands", "0"}, "--balance-bands"},
+    };
+    for (const auto& [extra, expected] : cases) {
+        std::vector<std::string> words = {"--wall", "w.ini", "--scene", "s.toml"};
+        words.insert(words.end(), extra.begin(), extra.end());
+        try {
+            parseRender(words);
+            ADD_FAILURE() << "no error for " << extra.front();
+        } catch (const UsageError& e) {
+            EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << e.what();
+        }
+    }
+}
+
+// ---- tables ----
+
+struct Result {
+    int status;
+    std::string out, err;
+};
+
+Result runTables(std::vector<std::string> words)
+{
+    words.insert(words.begin(), "tables");
+    Args args(std::move(words));
+    std::ostringstream out, err;
+    const int status = runTablesCommand(args.argc(), args.argv(), out, err);
+    return {status, out.str(), err.str()};
+}
+
+TEST(TablesCommand, PrintsTheDepositionProfile)
+{
+    Result r = runTables({"deposition", "--energy-kev", "5"});
+    ASSERT_EQ(r.status, 0) << r.err;
+    std::vector<std::string> rows = lines(r.out);
+    ASSERT_EQ(rows.size(), 1082u);
+    EXPECT_EQ(rows[0], "altitude_km,rate");
+    EXPECT_EQ(rows[1].substr(0, 5), "60.0,");
+    EXPECT_EQ(rows.back().substr(0, 6), "600.0,");
+    // 112.5 km is row 1 + 105.
+    double rate = std::stod(rows[106].substr(rows[106].find(',') + 1));
+    EXPECT_NEAR(rate / aurora::depositionRate(112.5, 5.0, aurora::Spectrum::Monoenergetic), 1.0, 1e-9);
+}
+
+TEST(TablesCommand, MaxwellianFlagSelectsTheSpectrum)
+{
+    Result r = runTables({"deposition", "--energy-kev", "2", "--maxwellian"});
+    ASSERT_EQ(r.status, 0) << r.err;
+    std::vector<std::string> rows = lines(r.out);
+    double rate = std::stod(rows[101].substr(rows[101].find(',') + 1)); // 110 km
+    EXPECT_NEAR(rate / aurora::depositionRate(110.0, 2.0, aurora::Spectrum::Maxwellian), 1.0, 1e-9);
+}
+
+TEST(TablesCommand, BadOptionsNameTheOptionAndExit2)
+{
+    const std::vector<std::vector<std::string>> bad = {
+        {"deposition"}, {"deposition", "--energy-kev", "abc"}, {"deposition", "--energy-kev", "-1"},
+        {"deposition", "--energy-kev", "5", "--bogus"}, {"ozone", "--energy-kev", "5"}, {"--energy-kev", "5"}};
+    const std::vector<std::string> named = {"energy-kev", "energy-kev", "energy-kev", "bogus", "ozone", "table"};
+    for (size_t i = 0; i < bad.size(); ++i) {
+        Result r = runTables(bad[i]);
+        EXPECT_EQ(r.status, 2) << i;
+        EXPECT_TRUE(r.out.empty()) << i;
+        EXPECT_NE(r.err.find(named[i]), std::string::npos) << r.err;
+        EXPECT_EQ(r.err.rfind("aurorawall tables: ", 0), 0u) << r.err;
+        EXPECT_EQ(lines(r.err).size(), 1u) << r.err;
+    }
+}
+
+// ---- airmass ----
+
+int runAirmass(std::vector<std::string> args, const std::string& input, std::string& out, std::string& err)
+{
+    std::vector<char*> argv;
+    for (std::string& arg : args) argv.push_back(arg.data());
+    std::istringstream in(input);
+    std::ostringstream outStream, errStream;
+    int status = runAirmassCommand(int(argv.size()), argv.data(), in, outStream, errStream);
+    out = outStream.str();
+    err = errStream.str();
+    return status;
+}
+
+TEST(AirmassCommand, ListsMethodsAndComputes)
+{
+    std::string out, err;
+    ASSERT_EQ(runAirmass({"airmass", "--method", "list"}, "", out, err), 0);
+    EXPECT_NE(out.find("exact\n"), std::string::npos);
+    EXPECT_NE(out.find(std::string(kDefaultAirmassMethod) + "\n"), std::string::npos);
+    std::string input = "ox,oy,oz,dx,dy,dz,t0,t1,H,R\n\n0,6371,0,0,1,0,0,100,8,6371\n0,6371,0,0,1,0,100,0,8,6371\n";
+    ASSERT_EQ(runAirmass({"airmass", "--method", "exact"}, input, out, err), 0);
+    double expected = 8.0 * (1.0 - std::exp(-100.0 / 8.0));
+    std::istringstream lines(out);
+    double first = 0.0, second = 0.0;
+    lines >> first >> second;
+    EXPECT_NEAR(first, expected, 1e-9);
+    EXPECT_NEAR(second, -expected, 1e-9);
+    ASSERT_EQ(runAirmass({"airmass"}, input, out, err), 0); // the default, float32
+    std::istringstream defaultLines(out);
+    defaultLines >> first;
+    EXPECT_NEAR(first, expected, 1e-5 * expected);
+    ASSERT_EQ(runAirmass({"airmass", "--help"}, "", out, err), 0);
+    EXPECT_NE(out.find("--method"), std::string::npos);
+}
+
+TEST(AirmassCommand, MalformedLinesAreARuntimeFailureNamingTheLine)
+{
+    for (const std::string& bad : {std::string("1,2,3\n"), std::string("0,6371,0,0,1,0,0,x,8,6371\n"),
+                                   std::string("0,6371,0,0,1,0,0,nan,8,6371\n"), std::string("0,6371,0,0,1,0,0,inf,8,6371\n"),
+                                   std::string("0,6371,0,0,1,0,0,1,0,6371\n"), std::string("0,6371,0,0,1,0,0,1,8,-1\n"),
+                                   std::string("0,6371,0,0,1,0,0,1,8,6371,\n")}) {
+        std::string out, err;
+        EXPECT_EQ(runAirmass({"airmass"}, "0,6371,0,0,1,0,0,100,8,6371\n\n" + bad, out, err), 1) << bad;
+        EXPECT_EQ(out, "") << bad;
+        EXPECT_NE(err.find("line 3"), std::string::npos) << err;
+    }
+    std::string out, err;
+    EXPECT_EQ(runAirmass({"airmass", "--method", "nope"}, "", out, err), 2);
+    EXPECT_NE(err.find("--method"), std::string::npos) << err;
+    EXPECT_NE(err.find(kDefaultAirmassMethod), std::string::npos) << err; // the allowed words
+}
+
+
+// ---- accuracy, up to its first GL call ----
+
+Result runAccuracy(std::vector<std::string> words)
+{
+    words.insert(words.begin(), "accuracy");
+    Args args(std::move(words));
+    std::ostringstream out, err;
+    const int status = runAccuracyCommand(args.argc(), args.argv(), out, err);
+    return {status, out.str(), err.str()};
+}
+
+TEST(AccuracyCommand, OneParserForTheThreeKinds)
+{
+    const std::vector<std::pair<std::vector<std::string>, std::string>> usage = {
+        {{}, "choose --airmass, --sky or --scene FILE"},
+        {{"--scene", "s.toml", "--airmass"}, "--scene cannot be combined"},
+        {{"--scene", "s.toml", "--repeat", "4"}, "--repeat applies to --airmass and --sky only"},
+        {{"--sky", "--size", "10x10"}, "--size applies to --scene only"},
+        {{"--scene", "s.toml", "--size", "10by10"}, "--size"},
+        {{"--airmass", "--repeat", "0"}, "--repeat"},
+        {{"--bogus"}, "unrecognised option '--bogus'"},
+    };
+    for (const auto& [words, expected] : usage) {
+        const Result r = runAccuracy(words);
+        EXPECT_EQ(r.status, 2) << expected;
+        EXPECT_EQ(lines(r.err).size(), 1u) << r.err;
+        EXPECT_NE(r.err.find(expected), std::string::npos) << r.err;
+        EXPECT_TRUE(r.out.empty()) << r.out;
+    }
+    const Result help = runAccuracy({"--help"});
+    EXPECT_EQ(help.status, 0);
+    for (const char* option : {"--airmass", "--sky", "--scene", "--repeat", "--feature-costs"})
+        EXPECT_NE(help.out.find(option), std::string::npos) << option;
+}
+
+TEST(AccuracyCommand, UnreadableSceneIsARuntimeFailure)
+{
+    const Result r = runAccuracy({"--scene", "/nonexistent/scene.toml"});
+    EXPECT_EQ(r.status, 1);
+    EXPECT_NE(r.err.find("/nonexistent/scene.toml"), std::string::npos) << r.err;
+    EXPECT_EQ(lines(r.err).size(), 1u) << r.err;
+}
+
+} // namespace
+} // namespace aurorawall::app
