@@ -1,5 +1,7 @@
 #include "atmosphere/airmass_exact.h"
 
+#include "common/constants.h"
+
 #include <algorithm>
 #include <cmath>
 #include <vector>
@@ -169,7 +171,7 @@ double scaledBesselK1(double x)
         term *= (4.0 - (2.0 * k - 1.0) * (2.0 * k - 1.0)) / (8.0 * k * x);
         sum += term;
     }
-    return std::sqrt(M_PI / (2.0 * x)) * sum;
+    return std::sqrt(kPi / (2.0 * x)) * sum;
 }
 
 } // namespace aurorawall

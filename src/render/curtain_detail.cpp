@@ -1,5 +1,7 @@
 #include "render/curtain_detail.h"
 
+#include "common/constants.h"
+
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -28,7 +30,7 @@ CurtainDetail::CurtainDetail(const scene::FluidDetail& detail)
     frames_.upload(f.flux);
     // Frame 0 is a Gaussian of standard deviation sigma with unit integral across: its peak is
     // 1/(sigma sqrt(2 pi)); scaling by sigma sqrt(2 pi) makes the smooth curtain's peak 1.
-    peakScale_ = static_cast<float>(spec_.fluxWidthKm * std::sqrt(2.0 * M_PI));
+    peakScale_ = static_cast<float>(spec_.fluxWidthKm * std::sqrt(2.0 * kPi));
     float peak = 0.0f;
     for (float v : f.flux)
         peak = std::max(peak, v);

@@ -5,6 +5,7 @@
 #include "aurora/curtain_geometry.h"
 #include "aurora/deposition_table.h"
 #include "aurora/emission.h"
+#include "common/constants.h"
 #include "common/glsl.h"
 #include "render/curtain_detail.h"
 #include "render/curtain_frames.h"
@@ -70,7 +71,7 @@ ReferenceModel::ReferenceModel(const scene::Scene& scene, double timeS, const fl
     const fluid::CurtainDetailSpec spec = curtainDetailSpec(a.detail);
     fluxWidthKm_ = spec.fluxWidthKm;
     // curtain_detail.cpp: frame 0 is a Gaussian of unit integral; sigma sqrt(2 pi) makes its peak 1.
-    peakScale_ = spec.fluxWidthKm * std::sqrt(2.0 * M_PI);
+    peakScale_ = spec.fluxWidthKm * std::sqrt(2.0 * kPi);
     const double detailReach = detail ? fluidReachKm(*detail, spec.stripWidthKm) : 0.0;
     for (const scene::Curtain& curtain : a.curtains) {
         // curtain_field.cpp: lateral scale and reach of each curtain.
@@ -110,7 +111,7 @@ ReferenceModel::Nearest ReferenceModel::nearestOn(size_t ci, glm::dvec3 unit) co
     const double nearestVertex = std::acos(std::clamp(maxDot, -1.0, 1.0));
     // 1 km of slack for the arclength-based segment length the shader's projection uses.
     const double limit = nearestVertex + (0.5 * c.maxSegmentKm + 1.0) / R;
-    const double minDot = limit >= M_PI ? -2.0 : std::cos(limit);
+    const double minDot = limit >= kPi ? -2.0 : std::cos(limit);
     for (size_t j = 0; j + 1 < c.points.size(); ++j) {
         const glm::dvec3& a = c.points[j];
         const glm::dvec3& b = c.points[j + 1];
