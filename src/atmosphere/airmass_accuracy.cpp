@@ -1,6 +1,7 @@
 #include "atmosphere/airmass_accuracy.h"
 
 #include "atmosphere/airmass_exact.h"
+#include "common/constants.h"
 
 #include <chrono>
 #include <cmath>
@@ -17,7 +18,7 @@ constexpr double kTopAltitude = 1000.0; // segments leaving the atmosphere end a
 const glm::dvec3 kUp = glm::normalize(glm::dvec3(0.3, -0.5, 0.81));
 const glm::dvec3 kHorizontal = glm::normalize(glm::cross(kUp, glm::dvec3(0.0, 0.0, 1.0)));
 
-double radians(double degrees) { return degrees * M_PI / 180.0; }
+double radians(double degrees) { return degrees * kPi / 180.0; }
 
 // Ray parameter where the ray leaves the sphere of the given radius (origin inside or the far side).
 double farCrossing(glm::dvec3 origin, glm::dvec3 d, double radius)

@@ -1,5 +1,9 @@
 #include "atmosphere/airmass_exact.h"
 
+#include "common/constants.h"
+
+#include <boost/math/quadrature/gauss_kronrod.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <vector>
@@ -8,16 +12,6 @@ namespace aurorawall {
 namespace {
 
 constexpr double kDensityExponentCap = 60.0; // as airmassDensity in airmass_common.glsl
-
-// Gauss–Kronrod 7/15 nodes and weights on [−1, 1] (Piessens et al., QUADPACK qk15).
-constexpr double kKronrodNodes[8] = {0.991455371120812639, 0.949107912342758525, 0.864864423359769073,
-                                     0.741531185599394440, 0.586087235467691130, 0.405845151377397167,
-                                     0.207784955007898468, 0.0};
-constexpr double kKronrodWeights[8] = {0.022935322010529225, 0.063092092629978553, 0.104790010322250184,
-                                       0.140653259715525919, 0.169004726639267903, 0.190350578064785410,
-                                       0.204432940075298892, 0.209482141084727828};
-constexpr double kGaussWeights[4] = {0.129484966168869693, 0.279705391489276668, 0.381830050505118945,
-                                     0.417959183673469388}; // at Kronrod nodes 1, 3, 5, 7
 
 // The integrand of one monotone piece, divided by its value at the piece's lower end xLow:
 // g(x) = exp(e(x) − e(xLow)), e(x) = min((R − r(x))/H, 60), r(x) = √(x² + y²). While uncapped,
@@ -33,39 +27,17 @@ struct PieceIntegrand {
     }
 };
 
+// Gauss–Kronrod 7/15 (Boost.Math; QUADPACK's qk15 rule) on [a, b]: one application when
+// maxDepth = 0, else adaptive bisection while the Kronrod–Gauss difference of a subinterval
+// exceeds both `relativeTolerance` of its own estimate and its share of `relativeTolerance` of
+// [a, b]'s, at most 2^maxDepth subintervals (against rounding noise above the tolerance).
 template <class Integrand>
-double kronrod15(const Integrand& f, double a, double b, double& errorEstimate)
+double gaussKronrod(const Integrand& f, double a, double b, unsigned maxDepth, double relativeTolerance)
 {
-    double centre = 0.5 * (a + b);
-    double halfWidth = 0.5 * (b - a);
-    double fc = f(centre);
-    double kronrod = kKronrodWeights[7] * fc;
-    double gauss = kGaussWeights[3] * fc;
-    for (int i = 0; i < 7; ++i) {
-        double dx = halfWidth * kKronrodNodes[i];
-        double pair = f(centre - dx) + f(centre + dx);
-        kronrod += kKronrodWeights[i] * pair;
-        if (i % 2 == 1) gauss += kGaussWeights[i / 2] * pair;
-    }
-    errorEstimate = std::abs((kronrod - gauss) * halfWidth);
-    return kronrod * halfWidth;
+    return boost::math::quadrature::gauss_kronrod<double, 15>::integrate(f, a, b, maxDepth, relativeTolerance);
 }
 
-// Recursive bisection until the Kronrod–Gauss difference is below the absolute tolerance, or the
-// budget of subintervals (against rounding noise above the tolerance) is spent.
-template <class Integrand>
-double adaptiveKronrod(const Integrand& f, double a, double b, double tolerance, int& budget)
-{
-    double error = 0.0;
-    double value = kronrod15(f, a, b, error);
-    if (error <= tolerance || budget <= 0) return value;
-    budget -= 2;
-    double middle = 0.5 * (a + b);
-    return adaptiveKronrod(f, a, middle, 0.5 * tolerance, budget) +
-           adaptiveKronrod(f, middle, b, 0.5 * tolerance, budget);
-}
-
-constexpr int kSubintervalBudget = 4000;
+constexpr unsigned kMaxDepth = 12;
 
 // x ≥ 0 at which the ray reaches radius r (r ≥ y), on the outgoing side.
 double distanceAtRadius(double r, double y) { return std::sqrt((r - y) * (r + y)); }
@@ -91,16 +63,16 @@ double monotonePiece(double y, double xLow, double xHigh, double H, double R)
                  splits.end());
     splits.erase(std::unique(splits.begin(), splits.end()), splits.end());
 
+    // Every subinterval to 1e-14 of the whole piece: first each one's single-rule estimate.
+    std::vector<double> rough(splits.size() - 1);
     double roughTotal = 0.0;
     for (size_t i = 0; i + 1 < splits.size(); ++i) {
-        double error = 0.0;
-        roughTotal += kronrod15(f, splits[i], splits[i + 1], error);
+        rough[i] = gaussKronrod(f, splits[i], splits[i + 1], 0, 0.0);
+        roughTotal += rough[i];
     }
-    double tolerance = 1e-14 * roughTotal;
     double total = 0.0;
-    int budget = kSubintervalBudget;
     for (size_t i = 0; i + 1 < splits.size(); ++i) {
-        total += adaptiveKronrod(f, splits[i], splits[i + 1], tolerance, budget);
+        if (rough[i] > 0.0) total += gaussKronrod(f, splits[i], splits[i + 1], kMaxDepth, 1e-14 * roughTotal / rough[i]);
     }
     double lowExponent = std::min((R - rLow) / H, kDensityExponentCap);
     return std::exp(lowExponent) * total;
@@ -117,12 +89,9 @@ double exactAirmass(glm::dvec3 origin, glm::dvec3 direction, double t0, double t
         // Shorter than a scale height: integrate in t with |o + t·d̂| taken directly, since x = t − t_c
         // cannot resolve a segment much shorter than |t_c| (the exponent varies by at most 1 here).
         auto density = [&](double t) { return std::exp(std::min((R - glm::length(origin + t * d)) / H, kDensityExponentCap)); };
-        double error = 0.0;
-        double rough = kronrod15(density, std::min(t0, t1), std::max(t0, t1), error);
         // The radius carries rounding of ~1e-16·|o|: a tolerance below that noise cannot be met.
-        double tolerance = std::max(1e-13, 1e-14 * glm::length(origin) / H) * rough;
-        int budget = kSubintervalBudget;
-        double airmass = adaptiveKronrod(density, std::min(t0, t1), std::max(t0, t1), tolerance, budget);
+        double tolerance = std::max(1e-13, 1e-14 * glm::length(origin) / H);
+        double airmass = gaussKronrod(density, std::min(t0, t1), std::max(t0, t1), kMaxDepth, tolerance);
         return t1 < t0 ? -airmass : airmass;
     }
     double originDistance = glm::length(origin);
@@ -169,7 +138,7 @@ double scaledBesselK1(double x)
         term *= (4.0 - (2.0 * k - 1.0) * (2.0 * k - 1.0)) / (8.0 * k * x);
         sum += term;
     }
-    return std::sqrt(M_PI / (2.0 * x)) * sum;
+    return std::sqrt(kPi / (2.0 * x)) * sum;
 }
 
 } // namespace aurorawall

@@ -1,12 +1,14 @@
 #include "atmosphere/sky_accuracy.h"
 
+#include "common/constants.h"
+
 #include <cmath>
 
 namespace aurorawall {
 
 namespace {
 
-double radians(double degrees) { return degrees * M_PI / 180.0; }
+double radians(double degrees) { return degrees * kPi / 180.0; }
 
 } // namespace
 

@@ -1,5 +1,7 @@
 #include "aurora/colour.h"
 
+#include "common/constants.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -35,7 +37,6 @@ double rayleighFromColumnRate(double photonsPerCm2PerS)
 
 double radianceWattsPerM2Sr(double rayleigh, double wavelengthNm)
 {
-    constexpr double kPi = 3.14159265358979323846;
     constexpr double kPlanckTimesLight = 6.62607015e-34 * 299792458.0; // J m
     return rayleigh * 1e10 / (4.0 * kPi) * kPlanckTimesLight / (wavelengthNm * 1e-9);
 }

@@ -1,5 +1,7 @@
 #include "aurora/curtain_geometry.h"
 
+#include "common/constants.h"
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -7,8 +9,6 @@
 namespace aurorawall::aurora {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-constexpr double kDeg = kPi / 180.0;
 
 // Angle between unit vectors a and b, accurate at all angles (Kahan, "How futile are mindless
 // assessments of roundoff in floating-point computation?", 2006, §12): θ = 2 atan(|a − b| / |a + b|).
@@ -85,7 +85,7 @@ constexpr int kPanels = 32;
 // Inverting x = −cos φ cos λ, y = −cos φ sin λ, z = sin φ: φ = atan2(z, √(x² + y²)), λ = atan2(−y, −x).
 glm::dvec2 latLonFromUnit(const glm::dvec3& unit)
 {
-    return {std::atan2(unit.z, std::hypot(unit.x, unit.y)) / kDeg, std::atan2(-unit.y, -unit.x) / kDeg};
+    return {std::atan2(unit.z, std::hypot(unit.x, unit.y)) / kDegree, std::atan2(-unit.y, -unit.x) / kDegree};
 }
 
 // Each span between control points is split into m = ceil(L/spacing) pieces of equal spline arclength L/m.

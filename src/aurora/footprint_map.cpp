@@ -1,5 +1,6 @@
 #include "aurora/footprint_map.h"
 
+#include "common/constants.h"
 #include "common/glsl.h"
 
 #include <algorithm>
@@ -17,7 +18,6 @@ AURORAWALL_GLSL_PRECISION(double)
 #include "components/aurora/footprint_map.glsl"
 } // namespace f64
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr int kMaxExactInteger = 1 << 24; // floats hold every integer below 2^24 exactly
 
 // A float no larger than x (x ≥ 0): round to nearest, then step down if that rounded up.
@@ -298,11 +298,6 @@ FootprintSample FootprintMap::lookup(const glm::dvec3& unitDir) const
     out.distanceKm = value[2];
     out.conservativeKm = f64::footprintConservativeKm(value[2], marginKm);
     return out;
-}
-
-double FootprintMap::conservativeDistanceKm(const glm::dvec3& unitDir) const
-{
-    return lookup(unitDir).conservativeKm;
 }
 
 } // namespace aurorawall::aurora

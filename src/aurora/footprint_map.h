@@ -90,8 +90,6 @@ struct FootprintMap {
     // The shader's lookup in double: outside the cap the far bound R(θ − Θ); inside, texel
     // footprintMapTexel(footprintMapCoord(d)) and footprintConservativeKm(distance, marginKm).
     FootprintSample lookup(const glm::dvec3& unitDir) const;
-    // lookup(unitDir).conservativeKm.
-    double conservativeDistanceKm(const glm::dvec3& unitDir) const;
 };
 
 // The map of the given curtains (all with planetRadiusKm). Throws std::invalid_argument for a bad spec,

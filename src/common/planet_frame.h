@@ -1,6 +1,8 @@
 #pragma once
 // The planet frame of every scene: centre at the origin, z toward the north pole, x toward
 // longitude 180 deg and y toward 90 deg W (the frame of the paper's published benchmark camera).
+#include "common/constants.h"
+
 #include <glm/glm.hpp>
 
 #include <cmath>
@@ -10,8 +12,7 @@ namespace aurorawall {
 // Unit vector of geographic latitude/longitude in degrees: (-cos lat cos lon, -cos lat sin lon, sin lat).
 inline glm::dvec3 unitFromLatLon(double latitudeDeg, double longitudeDeg)
 {
-    const double degree = 3.14159265358979323846 / 180.0;
-    const double lat = latitudeDeg * degree, lon = longitudeDeg * degree;
+    const double lat = latitudeDeg * kDegree, lon = longitudeDeg * kDegree;
     return {-std::cos(lat) * std::cos(lon), -std::cos(lat) * std::sin(lon), std::sin(lat)};
 }
 

@@ -1,5 +1,7 @@
 #include "fluid/curtain_detail.h"
 
+#include "common/constants.h"
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -8,8 +10,6 @@
 namespace aurorawall::fluid {
 
 namespace {
-
-constexpr double pi = 3.14159265358979323846;
 
 void require(bool ok, const std::string& what)
 {
@@ -57,6 +57,8 @@ CurtainFlow::CurtainFlow(const CurtainDetailSpec& spec)
     settings_.tolerance = spec.multigridTolerance;
     const double hx = spec.stripLengthKm / spec.nx;
     const double hy = spec.stripWidthKm / spec.ny;
+    if (spec.pressureSolver == PressureSolver::Fft)
+        fft_.emplace(spec.nx, spec.ny, hx, hy);
     const double lx = spec.stripLengthKm;
     const double ly = spec.stripWidthKm;
     const double delta = spec.shearThicknessKm;
@@ -72,27 +74,27 @@ CurtainFlow::CurtainFlow(const CurtainDetailSpec& spec)
             velocity_.u(i, j) = u;
     }
 
-    const int modes = std::max(1, int(lx / (2.0 * pi * delta)));
+    const int modes = std::max(1, int(lx / (2.0 * kPi * delta)));
     std::vector<double> amplitude(modes);
     std::vector<double> phase(modes);
     for (int m = 0; m < modes; ++m) {
         const std::uint64_t key = (std::uint64_t(spec.seed) << 32) | std::uint64_t(m);
         amplitude[m] = 0.5 + 0.5 * hashUnit(2 * key);
-        phase[m] = 2.0 * pi * hashUnit(2 * key + 1);
+        phase[m] = 2.0 * kPi * hashUnit(2 * key + 1);
     }
     const double scale = spec.perturbation * U / std::sqrt(double(modes));
     for (int i = 0; i < spec.nx; ++i) {
         const double x = (i + 0.5) * hx;
         double sum = 0.0;
         for (int m = 0; m < modes; ++m)
-            sum += amplitude[m] * std::sin(2.0 * pi * (m + 1) * x / lx + phase[m]);
+            sum += amplitude[m] * std::sin(2.0 * kPi * (m + 1) * x / lx + phase[m]);
         for (int j = 0; j < spec.ny; ++j) {
             const double y = j * hy - 0.5 * ly;
             const double envelope = std::exp(-(y / (2.0 * delta)) * (y / (2.0 * delta)));
             velocity_.v(i, j) = scale * sum * envelope;
         }
     }
-    project(velocity_, phi_, settings_);
+    project();
 
     std::vector<double> profile(spec.ny);
     double column = 0.0;
@@ -106,11 +108,20 @@ CurtainFlow::CurtainFlow(const CurtainDetailSpec& spec)
             flux_(i, j) = profile[j] / column;
 }
 
-MultigridReport CurtainFlow::step(double dt)
+std::optional<MultigridReport> CurtainFlow::step(double dt)
 {
     advectScalar(flux_, velocity_, dt);
     advectVelocity(velocity_, dt);
-    return project(velocity_, phi_, settings_);
+    return project();
+}
+
+std::optional<MultigridReport> CurtainFlow::project()
+{
+    if (fft_) {
+        fluid::project(velocity_, phi_, *fft_);
+        return std::nullopt;
+    }
+    return fluid::project(velocity_, phi_, settings_);
 }
 
 double CurtainFlow::crossStreamEnergy() const

@@ -1,19 +1,24 @@
 #pragma once
-// The curtain-detail fluid simulation (Lawlor & Genetti, section 2): a
-// Kelvin–Helmholtz shear layer along the flux centre of an auroral curtain, in a strip periodic
+// The curtain-detail fluid simulation: a Kelvin–Helmholtz shear layer along the flux centre of an auroral curtain, in a strip periodic
 // along and across the curtain, carrying the electron flux as a passive scalar. Its output, a
 // few flux frames from smooth to turbulent, is wrapped along the curtain splines by the renderer.
 // CPU, serial and deterministic: every rank computes the same bytes at start-up.
 // See docs/fluid.md.
+#include "fluid/fft_poisson.h"
 #include "fluid/multigrid.h"
 #include "fluid/periodic_field.h"
 #include "fluid/stable_fluids.h"
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 namespace aurorawall::fluid {
+
+// How the pressure projection solves its Poisson problem (docs/fluid.md, "Pressure"): Fft is exact
+// to rounding and the faster one at every grid measured; Multigrid stops at multigridTolerance.
+enum class PressureSolver { Fft, Multigrid };
 
 struct CurtainDetailSpec {
     int nx = 512;                      // cells along the curtain (power of two)
@@ -27,8 +32,9 @@ struct CurtainDetailSpec {
     int frames = 16;                   // K flux frames; frame 0 is the initial condition
     double timeBetweenFramesS = 5.0;   // simulated seconds between frames
     int stepsPerFrame = 6;             // time steps between frames
-    int multigridCycles = 20;          // V-cycles per projection at most
-    double multigridTolerance = 1e-6;  // rms residual / rms divergence to stop at
+    PressureSolver pressureSolver = PressureSolver::Fft;
+    int multigridCycles = 20;          // V-cycles per projection at most (Multigrid only)
+    double multigridTolerance = 1e-6;  // rms residual / rms divergence to stop at (Multigrid only)
     std::uint32_t seed = 1;            // picks the amplitudes and phases of the seed modes
 };
 
@@ -55,8 +61,9 @@ public:
     explicit CurtainFlow(const CurtainDetailSpec& spec);
 
     // One Stable Fluids step: flux advected by the current (divergence-free) velocity, then the
-    // velocity advected by itself and projected. Returns the projection's multigrid report.
-    MultigridReport step(double dt);
+    // velocity advected by itself and projected. Returns the projection's multigrid report, or
+    // nothing with the FFT solver.
+    std::optional<MultigridReport> step(double dt);
 
     const PeriodicField& flux() const { return flux_; }
     const MacVelocity& velocity() const { return velocity_; }
@@ -64,6 +71,9 @@ public:
     double crossStreamEnergy() const;
 
 private:
+    std::optional<MultigridReport> project();
+
+    std::optional<FftPoisson> fft_; // with PressureSolver::Fft: its plans, made once for the grid
     MultigridSettings settings_;
     MacVelocity velocity_;
     PeriodicField phi_;

@@ -6,17 +6,6 @@
 
 namespace aurorawall::fluid {
 
-PeriodicField laplacian(const PeriodicField& p)
-{
-    PeriodicField lp(p.nx, p.ny, p.hx, p.hy);
-    const double ax = 1.0 / (p.hx * p.hx);
-    const double ay = 1.0 / (p.hy * p.hy);
-    for (int j = 0; j < p.ny; ++j)
-        for (int i = 0; i < p.nx; ++i)
-            lp(i, j) = ax * (p(i + 1, j) - 2.0 * p(i, j) + p(i - 1, j)) + ay * (p(i, j + 1) - 2.0 * p(i, j) + p(i, j - 1));
-    return lp;
-}
-
 namespace {
 
 // r = f − L p.

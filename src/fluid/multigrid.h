@@ -22,17 +22,14 @@ struct MultigridReport {
     int cycles() const { return int(residualRms.size()) - 1; }
 };
 
-// The 5-point Laplacian on the periodic grid of p:
-//   (L p)ᵢⱼ = (pᵢ₊₁ⱼ − 2pᵢⱼ + pᵢ₋₁ⱼ)/hx² + (pᵢⱼ₊₁ − 2pᵢⱼ + pᵢⱼ₋₁)/hy².
-PeriodicField laplacian(const PeriodicField& p);
-
-// Solves L p = f − mean(f) with V(ν₁,ν₂)-cycles (Briggs et al. ch. 3, "V-cycle scheme"):
-// red-black Gauss–Seidel smoothing, full-weighting restriction, bilinear prolongation, the
-// operator rediscretized on each coarser grid (2h), coarsening down to a grid 2 nodes thick
-// that is solved directly. p is the initial guess and the result; its mean is set to zero (the
-// periodic problem fixes p only up to a constant, and needs Σ f = 0, hence the mean removal).
-// Needs nx, ny ≥ 2 powers of two and cells not far from square (hx/hy in [1/2, 2]) for the
-// point smoother to work.
+// Solves L p = f − mean(f), L the 5-point Laplacian on the periodic grid of p,
+//   (L p)ᵢⱼ = (pᵢ₊₁ⱼ − 2pᵢⱼ + pᵢ₋₁ⱼ)/hx² + (pᵢⱼ₊₁ − 2pᵢⱼ + pᵢⱼ₋₁)/hy²,
+// with V(ν₁,ν₂)-cycles (Briggs et al. ch. 3, "V-cycle scheme"): red-black Gauss–Seidel
+// smoothing, full-weighting restriction, bilinear prolongation, the operator rediscretized on
+// each coarser grid (2h), coarsening down to a grid 2 nodes thick that is solved directly.
+// p is the initial guess and the result; its mean is set to zero (the periodic problem fixes p
+// only up to a constant, and needs Σ f = 0, hence the mean removal). Needs nx, ny ≥ 2 powers
+// of two and cells not far from square (hx/hy in [1/2, 2]) for the point smoother to work.
 MultigridReport solvePoisson(PeriodicField& p, const PeriodicField& f, const MultigridSettings& settings);
 
 } // namespace aurorawall::fluid

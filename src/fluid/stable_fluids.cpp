@@ -60,9 +60,11 @@ void advectVelocity(MacVelocity& velocity, double dt)
     velocity = std::move(next);
 }
 
-MultigridReport project(MacVelocity& velocity, PeriodicField& phi, const MultigridSettings& settings)
+namespace {
+
+// u ← u − ∇φ on the faces.
+void subtractGradient(MacVelocity& velocity, const PeriodicField& phi)
 {
-    const MultigridReport report = solvePoisson(phi, divergence(velocity), settings);
     PeriodicField& u = velocity.u;
     PeriodicField& v = velocity.v;
     for (int j = 0; j < u.ny; ++j)
@@ -70,6 +72,20 @@ MultigridReport project(MacVelocity& velocity, PeriodicField& phi, const Multigr
             u(i, j) -= (phi(i, j) - phi(i - 1, j)) / u.hx;
             v(i, j) -= (phi(i, j) - phi(i, j - 1)) / u.hy;
         }
+}
+
+} // namespace
+
+void project(MacVelocity& velocity, PeriodicField& phi, FftPoisson& solver)
+{
+    solver.solve(phi, divergence(velocity));
+    subtractGradient(velocity, phi);
+}
+
+MultigridReport project(MacVelocity& velocity, PeriodicField& phi, const MultigridSettings& settings)
+{
+    const MultigridReport report = solvePoisson(phi, divergence(velocity), settings);
+    subtractGradient(velocity, phi);
     return report;
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 // Stable Fluids (Stam 1999, SIGGRAPH '99, 121–128) on a doubly periodic staggered (MAC) grid:
-// semi-Lagrangian advection and a pressure projection solved by multigrid. See docs/fluid.md.
+// semi-Lagrangian advection and a pressure projection solved by FFT or by multigrid. See docs/fluid.md.
+#include "fluid/fft_poisson.h"
 #include "fluid/multigrid.h"
 #include "fluid/periodic_field.h"
 
@@ -25,10 +26,12 @@ PeriodicField divergence(const MacVelocity& velocity);
 void advectScalar(PeriodicField& q, const MacVelocity& velocity, double dt);
 void advectVelocity(MacVelocity& velocity, double dt);
 
-// Pressure projection (Stam 1999, sec. 3.1, Helmholtz–Hodge decomposition): solve L φ = ∇·u by
-// multigrid, then u ← u − ∇φ with the face gradients (φᵢⱼ − φᵢ₋₁ⱼ)/hx and (φᵢⱼ − φᵢⱼ₋₁)/hy.
-// On the MAC grid ∇·∇ is exactly the 5-point L, so the new divergence is the solver's residual.
-// φ (km²/s, the pressure times dt/ρ) is the initial guess and the result.
+// Pressure projection (Stam 1999, sec. 3.1, Helmholtz–Hodge decomposition): solve L φ = ∇·u,
+// then u ← u − ∇φ with the face gradients (φᵢⱼ − φᵢ₋₁ⱼ)/hx and (φᵢⱼ − φᵢⱼ₋₁)/hy.
+// On the MAC grid ∇·∇ is exactly the 5-point L, so the new divergence is the solver's residual:
+// rounding for the FFT, the stopping tolerance for multigrid. φ (km²/s, the pressure times dt/ρ)
+// is the result, and for multigrid also the initial guess.
+void project(MacVelocity& velocity, PeriodicField& phi, FftPoisson& solver);
 MultigridReport project(MacVelocity& velocity, PeriodicField& phi, const MultigridSettings& settings);
 
 } // namespace aurorawall::fluid

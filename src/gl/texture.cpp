@@ -52,9 +52,7 @@ Texture::Texture(GLenum target, int width, int height, int depth, TexelFormat fo
                                     std::to_string(height) + "x" + std::to_string(depth) + ")");
     glCreateTextures(target, 1, &id_);
     const GLenum internal = internalFormat(format);
-    if (target == GL_TEXTURE_1D)
-        glTextureStorage1D(id_, 1, internal, width);
-    else if (target == GL_TEXTURE_2D)
+    if (target == GL_TEXTURE_2D)
         glTextureStorage2D(id_, 1, internal, width, height);
     else
         glTextureStorage3D(id_, 1, internal, width, height, depth);
@@ -64,11 +62,6 @@ Texture::Texture(GLenum target, int width, int height, int depth, TexelFormat fo
     glTextureParameteri(id_, GL_TEXTURE_MAG_FILTER, glFilter);
     for (GLenum axis : {GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T, GL_TEXTURE_WRAP_R})
         glTextureParameteri(id_, axis, glWrap);
-}
-
-Texture Texture::create1D(int width, TexelFormat format, Filter filter, Wrap wrap)
-{
-    return Texture(GL_TEXTURE_1D, width, 1, 1, format, filter, wrap);
 }
 
 Texture Texture::create2D(int width, int height, TexelFormat format, Filter filter, Wrap wrap)
@@ -112,9 +105,7 @@ void Texture::upload(const std::vector<float>& texels)
                                     std::to_string(expected));
     const GLenum format = pixelFormat(format_);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 4); // rows of floats are always 4-byte aligned
-    if (target_ == GL_TEXTURE_1D)
-        glTextureSubImage1D(id_, 0, 0, width_, format, GL_FLOAT, texels.data());
-    else if (target_ == GL_TEXTURE_2D)
+    if (target_ == GL_TEXTURE_2D)
         glTextureSubImage2D(id_, 0, 0, 0, width_, height_, format, GL_FLOAT, texels.data());
     else
         glTextureSubImage3D(id_, 0, 0, 0, 0, width_, height_, depth_, format, GL_FLOAT, texels.data());

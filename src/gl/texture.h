@@ -1,5 +1,5 @@
 #pragma once
-// Float textures (1D/2D/3D) for lookup tables and render targets, owned (move-only).
+// Float textures (2D/3D) for lookup tables and render targets, owned (move-only).
 #include <GL/glcorearb.h>
 
 #include <vector>
@@ -14,7 +14,6 @@ int channelCount(TexelFormat format);
 
 class Texture {
 public:
-    static Texture create1D(int width, TexelFormat format, Filter filter, Wrap wrap);
     static Texture create2D(int width, int height, TexelFormat format, Filter filter, Wrap wrap);
     static Texture create3D(int width, int height, int depth, TexelFormat format, Filter filter, Wrap wrap);
 

@@ -1,5 +1,6 @@
 #include "scene/scene.h"
 
+#include "common/constants.h"
 #include "common/input_error.h"
 #include "common/planet_frame.h"
 #include "config/toml_reader.h"
@@ -14,7 +15,6 @@ using config::parseTomlFile, config::TableReader, config::TomlValue;
 
 namespace {
 
-constexpr double kDeg = 3.14159265358979323846 / 180.0;
 
 Camera readCamera(const TableReader& t, double planetRadiusKm)
 {
@@ -29,8 +29,8 @@ Camera readCamera(const TableReader& t, double planetRadiusKm)
         // Geographic: where the viewer stands and where they look.
         const double lat = t.number("latitude_deg", -90, 90), lon = t.number("longitude_deg", -360, 360);
         const double alt = t.number("altitude_km", -planetRadiusKm + 1, 1e9);
-        const double heading = t.number("heading_deg", -360, 360) * kDeg;
-        const double elevation = t.number("elevation_deg", -90, 90) * kDeg;
+        const double heading = t.number("heading_deg", -360, 360) * kDegree;
+        const double elevation = t.number("elevation_deg", -90, 90) * kDegree;
         c.positionKm = planetPoint(lat, lon, planetRadiusKm + alt);
         const LocalFrame local = localFrame(lat, lon);
         const glm::dvec3 zenith = local.up;

@@ -2,6 +2,7 @@
 #include "atmosphere/airmass.h"
 #include "atmosphere/airmass_accuracy.h"
 #include "atmosphere/airmass_exact.h"
+#include "common/constants.h"
 #include "common/glsl.h"
 #include "random_rays.h"
 
@@ -27,7 +28,7 @@ namespace aurorawall {
 namespace {
 
 constexpr double kR = 6371.0;
-double radians(double degrees) { return degrees * M_PI / 180.0; }
+double radians(double degrees) { return degrees * kPi / 180.0; }
 
 // A ground observer at altitude h0 looking at the given elevation, to where the ray leaves radius
 // R + top (the geometry of the published figures: x = R/H, zenith angle 90° − elevation).
@@ -57,7 +58,7 @@ TEST(ScaledBesselK1, SeriesMatchesStandardLibraryAndChapmanValue)
             term *= (4.0 - (2.0 * k - 1.0) * (2.0 * k - 1.0)) / (8.0 * k * x);
             sum += term;
         }
-        EXPECT_NEAR(std::sqrt(M_PI / (2.0 * x)) * sum / scaledBesselK1(x), 1.0, 1e-12) << x;
+        EXPECT_NEAR(std::sqrt(kPi / (2.0 * x)) * sum / scaledBesselK1(x), 1.0, 1e-12) << x;
     }
     EXPECT_NEAR(scaledBesselK1(500.0 - 1e-9) / scaledBesselK1(500.0), 1.0, 1e-11);
     EXPECT_NEAR(796.375 * scaledBesselK1(796.375), 35.38532, 5e-6); // Ch(x, 90°) = x·eˣ·K₁(x), published value
@@ -136,14 +137,14 @@ double exactErfcx(double z)
         term *= -(2.0 * k - 1.0) / (2.0 * z * z);
         sum += term;
     }
-    return sum / (std::sqrt(M_PI) * z);
+    return sum / (std::sqrt(kPi) * z);
 }
 
 // J₂(z) = ∫_0^∞ e^{−w} w²/√(w + z²) dw = √π·erfcx(z)·(z⁴ − z² + 3/4) − z³ + 3z/2. That sum cancels
 // for large z, where the asymptotic series (1/z)·Σ_k C(−1/2, k)·(k + 2)!/z^{2k} is used.
 double exactJ2(double z)
 {
-    if (z < 8.0) return std::sqrt(M_PI) * exactErfcx(z) * ((z * z - 1.0) * z * z + 0.75) - z * (z * z - 1.5);
+    if (z < 8.0) return std::sqrt(kPi) * exactErfcx(z) * ((z * z - 1.0) * z * z + 0.75) - z * (z * z - 1.5);
     const double inverse2 = 1.0 / (z * z);
     return (2.0 + inverse2 * (-3.0 + inverse2 * (9.0 + inverse2 * (-37.5 + inverse2 * 196.875)))) / z;
 }

@@ -1,6 +1,7 @@
 // Tests of the several-lights sky: closed form against the nested-march reference,
 // linearity in the lights, extreme geometries.
 #include "atmosphere/sky_accuracy.h"
+#include "common/constants.h"
 
 #include <gtest/gtest.h>
 
@@ -80,7 +81,7 @@ TEST(Sky, NoNanOrInfAtExtremes)
     for (const SkyView& view : twilightViews(0.001)) views.push_back(view);
     for (double altitude : {400.0, 35786.0}) {
         const glm::dvec3 origin = (kAir.planetRadiusKm + altitude) * up;
-        const double limb = std::acos(kAir.planetRadiusKm / (kAir.planetRadiusKm + altitude)) * 180.0 / M_PI;
+        const double limb = std::acos(kAir.planetRadiusKm / (kAir.planetRadiusKm + altitude)) * 180.0 / kPi;
         for (double elevation : {-90.0, -limb, -limb + 0.5, -limb - 0.5, 0.0, 90.0})
             views.push_back({origin, twilightDirection(30.0, elevation), 1e30});
     }

@@ -1,4 +1,5 @@
 #include "aurora/footprint_map.h"
+#include "common/constants.h"
 #include "common/glsl.h"
 
 #include <gtest/gtest.h>
@@ -27,7 +28,6 @@ namespace f64 = footprint_tests_f64;
 namespace f32 = footprint_tests_f32;
 
 constexpr double kR = 6371.0;
-constexpr double kPi = 3.14159265358979323846;
 
 double angle(const glm::dvec3& a, const glm::dvec3& b)
 {

@@ -1,5 +1,6 @@
 // The periodic multigrid Poisson solver: V-cycle convergence factor, second-order accuracy on a
 // manufactured problem, and the checkerboard mode that plain Jacobi cannot remove.
+#include "common/constants.h"
 #include "fluid/multigrid.h"
 
 #include <gtest/gtest.h>
@@ -15,18 +16,16 @@
 namespace aurorawall::fluid {
 namespace {
 
-constexpr double pi = 3.14159265358979323846;
-
 // φ = sin(2πx/Lx) cos(4πy/Ly) + ½ cos(6πx/Lx + 0.3) sin(2πy/Ly + 1): zero mean, periodic.
 double phi(double x, double y, double lx, double ly)
 {
-    return std::sin(2 * pi * x / lx) * std::cos(4 * pi * y / ly) + 0.5 * std::cos(6 * pi * x / lx + 0.3) * std::sin(2 * pi * y / ly + 1.0);
+    return std::sin(2 * kPi * x / lx) * std::cos(4 * kPi * y / ly) + 0.5 * std::cos(6 * kPi * x / lx + 0.3) * std::sin(2 * kPi * y / ly + 1.0);
 }
 
 // Its Laplacian, analytically.
 double laplacianOfPhi(double x, double y, double lx, double ly)
 {
-    const double kx1 = 2 * pi / lx, ky1 = 4 * pi / ly, kx2 = 6 * pi / lx, ky2 = 2 * pi / ly;
+    const double kx1 = 2 * kPi / lx, ky1 = 4 * kPi / ly, kx2 = 6 * kPi / lx, ky2 = 2 * kPi / ly;
     return -(kx1 * kx1 + ky1 * ky1) * std::sin(kx1 * x) * std::cos(ky1 * y) -
            (kx2 * kx2 + ky2 * ky2) * 0.5 * std::cos(kx2 * x + 0.3) * std::sin(ky2 * y + 1.0);
 }

@@ -3,6 +3,7 @@
 #include "aurora/colour.h"
 #include "aurora/deposition_table.h"
 #include "aurora/emission.h"
+#include "common/constants.h"
 #include "scene/ray_steps.h"
 
 namespace aurorawall::f64 {
@@ -64,7 +65,7 @@ AuroraReference::Nearest AuroraReference::nearestOn(const Curtain& c, glm::dvec3
     const double nearestVertex = std::acos(std::clamp(maxDot, -1.0, 1.0));
     // 1 km of slack for the arclength-based segment length the shader's projection uses.
     const double limit = nearestVertex + (0.5 * c.maxSegmentKm + 1.0) / R;
-    const double minDot = limit >= M_PI ? -2.0 : std::cos(limit);
+    const double minDot = limit >= kPi ? -2.0 : std::cos(limit);
     for (size_t j = 0; j + 1 < c.points.size(); ++j) {
         const glm::dvec3& a = c.points[j];
         const glm::dvec3& b = c.points[j + 1];

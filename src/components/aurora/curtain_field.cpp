@@ -2,6 +2,7 @@
 
 #include "aurora/curtain_geometry.h"
 #include "aurora/footprint_map.h"
+#include "common/constants.h"
 
 #include <algorithm>
 #include <chrono>
@@ -12,7 +13,6 @@ namespace aurorawall::components::aurora {
 
 namespace {
 
-constexpr double kDegree = M_PI / 180.0;
 
 // The map's cap: centred on the mean direction of all curtain points, wide enough to hold every
 // point and the emitting band around it (reach) with room for the map's margin.

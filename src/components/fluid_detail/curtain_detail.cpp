@@ -1,5 +1,7 @@
 #include "components/fluid_detail/curtain_detail.h"
 
+#include "common/constants.h"
+
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -15,6 +17,7 @@ fluid::CurtainDetailSpec curtainDetailSpec(const Settings& detail)
     spec.stripWidthKm = detail.stripWidthKm;
     spec.frames = detail.frames;
     spec.seed = detail.seed;
+    spec.pressureSolver = detail.pressureSolver;
     return spec;
 }
 
@@ -38,7 +41,7 @@ DetailShape detailShape(const fluid::CurtainDetailSpec& spec, const fluid::FluxF
     d.fluxWidthKm = spec.fluxWidthKm;
     d.reachKm = lateralReachKm(frames, spec.stripWidthKm);
     d.stripLengthKm = spec.stripLengthKm;
-    d.peakScale = spec.fluxWidthKm * std::sqrt(2.0 * M_PI);
+    d.peakScale = spec.fluxWidthKm * std::sqrt(2.0 * kPi);
     return d;
 }
 

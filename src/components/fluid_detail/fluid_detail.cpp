@@ -27,6 +27,10 @@ public:
         f.stripWidthKm = t.number("strip_width_km", 1.0, 1e4, f.stripWidthKm);
         f.frames = static_cast<int>(t.number("frames", 2, 256, f.frames));
         f.seed = static_cast<unsigned>(t.number("seed", 0, 4294967295.0, f.seed));
+        f.pressureSolver = t.choice("pressure_solver", {"fft", "multigrid"},
+                                    f.pressureSolver == fluid::PressureSolver::Fft ? 0 : 1) == 0
+                               ? fluid::PressureSolver::Fft
+                               : fluid::PressureSolver::Multigrid;
     }
     std::vector<std::string> shaderModules() const override { return {}; }
     std::unique_ptr<scene::ComponentRenderer> makeRenderer(const scene::Scene& scene,

@@ -1,6 +1,7 @@
 #pragma once
 // The fluid_detail component: small-scale curtain detail from the Kelvin-Helmholtz stable-fluids
 // simulation (src/fluid), simulated once at start-up and sampled by the aurora's curtain profile.
+#include "fluid/curtain_detail.h"
 #include "scene/component.h"
 
 namespace aurorawall::components::fluid_detail {
@@ -13,6 +14,8 @@ struct Settings : scene::SettingsOf<Settings> {
     double stripWidthKm = 32.0;
     int frames = 16;
     unsigned seed = 1;
+    // The pressure projection: an exact FFT solve (FFTW) or multigrid V-cycles (docs/fluid.md).
+    fluid::PressureSolver pressureSolver = fluid::PressureSolver::Fft;
 };
 
 const scene::Component& component();

@@ -1,5 +1,6 @@
 #include "components/sky/sky.h"
 
+#include "common/constants.h"
 #include "gl/shader_program.h"
 #include "scene/scene.h"
 
@@ -35,11 +36,10 @@ private:
 // horizon, azimuth clockwise from north), and its illuminance above the atmosphere.
 Light readLight(const config::TableReader& t)
 {
-    constexpr double degree = 3.14159265358979323846 / 180.0;
     Light l;
     const double lat = t.number("site_latitude_deg", -90, 90), lon = t.number("site_longitude_deg", -360, 360);
-    const double elevation = t.number("elevation_deg", -90, 90) * degree;
-    const double azimuth = t.number("azimuth_deg", -360, 360) * degree;
+    const double elevation = t.number("elevation_deg", -90, 90) * kDegree;
+    const double azimuth = t.number("azimuth_deg", -360, 360) * kDegree;
     const scene::LocalFrame local = scene::localFrame(lat, lon);
     l.direction = std::cos(elevation) * (std::cos(azimuth) * local.north + std::sin(azimuth) * local.east) +
                   std::sin(elevation) * local.up;
