@@ -1,12 +1,9 @@
 #include "cluster/mpi_world.h"
 
-#include <algorithm>
-#include <chrono>
 #include <cstdio>
-#include <cstring>
+#include <exception>
 #include <numeric>
 #include <set>
-#include <thread>
 
 namespace aurorawall::cluster {
 
@@ -15,14 +12,9 @@ MpiWorld::MpiWorld(int* argc, char*** argv)
     MPI_Init(argc, argv);
     MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
     MPI_Comm_size(MPI_COMM_WORLD, &size_);
-    MPI_Comm_dup(MPI_COMM_WORLD, &turns_);
 }
 
-MpiWorld::~MpiWorld()
-{
-    MPI_Comm_free(&turns_);
-    MPI_Finalize();
-}
+MpiWorld::~MpiWorld() { MPI_Finalize(); }
 
 bool MpiWorld::anyRankFailed(const std::string& myError) const
 {
@@ -54,14 +46,30 @@ bool MpiWorld::anyRankFailed(const std::string& myError) const
     return true;
 }
 
-void MpiWorld::broadcast(FrameState& state) const
+bool MpiWorld::allRanksSucceed(const std::function<void()>& step) const
 {
-    MPI_Bcast(&state, sizeof(FrameState), MPI_BYTE, 0, MPI_COMM_WORLD);
+    std::string error;
+    try {
+        step();
+    } catch (const std::exception& e) {
+        error = e.what();
+        if (error.empty())
+            error = "unknown error";
+    }
+    return !anyRankFailed(error);
 }
 
-void MpiWorld::broadcast(std::vector<int>& values) const
+void MpiWorld::broadcast(std::vector<char>& bytes) const
 {
-    MPI_Bcast(values.data(), static_cast<int>(values.size()), MPI_INT, 0, MPI_COMM_WORLD);
+    MPI_Bcast(bytes.data(), static_cast<int>(bytes.size()), MPI_BYTE, 0, MPI_COMM_WORLD);
+}
+
+std::vector<char> MpiWorld::gather(const std::vector<char>& mine) const
+{
+    const int size = static_cast<int>(mine.size());
+    std::vector<char> all(rank_ == 0 ? mine.size() * static_cast<size_t>(size_) : 0);
+    MPI_Gather(mine.data(), size, MPI_BYTE, all.data(), size, MPI_BYTE, 0, MPI_COMM_WORLD);
+    return all;
 }
 
 void MpiWorld::exchange(const std::vector<Message>& outgoing, const std::vector<Message>& incoming) const
@@ -80,36 +88,7 @@ void MpiWorld::exchange(const std::vector<Message>& outgoing, const std::vector<
     MPI_Waitall(static_cast<int>(requests.size()), requests.data(), MPI_STATUSES_IGNORE);
 }
 
-std::vector<RankReport> MpiWorld::gatherReports(const RankReport& mine) const
-{
-    static_assert(std::is_trivially_copyable_v<RankReport>, "RankReport travels as bytes");
-    std::vector<RankReport> all(rank_ == 0 ? static_cast<size_t>(size_) : 0);
-    MPI_Gather(&mine, sizeof(RankReport), MPI_BYTE, all.data(), sizeof(RankReport), MPI_BYTE, 0, MPI_COMM_WORLD);
-    return all;
-}
-
 void MpiWorld::swapBarrier() const { MPI_Barrier(MPI_COMM_WORLD); }
-
-void MpiWorld::beginTurn(int lanes) const
-{
-    if (lanes <= 0 || rank_ < lanes)
-        return;
-    MPI_Request request;
-    MPI_Irecv(nullptr, 0, MPI_BYTE, rank_ - lanes, 0, turns_, &request);
-    for (int done = 0;;) {
-        MPI_Test(&request, &done, MPI_STATUS_IGNORE);
-        if (done)
-            return;
-        std::this_thread::sleep_for(std::chrono::milliseconds(1));
-    }
-}
-
-void MpiWorld::endTurn(int lanes) const
-{
-    if (lanes <= 0 || rank_ + lanes >= size_)
-        return;
-    MPI_Send(nullptr, 0, MPI_BYTE, rank_ + lanes, 0, turns_);
-}
 
 std::vector<char> MpiWorld::gatherBytes(const std::vector<char>& mine, std::vector<int>& sizesOut) const
 {
