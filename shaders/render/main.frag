@@ -1,18 +1,20 @@
 // Entry point: one fragment = one pixel's ray, relative to the camera.
-// Radiance is written linear (RGB in the scene's radiance unit) into an RGBA32F target; alpha holds
-// the ray's work (1 + its aurora samples), with which the load balancer splits the measured time of a
-// draw among the bands it covered (src/app/balanced_frame.h). Images keep alpha 1 (io/half_pixels.h).
+// Radiance is written linear (RGB in the scene's radiance unit, alpha 1) to attachment 0 of the float
+// target; the ray's work (1 + its aurora samples) to attachment 1, with which the load balancer
+// shares the measured time of a draw among the bands it covered (src/gl/float_target.h).
 uniform vec3 uCameraPositionKm; // camera relative to the planet centre, planet frame
 
-out vec4 fragRadiance;
+layout(location = 0) out vec4 fragRadiance;
+layout(location = 1) out float fragWork;
 
 void main()
 {
     vec3 direction = fragmentRayDirection();
     vec3 radiance = shadeRay(uCameraPositionKm, direction);
-#ifdef HAS_AURORA
-    fragRadiance = vec4(radiance, 1.0 + float(gAuroraSamples));
-#else
     fragRadiance = vec4(radiance, 1.0);
+#ifdef HAS_AURORA
+    fragWork = 1.0 + float(gAuroraSamples);
+#else
+    fragWork = 1.0;
 #endif
 }

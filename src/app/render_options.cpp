@@ -15,7 +15,8 @@ const cli::Choices<gl::Backend> kBackends = {
 const cli::Choices<io::ToneMap::Curve> kToneMaps = {
     {"aces", io::ToneMap::Curve::AcesFilmic}, {"magnitude-gamma", io::ToneMap::Curve::MagnitudeGamma}};
 const cli::Choices<Balance> kBalance = {{"on", Balance::On}, {"off", Balance::Off}, {"auto", Balance::Auto}};
-const cli::Choices<BandMeasure> kBandMeasures = {{"time", BandMeasure::CpuTime}, {"work", BandMeasure::Work}};
+const cli::Choices<cluster::BandMeasure> kBandMeasures = {{"time", cluster::BandMeasure::CpuTime},
+                                                          {"work", cluster::BandMeasure::Work}};
 
 } // namespace
 

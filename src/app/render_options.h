@@ -1,6 +1,6 @@
 #pragma once
 // The options of `aurorawall render`, parsed through app/cli/command_line.h.
-#include "app/balanced_frame.h"
+#include "cluster/rank_message.h"
 #include "gl/backend.h"
 #include "io/tone_map.h"
 
@@ -30,7 +30,7 @@ struct RenderOptions {
     bool singleScreen = false;
     Balance balance = Balance::Auto;
     int balanceBands = 8;
-    BandMeasure balanceBy = BandMeasure::CpuTime; // what the balancer equalizes
+    cluster::BandMeasure balanceBy = cluster::BandMeasure::CpuTime; // what the balancer equalizes
     bool quiet = false;
     bool verbose = false;
     bool help = false;

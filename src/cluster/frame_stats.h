@@ -9,22 +9,25 @@ namespace aurorawall::cluster {
 
 // What each rank reports to the master after drawing a frame: the frame it drew (so the
 // master can show every rank drew the same one) and how long it took.
-// The phases follow MPIglut's perflib: prepare (per-frame CPU work), render, wait (at the swap
-// barrier for the slowest rank), swap.
+// The phases follow MPIglut's perflib: prepare (per-frame CPU work), render, wait (for the slowest
+// rank), swap.
 struct RankReport {
     std::uint64_t frame = 0;
     double timeS = 0.0;
     double prepareMs = 0.0;   // per-frame component work on the CPU (curtain map), wall time
     double prepareCpuMs = 0.0; // the same as CPU time of the process
-    double renderMs = 0.0;    // its tiles drawn and finished (glFinish), wall time
+    double renderMs = 0.0;    // its bands drawn and finished (glFinish), those of other ranks'
+                              // screens read back, wall time
     double renderCpuMs = 0.0; // CPU time of the whole process while rendering, all threads
                               // (llvmpipe's included): the rank's own work, even on a shared machine
-    double exchangeMs = 0.0;  // load balancing: sending and receiving band pixels
+    double exchangeMs = 0.0;  // load balancing: sending, receiving and uploading band pixels
     double exchangeMB = 0.0;  // megabytes of band pixels this rank sent plus received
     double renderWork = 0.0;  // load balancing: the work of the rays it drew, the sum over its drawn
-                              // pixels of 1 + aurora samples (main.frag's alpha): a noise-free
-                              // measure of its share (0 with the static split, which reads nothing back)
-    double waitMs = 0.0;      // from its tiles finished to the swap barrier's release
+                              // pixels of 1 + aurora samples (main.frag's work output): a noise-free
+                              // measure of its share (0 with the static split, which measures nothing)
+    double waitMs = 0.0;      // waiting for the other ranks: for this frame's message after its
+                              // report of the previous frame (the slowest rank of that frame, the
+                              // gather and the broadcast), plus the swap barrier with windows
     double swapMs = 0.0;      // presenting and swapping its windows
     std::int32_t closeRequested = 0; // a window of this rank was closed
 };
@@ -32,7 +35,7 @@ struct RankReport {
 struct FrameRecord {
     std::uint64_t frame = 0;
     double timeS = 0.0;          // animation time
-    double frameMs = 0.0;        // wall clock, from the broadcast to after the swap barrier
+    double frameMs = 0.0;        // the master's wall clock, from the broadcast to the reports gathered
     std::vector<RankReport> ranks;
 
     double maxRenderMs() const;

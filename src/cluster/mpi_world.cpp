@@ -2,7 +2,7 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <cstring>
+#include <exception>
 #include <numeric>
 #include <set>
 
@@ -50,14 +50,17 @@ int MpiWorld::agreedStatus(int myStatus, const std::string& myError, const std::
     return agreed;
 }
 
-void MpiWorld::broadcast(FrameState& state) const
+void MpiWorld::broadcast(std::vector<char>& bytes) const
 {
-    MPI_Bcast(&state, sizeof(FrameState), MPI_BYTE, 0, MPI_COMM_WORLD);
+    MPI_Bcast(bytes.data(), static_cast<int>(bytes.size()), MPI_BYTE, 0, MPI_COMM_WORLD);
 }
 
-void MpiWorld::broadcast(std::vector<int>& values) const
+std::vector<char> MpiWorld::gather(const std::vector<char>& mine) const
 {
-    MPI_Bcast(values.data(), static_cast<int>(values.size()), MPI_INT, 0, MPI_COMM_WORLD);
+    const int size = static_cast<int>(mine.size());
+    std::vector<char> all(rank_ == 0 ? mine.size() * static_cast<size_t>(size_) : 0);
+    MPI_Gather(mine.data(), size, MPI_BYTE, all.data(), size, MPI_BYTE, 0, MPI_COMM_WORLD);
+    return all;
 }
 
 void MpiWorld::exchange(const std::vector<Message>& outgoing, const std::vector<Message>& incoming) const
@@ -74,14 +77,6 @@ void MpiWorld::exchange(const std::vector<Message>& outgoing, const std::vector<
                   &requests.back());
     }
     MPI_Waitall(static_cast<int>(requests.size()), requests.data(), MPI_STATUSES_IGNORE);
-}
-
-std::vector<RankReport> MpiWorld::gatherReports(const RankReport& mine) const
-{
-    static_assert(std::is_trivially_copyable_v<RankReport>, "RankReport travels as bytes");
-    std::vector<RankReport> all(rank_ == 0 ? static_cast<size_t>(size_) : 0);
-    MPI_Gather(&mine, sizeof(RankReport), MPI_BYTE, all.data(), sizeof(RankReport), MPI_BYTE, 0, MPI_COMM_WORLD);
-    return all;
 }
 
 void MpiWorld::swapBarrier() const { MPI_Barrier(MPI_COMM_WORLD); }

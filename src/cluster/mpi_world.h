@@ -1,12 +1,11 @@
 #pragma once
-// The MPI calls of the frame loop, in one place. Every rank runs the same binary, so
-// trivially copyable structs travel as bytes.
-#include "cluster/frame_state.h"
-#include "cluster/frame_stats.h"
-
+// The MPI calls of aurorawall, in one place: agreement on set-up errors, the frame's broadcast and
+// gather, the swap barrier, the band exchange and the gathering of output. Messages travel as bytes
+// (every rank runs the same binary).
 #include <mpi.h>
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -29,16 +28,19 @@ public:
     // "PREFIX: rank 2: message").
     int agreedStatus(int myStatus, const std::string& myError, const std::string& prefix) const;
 
-    void broadcast(FrameState& state) const;
-    // Rank 0's values to every rank (the size must already match on every rank).
-    void broadcast(std::vector<int>& values) const;
-    // Rank 0 receives one report from each rank, in rank order (others get an empty vector).
-    std::vector<RankReport> gatherReports(const RankReport& mine) const;
-    // All ranks wait here before their screens flip: the swap barrier.
-    void swapBarrier() const;
-
-    // Rank 0 receives every rank's bytes, concatenated in rank order, with their sizes.
+    // Rank 0's bytes to every rank, in one MPI_Bcast: every rank passes a buffer of the same size
+    // (the frame's message, cluster/frame_message.h).
+    void broadcast(std::vector<char>& bytes) const;
+    // Every rank's bytes to rank 0, concatenated in rank order, in one MPI_Gather: every rank passes
+    // the same size (its report, cluster/rank_message.h); the others get an empty vector.
+    std::vector<char> gather(const std::vector<char>& mine) const;
+    // Rank 0 receives every rank's bytes of any size, concatenated in rank order, with their sizes.
     std::vector<char> gatherBytes(const std::vector<char>& mine, std::vector<int>& sizesOut) const;
+
+    // All ranks wait here before their windows flip, so that every screen of the wall shows the
+    // same frame: the swap barrier (windows only; headless ranks are kept in step by the frame's
+    // gather and broadcast).
+    void swapBarrier() const;
 
     // Point-to-point messages of 16-bit words (band pixels as halves, io/half_pixels.h): every rank
     // posts what it sends and what it expects (buffers sized by the caller) at once, so no order of

@@ -20,6 +20,7 @@
     X(PFNGLENABLEPROC, glEnable)                                                    \
     X(PFNGLDISABLEPROC, glDisable)                                                  \
     X(PFNGLVIEWPORTPROC, glViewport)                                                \
+    X(PFNGLSCISSORPROC, glScissor)                                                  \
     X(PFNGLCLEARPROC, glClear)                                                      \
     X(PFNGLCLEARCOLORPROC, glClearColor)                                            \
     X(PFNGLFINISHPROC, glFinish)                                                    \
@@ -70,6 +71,8 @@
     X(PFNGLCREATEFRAMEBUFFERSPROC, glCreateFramebuffers)                            \
     X(PFNGLBINDFRAMEBUFFERPROC, glBindFramebuffer)                                  \
     X(PFNGLNAMEDFRAMEBUFFERTEXTUREPROC, glNamedFramebufferTexture)                  \
+    X(PFNGLNAMEDFRAMEBUFFERDRAWBUFFERSPROC, glNamedFramebufferDrawBuffers)          \
+    X(PFNGLNAMEDFRAMEBUFFERREADBUFFERPROC, glNamedFramebufferReadBuffer)            \
     X(PFNGLCHECKNAMEDFRAMEBUFFERSTATUSPROC, glCheckNamedFramebufferStatus)          \
     X(PFNGLDELETEFRAMEBUFFERSPROC, glDeleteFramebuffers)                            \
     X(PFNGLBLITFRAMEBUFFERPROC, glBlitFramebuffer)                                  \

@@ -136,13 +136,13 @@ TEST(RenderOptions, EnumOptionsAreParsedOnce)
     EXPECT_EQ(defaults.backend, gl::Backend::Egl);
     EXPECT_EQ(defaults.toneMap, io::ToneMap::Curve::AcesFilmic);
     EXPECT_EQ(defaults.balance, Balance::Auto);
-    EXPECT_EQ(defaults.balanceBy, BandMeasure::CpuTime);
+    EXPECT_EQ(defaults.balanceBy, cluster::BandMeasure::CpuTime);
     const RenderOptions o = parseRender({"--wall", "w.ini", "--scene", "s.toml", "--backend", "osmesa", "--tonemap",
                                          "magnitude-gamma", "--balance", "off", "--balance-by", "work"});
     EXPECT_EQ(o.backend, gl::Backend::Osmesa);
     EXPECT_EQ(o.toneMap, io::ToneMap::Curve::MagnitudeGamma);
     EXPECT_EQ(o.balance, Balance::Off);
-    EXPECT_EQ(o.balanceBy, BandMeasure::Work);
+    EXPECT_EQ(o.balanceBy, cluster::BandMeasure::Work);
     EXPECT_EQ(parseRender({"--wall", "w.ini", "--scene", "s.toml", "--balance"}).balance, Balance::On);
 }
 

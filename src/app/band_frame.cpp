@@ -1,0 +1,144 @@
+#include "app/band_frame.h"
+
+#include "common/clock.h"
+#include "gl/functions.h"
+#include "io/half_pixels.h"
+#include "wall/tile_rays.h"
+
+namespace aurorawall::app {
+
+namespace {
+
+// The first of a band's rows in GL's bottom-up order, on a screen `screenHeight` rows tall (bands
+// count their rows from the top).
+int firstGlRow(const cluster::Band& band, int screenHeight) { return screenHeight - band.y0 - band.height; }
+
+// Draws rows [firstRow, firstRow + rows) of `target` (GL order) with the screen's rays: the same
+// fragments as a draw of the whole screen, the other rows left as they are.
+void drawRows(render::TileRenderer& renderer, const wall::TileRays& rays, gl::FloatTarget& target,
+              const gl::FullScreenTriangle& triangle, int firstRow, int rows)
+{
+    gl::glEnable(GL_SCISSOR_TEST);
+    gl::glScissor(0, firstRow, target.width(), rows);
+    renderer.renderTile(rays, target, triangle);
+    gl::glDisable(GL_SCISSOR_TEST);
+}
+
+// RGB floats rounded to half floats where they leave the GPU.
+std::vector<std::uint16_t> rgbHalves(const std::vector<float>& rgb)
+{
+    std::vector<std::uint16_t> halves(rgb.size());
+    for (size_t i = 0; i < rgb.size(); ++i)
+        halves[i] = io::halfBits(rgb[i]);
+    return halves;
+}
+
+} // namespace
+
+BandFrame::BandFrame(const wall::Wall& wall, std::vector<cluster::Band> bands, int rank, bool measureCosts)
+    : wall_(wall), bands_(std::move(bands)), rank_(rank), measureCosts_(measureCosts)
+{
+}
+
+BandFrame::Scratch& BandFrame::scratchFor(int width, int height)
+{
+    Scratch& s = scratch_[{width, height}];
+    if (!s.target) {
+        s.target = std::make_unique<gl::FloatTarget>(width, height);
+        s.triangle = std::make_unique<gl::FullScreenTriangle>();
+    }
+    return s;
+}
+
+std::vector<cluster::BandCost> BandFrame::draw(render::TileRenderer& renderer, gl::Context& context,
+                                               std::vector<ScreenTarget>& screens,
+                                               const std::vector<std::int32_t>& assignment,
+                                               const cluster::MpiWorld& world, cluster::RankReport& report)
+{
+    // 1. Draw my bands: each run of consecutive bands of one screen in one draw (a draw has a fixed
+    // cost, and rasterizers shade whole pixel blocks), its process CPU time shared among the run's
+    // bands in proportion to their rays' work. Bands of other ranks' screens are read back at once
+    // (the next run may draw into the same scratch target) as half floats.
+    std::vector<cluster::BandCost> costs;
+    std::vector<std::vector<std::uint16_t>> outgoingPixels;
+    std::vector<cluster::MpiWorld::Message> outgoing, incoming;
+    const auto start = SteadyClock::now();
+    const double cpuStart = processCpuMilliseconds();
+    for (size_t first = 0; first < bands_.size();) {
+        if (assignment[first] != rank_) {
+            ++first;
+            continue;
+        }
+        size_t end = first + 1;
+        while (end < bands_.size() && assignment[end] == rank_ && bands_[end].screen == bands_[first].screen)
+            ++end;
+        const cluster::Band& top = bands_[first];
+        const cluster::Band& bottom = bands_[end - 1];
+        const wall::Screen& screen = wall_.screens[top.screen];
+        const bool myScreen = top.owner == rank_;
+        ScreenTarget* own = myScreen ? &screenTarget(screens, top.screen) : nullptr;
+        Scratch* scratch = myScreen ? nullptr : &scratchFor(screen.widthPx, screen.heightPx);
+        gl::FloatTarget& target = myScreen ? *own->target : *scratch->target;
+        context.makeCurrent(myScreen ? own->window : 0);
+
+        const double runStart = processCpuMilliseconds();
+        drawRows(renderer, wall::tileRays(wall_, top.screen), target, myScreen ? *own->triangle : *scratch->triangle,
+                 firstGlRow(bottom, screen.heightPx), bottom.y0 + bottom.height - top.y0);
+        gl::glFinish();
+        const double runMs = processCpuMilliseconds() - runStart;
+
+        if (measureCosts_) {
+            std::vector<double> work(end - first, 0.0);
+            double runWork = 0.0;
+            for (size_t i = first; i < end; ++i) {
+                for (float w : target.readbackWork(firstGlRow(bands_[i], screen.heightPx), bands_[i].height))
+                    work[i - first] += w;
+                runWork += work[i - first];
+            }
+            report.renderWork += runWork;
+            for (size_t i = first; i < end; ++i)
+                costs.push_back({static_cast<std::int32_t>(i), runWork > 0.0 ? runMs * work[i - first] / runWork : 0.0,
+                                 work[i - first]});
+        }
+        if (!myScreen)
+            for (size_t i = first; i < end; ++i) {
+                const cluster::Band& b = bands_[i];
+                outgoingPixels.push_back(rgbHalves(target.readbackRgb(firstGlRow(b, screen.heightPx), b.height)));
+                outgoing.push_back({b.owner, static_cast<int>(i), nullptr});
+            }
+        first = end;
+    }
+    for (size_t k = 0; k < outgoing.size(); ++k)
+        outgoing[k].values = &outgoingPixels[k];
+    report.renderMs = millisecondsSince(start);
+    report.renderCpuMs = processCpuMilliseconds() - cpuStart;
+
+    // 2. Exchange: my screens' bands drawn elsewhere come in and go into their rows of my screens'
+    // targets, other screens' bands go out.
+    const auto exchangeStart = SteadyClock::now();
+    std::vector<std::pair<size_t, std::vector<std::uint16_t>>> arriving;
+    for (size_t i = 0; i < bands_.size(); ++i)
+        if (bands_[i].owner == rank_ && assignment[i] != rank_)
+            arriving.emplace_back(i, std::vector<std::uint16_t>(3 * size_t(wall_.screens[bands_[i].screen].widthPx) *
+                                                                 size_t(bands_[i].height)));
+    for (auto& [band, pixels] : arriving)
+        incoming.push_back({assignment[band], static_cast<int>(band), &pixels});
+    world.exchange(outgoing, incoming);
+    size_t words = 0;
+    for (const auto& m : outgoing)
+        words += m.values->size();
+    for (const auto& m : incoming)
+        words += m.values->size();
+    report.exchangeMB = 1e-6 * static_cast<double>(words * sizeof(std::uint16_t));
+    for (const auto& [band, pixels] : arriving) {
+        const cluster::Band& b = bands_[band];
+        ScreenTarget& own = screenTarget(screens, b.screen);
+        context.makeCurrent(own.window);
+        own.target->uploadRgbHalf(firstGlRow(b, wall_.screens[b.screen].heightPx), b.height, pixels);
+    }
+    context.makeCurrent(0);
+    report.exchangeMs = millisecondsSince(exchangeStart);
+    return costs;
+}
+
+} // namespace aurorawall::app

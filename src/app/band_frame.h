@@ -1,0 +1,56 @@
+#pragma once
+// This rank's part of a frame: it draws the bands the master assigned to it (cluster/load_balancer.h)
+// and ends with every band of its own screens in their float targets.
+// - A band of one of its own screens is drawn straight into that screen's target: it never leaves the GPU.
+// - A band of another rank's screen is drawn into a scratch target of that screen's size, read back,
+//   rounded to half floats (io/half_pixels.h, 6 bytes a pixel) and sent to the screen's rank, which
+//   uploads it into its target's rows.
+// Every band is drawn with its screen's rays over its own rows of a target of the screen's size (a
+// scissor keeps the other rows), so it gets the same floats whoever draws it; the output rounds every
+// screen to half floats, and a half rounds to itself, so the balanced wall equals the static one bit
+// for bit (tests/app/balance.sh).
+#include "app/screen_target.h"
+#include "cluster/load_balancer.h"
+#include "cluster/mpi_world.h"
+#include "cluster/rank_message.h"
+#include "gl/context.h"
+#include "render/tile_renderer.h"
+#include "wall/wall.h"
+
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <utility>
+#include <vector>
+
+namespace aurorawall::app {
+
+class BandFrame {
+public:
+    // measureCosts: report each drawn band's cost (the load balancer's input), read from the work
+    // the raymarcher writes to the target's attachment 1.
+    BandFrame(const wall::Wall& wall, std::vector<cluster::Band> bands, int rank, bool measureCosts);
+
+    // Draws this rank's bands of `assignment` (band -> rank) and exchanges those drawn away from
+    // their screen; fills the report's render and exchange fields. Returns each drawn band's cost when
+    // measuring costs, else nothing. Needs window 0's context current and leaves it current.
+    std::vector<cluster::BandCost> draw(render::TileRenderer& renderer, gl::Context& context,
+                                        std::vector<ScreenTarget>& screens, const std::vector<std::int32_t>& assignment,
+                                        const cluster::MpiWorld& world, cluster::RankReport& report);
+
+private:
+    // Where bands of other ranks' screens are drawn (window 0's context), one per screen size.
+    struct Scratch {
+        std::unique_ptr<gl::FloatTarget> target;
+        std::unique_ptr<gl::FullScreenTriangle> triangle;
+    };
+    Scratch& scratchFor(int width, int height);
+
+    const wall::Wall& wall_;
+    std::vector<cluster::Band> bands_;
+    int rank_;
+    bool measureCosts_;
+    std::map<std::pair<int, int>, Scratch> scratch_;
+};
+
+} // namespace aurorawall::app

@@ -1,0 +1,115 @@
+#include "app/frame_loop.h"
+
+#include "app/band_frame.h"
+#include "app/band_split.h"
+#include "cluster/frame_message.h"
+#include "cluster/master_clock.h"
+#include "cluster/rank_message.h"
+#include "common/clock.h"
+
+#include <cstdio>
+#include <optional>
+
+namespace aurorawall::app {
+
+namespace {
+
+cluster::ClockSettings clockSettings(const WallSession& s)
+{
+    cluster::ClockSettings c;
+    c.frames = static_cast<std::uint64_t>(s.options.frames);
+    c.startTimeS = s.options.startTimeGiven ? s.options.startTimeS : s.scene.startTimeS;
+    c.timeStepS = s.options.timeStepS >= 0 ? s.options.timeStepS : s.scene.timeStepS;
+    c.realTime = s.options.realTime;
+    return c;
+}
+
+double pixelsPerFrame(const wall::Wall& wall)
+{
+    double pixels = 0;
+    for (const wall::Screen& s : wall.screens)
+        pixels += double(s.widthPx) * s.heightPx;
+    return pixels;
+}
+
+} // namespace
+
+cluster::FrameStats runFrames(WallSession& session, const cluster::MpiWorld& world)
+{
+    const size_t bandCount = session.bands.size();
+    // The master alone keeps the clock and splits the bands.
+    std::optional<cluster::MasterClock> clock;
+    std::optional<BandSplit> split;
+    if (world.isMaster()) {
+        clock.emplace(clockSettings(session), session.scene.camera, session.exposure);
+        split.emplace(session.bands, world.size(), session.balanced,
+                      session.options.balanceBy);
+    }
+    BandFrame bands(session.wall, session.bands, world.rank(), session.balanced);
+    cluster::FrameStats stats(pixelsPerFrame(session.wall));
+    bool stopRequested = false;
+    std::vector<char> message(cluster::frameMessageBytes(bandCount));
+    auto waitStart = SteadyClock::now(); // from this rank's previous report to this frame's message
+    while (true) {
+        // 1. The master decides the frame; one broadcast tells every rank.
+        const auto frameStart = SteadyClock::now();
+        if (world.isMaster())
+            message = cluster::packFrameMessage({clock->next(stopRequested), split->next(), {}}, bandCount);
+        world.broadcast(message);
+        const cluster::FrameMessage frame = cluster::unpackFrameMessage(message, bandCount);
+        if (frame.state.quit)
+            break;
+        cluster::RankMessage mine;
+        cluster::RankReport& report = mine.report;
+        report.frame = frame.state.frame;
+        report.timeS = frame.state.timeS;
+        report.waitMs = millisecondsSince(waitStart);
+
+        // 2. Every rank draws its bands and exchanges those drawn away from their screen.
+        auto phase = SteadyClock::now();
+        const double prepareCpuStart = processCpuMilliseconds();
+        session.renderer->setFrame(frame.state);
+        report.prepareMs = millisecondsSince(phase);
+        report.prepareCpuMs = processCpuMilliseconds() - prepareCpuStart;
+        mine.costs = bands.draw(*session.renderer, *session.context, session.screens, frame.assignment, world, report);
+
+        // 3. Windows show the screens' targets and flip together: the swap barrier makes every rank
+        // wait until all have drawn into their back buffers, so no screen shows the next frame early.
+        if (session.presenter) {
+            for (ScreenTarget& s : session.screens)
+                session.presenter->present(*session.context, s.window, *s.target, *s.triangle);
+            phase = SteadyClock::now();
+            world.swapBarrier();
+            report.waitMs += millisecondsSince(phase);
+            phase = SteadyClock::now();
+            for (ScreenTarget& s : session.screens)
+                session.context->swapBuffers(s.window);
+            session.context->pollEvents();
+            report.closeRequested = session.context->closeRequested();
+            report.swapMs = millisecondsSince(phase);
+            session.context->makeCurrent(0);
+        }
+
+        // 4. One gather: the master learns what every rank drew, how long it took, what its bands
+        // cost, and whether to stop.
+        waitStart = SteadyClock::now();
+        const std::vector<char> gathered = world.gather(cluster::packRankMessage(mine, bandCount));
+        if (world.isMaster()) {
+            const std::vector<cluster::RankMessage> ranks = cluster::unpackRankMessages(gathered, bandCount);
+            cluster::FrameRecord record{frame.state.frame, frame.state.timeS, millisecondsSince(frameStart), {}};
+            for (const cluster::RankMessage& r : ranks) {
+                stopRequested = stopRequested || r.report.closeRequested;
+                record.ranks.push_back(r.report);
+            }
+            split->observe(ranks);
+            if (!session.options.quiet)
+                std::printf("%s\n", stats.frameLine(record).c_str());
+            if (session.options.verbose)
+                std::printf("  %s\n", session.renderer->frameLog().c_str());
+            stats.add(std::move(record));
+        }
+    }
+    return stats;
+}
+
+} // namespace aurorawall::app

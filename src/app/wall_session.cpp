@@ -1,0 +1,137 @@
+#include "app/wall_session.h"
+
+#include "app/cli/exit_status.h"
+#include "components/registry.h"
+#include "common/data_dir.h"
+#include "common/input_error.h"
+#include "io/directory.h"
+#include "render/fragment_shader.h"
+#include "wall/wall_file.h"
+
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+
+namespace aurorawall::app {
+
+namespace {
+
+std::vector<gl::WindowSpec> windowsFor(const wall::Wall& wall, const std::vector<int>& screens)
+{
+    std::vector<gl::WindowSpec> windows;
+    for (int s : screens) {
+        const wall::Screen& screen = wall.screens[s];
+        gl::WindowSpec w;
+        w.title = "aurorawall " + screen.name;
+        w.widthPx = screen.window.width > 0 ? screen.window.width : screen.widthPx;
+        w.heightPx = screen.window.height > 0 ? screen.window.height : screen.heightPx;
+        w.x = screen.window.x;
+        w.y = screen.window.y;
+        w.monitor = screen.window.monitor;
+        w.fullscreen = screen.window.fullscreen;
+        windows.push_back(w);
+    }
+    return windows;
+}
+
+io::ToneMap toneMapFor(const RenderOptions& options, double exposure)
+{
+    io::ToneMap t;
+    t.curve = options.toneMap;
+    t.exposure = exposure;
+    return t;
+}
+
+// Options, wall, scene, shaders and output folders, identical on every rank.
+void configure(const cluster::MpiWorld& world, int argc, char** argv, WallSession& s)
+{
+    RenderOptions& options = s.options;
+    options = parseRenderOptions(argc, argv);
+    if (options.help)
+        return;
+    s.wall = wall::loadWall(options.wallFile);
+    if (options.singleScreen)
+        s.wall = wall::singleScreenEquivalent(s.wall);
+    if (s.wall.rankCount != world.size())
+        throw UsageError(options.wallFile + (options.singleScreen ? " with --single-screen" : "") +
+                         ": the wall is driven by " + std::to_string(s.wall.rankCount) +
+                         (s.wall.rankCount == 1 ? " rank" : " ranks") + ", but mpirun started " +
+                         std::to_string(world.size()) + " (use mpirun -n " + std::to_string(s.wall.rankCount) + ")");
+    s.scene = components::loadScene(options.sceneFile);
+    s.shaderDir = (options.dataDir.empty() ? dataDirectory() : options.dataDir) + "/shaders";
+    render::fragmentShaderSource(s.scene, s.shaderDir); // every module readable before any window opens
+    if (options.gather || options.tiles)
+        io::ensureWritableDirectory(options.outDir, "--out");
+    if (!options.statsFile.empty()) {
+        const std::filesystem::path parent = std::filesystem::path(options.statsFile).parent_path();
+        io::ensureWritableDirectory(parent.empty() ? "." : parent.string(), "--stats");
+    }
+    s.exposure = options.exposure > 0 ? options.exposure : s.scene.exposure;
+    s.toneMap = toneMapFor(options, s.exposure);
+    s.balanced = options.balance == Balance::On || (options.balance == Balance::Auto && world.size() > 1);
+    s.bands = cluster::makeBands(s.wall, s.balanced ? options.balanceBands : 1);
+}
+
+// A context per rank (a window per screen with glfw), the raymarcher, the screens' targets.
+void openGraphics(const cluster::MpiWorld& world, WallSession& s)
+{
+    const gl::Backend backend = s.options.backend;
+    const std::vector<int> myScreens = s.wall.screensOfRank(world.rank());
+    s.context = gl::createContext(backend, windowsFor(s.wall, myScreens));
+    s.renderer = std::make_unique<render::TileRenderer>(s.scene, s.shaderDir);
+    if (backend == gl::Backend::Glfw)
+        s.presenter = std::make_unique<render::WindowPresenter>(s.shaderDir, s.toneMap);
+    for (size_t i = 0; i < myScreens.size(); ++i) {
+        ScreenTarget screen;
+        screen.screen = myScreens[i];
+        screen.window = backend == gl::Backend::Glfw ? static_cast<int>(i) : 0;
+        s.context->makeCurrent(screen.window);
+        const wall::Screen& physical = s.wall.screens[screen.screen];
+        screen.target = std::make_unique<gl::FloatTarget>(physical.widthPx, physical.heightPx);
+        screen.triangle = std::make_unique<gl::FullScreenTriangle>();
+        s.screens.push_back(std::move(screen));
+    }
+    s.context->makeCurrent(0);
+}
+
+} // namespace
+
+int agreedStep(const cluster::MpiWorld& world, const std::function<void()>& step)
+{
+    int status = cli::kSuccess;
+    std::string error;
+    try {
+        step();
+    } catch (const std::exception& e) {
+        status = cli::exitStatusOf(e);
+        error = e.what();
+        if (error.empty())
+            error = "unknown error";
+    }
+    return world.agreedStatus(status, error, "aurorawall render");
+}
+
+int setUpWallSession(const cluster::MpiWorld& world, int argc, char** argv, WallSession& session)
+{
+    int status = agreedStep(world, [&] { configure(world, argc, argv, session); });
+    if (status != cli::kSuccess)
+        return status;
+    if (session.options.help) {
+        if (world.isMaster())
+            std::cout << session.options.helpText;
+        return cli::kSuccess;
+    }
+    status = agreedStep(world, [&] { openGraphics(world, session); });
+    if (status != cli::kSuccess)
+        return status;
+    if (world.isMaster() && !session.options.quiet) {
+        std::printf("aurorawall: %d ranks, %zu screens, canvas %dx%d, backend %s on %s\n", world.size(),
+                    session.wall.screens.size(), session.wall.canvasSizePx.x, session.wall.canvasSizePx.y,
+                    gl::backendName(session.options.backend).c_str(), session.context->rendererName().c_str());
+        for (const std::string& line : session.renderer->precomputationLog())
+            std::printf("precomputed %s\n", line.c_str());
+    }
+    return cli::kSuccess;
+}
+
+} // namespace aurorawall::app
