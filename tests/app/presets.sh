@@ -4,7 +4,7 @@
 # inside a component may move a value by one half-float step, so HALF_ULPS (default 2) are allowed.
 source "$(dirname "$0")/lib.sh"
 HALF_ULPS="${HALF_ULPS:-2}"
-wall="$DATA/presets/wall-192x108.ini"
+wall="$DATA/presets/wall-192x108.toml"
 for name in benchmark-view ground-65n low-orbit far-space quiet-arc twilight; do
     aw_mpirun 1 render --wall "$wall" --scene "$SRC_DIR/config/scenes/$name.toml" --gather --quiet --out "$WORK/$name"
     "$COMPARE" diff "$DATA/presets/$name.exr" "$WORK/$name/wall.exr" --half-ulps "$HALF_ULPS" || fail "$name differs"
