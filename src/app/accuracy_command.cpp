@@ -71,7 +71,7 @@ int runAccuracyCommand(int argc, char** argv, std::ostream& out, std::ostream& e
              "--sky: nested-march steps K per light")
             ("wall", po::value(&scene.wallFile),
              "--scene: wall file whose single-screen equivalent sets the field of view (default "
-             "config/walls/single.ini)")
+             "config/walls/single.toml)")
             ("size", po::value(&size)->default_value(size), "--scene: render size WxH in pixels")
             ("pixels", po::value(&scene.pixels)->default_value(scene.pixels), "--scene: pixels of the CPU reference")
             ("runs", po::value(&scene.runs)->default_value(scene.runs),

@@ -2,7 +2,7 @@
 
 #include "cluster/master_clock.h"
 #include "common/data_dir.h"
-#include "fluid/curtain_detail.h"
+#include "components/fluid_detail/simulation/curtain_detail.h"
 #include "gl/context.h"
 #include "gl/float_target.h"
 #include "gl/full_screen_triangle.h"

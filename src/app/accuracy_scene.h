@@ -70,7 +70,7 @@ std::unique_ptr<gl::Context> openAccuracyContext(std::ostream& out);
 
 struct SceneAccuracySettings {
     std::string sceneFile;
-    std::string wallFile;         // its single-screen equivalent sets the field of view; empty: config/walls/single.ini
+    std::string wallFile;         // its single-screen equivalent sets the field of view; empty: config/walls/single.toml
     glm::ivec2 sizePx{320, 180};  // the render size
     int pixels = 48;              // pixels of the CPU reference
     int runs = 3;                 // timed frames per setting after one warm-up (the median is reported)

@@ -2,7 +2,7 @@
 
 #include "app/cli/command_line.h"
 #include "app/cli/exit_status.h"
-#include "aurora/deposition_table.h"
+#include "components/aurora/physics/deposition_table.h"
 
 #include <cstdio>
 #include <ostream>

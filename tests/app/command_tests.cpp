@@ -7,7 +7,7 @@
 #include "app/render_options.h"
 #include "app/tables_command.h"
 #include "atmosphere/airmass.h"
-#include "aurora/deposition_table.h"
+#include "components/aurora/physics/deposition_table.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "aurora/atmosphere_profile.h"
+#include "components/aurora/physics/atmosphere_profile.h"
 #include "quadrature.h"
 
 #include <gtest/gtest.h>

@@ -1,6 +1,6 @@
 // Lookup error of the deposition table against the exact double formula, for several resolutions
 // (docs/aurora-physics.md, "Tables"). Prints a Markdown table.
-#include "aurora/deposition_table.h"
+#include "components/aurora/physics/deposition_table.h"
 
 #include <algorithm>
 #include <cmath>

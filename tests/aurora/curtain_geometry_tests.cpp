@@ -1,4 +1,4 @@
-#include "aurora/curtain_geometry.h"
+#include "components/aurora/physics/curtain_geometry.h"
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
-#include "aurora/deposition_table.h"
-#include "aurora/emission.h"
+#include "components/aurora/physics/deposition_table.h"
+#include "components/aurora/physics/emission.h"
 #include "common/glsl.h"
 
 #include <gtest/gtest.h>

@@ -1,5 +1,5 @@
-#include "aurora/colour.h"
-#include "aurora/emission.h"
+#include "components/aurora/physics/colour.h"
+#include "components/aurora/physics/emission.h"
 #include "quadrature.h"
 
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-#include "aurora/footprint_map.h"
+#include "components/aurora/physics/footprint_map.h"
 #include "common/constants.h"
 #include "common/glsl.h"
 

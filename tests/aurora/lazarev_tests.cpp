@@ -1,5 +1,5 @@
-#include "aurora/atmosphere_profile.h"
-#include "aurora/lazarev.h"
+#include "components/aurora/physics/atmosphere_profile.h"
+#include "components/aurora/physics/lazarev.h"
 #include "common/constants.h"
 #include "quadrature.h"
 

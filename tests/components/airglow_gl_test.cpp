@@ -27,7 +27,7 @@ scene::Scene airglowOnly(const std::string& file)
 
 app::RelativeError gpuAgainstReference(const scene::Scene& s)
 {
-    const app::SceneView view = app::sceneView(s, kSource + "/config/walls/single.ini", {48, 27});
+    const app::SceneView view = app::sceneView(s, kSource + "/config/walls/single.toml", {48, 27});
     const io::Image gpu = app::renderView(s, view, kSource + "/shaders", 0).image;
     std::vector<glm::ivec2> pixels;
     std::vector<glm::dvec3> values;

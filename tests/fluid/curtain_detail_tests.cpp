@@ -1,7 +1,7 @@
 // The curtain-detail simulation: flux bounds and conservation, Kelvin–Helmholtz growth from a
 // smooth start to a structured end, divergence after each step, bit-for-bit determinism, and the
 // periodic frame sampler.
-#include "fluid/curtain_detail.h"
+#include "components/fluid_detail/simulation/curtain_detail.h"
 #include "flow_metrics.h"
 
 #include <gtest/gtest.h>

@@ -1,9 +1,9 @@
 // The FFT Poisson solver: exact (to rounding) for the 5-point Laplacian applied here stencil by
 // stencil, in agreement with a multigrid solve run to round-off, mean handling, and bit-for-bit
 // repeatable.
-#include "fluid/fft_poisson.h"
+#include "components/fluid_detail/simulation/fft_poisson.h"
 #include "common/constants.h"
-#include "fluid/multigrid.h"
+#include "components/fluid_detail/simulation/multigrid.h"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 #pragma once
 // Diagnostics the fluid tests share.
-#include "fluid/stable_fluids.h"
+#include "components/fluid_detail/simulation/stable_fluids.h"
 
 #include <cmath>
 

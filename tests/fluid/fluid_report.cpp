@@ -2,7 +2,7 @@
 // run time of simulateCurtainDetail for the default and the two quality knobs with each pressure
 // solver, how far the two runs' flux frames drift apart, and one projection side by side (error
 // against a multigrid solve to a residual of 1e-12, divergence left, milliseconds per projection).
-#include "fluid/curtain_detail.h"
+#include "components/fluid_detail/simulation/curtain_detail.h"
 #include "flow_metrics.h"
 
 #include <algorithm>

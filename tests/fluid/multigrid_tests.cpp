@@ -1,7 +1,7 @@
 // The periodic multigrid Poisson solver: V-cycle convergence factor, second-order accuracy on a
 // manufactured problem, and the checkerboard mode that plain Jacobi cannot remove.
 #include "common/constants.h"
-#include "fluid/multigrid.h"
+#include "components/fluid_detail/simulation/multigrid.h"
 
 #include <gtest/gtest.h>
 

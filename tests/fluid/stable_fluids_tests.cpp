@@ -1,6 +1,6 @@
 // Stable Fluids on the MAC grid: the projection leaves a discretely divergence-free field and is
 // a Helmholtz–Hodge split; semi-Lagrangian advection moves things the right way and is monotone.
-#include "fluid/stable_fluids.h"
+#include "components/fluid_detail/simulation/stable_fluids.h"
 #include "common/constants.h"
 #include "flow_metrics.h"
 

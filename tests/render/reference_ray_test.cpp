@@ -2,7 +2,7 @@
 // render at its finest settings, and the reference's own convergence, on the substorm scene
 // (without stars and planet_texture, which the reference does not model).
 #include "app/accuracy_scene.h"
-#include "fluid/curtain_detail.h"
+#include "components/fluid_detail/simulation/curtain_detail.h"
 #include "gl/context.h"
 #include "components/fluid_detail/curtain_detail.h"
 #include "components/registry.h"

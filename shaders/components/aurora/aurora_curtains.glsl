@@ -1,7 +1,7 @@
 // Aurora curtains (Lawlor & Genetti 2011, sections 2-3): an emissive shell between
 // uAuroraBottomKm and uAuroraTopKm. Each curtain's footprint is a spline on the sphere, sampled on
 // the CPU into a dense polyline (a row of uCurtainPolylines: unit vector, arclength km). The
-// footprint map (a jump-flooded nearest-point map, shaders/aurora/footprint_map.glsl) gives, for
+// footprint map (a jump-flooded nearest-point map, shaders/components/aurora/footprint_map.glsl) gives, for
 // any point, the nearest curtain point and a conservative distance to it; the shader refines on
 // the segments around that point to exact curtain coordinates (s along, u across), so detail is
 // not limited by the map's texels. Emission = peak energy flux x profile(s, u) x the tabulated
@@ -84,7 +84,7 @@ CurtainHit sampleCurtains(vec3 p, float h)
     if (hit.skipKm > 0.0)
         return hit;
     // The nearest curtain, and where curtains overlap the nearest point of another one: the
-    // fluxes of overlapping curtains add (the map's fourth channel, src/aurora/footprint_map.h).
+    // fluxes of overlapping curtains add (the map's fourth channel, src/components/aurora/physics/footprint_map.h).
     vec4 candidates = vec4(nearest.x, nearest.y, -1.0, -1.0);
     if (nearest.w >= 0.0) {
         float second = floor(nearest.w / 65536.0);

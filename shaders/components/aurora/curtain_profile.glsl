@@ -18,7 +18,7 @@ float curtainProfile(int c, float s, float u)
     float across = u * detail.z; // in the simulation's km
     if (abs(across) >= 0.5 * uFluxStrip.y)
         return 0.0;
-    // Texel centres at (i + 1/2)/n on every axis (src/fluid/curtain_detail.h, docs/fluid.md).
+    // Texel centres at (i + 1/2)/n on every axis (src/components/fluid_detail/simulation/curtain_detail.h, docs/fluid.md).
     float frame = detail.y * (uFluxStrip.z - 1.0);
     vec3 coord = vec3((s + detail.x) / uFluxStrip.x, across / uFluxStrip.y + 0.5, (frame + 0.5) / uFluxStrip.z);
     return uFluxStrip.w * textureLod(uFluxFrames, coord, 0.0).r;

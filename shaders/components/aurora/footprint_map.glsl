@@ -1,4 +1,4 @@
-// The footprint map (src/aurora/footprint_map.h): an azimuthal equidistant projection of the sphere
+// The footprint map (src/components/aurora/physics/footprint_map.h): an azimuthal equidistant projection of the sphere
 // around a centre direction, mapping angle θ from the centre linearly to radius θ/Θ · 1/2 from the middle
 // of the [0, 1]² map (Snyder, "Map Projections — A Working Manual", USGS PP 1395, 1987, §25, oblique
 // aspect on the sphere). Map x points east at the centre, map y north: north = cross(centre, east).

@@ -1,8 +1,8 @@
 #include "components/airglow/airglow.h"
 
 #include "atmosphere/airmass_exact.h"
-#include "aurora/colour.h"
-#include "aurora/emission.h"
+#include "components/aurora/physics/colour.h"
+#include "components/aurora/physics/emission.h"
 #include "components/atmosphere/atmosphere.h"
 #include "gl/shader_program.h"
 #include "scene/ray_steps.h"

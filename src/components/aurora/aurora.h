@@ -1,7 +1,7 @@
 #pragma once
 // The aurora component (Lawlor & Genetti 2011): keyframed curtains of precipitating electrons in
 // an emissive shell, their light from Lazarev deposition and the emission lines' yields.
-#include "aurora/lazarev.h"
+#include "components/aurora/physics/lazarev.h"
 #include "scene/component.h"
 
 #include <glm/glm.hpp>
@@ -11,7 +11,7 @@
 
 namespace aurorawall::components::aurora {
 
-namespace physics = ::aurorawall::aurora; // src/aurora: deposition, emission lines, curtain geometry
+namespace physics = ::aurorawall::aurora; // src/components/aurora/physics: deposition, emission lines, curtain geometry
 
 // One keyframe of a curtain: its footprint (a spline on the sphere through latitude/longitude
 // control points) and its electrons at one moment of the substorm.
@@ -42,7 +42,7 @@ struct Settings : scene::SettingsOf<Settings> {
     double polylineSpacingKm = 2.0;   // curtain splines are sampled this finely for the shader
     int footprintMapSize = 512;       // texels per side of the jump-flooded footprint map
     bool skipEmptySpace = true;       // long steps where the footprint map proves no curtain is near
-    double tableAltitudeStepKm = 0.5; // deposition table resolution (src/aurora/deposition_table.h)
+    double tableAltitudeStepKm = 0.5; // deposition table resolution (src/components/aurora/physics/deposition_table.h)
     int tableEnergyCount = 128;
     std::vector<Curtain> curtains;
 };

@@ -12,7 +12,7 @@
 //     within reach, and exact jumps over the rest (the distance to the nearest curtain, less the
 //     reach, is a distance along the ray that cannot reach an emitting point).
 #include "components/aurora/curtain_model.h"
-#include "fluid/curtain_detail.h"
+#include "components/fluid_detail/simulation/curtain_detail.h"
 #include "scene/component.h"
 
 #include <glm/glm.hpp>

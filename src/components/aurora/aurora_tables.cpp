@@ -1,8 +1,8 @@
 #include "components/aurora/aurora_tables.h"
 
-#include "aurora/colour.h"
-#include "aurora/deposition_table.h"
-#include "aurora/emission.h"
+#include "components/aurora/physics/colour.h"
+#include "components/aurora/physics/deposition_table.h"
+#include "components/aurora/physics/emission.h"
 
 #include <chrono>
 #include <cstdio>

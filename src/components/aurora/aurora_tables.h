@@ -1,6 +1,6 @@
 #pragma once
 // The aurora component's precomputed tables on the GPU: Lazarev deposition over altitude and
-// electron energy (in decibels) and the emission-line yields over altitude (src/aurora), sampled
+// electron energy (in decibels) and the emission-line yields over altitude (src/components/aurora/physics), sampled
 // by shaders/components/aurora/deposition.glsl. Built once per rank at start-up, deterministically, so every
 // rank holds the same bytes.
 #include "gl/shader_program.h"

@@ -1,7 +1,7 @@
 #include "components/aurora/curtain_field.h"
 
-#include "aurora/curtain_geometry.h"
-#include "aurora/footprint_map.h"
+#include "components/aurora/physics/curtain_geometry.h"
+#include "components/aurora/physics/footprint_map.h"
 #include "common/constants.h"
 
 #include <algorithm>

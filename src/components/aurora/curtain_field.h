@@ -1,7 +1,7 @@
 #pragma once
 // The aurora's curtains for one frame, on the GPU: each curtain's spline sampled into a dense
 // polyline (one texture row each) and the jump-flooded footprint map that finds the nearest
-// curtain point from anywhere (src/aurora/footprint_map.h). Rebuilt on the CPU every frame from
+// curtain point from anywhere (src/components/aurora/physics/footprint_map.h). Rebuilt on the CPU every frame from
 // the master's animation time, deterministically, so every rank uploads the same bytes.
 #include "gl/shader_program.h"
 #include "gl/texture.h"

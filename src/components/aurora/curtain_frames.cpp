@@ -1,6 +1,6 @@
 #include "components/aurora/curtain_frames.h"
 
-#include "aurora/curtain_geometry.h"
+#include "components/aurora/physics/curtain_geometry.h"
 #include "common/constants.h"
 
 #include <algorithm>

@@ -6,7 +6,7 @@
 // its centre line it emits (its reach). With fluid detail the strip is sampled at
 // u * sigma_sim / sigma_curtain and emits within the frames' reach; without, the profile is a
 // Gaussian exp(-(u / sigma)^2 / 2), cut off at 4 sigma (sigma = thickness / 2).
-#include "aurora/curtain_geometry.h"
+#include "components/aurora/physics/curtain_geometry.h"
 #include "components/aurora/aurora.h"
 #include "components/aurora/curtain_frames.h"
 #include "components/fluid_detail/curtain_detail.h"

@@ -1,9 +1,9 @@
 #pragma once
-// The fluid_detail component on the GPU: the Kelvin-Helmholtz flux frames of src/fluid as a 3D
+// The fluid_detail component on the GPU: the Kelvin-Helmholtz flux frames of src/components/fluid_detail/simulation as a 3D
 // texture (along the curtain x, across it y, frame z; linear filtering, periodic along), with the
 // constants that turn a lookup into a profile of peak 1. Simulated once per rank at start-up;
 // the simulation is deterministic, so every rank holds the same frames.
-#include "fluid/curtain_detail.h"
+#include "components/fluid_detail/simulation/curtain_detail.h"
 #include "gl/shader_program.h"
 #include "gl/texture.h"
 #include "components/fluid_detail/fluid_detail.h"

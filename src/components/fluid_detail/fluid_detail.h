@@ -1,7 +1,7 @@
 #pragma once
 // The fluid_detail component: small-scale curtain detail from the Kelvin-Helmholtz stable-fluids
-// simulation (src/fluid), simulated once at start-up and sampled by the aurora's curtain profile.
-#include "fluid/curtain_detail.h"
+// simulation (src/components/fluid_detail/simulation), simulated once at start-up and sampled by the aurora's curtain profile.
+#include "components/fluid_detail/simulation/curtain_detail.h"
 #include "scene/component.h"
 
 namespace aurorawall::components::fluid_detail {

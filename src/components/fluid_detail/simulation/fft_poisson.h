@@ -1,7 +1,7 @@
 #pragma once
 // The periodic Poisson problem L p = f solved exactly by the discrete Fourier transform (FFTW).
 // See docs/fluid.md, "Pressure: FFT".
-#include "fluid/periodic_field.h"
+#include "components/fluid_detail/simulation/periodic_field.h"
 
 #include <memory>
 #include <vector>

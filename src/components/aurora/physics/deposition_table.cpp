@@ -1,7 +1,7 @@
-#include "aurora/deposition_table.h"
+#include "components/aurora/physics/deposition_table.h"
 
-#include "aurora/atmosphere_profile.h"
-#include "aurora/emission.h"
+#include "components/aurora/physics/atmosphere_profile.h"
+#include "components/aurora/physics/emission.h"
 #include "common/glsl.h"
 
 #include <algorithm>

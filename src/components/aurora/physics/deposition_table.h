@@ -1,7 +1,7 @@
 #pragma once
 // The aurora tables the shader samples (shaders/components/aurora/deposition.glsl): deposition over altitude ×
 // ln energy in decibels, and the per-altitude line yields. See docs/aurora-physics.md, "Tables".
-#include "aurora/lazarev.h"
+#include "components/aurora/physics/lazarev.h"
 
 #include <glm/glm.hpp>
 #include <vector>

@@ -1,6 +1,6 @@
-#include "aurora/lazarev.h"
+#include "components/aurora/physics/lazarev.h"
 
-#include "aurora/atmosphere_profile.h"
+#include "components/aurora/physics/atmosphere_profile.h"
 
 #include <boost/math/quadrature/exp_sinh.hpp>
 

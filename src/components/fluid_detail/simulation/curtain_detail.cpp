@@ -1,4 +1,4 @@
-#include "fluid/curtain_detail.h"
+#include "components/fluid_detail/simulation/curtain_detail.h"
 
 #include "common/constants.h"
 

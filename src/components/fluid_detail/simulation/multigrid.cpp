@@ -1,4 +1,4 @@
-#include "fluid/multigrid.h"
+#include "components/fluid_detail/simulation/multigrid.h"
 
 #include <cmath>
 #include <cstddef>

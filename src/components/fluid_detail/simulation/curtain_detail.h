@@ -4,10 +4,10 @@
 // few flux frames from smooth to turbulent, is wrapped along the curtain splines by the renderer.
 // CPU, serial and deterministic: every rank computes the same bytes at start-up.
 // See docs/fluid.md.
-#include "fluid/fft_poisson.h"
-#include "fluid/multigrid.h"
-#include "fluid/periodic_field.h"
-#include "fluid/stable_fluids.h"
+#include "components/fluid_detail/simulation/fft_poisson.h"
+#include "components/fluid_detail/simulation/multigrid.h"
+#include "components/fluid_detail/simulation/periodic_field.h"
+#include "components/fluid_detail/simulation/stable_fluids.h"
 
 #include <cstddef>
 #include <cstdint>

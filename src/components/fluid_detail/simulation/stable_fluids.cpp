@@ -1,4 +1,4 @@
-#include "fluid/stable_fluids.h"
+#include "components/fluid_detail/simulation/stable_fluids.h"
 
 #include <utility>
 

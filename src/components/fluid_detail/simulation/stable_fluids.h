@@ -1,9 +1,9 @@
 #pragma once
 // Stable Fluids (Stam 1999, SIGGRAPH '99, 121–128) on a doubly periodic staggered (MAC) grid:
 // semi-Lagrangian advection and a pressure projection solved by FFT or by multigrid. See docs/fluid.md.
-#include "fluid/fft_poisson.h"
-#include "fluid/multigrid.h"
-#include "fluid/periodic_field.h"
+#include "components/fluid_detail/simulation/fft_poisson.h"
+#include "components/fluid_detail/simulation/multigrid.h"
+#include "components/fluid_detail/simulation/periodic_field.h"
 
 namespace aurorawall::fluid {
 

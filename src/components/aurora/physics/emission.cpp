@@ -1,6 +1,6 @@
-#include "aurora/emission.h"
+#include "components/aurora/physics/emission.h"
 
-#include "aurora/atmosphere_profile.h"
+#include "components/aurora/physics/atmosphere_profile.h"
 
 #include <cmath>
 

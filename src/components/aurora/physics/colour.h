@@ -2,7 +2,7 @@
 // Colour and radiance of the auroral emissions: CIE 1931 XYZ → linear sRGB (IEC 61966-2-1),
 // gamut mapping by desaturation at constant luminance, rayleigh → radiance.
 // See docs/aurora-physics.md, "Colour" and "Units".
-#include "aurora/emission.h"
+#include "components/aurora/physics/emission.h"
 
 #include <glm/glm.hpp>
 

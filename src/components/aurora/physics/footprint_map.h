@@ -31,7 +31,7 @@
 //            + R·2Θ·1e-6  (the float lookup's coordinate error, tested below 1e-6 of the map width).
 // Outside the cap (θ > Θ) the map is not read: footprintMapOutsideKm = R(θ − Θ) > 0 is the bound, because
 // every curtain point lies inside the cap (the build checks this) and the cap is convex for Θ ≤ 90°.
-#include "aurora/curtain_geometry.h"
+#include "components/aurora/physics/curtain_geometry.h"
 
 #include <glm/glm.hpp>
 

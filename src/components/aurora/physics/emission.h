@@ -1,7 +1,7 @@
 #pragma once
 // Auroral emissions: altitude-dependent yields (photons per keV deposited) of the four emissions the
 // renderer draws, and their volume and column rates. See docs/aurora-physics.md, "Emission".
-#include "aurora/lazarev.h"
+#include "components/aurora/physics/lazarev.h"
 
 #include <glm/glm.hpp>
 

@@ -1,4 +1,4 @@
-#include "fluid/fft_poisson.h"
+#include "components/fluid_detail/simulation/fft_poisson.h"
 
 #include "common/constants.h"
 

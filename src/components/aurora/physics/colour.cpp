@@ -1,4 +1,4 @@
-#include "aurora/colour.h"
+#include "components/aurora/physics/colour.h"
 
 #include "common/constants.h"
 

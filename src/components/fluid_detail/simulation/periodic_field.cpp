@@ -1,4 +1,4 @@
-#include "fluid/periodic_field.h"
+#include "components/fluid_detail/simulation/periodic_field.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,7 +1,7 @@
 #pragma once
 // Geometric multigrid for the periodic Poisson problem L p = f (Briggs, Henson & McCormick,
 // "A Multigrid Tutorial", 2nd ed., SIAM 2000, chapters 3–4). See docs/fluid.md, "Pressure".
-#include "fluid/periodic_field.h"
+#include "components/fluid_detail/simulation/periodic_field.h"
 
 #include <vector>
 
