@@ -1,7 +1,6 @@
 #pragma once
 // Tone mapping of linear radiance to display values in [0, 1] for the 8-bit sRGB preview.
-// toneMapPixel is the per-pixel reference that the GLSL preview shader mirrors; the helpers below
-// are written with GLSL built-ins only so that their bodies translate one to one.
+// The curves are shaders/render/tone_map.glsl, the same text the window shader runs, here in double.
 #include <glm/vec3.hpp>
 
 namespace aurorawall::io {
@@ -22,17 +21,13 @@ struct ToneMap {
 //   3. the curve; 4. clamp to [0, 1].
 glm::dvec3 toneMapPixel(glm::dvec3 radiance, const ToneMap& toneMap);
 
-// sRGB transfer function (OETF) of IEC 61966-2-1, linear -> encoded, for linear in [0, 1]:
-// 12.92 x for x <= 0.0031308, else 1.055 x^(1/2.4) - 0.055.
+// The curve's code in tone_map.glsl (TONE_MAP_ACES_FILMIC, TONE_MAP_MAGNITUDE_GAMMA), for uniforms.
+int toneCurveCode(ToneMap::Curve curve);
+
+// The pieces of tone_map.glsl in double (see there): the sRGB transfer function, Narkowicz's ACES
+// fit (clamped to [0, 1]) and Lawlor & Genetti's magnitude-preserving gamma (not clamped).
 double srgbEncode(double linear);
-
-// Narkowicz 2015, "ACES Filmic Tone Mapping Curve": x (2.51 x + 0.03) / (x (2.43 x + 0.59) + 0.14),
-// clamped to [0, 1] (his saturate); applied per component to non-negative linear values.
 glm::dvec3 acesFilmic(glm::dvec3 x);
-
-// Lawlor & Genetti, magnitude-preserving gamma: color * pow(length(color), 1/2.2 - 1), so the
-// colour keeps its direction (hue and saturation) and its length becomes length^(1/2.2).
-// Black stays black. The result is display-encoded; it is not clamped here.
 glm::dvec3 magnitudeGamma(glm::dvec3 color);
 
 } // namespace aurorawall::io

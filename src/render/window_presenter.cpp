@@ -7,6 +7,7 @@ namespace {
 gl::ShaderSource displayShader(const std::string& shaderDir)
 {
     gl::ShaderSource source;
+    source.modules.push_back(gl::readShaderModule(shaderDir + "/render/tone_map.glsl"));
     source.modules.push_back(gl::readShaderModule(shaderDir + "/render/display.frag"));
     return source;
 }
@@ -17,7 +18,7 @@ WindowPresenter::WindowPresenter(const std::string& shaderDir, const io::ToneMap
     : program_(gl::Program::graphics(gl::fullScreenTriangleVertexShader(), displayShader(shaderDir)))
 {
     program_.set("uExposure", static_cast<float>(toneMap.exposure));
-    program_.set("uCurve", toneMap.curve == io::ToneMap::Curve::AcesFilmic ? 0 : 1);
+    program_.set("uCurve", io::toneCurveCode(toneMap.curve));
 }
 
 void WindowPresenter::present(gl::Context& context, int window, const gl::FloatTarget& tile,

@@ -14,10 +14,12 @@
 // Named (not anonymous) namespaces, so the functions this file does not call raise no warnings.
 namespace aurorawall::aurora::footprint_tests_f64 {
 AURORAWALL_GLSL_PRECISION(double)
+#include "render/angle.glsl"
 #include "components/aurora/footprint_map.glsl"
 } // namespace aurorawall::aurora::footprint_tests_f64
 namespace aurorawall::aurora::footprint_tests_f32 {
 AURORAWALL_GLSL_PRECISION(float)
+#include "render/angle.glsl"
 #include "components/aurora/footprint_map.glsl"
 } // namespace aurorawall::aurora::footprint_tests_f32
 
@@ -219,7 +221,7 @@ TEST(FootprintMap, SecondCurtainAgainstBruteForce)
     for (int j = 0; j < spec.size; ++j)
         for (int i = 0; i < spec.size; ++i) {
             const glm::dvec3 here = footprintTexelDirection(map, i, j);
-            if (f64::footprintAngle(here, map.centre) > map.angularRadius)
+            if (f64::angleBetween(here, map.centre) > map.angularRadius)
                 continue;
             const float* texel = &map.texels[4 * (size_t(j) * spec.size + i)];
             if (texel[2] > spec.reachKm)

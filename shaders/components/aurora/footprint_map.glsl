@@ -3,17 +3,11 @@
 // of the [0, 1]² map (Snyder, "Map Projections — A Working Manual", USGS PP 1395, 1987, §25, oblique
 // aspect on the sphere). Map x points east at the centre, map y north: north = cross(centre, east).
 // One text for GLSL and C++ (src/common/glsl.h): `real` is float on the GPU, float or double on the CPU.
+// Needs render/angle.glsl.
 //
 // Uniform conventions: centre and east are unit vectors (east ⟂ centre), angularRadius Θ in radians
 // (0 < Θ ≤ π/2), size = N texels per side, texel (i, j) covers [i, i + 1]/N × [j, j + 1]/N, j = 0 the
 // bottom row (the first row uploaded).
-
-// Angle between unit vectors a and b, accurate at all angles (Kahan 2006, "How futile are mindless
-// assessments of roundoff in floating-point computation?", §12): θ = 2 atan(|a − b| / |a + b|).
-real footprintAngle(vec3 a, vec3 b)
-{
-    return real(2.0) * atan(length(a - b) / length(a + b));
-}
 
 // Map coordinate of a unit direction d. With x = d·east, y = d·north we have (x, y) = sin θ (cos α, sin α),
 // α the azimuth, so the equidistant position (θ/Θ)(cos α, sin α)/2 + 1/2 is (x, y) · θ/(2Θ sin θ) + 1/2.
@@ -22,7 +16,7 @@ vec2 footprintMapCoord(vec3 unitDir, vec3 centre, vec3 east, real angularRadius)
     vec3 north = cross(centre, east);
     vec2 xy = vec2(dot(unitDir, east), dot(unitDir, north));
     real sinTheta = length(xy);
-    real theta = footprintAngle(unitDir, centre);
+    real theta = angleBetween(unitDir, centre);
     real thetaOverSin = sinTheta > real(0.0) ? theta / sinTheta : real(1.0);
     return vec2(real(0.5), real(0.5)) + (real(0.5) * thetaOverSin / angularRadius) * xy;
 }
@@ -50,7 +44,7 @@ vec2 footprintMapTexel(vec2 coord, real size)
 // curtain (the "far" case: the map is not read there).
 real footprintMapOutsideKm(vec3 unitDir, vec3 centre, real angularRadius, real planetRadiusKm)
 {
-    return planetRadiusKm * (footprintAngle(unitDir, centre) - angularRadius);
+    return planetRadiusKm * (angleBetween(unitDir, centre) - angularRadius);
 }
 
 // Lower bound in km of the distance from any point of a texel to the nearest curtain polyline: the texel's

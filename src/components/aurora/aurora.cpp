@@ -121,7 +121,7 @@ public:
     }
     std::vector<std::string> shaderModules() const override
     {
-        return {"components/aurora/deposition_coords.glsl", "components/aurora/deposition.glsl",
+        return {"render/angle.glsl", "components/aurora/deposition_coords.glsl", "components/aurora/deposition.glsl",
                 "components/aurora/footprint_map.glsl", "components/aurora/curtain_profile.glsl",
                 "components/aurora/segment_projection.glsl",
                 "components/aurora/aurora_curtains.glsl"};

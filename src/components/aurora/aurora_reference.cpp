@@ -8,6 +8,7 @@
 
 namespace aurorawall::f64 {
 namespace {
+#include "render/angle.glsl"
 #include "components/aurora/segment_projection.glsl"
 } // namespace
 } // namespace aurorawall::f64
@@ -17,16 +18,6 @@ namespace {
 #include <limits>
 
 namespace aurorawall::components::aurora {
-
-namespace {
-
-// Angle between unit vectors, accurate at all angles (Kahan): 2 atan(|a - b| / |a + b|).
-double angleBetween(glm::dvec3 a, glm::dvec3 b)
-{
-    return 2.0 * std::atan(glm::length(a - b) / glm::length(a + b));
-}
-
-} // namespace
 
 AuroraReference::AuroraReference(const Settings& aurora, double planetRadiusKm, double timeS, double stepKm,
                                  const fluid::FluxFrames* frames, const fluid::CurtainDetailSpec& spec)
@@ -41,7 +32,7 @@ AuroraReference::AuroraReference(const Settings& aurora, double planetRadiusKm, 
         c.points = std::move(now.polyline.points);
         c.arclengthKm = std::move(now.polyline.arclengthKm);
         for (size_t j = 0; j + 1 < c.points.size(); ++j)
-            c.maxSegmentKm = std::max(c.maxSegmentKm, planetRadiusKm * angleBetween(c.points[j], c.points[j + 1]));
+            c.maxSegmentKm = std::max(c.maxSegmentKm, planetRadiusKm * f64::angleBetween(c.points[j], c.points[j + 1]));
         c.state = now.state;
         c.lateralScale = now.lateralScale;
         curtains_.push_back(std::move(c));

@@ -1,6 +1,7 @@
 #include "components/aurora/physics/curtain_geometry.h"
 
 #include "common/constants.h"
+#include "common/glsl.h"
 
 #include <algorithm>
 #include <cmath>
@@ -9,13 +10,11 @@
 namespace aurorawall::aurora {
 namespace {
 
-
-// Angle between unit vectors a and b, accurate at all angles (Kahan, "How futile are mindless
-// assessments of roundoff in floating-point computation?", 2006, §12): θ = 2 atan(|a − b| / |a + b|).
-double angleBetween(const glm::dvec3& a, const glm::dvec3& b)
-{
-    return 2.0 * std::atan2(glm::length(a - b), glm::length(a + b));
-}
+namespace f64 {
+AURORAWALL_GLSL_PRECISION(double)
+#include "render/angle.glsl"
+} // namespace f64
+using f64::angleBetween;
 
 // One span of the centripetal Catmull–Rom spline as a cubic Hermite curve on u ∈ [0, 1]:
 // Q(u) = h00 P1 + h10 m1 + h01 P2 + h11 m2 with the Barry–Goldman tangents for knots t0 < t1 < t2 < t3,

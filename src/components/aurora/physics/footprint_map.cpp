@@ -15,6 +15,7 @@ namespace {
 
 namespace f64 {
 AURORAWALL_GLSL_PRECISION(double)
+#include "render/angle.glsl"
 #include "components/aurora/footprint_map.glsl"
 } // namespace f64
 
@@ -213,11 +214,11 @@ FootprintMap buildFootprintMap(const std::vector<CurtainPolyline>& curtains, con
         if (points.size() >= static_cast<size_t>(kSecondPointStride))
             throw std::invalid_argument("buildFootprintMap: too many points in a curtain");
         for (size_t k = 0; k < points.size(); ++k) {
-            if (f64::footprintAngle(points[k], map.centre) > map.angularRadius)
+            if (f64::angleBetween(points[k], map.centre) > map.angularRadius)
                 throw std::invalid_argument("buildFootprintMap: curtain " + std::to_string(c) + " point " +
                                             std::to_string(k) + " lies outside the map's cap");
             if (k > 0)
-                longestArc = std::max(longestArc, f64::footprintAngle(points[k - 1], points[k]));
+                longestArc = std::max(longestArc, f64::angleBetween(points[k - 1], points[k]));
             seeds.direction.push_back(points[k]);
             seeds.curtain.push_back(static_cast<int>(c));
             seeds.point.push_back(static_cast<int>(k));
@@ -256,7 +257,7 @@ FootprintMap buildFootprintMap(const std::vector<CurtainPolyline>& curtains, con
     std::vector<float> coarseBound(coarseNearest.size());
     for (size_t t = 0; t < coarseNearest.size(); ++t)
         coarseBound[t] = roundedDown(std::max(
-            map.exactWithinKm, R * f64::footprintAngle(coarseDirection[t], seeds.direction[coarseNearest[t]]) - slackKm));
+            map.exactWithinKm, R * f64::angleBetween(coarseDirection[t], seeds.direction[coarseNearest[t]]) - slackKm));
 
     for (int j = 0; j < n; ++j)
         for (int i = 0; i < n; ++i) {
@@ -267,7 +268,7 @@ FootprintMap buildFootprintMap(const std::vector<CurtainPolyline>& curtains, con
                 texel[0] = static_cast<float>(seeds.curtain[s]);
                 texel[1] = static_cast<float>(seeds.point[s]);
                 texel[2] = roundedDown(
-                    R * f64::footprintAngle(band.direction[static_cast<size_t>(band.slot[t])], seeds.direction[s]));
+                    R * f64::angleBetween(band.direction[static_cast<size_t>(band.slot[t])], seeds.direction[s]));
                 const int s2 = band.second[t];
                 texel[3] = s2 == none ? -1.0f
                                       : static_cast<float>(seeds.curtain[s2] * kSecondPointStride + seeds.point[s2]);
