@@ -2,6 +2,7 @@
 #include "app/accuracy_command.h"
 #include "app/airmass_command.h"
 #include "app/cli/exit_status.h"
+#include "app/mie_command.h"
 #include "app/render_command.h"
 #include "app/tables_command.h"
 
@@ -21,6 +22,7 @@ const char* kUsage =
     "  airmass   airmass integrals along rays read from standard input (CSV), by a chosen method\n"
     "  tables    print the precomputed physics tables (e.g. tables deposition --energy-kev 5)\n"
     "  accuracy  error against cost of the approximations (accuracy --airmass | --sky | --scene FILE)\n"
+    "  mie       exact Mie scattering by one sphere (mie --n 1.33 --k 0 --x 100 [--angles-deg 0,180])\n"
     "\n"
     "Exit status, the same for every command (and, under mpirun, on every rank):\n"
     "  0  success\n"
@@ -32,7 +34,7 @@ const char* kUsage =
     "     options that contradict each other, or a number of MPI ranks other than the wall file's\n"
     "Errors are one line on stderr: \"aurorawall COMMAND: ...\", naming the option or FILE:LINE.\n";
 
-const char* kCommands = "render, airmass, tables, accuracy";
+const char* kCommands = "render, airmass, tables, accuracy, mie";
 
 } // namespace
 
@@ -54,6 +56,8 @@ int main(int argc, char** argv)
         return app::runTablesCommand(argc - 1, argv + 1, std::cout, std::cerr);
     if (command == "accuracy")
         return app::runAccuracyCommand(argc - 1, argv + 1, std::cout, std::cerr);
+    if (command == "mie")
+        return app::runMieCommand(argc - 1, argv + 1, std::cout, std::cerr);
     if (command.empty())
         std::cerr << cli::errorLine("", std::string("missing command (allowed: ") + kCommands + ")" + seeHelp) << "\n";
     else if (command[0] == '-')

@@ -4,6 +4,7 @@
 #include "app/airmass_command.h"
 #include "app/cli/command_line.h"
 #include "app/cli/exit_status.h"
+#include "app/mie_command.h"
 #include "app/render_options.h"
 #include "app/tables_command.h"
 #include "atmosphere/airmass.h"
@@ -319,6 +320,94 @@ TEST(AccuracyCommand, UnreadableSceneIsARuntimeFailure)
     EXPECT_EQ(r.status, 1);
     EXPECT_NE(r.err.find("/nonexistent/scene.toml"), std::string::npos) << r.err;
     EXPECT_EQ(lines(r.err).size(), 1u) << r.err;
+}
+
+// ---- mie ----
+
+Result runMie(std::vector<std::string> words)
+{
+    words.insert(words.begin(), "mie");
+    Args args(std::move(words));
+    std::ostringstream out, err;
+    const int status = runMieCommand(args.argc(), args.argv(), out, err);
+    return {status, out.str(), err.str()};
+}
+
+std::vector<double> csvNumbers(const std::string& row)
+{
+    std::vector<double> values;
+    std::istringstream in(row);
+    for (std::string cell; std::getline(in, cell, ',');) values.push_back(std::stod(cell));
+    return values;
+}
+
+// Wiscombe's MIEV0 values for water, m = 1.33 − 1e-5 i, x = 100, through the command line.
+TEST(MieCommand, PrintsEfficienciesAndAmplitudes)
+{
+    Result r = runMie({"--n", "1.33", "--k", "1e-5", "--x", "100", "--angles-deg", "0,1,2.5,180"});
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_TRUE(r.err.empty());
+    const std::vector<std::string> rows = lines(r.out);
+    ASSERT_EQ(rows.size(), 8u) << r.out;
+    EXPECT_EQ(rows[0], "x,n,k,terms,qext,qsca,qabs,qback,g,s1_0_re,s1_0_im,s1_180_re,s1_180_im");
+    const std::vector<double> row = csvNumbers(rows[1]);
+    ASSERT_EQ(row.size(), 13u);
+    EXPECT_EQ(row[3], 120.0);
+    EXPECT_NEAR(row[4], 2.101321, 0.5e-6);
+    EXPECT_NEAR(row[5], 2.096594, 0.5e-6);
+    EXPECT_NEAR(row[8], 0.868959, 0.5e-6);
+    EXPECT_NEAR(row[9], 5253.302, 0.5e-3);
+    EXPECT_NEAR(row[10], -124.3188, 0.5e-4);
+    EXPECT_NEAR(row[11], -56.59205, 0.5e-5);
+    EXPECT_NEAR(row[12], 46.50974, 0.5e-5);
+    EXPECT_EQ(rows[2], "");
+    EXPECT_EQ(rows[3], "angle_deg,i_parallel,i_perpendicular,s1_re,s1_im,s2_re,s2_im");
+    const std::vector<double> forward = csvNumbers(rows[4]), backward = csvNumbers(rows[7]);
+    EXPECT_EQ(forward[0], 0.0);
+    EXPECT_EQ(forward[3], row[9]);
+    EXPECT_EQ(forward[4], row[10]);
+    EXPECT_EQ(backward[0], 180.0);
+    EXPECT_EQ(backward[3], row[11]);
+    EXPECT_EQ(backward[5], -row[11]); // S2(180°) = −S1(180°)
+    EXPECT_EQ(csvNumbers(rows[5])[0], 1.0);
+    EXPECT_EQ(csvNumbers(rows[6])[0], 2.5);
+}
+
+TEST(MieCommand, WithoutAnglesOneBlock)
+{
+    Result r = runMie({"--n", "1.5", "--k", "0", "--x", "10"});
+    ASSERT_EQ(r.status, 0) << r.err;
+    ASSERT_EQ(lines(r.out).size(), 2u) << r.out;
+    EXPECT_NEAR(csvNumbers(lines(r.out)[1])[4], 2.881999, 0.5e-6);
+}
+
+TEST(MieCommand, BadOptionsNameTheOptionAndExit2)
+{
+    const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
+        {{"--n", "1.33", "--k", "0", "--x", "0"}, "--x"},
+        {{"--n", "1.33", "--k", "0", "--x", "-2"}, "--x"},
+        {{"--n", "0.9", "--k", "0", "--x", "1"}, "--n"},
+        {{"--n", "1.33", "--k", "-0.1", "--x", "1"}, "--k"},
+        {{"--n", "nan", "--k", "0", "--x", "1"}, "--n"},
+        {{"--n", "1.33", "--k", "0", "--x", "nan"}, "--x"},
+        {{"--n", "1.33", "--k", "0", "--x", "inf"}, "--x"},
+        {{"--n", "1.33", "--k", "0", "--x"}, "'--x'"},
+        {{"--n", "1.33", "--x", "1"}, "'--k'"},
+        {{"--n", "1.33", "--k", "0", "--x", "abc"}, "'--x'"},
+        {{"--n", "1.33", "--k", "0", "--x", "1", "--angles-deg", "0,,3"}, "--angles-deg"},
+        {{"--n", "1.33", "--k", "0", "--x", "1", "--angles-deg", "0,200"}, "--angles-deg"},
+        {{"--n", "1.33", "--k", "0", "--x", "1", "--angles-deg", "1;2"}, "--angles-deg"},
+        {{"--n", "1.33", "--k", "0", "--x", "1", "--angles-deg", "nan"}, "--angles-deg"},
+        {{"--n", "1.33", "--k", "0", "--x", "1", "--bogus"}, "--bogus"},
+    };
+    for (const auto& [words, named] : cases) {
+        Result r = runMie(words);
+        EXPECT_EQ(r.status, 2) << named;
+        EXPECT_TRUE(r.out.empty()) << named;
+        EXPECT_NE(r.err.find(named), std::string::npos) << r.err;
+        EXPECT_EQ(r.err.rfind("aurorawall mie: ", 0), 0u) << r.err;
+        EXPECT_EQ(lines(r.err).size(), 1u) << r.err;
+    }
 }
 
 } // namespace

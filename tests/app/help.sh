@@ -57,7 +57,7 @@ expect() {
 # aurorawall itself.
 expect 0 "Exit status" --help
 expect 2 "^aurorawall: unrecognised option '--bogus'" --bogus
-expect 2 "^aurorawall: unknown command 'bogus' \(allowed: render, airmass, tables, accuracy\)" bogus
+expect 2 "^aurorawall: unknown command 'bogus' \(allowed: render, airmass, tables, accuracy, mie\)" bogus
 expect 2 "^aurorawall: missing command" 
 
 # render (a singleton MPI process without mpirun).
@@ -90,4 +90,19 @@ expect 2 "^aurorawall accuracy: unrecognised option '--bogus'" accuracy --bogus
 expect 2 "^aurorawall accuracy: choose --airmass, --sky or --scene FILE" accuracy
 expect 2 "^aurorawall accuracy: --repeat applies to --airmass and --sky only" accuracy --scene "$SCENE" --repeat 4
 expect 1 "^aurorawall accuracy: .*nonexistent-scene\.toml" accuracy --scene "$WORK/nonexistent-scene.toml"
+
+# mie: exact Mie scattering by one sphere.
+grep -Eq "^ +mie " <<<"$top" || fail "aurorawall --help does not list the command 'mie'"
+expect 0 "--angles-deg" mie --help
+expect 2 "^aurorawall mie: unrecognised option '--bogus'" mie --n 1.33 --k 0 --x 1 --bogus
+expect 2 "^aurorawall mie: --x must be in \(0, " mie --n 1.33 --k 0 --x 0
+expect 2 "^aurorawall mie: --n must be in \[1, " mie --n 0.5 --k 0 --x 1
+expect 2 "^aurorawall mie: --k must be in \[0, " mie --n 1.33 --k -1 --x 1
+expect 2 "^aurorawall mie: --n must be in .*got nan" mie --n nan --k 0 --x 1
+expect 2 "^aurorawall mie: .*'--x' is missing" mie --n 1.33 --k 0 --x
+expect 2 "^aurorawall mie: --angles-deg: 'a' is not an angle" mie --n 1.33 --k 0 --x 1 --angles-deg 0,a
+"$AW" mie --n 1.5 --k 0 --x 10 --angles-deg 0,180 >"$WORK/mie.csv" || fail "aurorawall mie: exit status $?"
+[ "$(sed -n 1p "$WORK/mie.csv" | cut -d, -f5)" = qext ] && [ "$(sed -n 2p "$WORK/mie.csv" | cut -d, -f5)" = 2.881998952 ] ||
+    fail "aurorawall mie --n 1.5 --k 0 --x 10: Qext is not Wiscombe's 2.881999: $(cat "$WORK/mie.csv")"
+echo "ok   0  aurorawall mie --n 1.5 --k 0 --x 10: Qext $(sed -n 2p "$WORK/mie.csv" | cut -d, -f5)"
 echo "PASS help"
