@@ -10,9 +10,7 @@ enum class Backend {
     Glfw,   // one window per screen, on an X display
 };
 
-// "egl", "osmesa" or "glfw"; throws aurorawall::InputError naming --backend otherwise.
-Backend parseBackend(const std::string& name);
-
+// "egl", "osmesa" or "glfw" (the words of --backend, parsed by src/app/render_options.cpp).
 std::string backendName(Backend backend);
 
 } // namespace aurorawall::gl

@@ -2,6 +2,7 @@
 
 #include "io/jpeg.h"
 
+#include <chrono>
 #include <cmath>
 #include <filesystem>
 
@@ -19,6 +20,7 @@ float srgbDecode(float v)
 
 NightLights::NightLights(const Settings& planet)
 {
+    const auto start = std::chrono::steady_clock::now();
     if (!std::filesystem::is_regular_file(planet.nightImage)) {
         summary_ = "planet_texture: " + planet.nightImage + " not found (install xplanet-images); uniform ground";
         texture_ = std::make_unique<gl::Texture>(
@@ -37,8 +39,9 @@ NightLights::NightLights(const Settings& planet)
                                                                    gl::Filter::Linear, gl::Wrap::Repeat));
     texture_->upload(texels);
     radiance_ = static_cast<float>(planet.nightLightsRadiance);
+    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     summary_ = "planet_texture: " + planet.nightImage + " " + std::to_string(image.width) + " x " +
-               std::to_string(image.height);
+               std::to_string(image.height) + ": " + std::to_string(static_cast<long>(ms)) + " ms";
 }
 
 void NightLights::bind(gl::Program& program) const
