@@ -121,6 +121,14 @@ public:
     virtual std::unique_ptr<ReferenceShader> makeReference(const Scene& scene, const ReferenceContext& context) const = 0;
 };
 
+// A component whose settings are S (S::kComponent is its name): the name and the defaults.
+template <class S>
+class ComponentWith : public Component {
+public:
+    std::string name() const override { return S::kComponent; }
+    std::unique_ptr<ComponentSettings> defaultSettings() const override { return std::make_unique<S>(); }
+};
+
 using Registry = std::vector<const Component*>;
 
 } // namespace aurorawall::scene

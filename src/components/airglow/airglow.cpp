@@ -92,11 +92,9 @@ Layer readLayer(const config::TableReader& t)
     return l;
 }
 
-class Airglow : public scene::Component {
+class Airglow : public scene::ComponentWith<Settings> {
 public:
-    std::string name() const override { return Settings::kComponent; }
     std::vector<std::string> needs() const override { return {"planet"}; }
-    std::unique_ptr<scene::ComponentSettings> defaultSettings() const override { return std::make_unique<Settings>(); }
     void read(const config::TableReader& t, scene::Scene& scene, scene::ComponentSettings& settings) const override
     {
         auto& s = dynamic_cast<Settings&>(settings);

@@ -45,11 +45,9 @@ private:
     double radiusKm_;
 };
 
-class Atmosphere : public scene::Component {
+class Atmosphere : public scene::ComponentWith<Settings> {
 public:
-    std::string name() const override { return Settings::kComponent; }
     std::vector<std::string> needs() const override { return {"planet"}; }
-    std::unique_ptr<scene::ComponentSettings> defaultSettings() const override { return std::make_unique<Settings>(); }
     void read(const config::TableReader& t, scene::Scene&, scene::ComponentSettings& settings) const override
     {
         auto& s = dynamic_cast<Settings&>(settings);

@@ -85,11 +85,9 @@ Curtain readCurtain(const config::TableReader& t)
     return c;
 }
 
-class Aurora : public scene::Component {
+class Aurora : public scene::ComponentWith<Settings> {
 public:
-    std::string name() const override { return Settings::kComponent; }
     std::vector<std::string> needs() const override { return {"planet"}; }
-    std::unique_ptr<scene::ComponentSettings> defaultSettings() const override { return std::make_unique<Settings>(); }
     void read(const config::TableReader& t, scene::Scene& scene, scene::ComponentSettings& settings) const override
     {
         auto& a = dynamic_cast<Settings&>(settings);

@@ -10,11 +10,9 @@ namespace {
 // The aurora's curtain profile samples these frames (shaders/components/aurora/curtain_profile.glsl
 // under HAS_FLUID_DETAIL), and the aurora's reference samples them in double: the component adds no
 // shader module and no reference step of its own.
-class FluidDetail : public scene::Component {
+class FluidDetail : public scene::ComponentWith<Settings> {
 public:
-    std::string name() const override { return Settings::kComponent; }
     std::vector<std::string> needs() const override { return {"aurora"}; }
-    std::unique_ptr<scene::ComponentSettings> defaultSettings() const override { return std::make_unique<Settings>(); }
     void read(const config::TableReader& t, scene::Scene&, scene::ComponentSettings& settings) const override
     {
         auto& f = dynamic_cast<Settings&>(settings);

@@ -43,10 +43,8 @@ private:
     double radiusKm_;
 };
 
-class Planet : public scene::Component {
+class Planet : public scene::ComponentWith<Settings> {
 public:
-    std::string name() const override { return Settings::kComponent; }
-    std::unique_ptr<scene::ComponentSettings> defaultSettings() const override { return std::make_unique<Settings>(); }
     void read(const config::TableReader& t, scene::Scene& scene, scene::ComponentSettings& settings) const override
     {
         auto& s = dynamic_cast<Settings&>(settings);

@@ -18,11 +18,9 @@ private:
     NightLights lights_;
 };
 
-class PlanetTexture : public scene::Component {
+class PlanetTexture : public scene::ComponentWith<Settings> {
 public:
-    std::string name() const override { return Settings::kComponent; }
     std::vector<std::string> needs() const override { return {"planet"}; }
-    std::unique_ptr<scene::ComponentSettings> defaultSettings() const override { return std::make_unique<Settings>(); }
     void read(const config::TableReader& t, scene::Scene&, scene::ComponentSettings& settings) const override
     {
         auto& s = dynamic_cast<Settings&>(settings);

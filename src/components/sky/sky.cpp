@@ -48,11 +48,9 @@ Light readLight(const config::TableReader& t)
     return l;
 }
 
-class Sky : public scene::Component {
+class Sky : public scene::ComponentWith<Settings> {
 public:
-    std::string name() const override { return Settings::kComponent; }
     std::vector<std::string> needs() const override { return {"atmosphere"}; }
-    std::unique_ptr<scene::ComponentSettings> defaultSettings() const override { return std::make_unique<Settings>(); }
     void read(const config::TableReader& t, scene::Scene&, scene::ComponentSettings& settings) const override
     {
         auto& s = dynamic_cast<Settings&>(settings);

@@ -20,10 +20,8 @@ private:
     const Settings& s_;
 };
 
-class Stars : public scene::Component {
+class Stars : public scene::ComponentWith<Settings> {
 public:
-    std::string name() const override { return Settings::kComponent; }
-    std::unique_ptr<scene::ComponentSettings> defaultSettings() const override { return std::make_unique<Settings>(); }
     void read(const config::TableReader& t, scene::Scene&, scene::ComponentSettings& settings) const override
     {
         auto& s = dynamic_cast<Settings&>(settings);
