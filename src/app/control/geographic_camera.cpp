@@ -21,6 +21,8 @@ GeographicPose poseOf(const scene::Camera& camera, double planetRadiusKm)
     p.pitchDeg = std::asin(std::clamp(glm::dot(f, local.up), -1.0, 1.0)) / kDegree;
     const double heading = std::atan2(glm::dot(f, local.east), glm::dot(f, local.north)) / kDegree;
     p.headingDeg = heading < 0 ? heading + 360.0 : heading;
+    if (p.headingDeg >= 360.0) // -1e-15 + 360 rounds to 360
+        p.headingDeg = 0.0;
     return p;
 }
 
