@@ -2,10 +2,13 @@
 
 #include "app/band_frame.h"
 #include "app/band_split.h"
+#include "app/control/remote_control.h"
+#include "app/wall_output.h"
 #include "cluster/frame_message.h"
 #include "cluster/master_clock.h"
 #include "cluster/rank_message.h"
 #include "common/clock.h"
+#include "io/png.h"
 
 #include <cstdio>
 #include <optional>
@@ -32,6 +35,23 @@ double pixelsPerFrame(const wall::Wall& wall)
     return pixels;
 }
 
+// The master writes the gathered wall for each screenshot asked for and answers its client.
+void writeScreenshots(WallSession& session, const io::Image& canvas, int gatherStatus,
+                      const std::vector<control::ScreenshotRequest>& screenshots)
+{
+    for (const control::ScreenshotRequest& shot : screenshots) {
+        std::string answer = "ok screenshot " + shot.path;
+        try {
+            if (gatherStatus != 0)
+                throw std::runtime_error("the wall could not be read back");
+            io::writePng(shot.path, canvas, session.toneMap); // atomic: a temporary name, then renamed
+        } catch (const std::exception& e) {
+            answer = "error screenshot " + shot.path + ": " + e.what();
+        }
+        session.control->answer(shot.client, answer);
+    }
+}
+
 } // namespace
 
 cluster::FrameStats runFrames(WallSession& session, const cluster::MpiWorld& world)
@@ -48,17 +68,36 @@ cluster::FrameStats runFrames(WallSession& session, const cluster::MpiWorld& wor
     BandFrame bands(session.wall, session.bands, world.rank(), session.balanced);
     cluster::FrameStats stats(pixelsPerFrame(session.wall));
     bool stopRequested = false;
+    control::WallStatus wallStatus;
+    std::vector<control::ScreenshotRequest> screenshots;
     std::vector<char> message(cluster::frameMessageBytes(bandCount));
     auto waitStart = SteadyClock::now(); // from this rank's previous report to this frame's message
+    auto previousFrameStart = SteadyClock::now();
     while (true) {
-        // 1. The master decides the frame; one broadcast tells every rank.
+        // 1. The master carries out the remote control's commands and decides the frame; one
+        // broadcast tells every rank.
         const auto frameStart = SteadyClock::now();
-        if (world.isMaster())
-            message = cluster::packFrameMessage({clock->next(stopRequested), split->next(), {}}, bandCount);
+        if (world.isMaster()) {
+            if (session.control) {
+                if (!stats.records().empty()) // over the last frame: drawing, gathering, commands
+                    wallStatus.fps = 1.0 / std::chrono::duration<double>(frameStart - previousFrameStart).count();
+                const control::FrameRequests requests =
+                    control::serveCommands(*session.control, *clock, wallStatus, session.scene.planetRadiusKm);
+                stopRequested = stopRequested || requests.quit;
+                screenshots = requests.screenshots;
+            }
+            cluster::FrameState state = clock->next(stopRequested);
+            state.gatherWall = !screenshots.empty();
+            message = cluster::packFrameMessage({state, split->next(), {}}, bandCount);
+        }
+        previousFrameStart = frameStart;
         world.broadcast(message);
         const cluster::FrameMessage frame = cluster::unpackFrameMessage(message, bandCount);
-        if (frame.state.quit)
+        if (frame.state.quit) {
+            for (const control::ScreenshotRequest& shot : screenshots)
+                session.control->answer(shot.client, "error screenshot " + shot.path + ": the wall is quitting");
             break;
+        }
         cluster::RankMessage mine;
         cluster::RankReport& report = mine.report;
         report.frame = frame.state.frame;
@@ -106,7 +145,17 @@ cluster::FrameStats runFrames(WallSession& session, const cluster::MpiWorld& wor
                 std::printf("%s\n", stats.frameLine(record).c_str());
             if (session.options.verbose)
                 std::printf("  %s\n", session.renderer->frameLog().c_str());
+            wallStatus.frame = record.frame;
             stats.add(std::move(record));
+        }
+
+        // 5. A screenshot: every rank sends its screens, the master writes the wall.
+        if (frame.state.gatherWall) {
+            io::Image canvas;
+            const int status = gatherWallImage(session, world, canvas);
+            if (world.isMaster())
+                writeScreenshots(session, canvas, status, screenshots);
+            screenshots.clear();
         }
     }
     return stats;

@@ -9,7 +9,8 @@
 
 namespace aurorawall::app {
 
-// Runs frames until the master's clock has given --frames of them or a window asks to close.
+// Runs frames until the master's clock has given --frames of them, a window asks to close or the
+// remote control (session.control, master only) says quit; carries out its commands before each frame.
 // Returns the master's statistics (other ranks: empty).
 cluster::FrameStats runFrames(WallSession& session, const cluster::MpiWorld& world);
 

@@ -36,7 +36,8 @@ RenderOptions parseRenderOptions(int argc, char** argv)
                   "OpenGL backend: egl (headless; GPU or Mesa llvmpipe), osmesa (headless), glfw (one window per screen)");
     cli.add()
         ("frames", po::value(&o.frames)->default_value(o.frames),
-         "number of frames to render; 0 = until a window is closed (glfw)")
+         "number of frames to render; 0 = until a window is closed (glfw) or the wall is told to quit "
+         "(--control-port)")
         ("dt", po::value(&o.timeStepS), "animation time step per frame in seconds (default: the scene's time_step_s)")
         ("start-time", po::value(&o.startTimeS), "animation time of the first frame in seconds (default: the scene's)")
         ("realtime", po::bool_switch(&o.realTime), "animation time follows the master's wall clock instead of --dt")
@@ -64,6 +65,12 @@ RenderOptions parseRenderOptions(int argc, char** argv)
          "render the wall's whole canvas (bezels included) as one screen on one rank: the reference a wall must match")
         ("stats", po::value(&o.statsFile), "write per-frame timings to FILE (.csv or .json)")
         ("data-dir", po::value(&o.dataDir), "folder holding shaders/ (default: installed share/aurorawall or the source tree)")
+        ("control-port", po::value(&o.controlPort),
+         "the master takes commands on this TCP port (0: a free one, printed), one per line: status, pause, play, "
+         "speed, step, time, goto, look, screenshot, quit (docs/driving.md)")
+        ("control-bind", po::value(&o.controlBind)->default_value(o.controlBind),
+         "the IPv4 address --control-port listens on (0.0.0.0: every interface; anyone who reaches it can steer "
+         "the wall and write PNG files as this user)")
         ("quiet", po::bool_switch(&o.quiet), "print only the summary, not a line per frame")
         ("verbose", po::bool_switch(&o.verbose), "also print the per-frame work of the components (curtain map build)");
     o.helpText = cli.help();
@@ -85,7 +92,12 @@ RenderOptions parseRenderOptions(int argc, char** argv)
         check(std::isfinite(o.exposure) && o.exposure > 0 && o.exposure < 1e12, "--exposure must be a positive finite number");
     check(o.frames >= 0 && o.frames <= 100000000, "--frames must be a whole number in [0, 1e8] (got " +
                                                        std::to_string(o.frames) + ")");
-    check(o.frames > 0 || o.backend == gl::Backend::Glfw, "--frames 0 (until a window is closed) needs --backend glfw");
+    if (cli.given("control-port"))
+        check(o.controlPort >= 0 && o.controlPort <= 65535, "--control-port must be in [0, 65535]");
+    else
+        check(!cli.given("control-bind"), "--control-bind needs --control-port");
+    check(o.frames > 0 || o.backend == gl::Backend::Glfw || o.controlPort >= 0,
+          "--frames 0 (until a window is closed or a quit command) needs --backend glfw or --control-port");
     if (cli.given("stats")) {
         const bool csv = o.statsFile.size() > 4 && o.statsFile.compare(o.statsFile.size() - 4, 4, ".csv") == 0;
         const bool json = o.statsFile.size() > 5 && o.statsFile.compare(o.statsFile.size() - 5, 5, ".json") == 0;

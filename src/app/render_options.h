@@ -31,6 +31,8 @@ struct RenderOptions {
     Balance balance = Balance::Auto;
     int balanceBands = 8;
     cluster::BandMeasure balanceBy = cluster::BandMeasure::CpuTime; // what the balancer equalizes
+    int controlPort = -1;                // --control-port; -1: no remote control, 0: a free port
+    std::string controlBind = "127.0.0.1"; // --control-bind
     bool quiet = false;
     bool verbose = false;
     bool help = false;

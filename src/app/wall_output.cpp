@@ -52,36 +52,58 @@ io::Image assembleWall(const wall::Wall& wall, const std::vector<char>& bytes)
     return canvas;
 }
 
-} // namespace
-
-int writeOutputs(WallSession& session, const cluster::MpiWorld& world, const cluster::FrameStats& stats)
+// Each screen as its target holds it, rounded to half floats (the bands drawn elsewhere arrived as
+// halves already), whoever drew its bands; with writeTiles also written as tile EXRs.
+int readScreens(WallSession& session, const cluster::MpiWorld& world, bool writeTiles,
+                std::vector<std::pair<int, io::Image>>& images)
 {
-    const RenderOptions& options = session.options;
-    // Each screen as its target holds it, rounded to half floats (the bands drawn elsewhere arrived
-    // as halves already), whoever drew its bands.
-    std::vector<std::pair<int, io::Image>> images;
-    int status = agreedStep(world, [&] {
+    return agreedStep(world, [&] {
         for (ScreenTarget& s : session.screens) {
             session.context->makeCurrent(s.window);
             images.emplace_back(s.screen, io::roundedToHalf(io::imageFromGlReadback(
                                               s.target->width(), s.target->height(), s.target->readback())));
-            if (options.tiles)
-                io::writeExr(options.outDir + "/tile-" + session.wall.screens[s.screen].name + ".exr",
+            if (writeTiles)
+                io::writeExr(session.options.outDir + "/tile-" + session.wall.screens[s.screen].name + ".exr",
                              images.back().second);
         }
         session.context->makeCurrent(0);
     });
-    std::vector<char> gathered;
-    if (status == cli::kSuccess && options.gather) {
-        std::vector<int> sizes;
-        gathered = world.gatherBytes(packTiles(images), sizes);
-    }
+}
+
+io::Image gatherScreens(const WallSession& session, const cluster::MpiWorld& world,
+                        const std::vector<std::pair<int, io::Image>>& images)
+{
+    std::vector<int> sizes;
+    const std::vector<char> gathered = world.gatherBytes(packTiles(images), sizes);
+    return world.isMaster() ? assembleWall(session.wall, gathered) : io::Image();
+}
+
+} // namespace
+
+int gatherWallImage(WallSession& session, const cluster::MpiWorld& world, io::Image& canvas)
+{
+    std::vector<std::pair<int, io::Image>> images;
+    const int status = readScreens(session, world, false, images);
+    if (status == cli::kSuccess)
+        canvas = gatherScreens(session, world, images);
+    return status;
+}
+
+int writeOutputs(WallSession& session, const cluster::MpiWorld& world, const cluster::FrameStats& stats)
+{
+    const RenderOptions& options = session.options;
+    std::vector<std::pair<int, io::Image>> images;
+    io::Image canvas;
+    int status = cli::kSuccess;
+    if (options.gather || options.tiles)
+        status = readScreens(session, world, options.tiles, images);
+    if (status == cli::kSuccess && options.gather)
+        canvas = gatherScreens(session, world, images);
     if (status == cli::kSuccess)
         status = agreedStep(world, [&] {
             if (!world.isMaster())
                 return;
             if (options.gather) {
-                const io::Image canvas = assembleWall(session.wall, gathered);
                 io::writeExr(options.outDir + "/wall.exr", canvas);
                 io::writePng(options.outDir + "/wall.png", canvas, session.toneMap);
             }

@@ -70,6 +70,8 @@ void configure(const cluster::MpiWorld& world, int argc, char** argv, WallSessio
     s.toneMap = toneMapFor(options, s.exposure);
     s.balanced = options.balance == Balance::On || (options.balance == Balance::Auto && world.size() > 1);
     s.bands = cluster::makeBands(s.wall, s.balanced ? options.balanceBands : 1);
+    if (world.isMaster() && options.controlPort >= 0)
+        s.control = std::make_unique<control::ControlServer>(options.controlBind, options.controlPort);
 }
 
 // A context per rank (a window per screen with glfw), the raymarcher, the screens' targets.
@@ -124,6 +126,10 @@ int setUpWallSession(const cluster::MpiWorld& world, int argc, char** argv, Wall
     status = agreedStep(world, [&] { openGraphics(world, session); });
     if (status != cli::kSuccess)
         return status;
+    if (session.control) { // printed even with --quiet: with port 0 it is how a client learns the port
+        std::printf("control: listening on %s:%d\n", session.control->address().c_str(), session.control->port());
+        std::fflush(stdout);
+    }
     if (world.isMaster() && !session.options.quiet) {
         std::printf("aurorawall: %d ranks, %zu screens, canvas %dx%d, backend %s on %s\n", world.size(),
                     session.wall.screens.size(), session.wall.canvasSizePx.x, session.wall.canvasSizePx.y,

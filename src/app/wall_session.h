@@ -2,6 +2,7 @@
 // What a rank sets up once before the frame loop of `aurorawall render`: the configuration
 // (identical on every rank), its GL context and windows, the raymarcher compiled for the scene, the
 // float targets of its screens, and the bands every frame is drawn in.
+#include "app/control/control_server.h"
 #include "app/render_options.h"
 #include "app/screen_target.h"
 #include "cluster/load_balancer.h"
@@ -36,6 +37,7 @@ struct WallSession {
     // otherwise one band per screen, always drawn by the screen's own rank (the static split).
     std::vector<cluster::Band> bands;
     bool balanced = false;
+    std::unique_ptr<control::ControlServer> control; // master with --control-port only
 };
 
 // Runs one step on every rank and agrees on its outcome: the largest exit status over the ranks

@@ -17,6 +17,8 @@ struct FrameState {
     glm::dvec3 cameraBack{0.0, 0.0, 1.0}; // the camera looks along -back
     double exposure = 1.0;
     std::int32_t quit = 0;                // 1: this state is not rendered; every rank leaves the loop
+    std::int32_t gatherWall = 0;          // 1: after drawing, every rank sends its screens to the master,
+                                          // which assembles the wall (a screenshot or a movie frame)
 };
 static_assert(std::is_trivially_copyable_v<FrameState>, "FrameState is broadcast as bytes");
 

@@ -3,27 +3,102 @@
 namespace aurorawall::cluster {
 
 MasterClock::MasterClock(const ClockSettings& settings, const scene::Camera& camera, double exposure)
-    : settings_(settings), camera_(camera), exposure_(exposure), start_(std::chrono::steady_clock::now())
+    : settings_(settings), camera_(camera), cameraTimeS_(settings.startTimeS), exposure_(exposure),
+      anchorTimeS_(settings.startTimeS), anchorWall_(std::chrono::steady_clock::now()),
+      lastTimeS_(settings.startTimeS)
 {
 }
 
 FrameState MasterClock::next(bool stopRequested)
 {
+    const auto now = std::chrono::steady_clock::now();
+    double timeS = lastTimeS_;
+    if (jumpPending_) { // steps asked for after the jump count from the time jumped to
+        advances_ = paused_ ? stepsPending_ : 0;
+        timeS = anchorTimeS_ + static_cast<double>(advances_) * (speed_ * settings_.timeStepS);
+        anchorWall_ = now;
+        jumpPending_ = false;
+    } else if (!paused_ && settings_.realTime) {
+        timeS = anchorTimeS_ + speed_ * std::chrono::duration<double>(now - anchorWall_).count();
+    } else if (!paused_ || stepsPending_ > 0) {
+        advances_ += paused_ ? stepsPending_ : 1;
+        timeS = anchorTimeS_ + static_cast<double>(advances_) * (speed_ * settings_.timeStepS);
+    }
+    stepsPending_ = 0;
+    lastTimeS_ = timeS;
+
     FrameState s;
     s.frame = frame_;
-    const double elapsed = settings_.realTime
-        ? std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count()
-        : static_cast<double>(frame_) * settings_.timeStepS;
-    s.timeS = settings_.startTimeS + elapsed;
-    // The camera flies straight along its view direction (the paper's benchmark path).
-    s.cameraPositionKm = camera_.positionKm + camera_.forward * (camera_.speedKmPerS * elapsed);
-    s.cameraBack = -camera_.forward;
-    s.cameraUp = camera_.up;
-    s.cameraRight = glm::cross(camera_.forward, camera_.up);
+    s.timeS = timeS;
+    const scene::Camera c = camera();
+    s.cameraPositionKm = c.positionKm;
+    s.cameraBack = -c.forward;
+    s.cameraUp = c.up;
+    s.cameraRight = glm::cross(c.forward, c.up);
     s.exposure = exposure_;
     s.quit = stopRequested || (settings_.frames > 0 && frame_ >= settings_.frames);
     ++frame_;
     return s;
+}
+
+void MasterClock::reanchor()
+{
+    if (jumpPending_)
+        return;
+    anchorTimeS_ = lastTimeS_;
+    advances_ = 0;
+    anchorWall_ = std::chrono::steady_clock::now();
+}
+
+void MasterClock::pause()
+{
+    reanchor();
+    paused_ = true;
+}
+
+void MasterClock::play()
+{
+    reanchor();
+    paused_ = false;
+}
+
+void MasterClock::setSpeed(double speed)
+{
+    reanchor();
+    speed_ = speed;
+}
+
+void MasterClock::step()
+{
+    if (!paused_)
+        return;
+    if (settings_.realTime) { // real time has no counted advances: jump by one step
+        setTime(timeS() + speed_ * settings_.timeStepS);
+        return;
+    }
+    ++stepsPending_;
+}
+
+void MasterClock::setTime(double timeS)
+{
+    anchorTimeS_ = timeS;
+    advances_ = 0;
+    stepsPending_ = 0;
+    jumpPending_ = true;
+}
+
+scene::Camera MasterClock::camera() const
+{
+    // The camera flies straight along its view direction (the paper's benchmark path).
+    scene::Camera c = camera_;
+    c.positionKm += c.forward * (c.speedKmPerS * (timeS() - cameraTimeS_));
+    return c;
+}
+
+void MasterClock::setCamera(const scene::Camera& camera)
+{
+    camera_ = camera;
+    cameraTimeS_ = timeS();
 }
 
 } // namespace aurorawall::cluster

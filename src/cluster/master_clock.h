@@ -1,6 +1,8 @@
 #pragma once
-// The master's side of the frame loop: it alone reads the clock and moves the camera, and
-// turns them into the FrameState every rank renders.
+// The master's side of the frame loop: it alone keeps the animation time and moves the camera, and
+// turns them into the FrameState every rank renders. Time can be paused, sped up or slowed down,
+// stepped a frame at a time and set (the wall's remote control, docs/driving.md); each change takes
+// effect with the next frame, so every rank sees it in the same broadcast.
 #include "cluster/frame_state.h"
 #include "scene/scene.h"
 
@@ -10,7 +12,7 @@
 namespace aurorawall::cluster {
 
 struct ClockSettings {
-    std::uint64_t frames = 1;  // frames to render; 0: until a window is closed
+    std::uint64_t frames = 1;  // frames to render; 0: until a window is closed or the wall is told to quit
     double startTimeS = 0.0;
     double timeStepS = 1.0 / 30.0; // animation time per frame (fixed step: reproducible)
     bool realTime = false;         // animation time follows the wall clock instead
@@ -21,14 +23,49 @@ public:
     MasterClock(const ClockSettings& settings, const scene::Camera& camera, double exposure);
 
     // The state of the next frame; quit is set once the frame count is reached or `stopRequested`.
+    // Playing, the animation time advances by speed x timeStepS per frame (or speed x the wall-clock
+    // time elapsed with realTime); paused it stands still but for the steps asked for.
     FrameState next(bool stopRequested);
 
+    void pause();
+    void play();
+    bool paused() const { return paused_; }
+    // The factor on the time step (or on real time); > 0.
+    void setSpeed(double speed);
+    double speed() const { return speed_; }
+    // While paused: the next frame advances by one frame's animation time (speed x timeStepS).
+    void step();
+    // The next frame shows exactly this animation time; the clock runs on from it.
+    void setTime(double timeS);
+
+    // The animation time shown now: the last frame's, or the one a setTime asked for.
+    double timeS() const { return jumpPending_ ? anchorTimeS_ : lastTimeS_; }
+    // The number the next frame gets (frames are numbered from 0).
+    std::uint64_t nextFrame() const { return frame_; }
+    // The camera at timeS(): the scene's camera flown along its path (forward at speedKmPerS).
+    scene::Camera camera() const;
+    // Puts the camera there at timeS(); it flies on from there as the animation time runs.
+    void setCamera(const scene::Camera& camera);
+
 private:
+    // Restarts the count of advances from the time shown now, keeping a pending jump.
+    void reanchor();
+
     ClockSettings settings_;
-    scene::Camera camera_;
+    scene::Camera camera_;          // the camera at cameraTimeS_
+    double cameraTimeS_;
     double exposure_;
     std::uint64_t frame_ = 0;
-    std::chrono::steady_clock::time_point start_;
+    bool paused_ = false;
+    double speed_ = 1.0;
+    // Fixed step: time = anchorTimeS_ + advances_ x speed x timeStepS, a product rather than a sum,
+    // so that frame n of an unchanged run is startTimeS + n x timeStepS exactly as before.
+    double anchorTimeS_;
+    std::uint64_t advances_ = 0;
+    std::chrono::steady_clock::time_point anchorWall_; // real time: when the anchor time was shown
+    bool jumpPending_ = true;       // the next frame shows anchorTimeS_ itself (also the first frame)
+    std::uint64_t stepsPending_ = 0;
+    double lastTimeS_;
 };
 
 } // namespace aurorawall::cluster

@@ -1,0 +1,116 @@
+#include "app/control/command.h"
+
+#include <cmath>
+#include <cstdlib>
+#include <sstream>
+#include <vector>
+
+namespace aurorawall::control {
+
+namespace {
+
+struct Grammar {
+    const char* word;
+    CommandKind kind;
+    int numbers;    // numeric arguments
+    bool path;      // one path argument (the rest of the line is not split)
+    const char* usage;
+};
+
+const Grammar kGrammar[] = {
+    {"status", CommandKind::Status, 0, false, "status"},
+    {"pause", CommandKind::Pause, 0, false, "pause"},
+    {"play", CommandKind::Play, 0, false, "play"},
+    {"speed", CommandKind::Speed, 1, false, "speed FACTOR"},
+    {"step", CommandKind::Step, 0, false, "step"},
+    {"time", CommandKind::Time, 1, false, "time SECONDS"},
+    {"goto", CommandKind::Goto, 3, false, "goto LAT_DEG LON_DEG ALT_KM"},
+    {"look", CommandKind::Look, 2, false, "look HEADING_DEG PITCH_DEG"},
+    {"screenshot", CommandKind::Screenshot, 0, true, "screenshot PATH.png"},
+    {"quit", CommandKind::Quit, 0, false, "quit"},
+};
+
+std::string knownWords()
+{
+    std::string words;
+    for (const Grammar& g : kGrammar)
+        words += (words.empty() ? "" : " ") + std::string(g.word);
+    return words;
+}
+
+double number(const std::string& word, const Grammar& g)
+{
+    char* end = nullptr;
+    const double value = std::strtod(word.c_str(), &end);
+    if (word.empty() || *end != '\0' || !std::isfinite(value))
+        throw CommandError(std::string(g.word) + ": '" + word + "' is not a finite number (usage: " + g.usage + ")");
+    return value;
+}
+
+void checkRange(bool ok, const std::string& message)
+{
+    if (!ok)
+        throw CommandError(message);
+}
+
+} // namespace
+
+Command parseCommand(const std::string& line)
+{
+    std::istringstream in(line);
+    std::vector<std::string> words;
+    for (std::string w; in >> w;)
+        words.push_back(w);
+    if (words.empty())
+        throw CommandError("empty line (commands: " + knownWords() + ")");
+    const Grammar* grammar = nullptr;
+    for (const Grammar& g : kGrammar)
+        if (words[0] == g.word)
+            grammar = &g;
+    if (!grammar)
+        throw CommandError("unknown command '" + words[0].substr(0, 40) + "' (commands: " + knownWords() + ")");
+    const Grammar& g = *grammar;
+    Command c;
+    c.kind = g.kind;
+    const size_t arguments = words.size() - 1;
+    if (g.path) {
+        // The path is the rest of the line, blanks at its ends removed (a name may hold spaces).
+        const size_t start = line.find_first_not_of(" \t", line.find(g.word) + std::string(g.word).size());
+        const size_t last = line.find_last_not_of(" \t\r");
+        if (arguments == 0 || start == std::string::npos)
+            throw CommandError(std::string(g.word) + ": missing the path (usage: " + g.usage + ")");
+        c.path = line.substr(start, last + 1 - start);
+        checkRange(c.path.size() > 4 && c.path.compare(c.path.size() - 4, 4, ".png") == 0,
+                   std::string(g.word) + " " + c.path + ": the file name must end in .png");
+        return c;
+    }
+    if (arguments != static_cast<size_t>(g.numbers))
+        throw CommandError(std::string(g.word) + ": " + std::to_string(g.numbers) + " argument" +
+                           (g.numbers == 1 ? "" : "s") + " expected, got " + std::to_string(arguments) +
+                           " (usage: " + g.usage + ")");
+    for (int i = 0; i < g.numbers; ++i)
+        c.values[i] = number(words[1 + i], g);
+    const double* v = c.values;
+    switch (c.kind) {
+    case CommandKind::Speed:
+        checkRange(v[0] >= kMinSpeed && v[0] <= kMaxSpeed, "speed: the factor must be in [0.1, 1000]");
+        break;
+    case CommandKind::Time:
+        checkRange(std::abs(v[0]) <= kMaxTimeS, "time: |seconds| must be <= 1e15");
+        break;
+    case CommandKind::Goto:
+        checkRange(std::abs(v[0]) <= 90, "goto: the latitude must be in [-90, 90] degrees");
+        checkRange(std::abs(v[1]) <= 360, "goto: the longitude must be in [-360, 360] degrees");
+        checkRange(v[2] >= kMinAltitudeKm && v[2] <= kMaxAltitudeKm, "goto: the altitude must be in [0.001, 1e6] km");
+        break;
+    case CommandKind::Look:
+        checkRange(std::abs(v[0]) <= 360, "look: the heading must be in [-360, 360] degrees");
+        checkRange(std::abs(v[1]) <= 90, "look: the pitch must be in [-90, 90] degrees");
+        break;
+    default:
+        break;
+    }
+    return c;
+}
+
+} // namespace aurorawall::control

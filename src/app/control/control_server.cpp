@@ -1,0 +1,188 @@
+#include "app/control/control_server.h"
+
+#include "common/input_error.h"
+
+#include <arpa/inet.h>
+#include <cerrno>
+#include <cstring>
+#include <fcntl.h>
+#include <netinet/in.h>
+#include <poll.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
+namespace aurorawall::control {
+
+namespace {
+
+void setNonBlocking(int fd)
+{
+    const int flags = ::fcntl(fd, F_GETFL, 0);
+    ::fcntl(fd, F_SETFL, flags | O_NONBLOCK);
+}
+
+} // namespace
+
+ControlServer::ControlServer(const std::string& bindAddress, int port) : address_(bindAddress)
+{
+    sockaddr_in addr{};
+    addr.sin_family = AF_INET;
+    addr.sin_port = htons(static_cast<std::uint16_t>(port));
+    if (::inet_pton(AF_INET, bindAddress.c_str(), &addr.sin_addr) != 1)
+        throw UsageError("--control-bind " + bindAddress + ": not an IPv4 address (e.g. 127.0.0.1 or 0.0.0.0)");
+    listenFd_ = ::socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0);
+    const int on = 1;
+    if (listenFd_ < 0 || ::setsockopt(listenFd_, SOL_SOCKET, SO_REUSEADDR, &on, sizeof on) != 0 ||
+        ::bind(listenFd_, reinterpret_cast<sockaddr*>(&addr), sizeof addr) != 0 || ::listen(listenFd_, 16) != 0) {
+        const std::string reason = std::strerror(errno);
+        if (listenFd_ >= 0)
+            ::close(listenFd_);
+        throw InputError("--control-port " + std::to_string(port) + ": cannot listen on " + bindAddress + ":" +
+                         std::to_string(port) + ": " + reason);
+    }
+    setNonBlocking(listenFd_);
+    socklen_t size = sizeof addr;
+    ::getsockname(listenFd_, reinterpret_cast<sockaddr*>(&addr), &size);
+    port_ = ntohs(addr.sin_port);
+}
+
+ControlServer::~ControlServer()
+{
+    for (auto& [id, c] : clients_) {
+        flush(c); // the last answers ("ok quit"), as far as the socket takes them now
+        ::close(c.fd);
+    }
+    ::close(listenFd_);
+}
+
+void ControlServer::accept()
+{
+    while (true) {
+        const int fd = ::accept4(listenFd_, nullptr, nullptr, SOCK_NONBLOCK | SOCK_CLOEXEC);
+        if (fd < 0)
+            return; // EAGAIN: none left (or a client that gave up before being accepted)
+        if (clients_.size() >= kMaxClients) {
+            const std::string busy = "error too many clients (at most " + std::to_string(kMaxClients) + ")\n";
+            ::send(fd, busy.data(), busy.size(), MSG_NOSIGNAL);
+            ::close(fd);
+            continue;
+        }
+        clients_[nextClient_++].fd = fd;
+    }
+}
+
+void ControlServer::read(Client& c)
+{
+    // One read per client per poll: the bytes a flood can bring in one frame are bounded.
+    char buffer[4096];
+    const ssize_t n = ::recv(c.fd, buffer, sizeof buffer, 0);
+    if (n == 0) {
+        c.readClosed = true;
+        c.partial.clear(); // a line cut off by the disconnection is not a command
+        return;
+    }
+    if (n < 0) {
+        if (errno != EAGAIN && errno != EWOULDBLOCK && errno != EINTR)
+            c.failed = true;
+        return;
+    }
+    for (ssize_t i = 0; i < n; ++i) {
+        if (buffer[i] == '\n') {
+            c.lines.push_back(std::move(c.partial));
+            c.partial.clear();
+        } else if (c.partial.size() >= kMaxLineBytes) {
+            c.outgoing += "error line longer than " + std::to_string(kMaxLineBytes) + " bytes; closing\n";
+            flush(c);
+            c.failed = true;
+            return;
+        } else {
+            c.partial += buffer[i];
+        }
+    }
+}
+
+void ControlServer::flush(Client& c)
+{
+    while (!c.outgoing.empty()) {
+        const ssize_t n = ::send(c.fd, c.outgoing.data(), c.outgoing.size(), MSG_NOSIGNAL);
+        if (n < 0) {
+            if (errno != EAGAIN && errno != EWOULDBLOCK && errno != EINTR)
+                c.failed = true;
+            return;
+        }
+        c.outgoing.erase(0, static_cast<size_t>(n));
+    }
+}
+
+void ControlServer::closeFinished()
+{
+    for (auto it = clients_.begin(); it != clients_.end();) {
+        Client& c = it->second;
+        const bool done = c.readClosed && c.lines.empty() && c.awaiting == 0 && c.outgoing.empty();
+        if (c.failed || done) {
+            ::close(c.fd);
+            it = clients_.erase(it);
+        } else {
+            ++it;
+        }
+    }
+}
+
+std::vector<ControlLine> ControlServer::poll(std::size_t maxLines)
+{
+    std::vector<pollfd> fds{{listenFd_, POLLIN, 0}};
+    std::vector<std::uint64_t> ids{0};
+    for (auto& [id, c] : clients_) {
+        short events = 0;
+        if (!c.readClosed && c.lines.size() < kMaxQueuedLines)
+            events |= POLLIN;
+        if (!c.outgoing.empty())
+            events |= POLLOUT;
+        fds.push_back({c.fd, events, 0});
+        ids.push_back(id);
+    }
+    if (::poll(fds.data(), fds.size(), 0) > 0) {
+        for (size_t i = 1; i < fds.size(); ++i) {
+            Client& c = clients_.at(ids[i]);
+            if (fds[i].revents & (POLLIN | POLLHUP | POLLERR))
+                read(c);
+            if (fds[i].revents & POLLOUT)
+                flush(c);
+        }
+        if (fds[0].revents & POLLIN)
+            accept();
+    }
+    // Hand out lines one per client per round, so that a flooding client cannot starve the others.
+    std::vector<ControlLine> lines;
+    for (bool any = true; any && lines.size() < maxLines;) {
+        any = false;
+        for (auto& [id, c] : clients_) {
+            if (lines.size() >= maxLines)
+                break;
+            if (!c.failed && !c.lines.empty()) {
+                lines.push_back({id, std::move(c.lines.front())});
+                c.lines.erase(c.lines.begin());
+                ++c.awaiting;
+                any = true;
+            }
+        }
+    }
+    closeFinished();
+    return lines;
+}
+
+void ControlServer::answer(std::uint64_t client, const std::string& text)
+{
+    const auto it = clients_.find(client);
+    if (it == clients_.end())
+        return;
+    Client& c = it->second;
+    if (c.awaiting > 0)
+        --c.awaiting;
+    c.outgoing += text + "\n";
+    if (c.outgoing.size() > kMaxPendingAnswerBytes)
+        c.failed = true;
+    flush(c);
+}
+
+} // namespace aurorawall::control

@@ -1,0 +1,44 @@
+#pragma once
+// The wall's remote control on the master: the commands read by the ControlServer are carried out
+// on the master's clock and camera (cluster/master_clock.h) before the next frame is decided, so
+// their effect reaches every rank in that frame's one broadcast. The protocol: docs/driving.md.
+#include "app/control/control_server.h"
+#include "cluster/master_clock.h"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace aurorawall::control {
+
+// Commands carried out per frame at most; more wait for the next frames.
+constexpr std::size_t kCommandsPerFrame = 16;
+
+// The wall as the frame loop knows it.
+struct WallStatus {
+    std::uint64_t frame = 0; // the last frame drawn
+    double fps = 0.0;        // frames per second of the master's loop, over the last frame
+};
+
+// A wall image asked for: written by the master after the next frame, then answered.
+struct ScreenshotRequest {
+    std::uint64_t client = 0;
+    std::string path;
+};
+
+// What the commands ask of the frame loop beyond the clock.
+struct FrameRequests {
+    bool quit = false;
+    std::vector<ScreenshotRequest> screenshots;
+};
+
+// Polls the server once, carries out up to kCommandsPerFrame commands and answers each (but the
+// screenshots, answered once written). A malformed or unknown line is answered "error REASON".
+FrameRequests serveCommands(ControlServer& server, cluster::MasterClock& clock, const WallStatus& status,
+                            double planetRadiusKm);
+
+// The answer to `status`: the last frame drawn, and the time and camera the wall shows (those a command
+// has just set, if no frame has shown them yet).
+std::string statusLine(const cluster::MasterClock& clock, const WallStatus& status, double planetRadiusKm);
+
+} // namespace aurorawall::control

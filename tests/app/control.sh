@@ -1,0 +1,91 @@
+#!/bin/bash
+# Remote control: a 2-rank headless wall with --control-port 0 --frames 0 answers status, pause,
+# time, goto, screenshot and quit through launch/wall-control; a garbage line, an out-of-range value,
+# a second client at once and a client that leaves mid-line get their answers (or none) and the
+# wall keeps rendering; the screenshots differ after goto; the job exits 0 soon after quit; and
+# every rank drew every frame at the master's frame and time (--stats).
+source "$(dirname "$0")/lib.sh"
+client=(python3 "$SRC_DIR/launch/wall-control")
+
+# The tiny 2x2 wall driven by two ranks, two screens each.
+wall="$WORK/tiny-2-ranks.toml"
+{ cat "$DATA/tiny-2x2.toml"; printf '\n[ranks]\nscreens_per_rank = 2\n'; } > "$wall"
+
+aw_mpirun 2 render --wall "$wall" --scene "$SCENE" --frames 0 --control-port 0 --quiet \
+    --stats "$WORK/s.csv" > "$WORK/log" 2>&1 &
+job=$!
+for _ in $(seq 600); do
+    grep -q "control: listening on" "$WORK/log" && break
+    kill -0 $job 2>/dev/null || { cat "$WORK/log"; fail "the wall exited before listening"; }
+    sleep 0.1
+done
+port=$(sed -n 's/^control: listening on 127\.0\.0\.1:\([0-9]*\)$/\1/p' "$WORK/log")
+[ -n "$port" ] || { cat "$WORK/log"; kill $job; fail "no 'control: listening on 127.0.0.1:PORT' line"; }
+note "wall on port $port"
+
+# ask EXPECTED COMMAND...: the commands through the client; the last answer must match the regex
+# EXPECTED, and the client exits 0 if every answer is ok, 1 otherwise.
+ask() {
+    local expected="$1" answers code=0; shift
+    answers=$("${client[@]}" --port "$port" "$@") || code=$?
+    echo "$* -> $answers"
+    [[ "$(tail -n 1 <<<"$answers")" =~ $expected ]] ||
+        { kill $job; fail "'$*' answered '$answers', expected /$expected/"; }
+    grep -qv '^ok' <<<"$answers" && want=1 || want=0
+    [ $code -eq $want ] || { kill $job; fail "wall-control exited $code after '$answers', expected $want"; }
+}
+number='-?[0-9.e+-]+'
+
+ask "^ok frame=[0-9]+ time_s=$number fps=$number playing speed=1 lat_deg=$number lon_deg=$number alt_km=$number heading_deg=$number pitch_deg=$number\$" status
+ask "^ok paused at time_s=$number\$" pause
+ask '^ok time_s=120$' "time 120"
+ask '^ok screenshot .*/before\.png$' "screenshot $WORK/before.png"
+ask ' time_s=120 fps=[0-9.e+-]+ paused ' status
+ask '^ok goto lat_deg=65 lon_deg=25 alt_km=200$' "goto 65 25 200"
+ask ' time_s=120 .* lat_deg=65\.000000 lon_deg=25\.000000 alt_km=200\.000000 ' status
+ask '^ok screenshot .*/after\.png$' "screenshot $WORK/after.png"
+ask "^error unknown command 'xyzzy'" "xyzzy 1 2 3"
+ask '^error speed: the factor must be in \[0\.1, 1000\]$' "speed 5000"
+ask '^error step: the clock is playing \(pause first\)$' play step
+ask '^error screenshot .*: the file name must end in \.png$' "screenshot $WORK/x.jpg"
+ask '^ok paused' pause
+
+# One client sends half a line and leaves; another holds a connection open while a third asks.
+exec 3<>"/dev/tcp/127.0.0.1/$port"
+exec 4<>"/dev/tcp/127.0.0.1/$port"
+printf 'goto 10 10' >&3
+exec 3>&-
+printf 'status\n' >&4
+ask ' paused .* lat_deg=65\.000000 ' status # the half goto was not carried out
+read -r -t 30 held <&4 || fail "no answer on the held connection"
+echo "held connection -> $held"
+[[ "$held" =~ ^ok\ frame= ]] || fail "held connection answered '$held'"
+exec 4>&-
+
+[ -s "$WORK/before.png" ] && [ -s "$WORK/after.png" ] || fail "a screenshot is missing"
+cmp -s "$WORK/before.png" "$WORK/after.png" && fail "the screenshots before and after goto are the same"
+[ -z "$(find "$WORK" -mindepth 1 -name '*.tmp*')" ] || fail "a temporary file of the atomic write was left"
+
+start=$(now)
+ask '^ok quit$' quit
+for _ in $(seq 300); do kill -0 $job 2>/dev/null || break; sleep 0.1; done
+kill -0 $job 2>/dev/null && { kill $job; fail "still running 30 s after quit"; }
+status=0; wait $job || status=$?
+cat "$WORK/log"
+[ $status -eq 0 ] || fail "the job exited $status after quit"
+note "exited 0 $(elapsed "$start") s after quit"
+
+# Every rank drew every frame at the master's frame and time; the paused frames show 120 s.
+awk -F, '
+    function bad(msg) { print "FAIL: s.csv: " msg > "/dev/stderr"; failed = 1; exit 1 }
+    NR == 1 { for (i = 1; i <= NF; ++i) col[$i] = i; next }
+    {
+        for (r = 0; r < 2; ++r) {
+            if ($col["frame_rank" r] != $col["frame"]) bad("row " NR ": rank " r " drew frame " $col["frame_rank" r])
+            if ($col["time_s_rank" r] != $col["time_s"]) bad("row " NR ": rank " r " drew time " $col["time_s_rank" r])
+        }
+        if ($col["time_s"] == 120) ++paused
+    }
+    END { if (!failed && paused < 3) bad(paused + 0 " frames at 120 s, expected the paused ones (>= 3)") }
+' "$WORK/s.csv"
+echo "PASS control"

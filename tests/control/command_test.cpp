@@ -1,0 +1,93 @@
+// The control protocol's grammar: every command with its arguments, and the lines it refuses.
+#include "app/control/command.h"
+
+#include <gtest/gtest.h>
+
+using namespace aurorawall::control;
+
+TEST(Command, WordsWithoutArguments)
+{
+    EXPECT_EQ(parseCommand("status").kind, CommandKind::Status);
+    EXPECT_EQ(parseCommand("pause").kind, CommandKind::Pause);
+    EXPECT_EQ(parseCommand("play").kind, CommandKind::Play);
+    EXPECT_EQ(parseCommand("step").kind, CommandKind::Step);
+    EXPECT_EQ(parseCommand("quit").kind, CommandKind::Quit);
+    // Blanks around the words and a carriage return (telnet, Windows clients) are ignored.
+    EXPECT_EQ(parseCommand("  status \t\r").kind, CommandKind::Status);
+}
+
+TEST(Command, NumbersAreParsedExactly)
+{
+    const Command speed = parseCommand("speed 2.5");
+    EXPECT_EQ(speed.kind, CommandKind::Speed);
+    EXPECT_EQ(speed.values[0], 2.5);
+    EXPECT_EQ(parseCommand("time -1e3").values[0], -1000.0);
+    EXPECT_EQ(parseCommand("time 0.1").values[0], 0.1); // strtod: the nearest double, as the C++ literal
+    const Command go = parseCommand("goto 65.5 -25 200");
+    EXPECT_EQ(go.kind, CommandKind::Goto);
+    EXPECT_EQ(go.values[0], 65.5);
+    EXPECT_EQ(go.values[1], -25.0);
+    EXPECT_EQ(go.values[2], 200.0);
+    const Command look = parseCommand("look 299 10.4");
+    EXPECT_EQ(look.kind, CommandKind::Look);
+    EXPECT_EQ(look.values[0], 299.0);
+    EXPECT_EQ(look.values[1], 10.4);
+}
+
+TEST(Command, BoundsAreInclusive)
+{
+    EXPECT_EQ(parseCommand("speed 0.1").values[0], 0.1);
+    EXPECT_EQ(parseCommand("speed 1000").values[0], 1000.0);
+    EXPECT_NO_THROW(parseCommand("goto -90 360 0.001"));
+    EXPECT_NO_THROW(parseCommand("look -360 90"));
+    EXPECT_NO_THROW(parseCommand("time 1e15"));
+}
+
+TEST(Command, ScreenshotTakesTheRestOfTheLineAsItsPath)
+{
+    const Command shot = parseCommand("screenshot  /tmp/my wall.png \r");
+    EXPECT_EQ(shot.kind, CommandKind::Screenshot);
+    EXPECT_EQ(shot.path, "/tmp/my wall.png");
+    EXPECT_EQ(parseCommand("screenshot a.png").path, "a.png");
+}
+
+// Each refused line with a piece of its reason.
+TEST(Command, RefusedLinesSayWhy)
+{
+    const std::pair<const char*, const char*> cases[] = {
+        {"", "empty line"},
+        {"   ", "empty line"},
+        {"bogus", "unknown command 'bogus'"},
+        {"STATUS", "unknown command"},     // words are lower case
+        {"status now", "0 arguments expected, got 1"},
+        {"speed", "1 argument expected, got 0"},
+        {"speed fast", "'fast' is not a finite number"},
+        {"speed 2x", "'2x' is not a finite number"},
+        {"speed nan", "not a finite number"},
+        {"speed inf", "not a finite number"},
+        {"speed 0.09", "[0.1, 1000]"},
+        {"speed 1000.5", "[0.1, 1000]"},
+        {"speed -1", "[0.1, 1000]"},
+        {"time 2e15", "<= 1e15"},
+        {"goto 65 25", "3 arguments expected, got 2"},
+        {"goto 91 0 100", "latitude"},
+        {"goto 0 361 100", "longitude"},
+        {"goto 0 0 0", "altitude"},
+        {"goto 0 0 2e6", "altitude"},
+        {"look 0 91", "pitch"},
+        {"look 400 0", "heading"},
+        {"screenshot", "missing the path"},
+        {"screenshot wall.jpg", "must end in .png"},
+        {"screenshot .png", "must end in .png"},
+    };
+    for (const auto& [line, reason] : cases) {
+        try {
+            parseCommand(line);
+            ADD_FAILURE() << "'" << line << "' was accepted";
+        } catch (const CommandError& e) {
+            EXPECT_NE(std::string(e.what()).find(reason), std::string::npos)
+                << "'" << line << "': " << e.what() << " (expected: " << reason << ")";
+            EXPECT_EQ(std::string(e.what()).find('\n'), std::string::npos) << "one line";
+        }
+    }
+}

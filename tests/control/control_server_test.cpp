@@ -1,0 +1,191 @@
+// The control server on loopback: several clients at once, a line cut off by a disconnection, a
+// client that sends and leaves, a flood held to a number of lines per poll, an overlong line, and
+// addresses it cannot listen on.
+#include "app/control/control_server.h"
+
+#include "common/input_error.h"
+
+#include <gtest/gtest.h>
+
+#include <arpa/inet.h>
+#include <chrono>
+#include <netinet/in.h>
+#include <poll.h>
+#include <sys/socket.h>
+#include <thread>
+#include <unistd.h>
+
+using namespace aurorawall;
+using namespace aurorawall::control;
+
+namespace {
+
+// A blocking test client.
+class Client {
+public:
+    explicit Client(int port)
+    {
+        fd_ = ::socket(AF_INET, SOCK_STREAM, 0);
+        sockaddr_in addr{};
+        addr.sin_family = AF_INET;
+        addr.sin_port = htons(static_cast<std::uint16_t>(port));
+        addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+        EXPECT_EQ(::connect(fd_, reinterpret_cast<sockaddr*>(&addr), sizeof addr), 0);
+    }
+    ~Client() { close(); }
+    void send(const std::string& bytes) { EXPECT_EQ(::send(fd_, bytes.data(), bytes.size(), MSG_NOSIGNAL), ssize_t(bytes.size())); }
+    void close()
+    {
+        if (fd_ >= 0)
+            ::close(fd_);
+        fd_ = -1;
+    }
+    // One line from the server (without the newline), or "" after 5 s.
+    std::string readLine()
+    {
+        std::string line;
+        char c;
+        pollfd p{fd_, POLLIN, 0};
+        while (::poll(&p, 1, 5000) == 1 && ::recv(fd_, &c, 1, 0) == 1) {
+            if (c == '\n')
+                return line;
+            line += c;
+        }
+        return line;
+    }
+
+private:
+    int fd_ = -1;
+};
+
+// Polls until `count` lines have come or `wait` has passed, as a frame loop would.
+std::vector<ControlLine> pollFor(ControlServer& server, size_t count, size_t perPoll = 16,
+                                 std::chrono::milliseconds wait = std::chrono::milliseconds(5000))
+{
+    std::vector<ControlLine> lines;
+    const auto end = std::chrono::steady_clock::now() + wait;
+    while (lines.size() < count && std::chrono::steady_clock::now() < end) {
+        for (ControlLine& l : server.poll(perPoll))
+            lines.push_back(std::move(l));
+        std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    }
+    return lines;
+}
+
+} // namespace
+
+TEST(ControlServer, AnswersSeveralClientsAtOnce)
+{
+    ControlServer server("127.0.0.1", 0);
+    ASSERT_GT(server.port(), 0);
+    Client a(server.port()), b(server.port());
+    a.send("status\n");
+    b.send("pause\r\n");
+    const std::vector<ControlLine> lines = pollFor(server, 2);
+    ASSERT_EQ(lines.size(), 2u);
+    for (const ControlLine& l : lines)
+        server.answer(l.client, "ok " + l.text);
+    EXPECT_EQ(a.readLine(), "ok status");
+    EXPECT_EQ(b.readLine(), "ok pause\r"); // the line as sent; the parser drops the '\r'
+}
+
+TEST(ControlServer, ALineCutOffByADisconnectionIsDropped)
+{
+    ControlServer server("127.0.0.1", 0);
+    {
+        Client half(server.port());
+        half.send("goto 65 2"); // no newline, then gone
+    }
+    Client whole(server.port());
+    whole.send("status\n");
+    const std::vector<ControlLine> lines = pollFor(server, 1);
+    ASSERT_EQ(lines.size(), 1u);
+    EXPECT_EQ(lines[0].text, "status");
+    EXPECT_TRUE(pollFor(server, 1, 16, std::chrono::milliseconds(300)).empty());
+    // The half client is gone once its end-of-file has been read.
+    EXPECT_EQ(server.clientCount(), 1u);
+}
+
+TEST(ControlServer, ALineSentJustBeforeLeavingIsCarriedOut)
+{
+    ControlServer server("127.0.0.1", 0);
+    std::uint64_t id = 0;
+    {
+        Client c(server.port());
+        c.send("quit\n");
+        c.close();
+        const std::vector<ControlLine> lines = pollFor(server, 1);
+        ASSERT_EQ(lines.size(), 1u);
+        EXPECT_EQ(lines[0].text, "quit");
+        id = lines[0].client;
+    }
+    server.answer(id, "ok quit"); // to a closed socket: no SIGPIPE, no throw
+    pollFor(server, 1, 1, std::chrono::milliseconds(300));
+    EXPECT_EQ(server.clientCount(), 0u);
+}
+
+TEST(ControlServer, AFloodIsHandedOutInBoundedPortionsInOrder)
+{
+    ControlServer server("127.0.0.1", 0);
+    Client flood(server.port()), other(server.port());
+    std::string bytes;
+    for (int i = 0; i < 300; ++i)
+        bytes += "time " + std::to_string(i) + "\n";
+    flood.send(bytes);
+    std::vector<ControlLine> all;
+    bool otherSent = false, otherServed = false;
+    size_t servedAfter = 0; // flood lines handed out before the other client's line
+    const auto end = std::chrono::steady_clock::now() + std::chrono::seconds(5);
+    while (all.size() < 301 && std::chrono::steady_clock::now() < end) {
+        if (!otherSent && all.size() >= 20) {
+            other.send("status\n");
+            otherSent = true;
+        }
+        const std::vector<ControlLine> lines = server.poll(16);
+        EXPECT_LE(lines.size(), 16u);
+        for (const ControlLine& l : lines) {
+            server.answer(l.client, "ok");
+            if (l.text == "status") {
+                otherServed = true;
+                servedAfter = all.size();
+            } else {
+                all.push_back(l);
+            }
+        }
+        if (otherServed && all.size() >= 300)
+            break;
+        std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    }
+    ASSERT_EQ(all.size(), 300u);
+    for (int i = 0; i < 300; ++i)
+        EXPECT_EQ(all[i].text, "time " + std::to_string(i));
+    // Served within a few polls of its arrival, not after the flood: one line per client per round.
+    EXPECT_TRUE(otherServed);
+    EXPECT_LT(servedAfter, 200u);
+}
+
+TEST(ControlServer, AnOverlongLineIsRefusedAndTheClientClosed)
+{
+    ControlServer server("127.0.0.1", 0);
+    Client c(server.port());
+    c.send(std::string(ControlServer::kMaxLineBytes + 10, 'x'));
+    EXPECT_TRUE(pollFor(server, 1, 16, std::chrono::milliseconds(300)).empty());
+    EXPECT_EQ(c.readLine(), "error line longer than 1024 bytes; closing");
+    EXPECT_EQ(server.clientCount(), 0u);
+}
+
+TEST(ControlServer, RefusesAddressesItCannotListenOn)
+{
+    EXPECT_THROW(ControlServer("localhost", 0), UsageError); // a name, not an IPv4 address
+    EXPECT_THROW(ControlServer("::1", 0), UsageError);
+    ControlServer first("127.0.0.1", 0);
+    try {
+        ControlServer second("127.0.0.1", first.port());
+        FAIL() << "a port in use was accepted";
+    } catch (const UsageError&) {
+        FAIL() << "a port in use is a runtime failure, not a usage error";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("--control-port " + std::to_string(first.port())), std::string::npos)
+            << e.what();
+    }
+}
