@@ -2,6 +2,7 @@
 #include "app/accuracy_command.h"
 #include "app/airmass_command.h"
 #include "app/cli/exit_status.h"
+#include "app/plasma_command.h"
 #include "app/render_command.h"
 #include "app/tables_command.h"
 
@@ -32,7 +33,7 @@ const char* kUsage =
     "     options that contradict each other, or a number of MPI ranks other than the wall file's\n"
     "Errors are one line on stderr: \"aurorawall COMMAND: ...\", naming the option or FILE:LINE.\n";
 
-const char* kCommands = "render, airmass, tables, accuracy";
+const char* kCommands = "render, airmass, tables, accuracy, plasma";
 
 } // namespace
 
@@ -54,6 +55,8 @@ int main(int argc, char** argv)
         return app::runTablesCommand(argc - 1, argv + 1, std::cout, std::cerr);
     if (command == "accuracy")
         return app::runAccuracyCommand(argc - 1, argv + 1, std::cout, std::cerr);
+    if (command == "plasma")
+        return app::runPlasmaCommand(argc - 1, argv + 1, std::cout, std::cerr);
     if (command.empty())
         std::cerr << cli::errorLine("", std::string("missing command (allowed: ") + kCommands + ")" + seeHelp) << "\n";
     else if (command[0] == '-')
