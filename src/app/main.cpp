@@ -22,6 +22,7 @@ const char* kUsage =
     "  airmass   airmass integrals along rays read from standard input (CSV), by a chosen method\n"
     "  tables    print the precomputed physics tables (e.g. tables deposition --energy-kev 5)\n"
     "  accuracy  error against cost of the approximations (accuracy --airmass | --sky | --scene FILE)\n"
+    "  plasma    the particle-in-cell plasma against theory (plasma verify [--case NAME])\n"
     "\n"
     "Exit status, the same for every command (and, under mpirun, on every rank):\n"
     "  0  success\n"
