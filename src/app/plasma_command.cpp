@@ -60,7 +60,7 @@ int runPlasmaCommand(int argc, char** argv, std::ostream& out, std::ostream& err
         Case chosen = Case::All;
         double wpDt = 0.2, wcDt = 1.0;
         cli.addChoice("case", &chosen, kCases, "the case to run (all: each in turn)");
-        cli.add()("wp-dt", po::value<double>(&wpDt)->default_value(0.2),
+        cli.add()("wp-dt", po::value<double>(&wpDt)->default_value(0.2, "0.2"),
                   "omega_p dt of langmuir, two-stream, energy and landau, in (0, 2): the leapfrog is unstable "
                   "from 2 on")("wc-dt", po::value<double>(&wcDt)->default_value(1.0),
                               "omega_c dt of boris and exb, > 0 (the Boris push is stable for any)");
