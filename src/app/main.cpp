@@ -3,6 +3,7 @@
 #include "app/airmass_command.h"
 #include "app/cli/exit_status.h"
 #include "app/mie_command.h"
+#include "app/plasma_command.h"
 #include "app/render_command.h"
 #include "app/tables_command.h"
 
@@ -23,6 +24,7 @@ const char* kUsage =
     "  tables    print the precomputed physics tables (e.g. tables deposition --energy-kev 5)\n"
     "  accuracy  error against cost of the approximations (accuracy --airmass | --sky | --scene FILE)\n"
     "  mie       exact Mie scattering by one sphere (mie --n 1.33 --k 0 --x 100 [--angles-deg 0,180])\n"
+    "  plasma    the particle-in-cell plasma against theory (plasma verify [--case NAME])\n"
     "\n"
     "Exit status, the same for every command (and, under mpirun, on every rank):\n"
     "  0  success\n"
@@ -34,7 +36,7 @@ const char* kUsage =
     "     options that contradict each other, or a number of MPI ranks other than the wall file's\n"
     "Errors are one line on stderr: \"aurorawall COMMAND: ...\", naming the option or FILE:LINE.\n";
 
-const char* kCommands = "render, airmass, tables, accuracy, mie";
+const char* kCommands = "render, airmass, tables, accuracy, mie, plasma";
 
 } // namespace
 
@@ -58,6 +60,8 @@ int main(int argc, char** argv)
         return app::runAccuracyCommand(argc - 1, argv + 1, std::cout, std::cerr);
     if (command == "mie")
         return app::runMieCommand(argc - 1, argv + 1, std::cout, std::cerr);
+    if (command == "plasma")
+        return app::runPlasmaCommand(argc - 1, argv + 1, std::cout, std::cerr);
     if (command.empty())
         std::cerr << cli::errorLine("", std::string("missing command (allowed: ") + kCommands + ")" + seeHelp) << "\n";
     else if (command[0] == '-')

@@ -8,7 +8,7 @@ source "$(dirname "$0")/lib.sh"
 
 top=$("$AW" --help)
 echo "$top"
-for command in render airmass tables accuracy; do
+for command in render airmass tables accuracy mie plasma; do
     grep -Eq "^ +$command " <<<"$top" || fail "aurorawall --help does not list the command '$command'"
 done
 
@@ -57,7 +57,7 @@ expect() {
 # aurorawall itself.
 expect 0 "Exit status" --help
 expect 2 "^aurorawall: unrecognised option '--bogus'" --bogus
-expect 2 "^aurorawall: unknown command 'bogus' \(allowed: render, airmass, tables, accuracy, mie\)" bogus
+expect 2 "^aurorawall: unknown command 'bogus' \(allowed: render, airmass, tables, accuracy, mie, plasma\)" bogus
 expect 2 "^aurorawall: missing command" 
 
 # render (a singleton MPI process without mpirun).
@@ -105,4 +105,15 @@ expect 2 "^aurorawall mie: --angles-deg: 'a' is not an angle" mie --n 1.33 --k 0
 [ "$(sed -n 1p "$WORK/mie.csv" | cut -d, -f5)" = qext ] && [ "$(sed -n 2p "$WORK/mie.csv" | cut -d, -f5)" = 2.881998952 ] ||
     fail "aurorawall mie --n 1.5 --k 0 --x 10: Qext is not Wiscombe's 2.881999: $(cat "$WORK/mie.csv")"
 echo "ok   0  aurorawall mie --n 1.5 --k 0 --x 10: Qext $(sed -n 2p "$WORK/mie.csv" | cut -d, -f5)"
+
+# plasma: the action, the case and the leapfrog's stability limit.
+expect 0 "--wp-dt" plasma --help
+expect 2 "^aurorawall plasma: unrecognised option '--bogus'" plasma verify --bogus
+expect 2 "^aurorawall plasma: missing the action \(allowed: verify\)" plasma
+expect 2 "^aurorawall plasma: unknown action 'run' \(allowed: verify\)" plasma run
+expect 2 "^aurorawall plasma: --case: unknown value 'ion-acoustic' \(allowed: all, langmuir, .*landau\)" \
+    plasma verify --case ion-acoustic
+expect 2 "^aurorawall plasma: --wp-dt must be in \(0, 2\): the leapfrog is unstable" plasma verify --wp-dt 2
+expect 2 "^aurorawall plasma: --wc-dt must be a finite number > 0" plasma verify --case boris --wc-dt 0
+expect 2 "^aurorawall plasma: .*--wp-dt" plasma verify --wp-dt fast
 echo "PASS help"

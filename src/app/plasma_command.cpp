@@ -1,0 +1,94 @@
+#include "app/plasma_command.h"
+
+#include "app/cli/command_line.h"
+#include "app/cli/exit_status.h"
+#include "components/plasma/simulation/verify_cases.h"
+
+#include <cmath>
+#include <cstdio>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace aurorawall::app {
+namespace {
+
+namespace po = boost::program_options;
+
+enum class Action { Verify };
+const cli::Choices<Action> kActions = {{"verify", Action::Verify}};
+
+enum class Case { All, Langmuir, Boris, ExB, TwoStream, Energy, Landau };
+const cli::Choices<Case> kCases = {{"all", Case::All},         {"langmuir", Case::Langmuir},
+                                   {"boris", Case::Boris},     {"exb", Case::ExB},
+                                   {"two-stream", Case::TwoStream}, {"energy", Case::Energy},
+                                   {"landau", Case::Landau}};
+
+std::string number(double value)
+{
+    char text[32];
+    std::snprintf(text, sizeof text, "%.7g", value);
+    return text;
+}
+
+void printRows(std::ostream& out, const std::string& name, const std::vector<plasma::VerifyRow>& rows)
+{
+    for (const plasma::VerifyRow& row : rows) {
+        out << name << ',' << row.parameter << ',' << number(row.measured) << ',';
+        if (row.expected)
+            out << number(*row.expected) << ',' << number(row.relativeError());
+        else
+            out << ',';
+        out << '\n';
+    }
+    out.flush();
+}
+
+} // namespace
+
+int runPlasmaCommand(int argc, char** argv, std::ostream& out, std::ostream& err)
+{
+    return cli::runCommand("plasma", out, err, [&] {
+        cli::CommandLine cli(
+            "plasma",
+            "Usage: aurorawall plasma verify [--case NAME] [--wp-dt X] [--wc-dt X]\n"
+            "Runs the electrostatic particle-in-cell plasma's verification cases and prints CSV\n"
+            "case,parameter,measured,expected,rel_error; expected comes from theory (frequencies and rates in\n"
+            "units of the plasma frequency omega_p); rows of a run's settings leave expected and rel_error empty\n"
+            "(docs/PLASMA.md). Exit status: 0 success, 1 a run failed or output not written, 2 usage error.\n");
+        std::string actionName;
+        Case chosen = Case::All;
+        double wpDt = 0.2, wcDt = 1.0;
+        cli.addChoice("case", &chosen, kCases, "the case to run (all: each in turn)");
+        cli.add()("wp-dt", po::value<double>(&wpDt)->default_value(0.2, "0.2"),
+                  "omega_p dt of langmuir, two-stream, energy and landau, in (0, 2): the leapfrog is unstable "
+                  "from 2 on")("wc-dt", po::value<double>(&wcDt)->default_value(1.0),
+                              "omega_c dt of boris and exb, > 0 (the Boris push is stable for any)");
+        cli.addPositional("action", &actionName);
+        if (!cli.parse(argc, argv)) {
+            out << cli.help();
+            return;
+        }
+        Action action = Action::Verify;
+        if (actionName.empty())
+            throw cli.usageError("missing the action (allowed: " + cli::wordsOf(kActions) + ")");
+        if (!cli::findChoice(kActions, actionName, action))
+            throw cli.usageError("unknown action '" + actionName + "' (allowed: " + cli::wordsOf(kActions) + ")");
+        if (!(wpDt > 0.0 && wpDt < 2.0))
+            throw cli.usageError("--wp-dt must be in (0, 2): the leapfrog is unstable for omega_p dt >= 2 (got " +
+                                 number(wpDt) + ")");
+        if (!(wcDt > 0.0) || !std::isfinite(wcDt))
+            throw cli.usageError("--wc-dt must be a finite number > 0 (got " + number(wcDt) + ")");
+
+        out << "case,parameter,measured,expected,rel_error\n";
+        const auto runs = [chosen](Case c) { return chosen == Case::All || chosen == c; };
+        if (runs(Case::Langmuir)) printRows(out, "langmuir", plasma::verifyLangmuir(wpDt));
+        if (runs(Case::Boris)) printRows(out, "boris", plasma::verifyBoris(wcDt));
+        if (runs(Case::ExB)) printRows(out, "exb", plasma::verifyExB(wcDt));
+        if (runs(Case::TwoStream)) printRows(out, "two-stream", plasma::verifyTwoStream(wpDt));
+        if (runs(Case::Energy)) printRows(out, "energy", plasma::verifyEnergy(wpDt));
+        if (runs(Case::Landau)) printRows(out, "landau", plasma::verifyLandau(wpDt));
+    });
+}
+
+} // namespace aurorawall::app

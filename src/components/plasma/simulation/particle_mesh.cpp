@@ -1,0 +1,88 @@
+#include "components/plasma/simulation/particle_mesh.h"
+
+#include "common/glsl.h"
+#include "components/plasma/simulation/plasma_parameters.h"
+
+#include <glm/geometric.hpp>
+
+#include <cmath>
+#include <numeric>
+
+namespace aurorawall::plasma {
+namespace {
+namespace f64 {
+AURORAWALL_GLSL_PRECISION(double)
+#include "components/plasma/cloud_in_cell.glsl"
+#include "components/plasma/electric_field.glsl"
+} // namespace f64
+
+// The particle's cell: its lower node and its fraction of the cell along each axis.
+struct Cell {
+    int lower[3];
+    glm::dvec3 fraction;
+};
+
+Cell cellOf(const PeriodicGrid& grid, glm::dvec3 position)
+{
+    const glm::dvec3 g = position / glm::dvec3(grid.spacing[0], grid.spacing[1], grid.spacing[2]);
+    const glm::dvec3 lower = glm::floor(g);
+    return {{int(lower.x), int(lower.y), int(lower.z)}, f64::cicCellFraction(g)};
+}
+
+std::size_t cornerNode(const PeriodicGrid& grid, const Cell& cell, int corner)
+{
+    return grid.index(cell.lower[0] + (corner & 1), cell.lower[1] + ((corner >> 1) & 1),
+                      cell.lower[2] + ((corner >> 2) & 1));
+}
+
+} // namespace
+
+std::vector<double> depositChargeDensity(const PeriodicGrid& grid, const Particles& electrons)
+{
+    std::vector<double> density(grid.nodeCount(), 0.0);
+    const double charge = -kElementaryCharge * electrons.weight;
+    const double volume = grid.cellVolume();
+    const int corners = 1 << grid.dimension;
+    for (const glm::dvec3& x : electrons.position) {
+        const Cell cell = cellOf(grid, x);
+        for (int corner = 0; corner < corners; ++corner)
+            density[cornerNode(grid, cell, corner)] +=
+                f64::cicCornerChargeDensity(charge, volume, cell.fraction, corner, grid.dimension);
+    }
+    const double mean = std::accumulate(density.begin(), density.end(), 0.0) / double(density.size());
+    for (double& rho : density)
+        rho -= mean;
+    return density;
+}
+
+std::vector<glm::dvec3> nodeElectricField(const PeriodicGrid& grid, const std::vector<double>& potential)
+{
+    std::vector<glm::dvec3> field(grid.nodeCount(), glm::dvec3(0.0));
+    const int step[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    for (int k = 0; k < grid.cells[2]; ++k)
+        for (int j = 0; j < grid.cells[1]; ++j)
+            for (int i = 0; i < grid.cells[0]; ++i) {
+                glm::dvec3& e = field[grid.index(i, j, k)];
+                for (int d = 0; d < grid.dimension; ++d)
+                    e[d] = f64::centralDifferenceField(
+                        potential[grid.index(i - step[d][0], j - step[d][1], k - step[d][2])],
+                        potential[grid.index(i + step[d][0], j + step[d][1], k + step[d][2])], grid.spacing[d]);
+            }
+    return field;
+}
+
+std::vector<glm::dvec3> gatherField(const PeriodicGrid& grid, const std::vector<glm::dvec3>& nodeField,
+                                    const std::vector<glm::dvec3>& positions)
+{
+    std::vector<glm::dvec3> field(positions.size(), glm::dvec3(0.0));
+    const int corners = 1 << grid.dimension;
+    for (std::size_t p = 0; p < positions.size(); ++p) {
+        const Cell cell = cellOf(grid, positions[p]);
+        for (int corner = 0; corner < corners; ++corner)
+            field[p] += f64::cicCornerField(nodeField[cornerNode(grid, cell, corner)], cell.fraction, corner,
+                                            grid.dimension);
+    }
+    return field;
+}
+
+} // namespace aurorawall::plasma

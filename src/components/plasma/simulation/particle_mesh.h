@@ -1,0 +1,28 @@
+#pragma once
+// The particle–mesh coupling: charge onto the grid, the field from the potential, the field back at
+// the particles, with the shared kernels of shaders/components/plasma (cloud_in_cell.glsl,
+// electric_field.glsl) compiled in double.
+#include "components/plasma/simulation/particles.h"
+#include "components/plasma/simulation/periodic_grid.h"
+
+#include <glm/vec3.hpp>
+
+#include <vector>
+
+namespace aurorawall::plasma {
+
+// The charge density (C/m³) at every node: the electrons' CIC deposit plus the uniform neutralising
+// ion background, i.e. minus the deposit's mean, so Σρ = 0 (to rounding). Deterministic: the
+// deposits are added in a fixed order, particle by particle in index order and, for each, its cell's
+// corners in increasing corner number (bit d set: the upper node along axis d), so the same
+// particles give the same bits.
+std::vector<double> depositChargeDensity(const PeriodicGrid& grid, const Particles& electrons);
+
+// E = −∇φ (V/m) at every node by central differences; zero along the axes beyond the grid's dimension.
+std::vector<glm::dvec3> nodeElectricField(const PeriodicGrid& grid, const std::vector<double>& potential);
+
+// The field (V/m) at each position, interpolated from the nodes with the deposit's CIC weights.
+std::vector<glm::dvec3> gatherField(const PeriodicGrid& grid, const std::vector<glm::dvec3>& nodeField,
+                                    const std::vector<glm::dvec3>& positions);
+
+} // namespace aurorawall::plasma

@@ -1,0 +1,36 @@
+#pragma once
+// The verification cases of `aurorawall plasma verify`: each runs the simulation (or its push) in a
+// setting where theory gives the answer, and returns what it measured beside what the theory, or the
+// scheme's own exact dispersion, expects. Frequencies and rates are in units of ω_p.
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace aurorawall::plasma {
+
+struct VerifyRow {
+    std::string parameter;
+    double measured = 0.0;
+    // Absent for a setting of the run (ω_pΔt, ω_cΔt, Δx/λ_D, particle and cell counts).
+    std::optional<double> expected;
+    // |measured − expected|/|expected|, or |measured − expected| where expected is 0.
+    double relativeError() const;
+};
+
+// Cold plasma oscillation: frequency against sin(ωΔt/2) = ω_pΔt/2 (0 < ω_pΔt < 2).
+std::vector<VerifyRow> verifyLangmuir(double plasmaFrequencyTimesDt);
+// One electron in a uniform B: rotation per step against 2·atan(ω_cΔt/2), and the relative change of
+// its speed over the run (expected 0: rounding only). ω_cΔt > 0.
+std::vector<VerifyRow> verifyBoris(double cyclotronFrequencyTimesDt, long steps = 1000);
+// One electron in crossed uniform E and B: the centre of its velocity circle (the gyrocentre's
+// velocity) against E×B/B², in units of |E|/|B|, along E×B and along E.
+std::vector<VerifyRow> verifyExB(double cyclotronFrequencyTimesDt);
+// Cold symmetric two-stream at k v₀ = √(3/8) ω_p: the growth rate of the field amplitude.
+std::vector<VerifyRow> verifyTwoStream(double plasmaFrequencyTimesDt);
+// A thermal plasma (random start, Δx = λ_D) over a long run: the relative drift of the total energy.
+std::vector<VerifyRow> verifyEnergy(double plasmaFrequencyTimesDt);
+// Landau damping of a Langmuir wave at k λ_D = 0.5 (quiet Maxwellian): frequency and damping rate
+// against the root of the kinetic dispersion relation.
+std::vector<VerifyRow> verifyLandau(double plasmaFrequencyTimesDt);
+
+} // namespace aurorawall::plasma

@@ -1,0 +1,23 @@
+# Wraps the plasma's shared kernels (shaders/components/plasma) in a GLSL 4.50 compute shader that
+# calls each of them, and compiles it with glslangValidator: the text the C++ tests run in double
+# must also be valid GLSL.
+file(MAKE_DIRECTORY ${WORK_DIR})
+set(kernels "")
+foreach(module cloud_in_cell electric_field boris_push)
+  file(READ ${SHADER_DIR}/${module}.glsl text)
+  string(APPEND kernels "${text}\n")
+endforeach()
+set(file ${WORK_DIR}/plasma_kernels.comp)
+file(WRITE ${file} "#version 450 core\n#define real float\nlayout(local_size_x = 64) in;\n${kernels}"
+     "layout(std430, binding = 0) buffer Particles { vec4 state[]; };\n"
+     "void main() {\n  uint p = gl_GlobalInvocationID.x;\n"
+     "  vec3 f = cicCellFraction(state[p].xyz);\n"
+     "  float rho = cicCornerChargeDensity(-1.0, 1.0, f, 3, 2);\n"
+     "  vec3 e = cicCornerField(vec3(centralDifferenceField(rho, 1.0, 0.1)), f, 5, 3);\n"
+     "  vec3 v = borisVelocity(state[p].xyz, e, vec3(0.0, 0.0, 1.0), -1.0, 0.1);\n"
+     "  state[p] = vec4(leapfrogPosition(state[p].xyz, v, 0.1, vec3(1.0)), cicCornerWeight(f, 1, 1));\n}\n")
+execute_process(COMMAND ${VALIDATOR} ${file} RESULT_VARIABLE result OUTPUT_VARIABLE output ERROR_VARIABLE output)
+if(NOT result EQUAL 0)
+  message(FATAL_ERROR "shaders/components/plasma does not compile as GLSL:\n${output}")
+endif()
+message(STATUS "shaders/components/plasma: compiles as a GLSL 4.50 compute shader")

@@ -1,0 +1,346 @@
+// The particle-in-cell plasma's core in double: the shared kernels (shaders/components/plasma, here
+// compiled as C++ in double), the Poisson solvers, determinism, the plasma dispersion function, and
+// each case of `aurorawall plasma verify` against theory.
+#include "common/glsl.h"
+#include "components/plasma/simulation/discrete_laplacian.h"
+#include "components/plasma/simulation/dispersion.h"
+#include "components/plasma/simulation/electrostatic_pic.h"
+#include "components/plasma/simulation/fft_poisson_solver.h"
+#include "components/plasma/simulation/jacobi_poisson.h"
+#include "components/plasma/simulation/particle_loading.h"
+#include "components/plasma/simulation/particle_mesh.h"
+#include "components/plasma/simulation/plasma_parameters.h"
+#include "components/plasma/simulation/verify_cases.h"
+
+#include <gtest/gtest.h>
+
+#include <glm/geometric.hpp>
+
+#include <cmath>
+#include <complex>
+#include <cstring>
+#include <random>
+
+// The shared kernels in double (a named namespace: not every function is used).
+namespace aurorawall::plasma_test::f64 {
+AURORAWALL_GLSL_PRECISION(double)
+#include "components/plasma/cloud_in_cell.glsl"
+#include "components/plasma/electric_field.glsl"
+#include "components/plasma/boris_push.glsl"
+} // namespace aurorawall::plasma_test::f64
+
+using namespace aurorawall;
+using namespace aurorawall::plasma;
+namespace f64 = aurorawall::plasma_test::f64;
+
+namespace {
+
+constexpr double kPiValue = 3.14159265358979323846;
+
+// The measured row of a verify case (the one with an expected value and this parameter).
+VerifyRow row(const std::vector<VerifyRow>& rows, const std::string& parameter)
+{
+    for (const VerifyRow& r : rows)
+        if (r.parameter == parameter && r.expected)
+            return r;
+    ADD_FAILURE() << "no row " << parameter;
+    return {};
+}
+
+} // namespace
+
+// The 2^dimension CIC weights are the products of the linear weights and sum to 1.
+TEST(PlasmaKernels, CloudInCellWeightsSumToOneAndAreLinear)
+{
+    std::mt19937_64 rng(7);
+    std::uniform_real_distribution<double> u(-5.0, 5.0);
+    for (int dimension = 1; dimension <= 3; ++dimension)
+        for (int trial = 0; trial < 100; ++trial) {
+            const glm::dvec3 g(u(rng), u(rng), u(rng));
+            const glm::dvec3 f = f64::cicCellFraction(g);
+            double sum = 0.0;
+            for (int corner = 0; corner < (1 << dimension); ++corner) {
+                double product = 1.0;
+                for (int d = 0; d < dimension; ++d)
+                    product *= (corner >> d) & 1 ? f[d] : 1.0 - f[d];
+                EXPECT_DOUBLE_EQ(f64::cicCornerWeight(f, corner, dimension), product);
+                sum += f64::cicCornerWeight(f, corner, dimension);
+            }
+            EXPECT_NEAR(sum, 1.0, 1e-15);
+            // The weights reproduce the position: Σ w·node = g along each axis.
+            for (int d = 0; d < dimension; ++d) {
+                double centroid = 0.0;
+                for (int corner = 0; corner < (1 << dimension); ++corner)
+                    centroid += f64::cicCornerWeight(f, corner, dimension) * (std::floor(g[d]) + ((corner >> d) & 1));
+                EXPECT_NEAR(centroid, g[d], 1e-14);
+            }
+        }
+}
+
+// The central difference is exact for a quadratic potential: −(φ(x+h) − φ(x−h))/2h = −φ'(x).
+TEST(PlasmaKernels, CentralDifferenceIsExactForAQuadratic)
+{
+    const auto phi = [](double x) { return 3.0 * x * x - 2.0 * x + 1.0; };
+    const double x = 0.7, h = 0.01;
+    EXPECT_NEAR(f64::centralDifferenceField(phi(x - h), phi(x + h), h), -(6.0 * x - 2.0), 1e-12);
+}
+
+// One Boris step in a pure B is the rotation by 2·atan(ω_cΔt/2) about B (Rodrigues' formula), for
+// small and very large ω_cΔt.
+TEST(PlasmaKernels, BorisStepIsTheExactRotation)
+{
+    const glm::dvec3 b = glm::normalize(glm::dvec3(0.3, -0.4, 0.8)) * 5e-5;
+    const glm::dvec3 v(2e5, 1e5, -3e5);
+    const double qm = -kElementaryCharge / kElectronMass;
+    for (const double wcDt : {1e-3, 0.5, 2.0, 100.0}) {
+        const double dt = wcDt / cyclotronFrequency(glm::length(b));
+        // dv/dt = (q/m) v×B = Ω×v, Ω = −(q/m)B: an electron turns right-handedly about B.
+        const glm::dvec3 axis = glm::normalize(b);
+        const double angle = 2.0 * std::atan(0.5 * wcDt);
+        const glm::dvec3 expected = v * std::cos(angle) + glm::cross(axis, v) * std::sin(angle) +
+                                    axis * glm::dot(axis, v) * (1.0 - std::cos(angle));
+        const glm::dvec3 got = f64::borisVelocity(v, glm::dvec3(0.0), b, qm, dt);
+        EXPECT_LT(glm::length(got - expected), 1e-14 * glm::length(v)) << "omega_c dt = " << wcDt;
+    }
+}
+
+// No self-force: a lone particle's own field, deposited, solved and gathered with the same weights,
+// vanishes at the particle (1D and 2D, anywhere in its cell).
+TEST(PlasmaMesh, NoSelfForce)
+{
+    std::mt19937_64 rng(3);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    for (int dimension = 1; dimension <= 2; ++dimension) {
+        const PeriodicGrid grid(dimension, {16, 16, 1}, {0.1, 0.1, 1.0});
+        const FftPoissonSolver solver(grid);
+        for (int trial = 0; trial < 20; ++trial) {
+            Particles one;
+            one.position = {glm::dvec3(u(rng) * 1.6, u(rng) * 1.6, 0.5)};
+            one.velocity = {glm::dvec3(0.0)};
+            const std::vector<glm::dvec3> nodes =
+                nodeElectricField(grid, solver.solve(depositChargeDensity(grid, one)));
+            double scale = 0.0;
+            for (const glm::dvec3& e : nodes) scale = std::max(scale, glm::length(e));
+            const glm::dvec3 self = gatherField(grid, nodes, one.position)[0];
+            EXPECT_LT(glm::length(self), 1e-12 * scale) << "dimension " << dimension;
+        }
+    }
+}
+
+// The FFT solve gives the closed-form potential of one Fourier mode, ρ = cos(2πmx/L) →
+// φ = ρ/(ε₀ K²), K² = (4/Δx²) sin²(πm/n), and leaves a residual at rounding on random charge in 3D.
+TEST(PlasmaPoisson, FftSolvesTheDiscreteEquation)
+{
+    const PeriodicGrid line(1, {32, 1, 1}, {0.05, 1.0, 1.0});
+    std::vector<double> rho(32);
+    const int mode = 3;
+    for (int j = 0; j < 32; ++j) rho[j] = std::cos(2.0 * kPiValue * mode * j / 32);
+    const std::vector<double> phi = FftPoissonSolver(line).solve(rho);
+    const double s = std::sin(kPiValue * mode / 32);
+    const double k2 = 4.0 * s * s / (0.05 * 0.05);
+    for (int j = 0; j < 32; ++j)
+        EXPECT_NEAR(phi[j], rho[j] / (kVacuumPermittivity * k2), 1e-12 / (kVacuumPermittivity * k2));
+
+    const PeriodicGrid box(3, {16, 8, 12}, {0.1, 0.2, 0.15});
+    std::mt19937_64 rng(11);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    std::vector<double> random(box.nodeCount());
+    for (double& r : random) r = u(rng);
+    const std::vector<double> potential = FftPoissonSolver(box).solve(random);
+    EXPECT_LT(poissonResidual(box, random, potential), 1e-12);
+    double mean = 0.0;
+    for (double p : potential) mean += p;
+    EXPECT_NEAR(mean / double(potential.size()), 0.0, 1e-12 * std::abs(potential[0]));
+}
+
+// Plain Jacobi never converges on an even periodic grid: the checkerboard (−1)^(i+j+k) is an
+// eigenvector of its iteration with eigenvalue −1, flipped every sweep and never damped.
+TEST(PlasmaPoisson, JacobiNeverDampsTheCheckerboard)
+{
+    const PeriodicGrid grid(3, {8, 8, 8}, {0.1, 0.2, 0.3});
+    const std::vector<double> noCharge(grid.nodeCount(), 0.0);
+    std::vector<double> phi(grid.nodeCount());
+    for (int k = 0; k < 8; ++k)
+        for (int j = 0; j < 8; ++j)
+            for (int i = 0; i < 8; ++i) phi[grid.index(i, j, k)] = (i + j + k) % 2 == 0 ? 1.0 : -1.0;
+    const std::vector<double> start = phi;
+    jacobiSweeps(grid, noCharge, phi, 1001);
+    for (std::size_t n = 0; n < phi.size(); ++n)
+        ASSERT_NEAR(phi[n], -start[n], 1e-12);
+
+    // So from a random start, once every other mode has decayed (the slowest here has |μ| = 0.976), the
+    // residual stalls where the FFT's is at rounding.
+    std::mt19937_64 rng(5);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    std::vector<double> rho(grid.nodeCount()), guess(grid.nodeCount());
+    for (double& r : rho) r = u(rng) * 1e-9;
+    for (double& g : guess) g = u(rng);
+    jacobiSweeps(grid, rho, guess, 2000);
+    const double stalled = poissonResidual(grid, rho, guess);
+    jacobiSweeps(grid, rho, guess, 1);
+    EXPECT_GT(stalled, 0.1);
+    EXPECT_NEAR(poissonResidual(grid, rho, guess), stalled, 1e-9 * stalled);
+    EXPECT_LT(poissonResidual(grid, rho, FftPoissonSolver(grid).solve(rho)), 1e-12);
+}
+
+// Deposition in a fixed order: two runs from the same seed give the same bits.
+TEST(PlasmaSimulation, TwoRunsGiveIdenticalBits)
+{
+    const PeriodicGrid grid(2, {16, 16, 1}, {0.01, 0.01, 1.0});
+    const auto run = [&grid] {
+        ElectrostaticPic pic(grid, randomStart(grid, 2048, 1e12, 4.19e5, 42), glm::dvec3(0.0, 0.0, 5e-5), 2e-9);
+        for (int n = 0; n < 100; ++n) pic.step();
+        return pic.electrons();
+    };
+    const Particles a = run(), b = run();
+    ASSERT_EQ(a.position.size(), b.position.size());
+    EXPECT_EQ(std::memcmp(a.position.data(), b.position.data(), a.position.size() * sizeof(glm::dvec3)), 0);
+    EXPECT_EQ(std::memcmp(a.velocity.data(), b.velocity.data(), a.velocity.size() * sizeof(glm::dvec3)), 0);
+}
+
+// No NaN or Inf over 1e5 steps of a small magnetised thermal plasma near the leapfrog's limit.
+TEST(PlasmaSimulation, StaysFiniteOverAHundredThousandSteps)
+{
+    const double density = 1e12, thermalSpeed = 4.19e5;
+    const PeriodicGrid grid(1, {16, 1, 1}, {debyeLength(thermalSpeed, density), 1.0, 1.0});
+    const double dt = 1.5 / plasmaFrequency(density);
+    ElectrostaticPic pic(grid, randomStart(grid, 64, density, thermalSpeed, 9), glm::dvec3(0.0, 3e-4, 0.0), dt);
+    StepEnergies last;
+    for (long n = 0; n < 100000; ++n) last = pic.step();
+    EXPECT_TRUE(std::isfinite(last.total()));
+    for (std::size_t p = 0; p < 64; ++p)
+        for (int d = 0; d < 3; ++d) {
+            ASSERT_TRUE(std::isfinite(pic.electrons().position[p][d]));
+            ASSERT_TRUE(std::isfinite(pic.electrons().velocity[p][d]));
+        }
+}
+
+// Z against Dawson's integral at real arguments (Z(x) = i√π exp(−x²) − 2F(x); F from Abramowitz &
+// Stegun table 7.5), the series against the continued fraction across |ζ| = 4 and below the real
+// axis, and Z' = −2(1 + ζZ) by central differences in the lower half plane.
+TEST(PlasmaDispersion, PlasmaDispersionFunction)
+{
+    const double sqrtPi = std::sqrt(kPiValue);
+    EXPECT_NEAR(std::abs(plasmaDispersionZ(0.0) - std::complex<double>(0.0, sqrtPi)), 0.0, 1e-15);
+    const double dawson[][2] = {{1.0, 0.5380795069127684}, {2.0, 0.3013403889237920}, {3.0, 0.1782710306105583}};
+    for (const auto& [x, f] : dawson) {
+        const std::complex<double> z = plasmaDispersionZ(x);
+        EXPECT_NEAR(z.real(), -2.0 * f, 1e-13) << x;
+        EXPECT_NEAR(z.imag(), sqrtPi * std::exp(-x * x), 1e-13) << x;
+    }
+    // The continued fraction (|ζ| ≥ 4) against the series just beyond its default range (where the
+    // series' cancellation still leaves ~1e-8).
+    for (const std::complex<double> zeta : {std::complex<double>(4.2, 0.3), std::complex<double>(3.0, -3.0),
+                                            std::complex<double>(-4.1, -0.5), std::complex<double>(0.5, 4.05)}) {
+        std::complex<double> term = zeta, series = zeta;
+        for (int n = 1; n < 400; ++n) {
+            term *= -2.0 * zeta * zeta / double(2 * n + 1);
+            series += term;
+        }
+        const std::complex<double> bySeries = std::complex<double>(0.0, sqrtPi) * std::exp(-zeta * zeta) - 2.0 * series;
+        EXPECT_LT(std::abs(plasmaDispersionZ(zeta) - bySeries), 1e-7 * std::abs(bySeries)) << zeta;
+    }
+    for (const std::complex<double> zeta : {std::complex<double>(2.0, -0.2), std::complex<double>(5.0, -1.0)}) {
+        const double h = 1e-5;
+        const std::complex<double> derivative = (plasmaDispersionZ(zeta + h) - plasmaDispersionZ(zeta - h)) / (2.0 * h);
+        const std::complex<double> expected = -2.0 * (1.0 + zeta * plasmaDispersionZ(zeta));
+        EXPECT_LT(std::abs(derivative - expected), 1e-8 * std::abs(expected)) << zeta;
+    }
+}
+
+// The Landau root at kλ_D = 0.5: ω = (1.415662 − 0.153359 i) ω_p (Canosa 1973; McKinstrie et al. 1999).
+TEST(PlasmaDispersion, LandauRootMatchesThePublishedValue)
+{
+    const std::complex<double> root = landauRoot(0.5);
+    EXPECT_NEAR(root.real(), 1.415662, 1e-6);
+    EXPECT_NEAR(root.imag(), -0.153359, 1e-6);
+}
+
+// The cold two-stream rate peaks at k v₀ = √(3/8) ω_p with γ = ω_p/(2√2); stable from k v₀ = ω_p on.
+TEST(PlasmaDispersion, TwoStreamGrowthRate)
+{
+    const double peak = std::sqrt(3.0 / 8.0);
+    EXPECT_NEAR(twoStreamGrowthRate(peak), 1.0 / (2.0 * std::sqrt(2.0)), 1e-15);
+    EXPECT_LT(twoStreamGrowthRate(0.99 * peak), twoStreamGrowthRate(peak));
+    EXPECT_LT(twoStreamGrowthRate(1.01 * peak), twoStreamGrowthRate(peak));
+    EXPECT_EQ(twoStreamGrowthRate(1.0), 0.0);
+}
+
+// Langmuir: the leapfrog relation to 2e-5. The remaining 5e-6 is the grid's own dispersion,
+// −(kΔx)²/8 = −4.7e-6 at kΔx = 2π/1024; the leapfrog's shift it resolves is 1.7e-3 and 4.7e-2.
+TEST(PlasmaVerify, LangmuirFollowsTheLeapfrogRelation)
+{
+    EXPECT_NEAR(leapfrogPlasmaFrequency(0.2), 1.001674, 1e-6);
+    EXPECT_NEAR(leapfrogPlasmaFrequency(1.0), 1.047198, 1e-6);
+    for (const double wpDt : {0.2, 1.0}) {
+        const VerifyRow r = row(verifyLangmuir(wpDt), "omega_over_wp");
+        EXPECT_LT(r.relativeError(), 2e-5) << "omega_p dt = " << wpDt << ": " << r.measured;
+    }
+}
+
+// Boris: the rotation per step to rounding; |v| kept to rounding, about 1e-16 per step (measured
+// 2e-14 after 1e3 steps, 1.5e-11 after 1e5 at ω_cΔt = 100); the orbit bounded over 1e5 steps at ω_cΔt = 100.
+TEST(PlasmaVerify, BorisRotatesExactlyAndKeepsTheSpeed)
+{
+    for (const double wcDt : {0.1, 1.0, 100.0}) {
+        const long steps = wcDt == 100.0 ? 100000 : 1000;
+        const std::vector<VerifyRow> rows = verifyBoris(wcDt, steps);
+        EXPECT_LT(row(rows, "rotation_per_step_rad").relativeError(), 1e-12) << wcDt;
+        EXPECT_LT(row(rows, "max_relative_speed_change").measured, 1e-15 * double(steps)) << wcDt;
+    }
+    // The discrete orbit is a polygon inscribed in a circle of radius |v⊥|Δt/(2 sin(θ/2)).
+    const double b = 5e-5, dt = 100.0 / cyclotronFrequency(b), theta = 2.0 * std::atan(50.0);
+    const glm::dvec3 start(50.0), box(100.0); // m; the orbit's radius is 1.7 m
+    glm::dvec3 x = start, v(3e5, 0.0, 0.0);
+    const double radius = 3e5 * dt / (2.0 * std::sin(0.5 * theta));
+    double farthest = 0.0;
+    for (long n = 0; n < 100000; ++n) {
+        v = f64::borisVelocity(v, glm::dvec3(0.0), glm::dvec3(0.0, 0.0, b), -kElementaryCharge / kElectronMass, dt);
+        x = f64::leapfrogPosition(x, v, dt, box);
+        farthest = std::max(farthest, glm::length(x - start));
+    }
+    EXPECT_LE(farthest, 2.0 * radius * (1.0 + 1e-9));
+    EXPECT_GT(farthest, 1.9 * radius);
+}
+
+// E×B: the centre of the velocity circle is E×B/B² to rounding for any Δt.
+TEST(PlasmaVerify, ExBDriftIsExact)
+{
+    for (const double wcDt : {0.1, 1.0, 100.0}) {
+        const std::vector<VerifyRow> rows = verifyExB(wcDt);
+        EXPECT_LT(row(rows, "drift_along_ExB_over_E_over_B").relativeError(), 1e-10) << wcDt;
+        EXPECT_LT(std::abs(row(rows, "drift_along_E_over_E_over_B").measured), 1e-10) << wcDt;
+    }
+}
+
+// Two-stream: the growth rate to 0.5% at ω_pΔt = 0.2 (measured 0.14%, the leapfrog's share: 0.015%
+// at ω_pΔt = 0.05); an unseeded, quiet start: no noise.
+TEST(PlasmaVerify, TwoStreamGrowsAtTheColdRate)
+{
+    EXPECT_LT(row(verifyTwoStream(0.2), "growth_rate_over_wp").relativeError(), 5e-3);
+}
+
+// Energy: the total energy of a thermal plasma with Δx = λ_D drifts by 0.34% over 200 plasma periods
+// at ω_pΔt = 0.2 (the grid's slow heating); bounded at 1%. Deterministic (seeded), so the bound is
+// a regression bound on the scheme, not on noise.
+TEST(PlasmaVerify, TotalEnergyDriftsLittle)
+{
+    EXPECT_LT(std::abs(row(verifyEnergy(0.2), "relative_energy_drift").measured), 1e-2);
+}
+
+// Landau: frequency to 0.5% and damping rate to 2% (measured 0.09% and 0.4%; over fit windows between
+// 4–16 and 6–26 /ω_p the measurement moves by 0.3% and 1%: the particles' noise).
+TEST(PlasmaVerify, LandauDampingMatchesTheKineticRoot)
+{
+    const std::vector<VerifyRow> rows = verifyLandau(0.2);
+    EXPECT_LT(row(rows, "frequency_over_wp").relativeError(), 5e-3);
+    EXPECT_LT(row(rows, "damping_rate_over_wp").relativeError(), 2e-2);
+}
+
+// Outside the leapfrog's stability the cases refuse to run.
+TEST(PlasmaVerify, RefusesAnUnstableTimeStep)
+{
+    EXPECT_THROW(verifyLangmuir(2.0), std::domain_error);
+    EXPECT_THROW(verifyTwoStream(-0.1), std::domain_error);
+    EXPECT_THROW(verifyBoris(0.0), std::domain_error);
+}
