@@ -134,19 +134,23 @@ void fillMaxwellianRows(const DepositionTableSpec& spec, DepositionTable& table)
     for (int j = 0; j < table.energyCount; ++j)
         topMass[static_cast<size_t>(j)] = characteristicMass(30.0 * std::exp(table.minLogEnergy + j * table.logEnergyStep));
 
-    std::vector<double> mono(gridMass.size());
+    std::vector<double> mono(gridMass.size()), sum(static_cast<size_t>(table.energyCount));
     for (int i = 0; i < table.altitudeCount; ++i) {
         const double altitudeKm = spec.minAltitudeKm + i * spec.altitudeStepKm;
         const double density = massDensity(altitudeKm), shielding = shieldingMass(altitudeKm);
         for (size_t p = 0; p < mono.size(); ++p)
             mono[p] = monoenergeticDepositionPerEnergyFlux(density, shielding, gridMass[p]);
-        for (int j = 0; j < table.energyCount; ++j) {
-            const double* m = &mono[static_cast<size_t>(j) * rule.substeps];
-            double sum = rule.topWeight * monoenergeticDepositionPerEnergyFlux(density, shielding, topMass[static_cast<size_t>(j)]);
-            for (size_t n = 0; n < rule.weights.size(); ++n)
-                sum += rule.weights[n] * m[n];
-            table.decibels[static_cast<size_t>(j) * table.altitudeCount + i] = decibelsOf(sum, spec.floorDecibels);
-        }
+        for (int j = 0; j < table.energyCount; ++j)
+            sum[static_cast<size_t>(j)] =
+                rule.topWeight * monoenergeticDepositionPerEnergyFlux(density, shielding, topMass[static_cast<size_t>(j)]);
+        // Node by node across all energies: each texel's sum keeps its order, the inner loop
+        // vectorises over texels.
+        for (size_t n = 0; n < rule.weights.size(); ++n)
+            for (int j = 0; j < table.energyCount; ++j)
+                sum[static_cast<size_t>(j)] += rule.weights[n] * mono[static_cast<size_t>(j) * rule.substeps + n];
+        for (int j = 0; j < table.energyCount; ++j)
+            table.decibels[static_cast<size_t>(j) * table.altitudeCount + i] =
+                decibelsOf(sum[static_cast<size_t>(j)], spec.floorDecibels);
     }
 }
 
