@@ -2,6 +2,7 @@
 
 #include "io/atomic_file.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -10,6 +11,7 @@
 #include <iterator>
 #include <optional>
 #include <stdexcept>
+#include <utility>
 
 namespace aurorawall::io {
 
@@ -87,6 +89,33 @@ std::optional<std::vector<char>> readFile(const std::string& path)
     return bytes;
 }
 
+// Keeps the newest kKeptPerName files of `name` in the folder and removes the older ones, so that
+// rebuilds (each a new executable digest, so a new key) do not fill the disk. Best effort: a file
+// another process removes first, or cannot be removed, is left to the next write.
+constexpr std::size_t kKeptPerName = 8;
+
+void removeOldFiles(const std::string& directory, const std::string& name)
+{
+    namespace fs = std::filesystem;
+    std::error_code error;
+    std::vector<std::pair<fs::file_time_type, fs::path>> files;
+    for (const fs::directory_entry& entry : fs::directory_iterator(directory, error)) {
+        const std::string file = entry.path().filename().string();
+        const bool ofName = file.size() == name.size() + 1 + 16 + 6 && file.rfind(name + "-", 0) == 0 &&
+                            entry.path().extension() == ".table"; // "<name>-<16 hex digits>.table"
+        if (ofName) {
+            const fs::file_time_type written = entry.last_write_time(error);
+            if (!error)
+                files.emplace_back(written, entry.path());
+        }
+    }
+    if (files.size() <= kKeptPerName)
+        return;
+    std::sort(files.begin(), files.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+    for (std::size_t i = kKeptPerName; i < files.size(); ++i)
+        fs::remove(files[i].second, error);
+}
+
 std::string hex16(std::uint64_t value)
 {
     char text[17];
@@ -161,6 +190,7 @@ CachedTable cachedTable(const std::string& directory, const std::string& name, c
             if (!out.flush())
                 throw std::runtime_error(temporary + ": cannot write");
         });
+        removeOldFiles(directory, name);
     } catch (const std::exception& e) {
         result.outcome = (corrupt ? "cache corrupt, rebuilt, not cached (" : "built, not cached (") +
                          std::string(e.what()) + ")";

@@ -30,8 +30,8 @@ struct CachedTable {
 };
 
 // The table stored under `key` in `directory` (file "<name>-<FNV-1a of key>.table"), or, when there
-// is none or it is corrupt, build()'s bytes, then written there (creating the folder). An empty
-// directory means no cache. Failing to read or write the cache is reported in the outcome, never
+// is none or it is corrupt, build()'s bytes, then written there (creating the folder); of the files
+// of one name the newest 8 are kept, older ones removed. An empty directory means no cache. Failing to read or write the cache is reported in the outcome, never
 // thrown; build()'s exceptions propagate.
 CachedTable cachedTable(const std::string& directory, const std::string& name, const std::string& key,
                         const std::function<std::vector<char>()>& build);

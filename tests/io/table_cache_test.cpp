@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -123,6 +124,29 @@ TEST(TableCache, CorruptFilesAreDetectedAndRebuilt)
     detected += c.get(folder, "key A").outcome == "cache corrupt, rebuilt";
     EXPECT_EQ(detected, cases);
     EXPECT_EQ(c.get(folder, "key A").outcome, "read from cache");
+}
+
+// Each rebuild of the executable is a new key: the folder keeps only the newest 8 files of a name.
+TEST(TableCache, KeepsTheNewestEightFilesOfAName)
+{
+    TempDir dir;
+    const std::string folder = dir.path().string();
+    Counted c;
+    cachedTable(folder, "other", "key 0", [] { return table(3); });
+    for (int k = 0; k < 12; ++k) {
+        const auto path = cachedTablePath(folder, "test", "key " + std::to_string(k));
+        c.get(folder, "key " + std::to_string(k));
+        // Older write times than the ones that follow, whatever the file system's clock resolution.
+        fs::last_write_time(path, fs::file_time_type::clock::now() - std::chrono::hours(12 - k));
+    }
+    int tests = 0;
+    for (const auto& entry : fs::directory_iterator(folder))
+        tests += entry.path().filename().string().rfind("test-", 0) == 0;
+    EXPECT_EQ(tests, 8);
+    EXPECT_TRUE(fs::exists(cachedTablePath(folder, "other", "key 0")));
+    EXPECT_TRUE(fs::exists(cachedTablePath(folder, "test", "key 11")));
+    EXPECT_TRUE(fs::exists(cachedTablePath(folder, "test", "key 4")));
+    EXPECT_FALSE(fs::exists(cachedTablePath(folder, "test", "key 3")));
 }
 
 TEST(TableCache, NoFolderMeansNoCache)
