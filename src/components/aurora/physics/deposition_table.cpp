@@ -73,6 +73,7 @@ float decibelsOf(double depositionPerEnergyFluxPerCm, double floorDecibels)
 // intervals; the rest, [u_2M, ln 30] (shorter than 2h), is the integral of the cubic through
 // u_2M−2, u_2M−1, u_2M and ln 30, whose node ln E0 + ln 30 lies on a second grid of one node per
 // energy. Both limits are the per-texel rule's, so the two differ only by their quadrature errors.
+// The default table (Δ = 0.0363, k = 2): 823 evaluations per altitude instead of 128 × 257.
 struct MaxwellianRule {
     double step = 0.0;           // h
     int substeps = 1;            // k = Δ/h
@@ -82,21 +83,20 @@ struct MaxwellianRule {
 
 MaxwellianRule maxwellianRule(double logEnergyStep)
 {
-    constexpr double kLowestU = -4.605170185988091; // ln 0.01
-    constexpr double kHighestU = 3.401197381662155; // ln 30
+    const double lowestU = std::log(0.01), highestU = std::log(30.0); // the per-texel rule's limits
     constexpr double kLongestStep = 1.0 / 32.0;
     MaxwellianRule rule;
     rule.substeps = logEnergyStep > 0.0 ? static_cast<int>(std::ceil(logEnergyStep / kLongestStep)) : 1;
     const double h = logEnergyStep > 0.0 ? logEnergyStep / rule.substeps : kLongestStep;
     rule.step = h;
-    const int simpsonIntervals = 2 * static_cast<int>(std::floor((kHighestU - kLowestU) / (2.0 * h)));
+    const int simpsonIntervals = 2 * static_cast<int>(std::floor((highestU - lowestU) / (2.0 * h)));
     std::vector<double> quadrature(static_cast<size_t>(simpsonIntervals) + 1);
     for (int n = 0; n <= simpsonIntervals; ++n)
         quadrature[static_cast<size_t>(n)] = (n == 0 || n == simpsonIntervals ? 1.0 : (n % 2 ? 4.0 : 2.0)) * h / 3.0;
 
     // The remainder [t, t + R]: Lagrange weights of the nodes t − 2h, t − h, t, t + R (in units of h
     // from t), integrated by 3-point Gauss–Legendre, exact for the cubic basis polynomials.
-    const double remainder = (kHighestU - kLowestU) / h - simpsonIntervals; // R/h, in [0, 2)
+    const double remainder = (highestU - lowestU) / h - simpsonIntervals; // R/h, in [0, 2)
     const double nodes[4] = {-2.0, -1.0, 0.0, remainder};
     const double gaussPoint[3] = {-std::sqrt(0.6), 0.0, std::sqrt(0.6)}, gaussWeight[3] = {5.0 / 9.0, 8.0 / 9.0, 5.0 / 9.0};
     double tail[4] = {0.0, 0.0, 0.0, 0.0};
@@ -119,8 +119,8 @@ MaxwellianRule maxwellianRule(double logEnergyStep)
     };
     rule.weights.resize(quadrature.size());
     for (size_t n = 0; n < quadrature.size(); ++n)
-        rule.weights[n] = kernel(kLowestU + static_cast<double>(n) * h) * quadrature[n];
-    rule.topWeight = kernel(kHighestU) * tail[3];
+        rule.weights[n] = kernel(lowestU + static_cast<double>(n) * h) * quadrature[n];
+    rule.topWeight = kernel(highestU) * tail[3];
     return rule;
 }
 
