@@ -8,6 +8,8 @@
 #include <fstream>
 #include <iterator>
 #include <string>
+#include <sys/wait.h>
+#include <unistd.h>
 #include <vector>
 
 using namespace aurorawall::io;
@@ -147,6 +149,34 @@ TEST(TableCache, KeepsTheNewestEightFilesOfAName)
     EXPECT_TRUE(fs::exists(cachedTablePath(folder, "test", "key 11")));
     EXPECT_TRUE(fs::exists(cachedTablePath(folder, "test", "key 4")));
     EXPECT_FALSE(fs::exists(cachedTablePath(folder, "test", "key 3")));
+}
+
+// Ranks are processes: several that build the same table at once each rename a complete file over
+// the same name (temporary names carry the process id). Every one ends with the table, none sees a
+// partial file, and the file left is good.
+TEST(TableCache, ProcessesRacingToWriteLeaveOneGoodFile)
+{
+    TempDir dir;
+    const std::string folder = dir.path().string();
+    std::vector<pid_t> children;
+    for (int k = 0; k < 6; ++k) {
+        const pid_t pid = ::fork();
+        ASSERT_GE(pid, 0);
+        if (pid == 0) {
+            const CachedTable t = cachedTable(folder, "test", "key A", [] { return table(1); });
+            const bool good = t.bytes == table(1) && (t.outcome == "built, cached" || t.outcome == "read from cache");
+            ::_exit(good ? 0 : 1);
+        }
+        children.push_back(pid);
+    }
+    for (const pid_t pid : children) {
+        int status = 0;
+        ASSERT_EQ(::waitpid(pid, &status, 0), pid);
+        EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0);
+    }
+    Counted c;
+    EXPECT_EQ(c.get(folder, "key A").outcome, "read from cache");
+    EXPECT_EQ(dir.entries().size(), 1u); // no temporary left behind
 }
 
 TEST(TableCache, NoFolderMeansNoCache)

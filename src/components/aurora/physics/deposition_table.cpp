@@ -75,6 +75,7 @@ float decibelsOf(double depositionPerEnergyFluxPerCm, double floorDecibels)
 // energy. Both limits are the per-texel rule's, so the two differ only by their quadrature errors.
 // The default table (Δ = 0.0363, k = 2): 823 evaluations per altitude instead of 128 × 257.
 struct MaxwellianRule {
+    double lowestU = 0.0;        // ln 0.01
     double step = 0.0;           // h
     int substeps = 1;            // k = Δ/h
     std::vector<double> weights; // ½ x³ e^{−x} × quadrature weight at u_0 … u_2M
@@ -86,6 +87,7 @@ MaxwellianRule maxwellianRule(double logEnergyStep)
     const double lowestU = std::log(0.01), highestU = std::log(30.0); // the per-texel rule's limits
     constexpr double kLongestStep = 1.0 / 32.0;
     MaxwellianRule rule;
+    rule.lowestU = lowestU;
     rule.substeps = logEnergyStep > 0.0 ? static_cast<int>(std::ceil(logEnergyStep / kLongestStep)) : 1;
     const double h = logEnergyStep > 0.0 ? logEnergyStep / rule.substeps : kLongestStep;
     rule.step = h;
@@ -130,7 +132,7 @@ void fillMaxwellianRows(const DepositionTableSpec& spec, DepositionTable& table)
     const int gridCount = (table.energyCount - 1) * rule.substeps + static_cast<int>(rule.weights.size());
     std::vector<double> gridMass(static_cast<size_t>(gridCount)), topMass(static_cast<size_t>(table.energyCount));
     for (int p = 0; p < gridCount; ++p)
-        gridMass[static_cast<size_t>(p)] = characteristicMass(std::exp(table.minLogEnergy + std::log(0.01) + p * rule.step));
+        gridMass[static_cast<size_t>(p)] = characteristicMass(std::exp(table.minLogEnergy + rule.lowestU + p * rule.step));
     for (int j = 0; j < table.energyCount; ++j)
         topMass[static_cast<size_t>(j)] = characteristicMass(30.0 * std::exp(table.minLogEnergy + j * table.logEnergyStep));
 
