@@ -1,6 +1,8 @@
 #include "components/fluid_detail/curtain_detail.h"
 
 #include "common/constants.h"
+#include "components/fluid_detail/cached_flux_frames.h"
+#include "io/table_cache.h"
 
 #include <chrono>
 #include <cmath>
@@ -50,14 +52,15 @@ CurtainDetail::CurtainDetail(const Settings& detail)
       frames_(gl::Texture::create3D(1, 1, 1, gl::TexelFormat::R32F, gl::Filter::Linear, gl::Wrap::Repeat))
 {
     const auto start = std::chrono::steady_clock::now();
-    const fluid::FluxFrames f = fluid::simulateCurtainDetail(spec_);
+    const CachedFluxFrames cached = cachedFluxFrames(spec_, io::defaultCacheDirectory());
+    const fluid::FluxFrames& f = cached.frames;
     frames_ = gl::Texture::create3D(f.nx, f.ny, f.frames, gl::TexelFormat::R32F, gl::Filter::Linear, gl::Wrap::Repeat);
     frames_.upload(f.flux);
     shape_ = detailShape(spec_, f);
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    char text[160];
-    std::snprintf(text, sizeof text, "fluid_detail: %d x %d cells, %d frames, reach %.1f km: %.0f ms", f.nx, f.ny,
-                  f.frames, shape_.reachKm, ms);
+    char text[400];
+    std::snprintf(text, sizeof text, "fluid_detail: %d x %d cells, %d frames, reach %.1f km, %s: %.0f ms", f.nx, f.ny,
+                  f.frames, shape_.reachKm, cached.outcome.c_str(), ms);
     summary_ = text;
 }
 

@@ -1,8 +1,9 @@
 #pragma once
 // The fluid_detail component on the GPU: the Kelvin-Helmholtz flux frames of src/components/fluid_detail/simulation as a 3D
 // texture (along the curtain x, across it y, frame z; linear filtering, periodic along), with the
-// constants that turn a lookup into a profile of peak 1. Simulated once per rank at start-up;
-// the simulation is deterministic, so every rank holds the same frames.
+// constants that turn a lookup into a profile of peak 1. Simulated at start-up, or read from the
+// on-disk cache (cached_flux_frames.h); the simulation is deterministic and a cache file is read
+// only when its checksum and key match, so every rank holds the same frames.
 #include "components/fluid_detail/simulation/curtain_detail.h"
 #include "gl/shader_program.h"
 #include "gl/texture.h"

@@ -15,6 +15,9 @@ double characteristicMass(double energyKeV)
 
 double lazarevRate(double r)
 {
+    // From r = 28 on both terms underflow to exactly 0 (e^{−812}, e^{−1672} < 4.9e-324): skip them.
+    if (r >= 28.0)
+        return 0.0;
     return 4.2 * r * std::exp(-r * r - r) + 0.48 * std::exp(-17.4 * std::pow(r, 1.37));
 }
 
@@ -29,13 +32,17 @@ double lazarevRateIntegral()
     return integral;
 }
 
+double monoenergeticDepositionPerEnergyFlux(double density, double shielding, double characteristicMassGPerCm2)
+{
+    return lazarevRate(shielding / characteristicMassGPerCm2) * density / characteristicMassGPerCm2;
+}
+
 namespace {
 
 // A = L(M/M_E)·E·D/M_E for an atmosphere of density D and shielding mass M at the altitude.
 double depositionPerElectronIn(double density, double shielding, double energyKeV)
 {
-    double massE = characteristicMass(energyKeV);
-    return lazarevRate(shielding / massE) * energyKeV * density / massE;
+    return monoenergeticDepositionPerEnergyFlux(density, shielding, characteristicMass(energyKeV)) * energyKeV;
 }
 
 } // namespace
@@ -53,7 +60,7 @@ double depositionPerEnergyFlux(double altitudeKm, double energyKeV, Spectrum spe
 double depositionPerEnergyFlux(double density, double shielding, double energyKeV, Spectrum spectrum)
 {
     if (spectrum == Spectrum::Monoenergetic)
-        return depositionPerElectronIn(density, shielding, energyKeV) / energyKeV;
+        return monoenergeticDepositionPerEnergyFlux(density, shielding, characteristicMass(energyKeV));
     // E = E0·x, u = ln x: ∫ φ A dE = E0² ∫ x² e^{−x} A(z, E0 x) du (φ = E e^{−E/E0}, dE = E du).
     // A fixed Simpson rule, not an adaptive one: the table builder calls this for every altitude
     // and energy, and 257 samples of a smooth integrand in ln E cost the same everywhere; within

@@ -35,4 +35,9 @@ double depositionPerEnergyFlux(double altitudeKm, double energyKeV, Spectrum spe
 double depositionPerEnergyFlux(double densityGPerCm3, double shieldingMassGPerCm2, double energyKeV,
                                Spectrum spectrum);
 
+// The monoenergetic A/E = L(M/M_E)·D/M_E, cm⁻¹, for an energy whose characteristic mass M_E (g/cm²)
+// is already known: the Maxwellian table evaluates M_E once per energy for all altitudes.
+double monoenergeticDepositionPerEnergyFlux(double densityGPerCm3, double shieldingMassGPerCm2,
+                                            double characteristicMassGPerCm2);
+
 } // namespace aurorawall::aurora
