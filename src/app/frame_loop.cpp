@@ -12,6 +12,7 @@
 
 #include <cstdio>
 #include <optional>
+#include <stdexcept>
 
 namespace aurorawall::app {
 
@@ -52,6 +53,23 @@ void writeScreenshots(WallSession& session, const io::Image& canvas, int gatherS
     }
 }
 
+// The master writes the frame's wall into the movie; on a failure it says why once and stops the run
+// (the movie would have a hole), which then exits 1.
+void writeMovieFrame(WallSession& session, MovieWriter& movie, const io::Image& canvas, int gatherStatus,
+                     const cluster::FrameState& state, bool& stopRequested)
+{
+    if (!session.movieError.empty())
+        return;
+    try {
+        if (gatherStatus != 0)
+            throw std::runtime_error("the wall could not be read back");
+        movie.write(canvas, state);
+    } catch (const std::exception& e) {
+        session.movieError = "--movie " + session.options.movieDir + ": " + e.what();
+        stopRequested = true;
+    }
+}
+
 } // namespace
 
 cluster::FrameStats runFrames(WallSession& session, const cluster::MpiWorld& world)
@@ -70,6 +88,9 @@ cluster::FrameStats runFrames(WallSession& session, const cluster::MpiWorld& wor
     bool stopRequested = false;
     control::WallStatus wallStatus;
     std::vector<control::ScreenshotRequest> screenshots;
+    std::optional<MovieWriter> movie;
+    if (world.isMaster() && !session.options.movieDir.empty())
+        movie.emplace(session.options.movieDir, session.options.movieExr, session.toneMap);
     std::vector<char> message(cluster::frameMessageBytes(bandCount));
     auto waitStart = SteadyClock::now(); // from this rank's previous report to this frame's message
     auto previousFrameStart = SteadyClock::now();
@@ -87,12 +108,13 @@ cluster::FrameStats runFrames(WallSession& session, const cluster::MpiWorld& wor
                 screenshots = requests.screenshots;
             }
             cluster::FrameState state = clock->next(stopRequested);
-            state.gatherWall = !screenshots.empty();
+            state.gatherWall = !screenshots.empty() || movie.has_value();
             message = cluster::packFrameMessage({state, split->next(), {}}, bandCount);
         }
         previousFrameStart = frameStart;
         world.broadcast(message);
         const cluster::FrameMessage frame = cluster::unpackFrameMessage(message, bandCount);
+        world.setPhase(cluster::RankPhase::Draw, frame.state.frame);
         if (frame.state.quit) {
             for (const control::ScreenshotRequest& shot : screenshots)
                 session.control->answer(shot.client, "error screenshot " + shot.path + ": the wall is quitting");
@@ -132,6 +154,7 @@ cluster::FrameStats runFrames(WallSession& session, const cluster::MpiWorld& wor
         // 4. One gather: the master learns what every rank drew, how long it took, what its bands
         // cost, and whether to stop.
         waitStart = SteadyClock::now();
+        world.setPhase(cluster::RankPhase::Gather, frame.state.frame);
         const std::vector<char> gathered = world.gather(cluster::packRankMessage(mine, bandCount));
         if (world.isMaster()) {
             const std::vector<cluster::RankMessage> ranks = cluster::unpackRankMessages(gathered, bandCount);
@@ -149,14 +172,18 @@ cluster::FrameStats runFrames(WallSession& session, const cluster::MpiWorld& wor
             stats.add(std::move(record));
         }
 
-        // 5. A screenshot: every rank sends its screens, the master writes the wall.
+        // 5. A screenshot or a movie frame: every rank sends its screens, the master writes the wall.
         if (frame.state.gatherWall) {
             io::Image canvas;
             const int status = gatherWallImage(session, world, canvas);
-            if (world.isMaster())
+            if (world.isMaster()) {
                 writeScreenshots(session, canvas, status, screenshots);
+                if (movie)
+                    writeMovieFrame(session, *movie, canvas, status, frame.state, stopRequested);
+            }
             screenshots.clear();
         }
+        world.setPhase(cluster::RankPhase::Broadcast, frame.state.frame);
     }
     return stats;
 }

@@ -71,6 +71,13 @@ RenderOptions parseRenderOptions(int argc, char** argv)
         ("control-bind", po::value(&o.controlBind)->default_value(o.controlBind),
          "the IPv4 address --control-port listens on (0.0.0.0: every interface; anyone who reaches it can steer "
          "the wall and write PNG files as this user)")
+        ("rank-timeout", po::value(&o.rankTimeoutS)->default_value(o.rankTimeoutS),
+         "seconds without a heartbeat from a rank (sent by a thread of its own, so a slow frame is not "
+         "silence) after which the master names it and ends the job with exit status 3 (0.1 to 1e6)")
+        ("movie", po::value(&o.movieDir),
+         "the master writes every frame's wall into this folder: frame-000000.png, ... and frames.csv "
+         "(frame number, animation time); every rank sends its screens every frame")
+        ("movie-exr", po::bool_switch(&o.movieExr), "with --movie, also frame-000000.exr, ... (linear, half float)")
         ("quiet", po::bool_switch(&o.quiet), "print only the summary, not a line per frame")
         ("verbose", po::bool_switch(&o.verbose), "also print the per-frame work of the components (curtain map build)");
     o.helpText = cli.help();
@@ -103,6 +110,11 @@ RenderOptions parseRenderOptions(int argc, char** argv)
         const bool json = o.statsFile.size() > 5 && o.statsFile.compare(o.statsFile.size() - 5, 5, ".json") == 0;
         check(csv || json, "--stats " + o.statsFile + ": the file name must end in .csv or .json");
     }
+    check(std::isfinite(o.rankTimeoutS) && o.rankTimeoutS >= 0.1 && o.rankTimeoutS <= 1e6,
+          "--rank-timeout must be a number of seconds in [0.1, 1e6]");
+    if (cli.given("movie"))
+        check(!o.movieDir.empty(), "--movie must not be empty");
+    check(!o.movieExr || cli.given("movie"), "--movie-exr needs --movie");
     check(!o.outDir.empty(), "--out must not be empty");
     check(o.balanceBands >= 1 && o.balanceBands <= 256, "--balance-bands must be in [1, 256]");
     return o;

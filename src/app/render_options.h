@@ -33,6 +33,9 @@ struct RenderOptions {
     cluster::BandMeasure balanceBy = cluster::BandMeasure::CpuTime; // what the balancer equalizes
     int controlPort = -1;                // --control-port; -1: no remote control, 0: a free port
     std::string controlBind = "127.0.0.1"; // --control-bind
+    double rankTimeoutS = 10.0;          // --rank-timeout: a rank silent this long ends the job (exit status 3)
+    std::string movieDir;                // --movie: every frame's wall as OUT/frame-NNNNNN.png; empty: none
+    bool movieExr = false;               // --movie-exr: also frame-NNNNNN.exr
     bool quiet = false;
     bool verbose = false;
     bool help = false;

@@ -1,6 +1,7 @@
 #include "app/wall_output.h"
 
 #include "app/cli/exit_status.h"
+#include "io/atomic_file.h"
 #include "io/exr.h"
 #include "io/half_pixels.h"
 #include "io/image.h"
@@ -9,6 +10,8 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
+#include <fstream>
+#include <stdexcept>
 #include <utility>
 
 namespace aurorawall::app {
@@ -89,12 +92,38 @@ int gatherWallImage(WallSession& session, const cluster::MpiWorld& world, io::Im
     return status;
 }
 
+MovieWriter::MovieWriter(std::string dir, bool exr, io::ToneMap toneMap)
+    : dir_(std::move(dir)), exr_(exr), toneMap_(toneMap)
+{
+}
+
+void MovieWriter::write(const io::Image& canvas, const cluster::FrameState& state)
+{
+    char name[32];
+    std::snprintf(name, sizeof name, "/frame-%06llu", static_cast<unsigned long long>(state.frame));
+    const std::string stem = dir_ + name;
+    io::writePng(stem + ".png", canvas, toneMap_);
+    if (exr_)
+        io::writeExr(stem + ".exr", canvas);
+    char row[64];
+    std::snprintf(row, sizeof row, "%llu,%.17g\n", static_cast<unsigned long long>(state.frame), state.timeS);
+    csv_ += row;
+    io::writeFileAtomically(dir_ + "/frames.csv", [&](const std::string& temporary) {
+        std::ofstream out(temporary, std::ios::binary);
+        out << csv_;
+        out.close();
+        if (!out)
+            throw std::runtime_error(dir_ + "/frames.csv: write failed");
+    });
+}
+
 int writeOutputs(WallSession& session, const cluster::MpiWorld& world, const cluster::FrameStats& stats)
 {
     const RenderOptions& options = session.options;
     std::vector<std::pair<int, io::Image>> images;
     io::Image canvas;
     int status = cli::kSuccess;
+    world.setPhase(cluster::RankPhase::Output);
     if (options.gather || options.tiles)
         status = readScreens(session, world, options.tiles, images);
     if (status == cli::kSuccess && options.gather)
@@ -103,6 +132,8 @@ int writeOutputs(WallSession& session, const cluster::MpiWorld& world, const clu
         status = agreedStep(world, [&] {
             if (!world.isMaster())
                 return;
+            if (!session.movieError.empty())
+                throw std::runtime_error(session.movieError);
             if (options.gather) {
                 io::writeExr(options.outDir + "/wall.exr", canvas);
                 io::writePng(options.outDir + "/wall.png", canvas, session.toneMap);

@@ -12,6 +12,8 @@
 #include <filesystem>
 #include <iostream>
 
+#include <unistd.h>
+
 namespace aurorawall::app {
 
 namespace {
@@ -62,6 +64,8 @@ void configure(const cluster::MpiWorld& world, int argc, char** argv, WallSessio
     render::fragmentShaderSource(s.scene, s.shaderDir); // every module readable before any window opens
     if (options.gather || options.tiles)
         io::ensureWritableDirectory(options.outDir, "--out");
+    if (!options.movieDir.empty())
+        io::ensureWritableDirectory(options.movieDir, "--movie");
     if (!options.statsFile.empty()) {
         const std::filesystem::path parent = std::filesystem::path(options.statsFile).parent_path();
         io::ensureWritableDirectory(parent.empty() ? "." : parent.string(), "--stats");
@@ -122,6 +126,12 @@ int setUpWallSession(const cluster::MpiWorld& world, int argc, char** argv, Wall
         if (world.isMaster())
             std::cout << session.options.helpText;
         return cli::kSuccess;
+    }
+    world.startWatchdog(session.options.rankTimeoutS);
+    world.setPhase(cluster::RankPhase::SetUp);
+    if (session.options.verbose) { // lets an operator (or a test) find a rank's process
+        std::printf("rank %d: pid %d\n", world.rank(), static_cast<int>(getpid()));
+        std::fflush(stdout);
     }
     status = agreedStep(world, [&] { openGraphics(world, session); });
     if (status != cli::kSuccess)

@@ -38,6 +38,7 @@ struct WallSession {
     std::vector<cluster::Band> bands;
     bool balanced = false;
     std::unique_ptr<control::ControlServer> control; // master with --control-port only
+    std::string movieError; // master: why a --movie frame could not be written (the run then stops)
 };
 
 // Runs one step on every rank and agrees on its outcome: the largest exit status over the ranks

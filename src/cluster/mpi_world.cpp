@@ -10,14 +10,36 @@ namespace aurorawall::cluster {
 
 MpiWorld::MpiWorld(int* argc, char*** argv)
 {
-    MPI_Init(argc, argv);
+    // The watchdog's thread calls MPI while the main thread does.
+    int provided = MPI_THREAD_SINGLE;
+    MPI_Init_thread(argc, argv, MPI_THREAD_MULTIPLE, &provided);
     MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
     MPI_Comm_size(MPI_COMM_WORLD, &size_);
+    if (provided < MPI_THREAD_MULTIPLE && rank_ == 0)
+        std::fprintf(stderr, "aurorawall: this MPI library does not offer MPI_THREAD_MULTIPLE; "
+                             "no watchdog for silent ranks\n");
+    if (provided == MPI_THREAD_MULTIPLE)
+        MPI_Comm_dup(MPI_COMM_WORLD, &heartbeatComm_);
 }
 
 MpiWorld::~MpiWorld()
 {
+    watchdog_.reset();
+    if (heartbeatComm_ != MPI_COMM_NULL)
+        MPI_Comm_free(&heartbeatComm_);
     MPI_Finalize();
+}
+
+void MpiWorld::startWatchdog(double timeoutS) const
+{
+    if (heartbeatComm_ != MPI_COMM_NULL && !watchdog_)
+        watchdog_ = std::make_unique<Watchdog>(heartbeatComm_, timeoutS);
+}
+
+void MpiWorld::setPhase(RankPhase phase, std::uint64_t frame) const
+{
+    if (watchdog_)
+        watchdog_->setPhase(phase, frame);
 }
 
 int MpiWorld::agreedStatus(int myStatus, const std::string& myError, const std::string& prefix) const

@@ -1,11 +1,15 @@
 #pragma once
 // The MPI calls of aurorawall, in one place: agreement on set-up errors, the frame's broadcast and
 // gather, the swap barrier, the band exchange and the gathering of output. Messages travel as bytes
-// (every rank runs the same binary).
+// (every rank runs the same binary). The watchdog (cluster/watchdog.h) ends the job if a rank falls silent.
+#include "cluster/rank_phase.h"
+#include "cluster/watchdog.h"
+
 #include <mpi.h>
 
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -21,6 +25,12 @@ public:
     int rank() const { return rank_; }
     int size() const { return size_; }
     bool isMaster() const { return rank_ == 0; }
+
+    // Collective: from now on the master ends the job if another rank sends no heartbeat for
+    // `timeoutS` seconds (cluster/watchdog.h).
+    void startWatchdog(double timeoutS) const;
+    // What this rank is doing now, for its heartbeats (nothing before startWatchdog).
+    void setPhase(RankPhase phase, std::uint64_t frame = 0) const;
 
     // Called by every rank after a set-up step with its own exit status (0: it went well) and error
     // message. Returns the largest status over the ranks, on every rank; if it is not 0, rank 0 prints
@@ -55,6 +65,8 @@ public:
 private:
     int rank_ = 0;
     int size_ = 1;
+    MPI_Comm heartbeatComm_ = MPI_COMM_NULL;
+    mutable std::unique_ptr<Watchdog> watchdog_; // started once the options are known
 };
 
 } // namespace aurorawall::cluster

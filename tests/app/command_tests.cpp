@@ -147,6 +147,18 @@ TEST(RenderOptions, EnumOptionsAreParsedOnce)
     EXPECT_EQ(parseRender({"--wall", "w.ini", "--scene", "s.toml", "--balance"}).balance, Balance::On);
 }
 
+TEST(RenderOptions, WatchdogAndMovie)
+{
+    const RenderOptions defaults = parseRender({"--wall", "w.ini", "--scene", "s.toml"});
+    EXPECT_EQ(defaults.rankTimeoutS, 10.0);
+    EXPECT_TRUE(defaults.movieDir.empty());
+    const RenderOptions o = parseRender(
+        {"--wall", "w.ini", "--scene", "s.toml", "--rank-timeout", "2.5", "--movie", "m", "--movie-exr"});
+    EXPECT_EQ(o.rankTimeoutS, 2.5);
+    EXPECT_EQ(o.movieDir, "m");
+    EXPECT_TRUE(o.movieExr);
+}
+
 TEST(RenderOptions, MistakesAreUsageErrorsNamingTheOption)
 {
     const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
@@ -157,6 +169,9 @@ TEST(RenderOptions, MistakesAreUsageErrorsNamingTheOption)
         {{"--bogus"}, "unrecognised option '--bogus'"},
         {{"--frames", "0"}, "--frames 0"},
         {{"--balance-bands", "0"}, "--balance-bands"},
+        {{"--rank-timeout", "0"}, "--rank-timeout must be a number of seconds in [0.1, 1e6]"},
+        {{"--rank-timeout", "nan"}, "--rank-timeout must be"},
+        {{"--movie-exr"}, "--movie-exr needs --movie"},
     };
     for (const auto& [extra, expected] : cases) {
         std::vector<std::string> words = {"--wall", "w.ini", "--scene", "s.toml"};
