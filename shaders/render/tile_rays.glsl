@@ -3,12 +3,15 @@
 // Flat: the direction through canvas point (px, py) (x right, y down, pixel centres at +0.5) is
 // uRayOrigin + px uRayStepRight + py uRayStepDown, already rotated into the planet frame on
 // the CPU in double precision. Tiles of one flat wall share these three vectors and differ
-// only in the integer uPixelOffset, so both sides of a seam compute identical rays.
+// only in the integer uPixelOffset, so both sides of a seam compute identical rays. A side-by-side
+// stereo screen starts the columns from uSplitX on at the right eye, uRayOriginRight.
 // Dome: the offset of (px, py) from uDomeCentre sets the angle from uDomeAxis (uDomeRadiansPerPixel
 // per pixel) and the azimuth between uDomeRight and uDomeDown; every tile shares these uniforms.
 uniform vec3 uRayOrigin;
 uniform vec3 uRayStepRight;
 uniform vec3 uRayStepDown;
+uniform vec3 uRayOriginRight;
+uniform float uSplitX;     // beyond every canvas column unless the screen is side by side
 uniform vec2 uPixelOffset; // integers, exact in float
 uniform int uTileHeight;
 uniform float uPixelAngle; // angular size of one pixel at the canvas origin (radians)
@@ -38,5 +41,6 @@ vec3 fragmentRayDirection()
     vec2 canvas = fragmentCanvasPosition();
     if (uDome != 0)
         return fisheyeDirection(canvas - uDomeCentre, uDomeRadiansPerPixel, uDomeAxis, uDomeRight, uDomeDown);
-    return normalize(uRayOrigin + canvas.x * uRayStepRight + canvas.y * uRayStepDown);
+    vec3 origin = canvas.x >= uSplitX ? uRayOriginRight : uRayOrigin;
+    return normalize(origin + canvas.x * uRayStepRight + canvas.y * uRayStepDown);
 }

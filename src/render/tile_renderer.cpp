@@ -48,6 +48,8 @@ void TileRenderer::renderTile(const wall::TileRays& rays, gl::FloatTarget& targe
     program_.set("uRayOrigin", glm::vec3(wallToPlanet_ * rays.originDir));
     program_.set("uRayStepRight", glm::vec3(wallToPlanet_ * rays.stepRight));
     program_.set("uRayStepDown", glm::vec3(wallToPlanet_ * rays.stepDown));
+    program_.set("uRayOriginRight", glm::vec3(wallToPlanet_ * rays.originDirRight));
+    program_.set("uSplitX", static_cast<float>(rays.splitPx));
     program_.set("uPixelOffset", glm::vec2(rays.pixelOffset)); // integers: exact in float below 2^24
     program_.set("uTileHeight", target.height());
     // Angular size of one pixel at the canvas origin (dome: at the image centre), for drawing point-like stars.

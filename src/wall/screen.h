@@ -18,8 +18,9 @@ struct WindowPlacement {
 };
 
 // The eye a screen shows: the wall's eye, or it moved half the interocular distance to the left or
-// right along the wall's x axis (stereo).
-enum class Eye { centre, left, right };
+// right along the wall's x axis (stereo); sideBySide: the left eye's view of the whole screen
+// squeezed into its left half of the pixels, the right eye's into its right half.
+enum class Eye { centre, left, right, sideBySide };
 
 struct Screen {
     std::string name;

@@ -36,7 +36,14 @@ TileRays tileRays(const Wall& wall, int screenIndex, glm::ivec2 regionOffsetPx)
     const Screen& s = wall.screens[screenIndex];
     const glm::dvec3 eye = wall.eyeOf(s);
     TileRays rays;
-    if (wall.sharedCanvas) {
+    if (s.eye == Eye::sideBySide) {
+        rays.stepRight = 2.0 * (s.lowerRight() - s.lowerLeft()) / double(s.widthPx);
+        rays.stepDown = (s.lowerLeft() - s.upperLeft()) / double(s.heightPx);
+        rays.originDir = s.upperLeft() - wall.eyePosition(Eye::left);
+        rays.originDirRight = s.upperLeft() - wall.eyePosition(Eye::right) - (s.lowerRight() - s.lowerLeft());
+        rays.splitPx = s.widthPx / 2;
+        rays.pixelOffset = regionOffsetPx;
+    } else if (wall.sharedCanvas) {
         // One origin and one pair of steps for every screen of an eye: only the integer offset differs.
         rays.stepRight = {wall.canvasPitchMm.x, 0.0, 0.0};
         rays.stepDown = {0.0, -wall.canvasPitchMm.y, 0.0};

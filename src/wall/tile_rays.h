@@ -9,6 +9,9 @@
 // adjacent tiles compute bit-identical edge rays. Without a shared canvas each screen uses its own
 // upper-left corner as origin and its own pixel steps. Each screen's rays start at the eye it
 // shows (Wall::eyeOf); on a stereo canvas the right eye's originDir undoes its canvas shift.
+// A side-by-side screen uses its own geometry with steps of two physical pixels across: columns
+// below splitPx start at the left eye (originDir), the others at the right eye (originDirRight,
+// which already subtracts the screen's width so that column splitPx lands on its left edge).
 //
 // A dome master (Projection::dome) ignores the physical geometry: the canvas coordinate's offset
 // from the canvas centre goes through the angular fisheye of shaders/render/fisheye.glsl, with
@@ -27,6 +30,8 @@ struct TileRays {
     glm::dvec3 stepRight;   // one pixel to the right, mm
     glm::dvec3 stepDown;    // one pixel down, mm
     glm::ivec2 pixelOffset; // canvas coordinate of the tile's top-left pixel corner
+    double splitPx = 1e30;     // side by side: the first coordinate of the right eye's half
+    glm::dvec3 originDirRight{0.0};
 
     bool dome = false;              // the dome master's fisheye instead of the three vectors above
     glm::dvec2 domeCentrePx{0.0};   // canvas coordinate of the image centre
@@ -50,7 +55,8 @@ glm::vec<3, T> rayDirection(const TileRays& rays, glm::vec<2, T> localPx)
 {
     using Vec3 = glm::vec<3, T>;
     const glm::vec<2, T> canvasPx = glm::vec<2, T>(rays.pixelOffset) + localPx;
-    return Vec3(rays.originDir) + canvasPx.x * Vec3(rays.stepRight) + canvasPx.y * Vec3(rays.stepDown);
+    const Vec3 origin(canvasPx.x >= T(rays.splitPx) ? rays.originDirRight : rays.originDir);
+    return origin + canvasPx.x * Vec3(rays.stepRight) + canvasPx.y * Vec3(rays.stepDown);
 }
 
 } // namespace aurorawall::wall

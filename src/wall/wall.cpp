@@ -16,9 +16,9 @@ std::vector<int> Wall::screensOfRank(int rank) const
     return indices;
 }
 
-glm::dvec3 Wall::eyeOf(const Screen& screen) const
+glm::dvec3 Wall::eyePosition(Eye eye) const
 {
-    const double side = screen.eye == Eye::left ? -0.5 : screen.eye == Eye::right ? 0.5 : 0.0;
+    const double side = eye == Eye::left ? -0.5 : eye == Eye::right ? 0.5 : 0.0;
     return eyeMm + glm::dvec3(side * interocularMm, 0.0, 0.0);
 }
 

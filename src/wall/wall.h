@@ -47,8 +47,10 @@ struct Wall {
 
     // Indices into screens of the screens that rank drives, in screen order.
     std::vector<int> screensOfRank(int rank) const;
-    // The eye that screen shows: eyeMm, moved interocularMm/2 along -x (left) or +x (right).
-    glm::dvec3 eyeOf(const Screen& screen) const;
+    // The position of an eye: eyeMm, moved interocularMm/2 along -x (left) or +x (right).
+    glm::dvec3 eyePosition(Eye eye) const;
+    // The eye that screen shows (the centre one for a side-by-side screen).
+    glm::dvec3 eyeOf(const Screen& screen) const { return eyePosition(screen.eye); }
 };
 
 // Largest canvas side: pixel coordinates stay far below float's 2^24 exact integers.

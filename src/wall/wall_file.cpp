@@ -30,7 +30,7 @@ const std::vector<std::string> topKeys = {"grid", "screen", "eye", "ranks", "win
 const std::vector<std::string> gridKeys = {"columns",  "rows",      "width_px",           "height_px",
                                            "width_mm", "height_mm", "bezel_horizontal_mm", "bezel_vertical_mm"};
 const std::vector<std::string> screenKeys = {"name", "width_px", "height_px", "width_mm",    "height_mm",  "x_mm",
-                                             "y_mm", "rank",     "monitor",   "window_x_px", "window_y_px", "eye"};
+                                             "y_mm", "rank",     "monitor",   "window_x_px", "window_y_px", "eye", "stereo"};
 const std::vector<std::string> eyeKeys = {"x_mm", "y_mm", "z_mm", "interocular_mm"};
 const std::vector<std::string> projectionKeys = {"kind", "field_of_view_deg", "tilt_deg"};
 // Human interocular distances are 50-80 mm; the bound only catches unit mix-ups.
@@ -217,6 +217,13 @@ Wall WallFile::screenListWall()
         screen.heightMm = s.numberAbove("height_mm", 0.0, maxMm);
         screen.lowerLeftMm = {s.number("x_mm", -maxMm, maxMm), s.number("y_mm", -maxMm, maxMm)};
         screen.eye = Eye(s.choice("eye", {"centre", "left", "right"}, 0));
+        if (s.has("stereo")) {
+            forbid(s, "eye", "cannot be combined with stereo: a side-by-side screen shows both eyes");
+            s.choice("stereo", {"side-by-side"}, 0);
+            if (screen.widthPx % 2 != 0)
+                s.fail("stereo", "a side-by-side screen needs an even width_px (got " + std::to_string(screen.widthPx) + ")");
+            screen.eye = Eye::sideBySide;
+        }
         for (std::size_t j = 0; j < screens.size(); ++j) {
             const Screen& other = screens[j];
             // Passive stereo: a left-eye and a right-eye screen may share the wall area.

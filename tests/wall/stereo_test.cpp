@@ -83,5 +83,34 @@ TEST(Stereo, SingleScreenEquivalentKeepsBothEyes)
     EXPECT_EQ(single.screens[1].canvasOffsetPx, glm::ivec2(1920, 0));
 }
 
+// A side-by-side screen's halves are the two eyes' views of the whole screen at half the columns.
+TEST(Stereo, SideBySideHalvesAreTheEyesViewsOfTheWholeScreen)
+{
+    Screen s;
+    s.widthPx = 320;
+    s.heightPx = 90;
+    s.widthMm = 80.0;
+    s.heightMm = 45.0;
+    s.eye = Eye::sideBySide;
+    Wall sideBySide = assembleWall({s}, {40.0, 22.5, 600.0});
+    sideBySide.interocularMm = kInterocularMm;
+    s.widthPx = 160;
+    s.eye = Eye::left;
+    Screen right = s;
+    right.eye = Eye::right;
+    Wall eyes = assembleWall({s, right}, {40.0, 22.5, 600.0});
+    eyes.interocularMm = kInterocularMm;
+
+    const TileRays both = tileRays(sideBySide, 0), left = tileRays(eyes, 0), rightRays = tileRays(eyes, 1);
+    for (double x : {0.5, 17.5, 159.5})
+        for (double y : {0.5, 44.5, 89.5}) {
+            const glm::dvec3 l = rayDirection(both, glm::dvec2(x, y)), r = rayDirection(both, glm::dvec2(160.0 + x, y));
+            const glm::dvec3 lExpected = rayDirection(left, glm::dvec2(x, y));
+            const glm::dvec3 rExpected = rayDirection(rightRays, glm::dvec2(x, y));
+            EXPECT_NEAR(glm::length(l - lExpected), 0.0, 1e-12 * glm::length(lExpected)) << x << ", " << y;
+            EXPECT_NEAR(glm::length(r - rExpected), 0.0, 1e-12 * glm::length(rExpected)) << x << ", " << y;
+        }
+}
+
 } // namespace
 } // namespace aurorawall::wall

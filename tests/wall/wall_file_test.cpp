@@ -295,6 +295,7 @@ INSTANTIATE_TEST_SUITE_P(
                     BadInput{"stereo-without-interocular.toml", "eye.interocular_mm: missing: screens show a left or right eye"},
                     BadInput{"dome-with-eyes.toml", "projection.kind: a dome master has one eye"},
                     BadInput{"tilt-on-flat.toml", "projection.tilt_deg: applies only to projection.kind = \"dome\""},
+                    BadInput{"side-by-side-odd-width.toml", "screen.stereo: a side-by-side screen needs an even width_px (got 321)"},
                     BadInput{"same-eye-overlap.toml", "screen 'left2' overlaps screen 'left' (line 1) by 80 x 45 mm"}),
     [](const testing::TestParamInfo<BadInput>& info) {
         std::string name = info.param.file;
