@@ -129,6 +129,10 @@ Wall singleScreenEquivalent(const Wall& wall)
     s.widthMm = s.widthPx * wall.canvasPitchMm.x;
     s.heightMm = wall.canvasSizePx.y * wall.canvasPitchMm.y;
     s.lowerLeftMm = {wall.canvasTopLeftMm.x, wall.canvasTopLeftMm.y - s.heightMm};
+    // A wall of one eye keeps it (a side-by-side screen stays one, split at its middle column).
+    const Eye firstEye = wall.screens.front().eye;
+    if (std::all_of(wall.screens.begin(), wall.screens.end(), [&](const Screen& x) { return x.eye == firstEye; }))
+        s.eye = firstEye;
     std::vector<Screen> screens{s};
     if (wall.rightEyeCanvasShiftPx > 0) {
         screens[0].name = "whole-wall-left";

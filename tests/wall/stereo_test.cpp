@@ -83,6 +83,16 @@ TEST(Stereo, SingleScreenEquivalentKeepsBothEyes)
     EXPECT_EQ(single.screens[1].canvasOffsetPx, glm::ivec2(1920, 0));
 }
 
+TEST(Stereo, SingleScreenEquivalentOfOneEyeKeepsThatEye)
+{
+    Wall wall = shippedStereo();
+    wall.screens.pop_back();
+    wall = assembleWall(wall.screens, wall.eyeMm);
+    const Wall single = singleScreenEquivalent(wall);
+    ASSERT_EQ(single.screens.size(), 1u);
+    EXPECT_EQ(single.screens[0].eye, Eye::left);
+}
+
 // A side-by-side screen's halves are the two eyes' views of the whole screen at half the columns.
 TEST(Stereo, SideBySideHalvesAreTheEyesViewsOfTheWholeScreen)
 {
