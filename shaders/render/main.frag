@@ -9,6 +9,11 @@ layout(location = 1) out float fragWork;
 
 void main()
 {
+    if (!fragmentInImage()) {
+        fragRadiance = vec4(0.0, 0.0, 0.0, 1.0);
+        fragWork = 1.0;
+        return;
+    }
     vec3 direction = fragmentRayDirection();
     vec3 radiance = shadeRay(uCameraPositionKm, direction);
     fragRadiance = vec4(radiance, 1.0);

@@ -1,18 +1,46 @@
-// The ray of this fragment, from the wall's physical geometry (src/wall/tile_rays.*).
-// The direction through canvas point (px, py) (x right, y down, pixel centres at +0.5) is
+// The ray of this fragment (src/wall/tile_rays.*), from the wall's physical geometry or, for a
+// dome master, from the angular fisheye of render/fisheye.glsl.
+// Flat: the direction through canvas point (px, py) (x right, y down, pixel centres at +0.5) is
 // uRayOrigin + px uRayStepRight + py uRayStepDown, already rotated into the planet frame on
 // the CPU in double precision. Tiles of one flat wall share these three vectors and differ
-// only in the integer uPixelOffset, so both sides of a seam compute identical rays.
+// only in the integer uPixelOffset, so both sides of a seam compute identical rays. A side-by-side
+// stereo screen starts the columns from uSplitX on at the right eye, uRayOriginRight.
+// Dome: the offset of (px, py) from uDomeCentre sets the angle from uDomeAxis (uDomeRadiansPerPixel
+// per pixel) and the azimuth between uDomeRight and uDomeDown; every tile shares these uniforms.
 uniform vec3 uRayOrigin;
 uniform vec3 uRayStepRight;
 uniform vec3 uRayStepDown;
+uniform vec3 uRayOriginRight;
+uniform float uSplitX;     // beyond every canvas column unless the screen is side by side
 uniform vec2 uPixelOffset; // integers, exact in float
 uniform int uTileHeight;
 uniform float uPixelAngle; // angular size of one pixel at the canvas origin (radians)
 
+uniform int uDome;         // 1: dome master, 0: flat
+uniform vec2 uDomeCentre;  // canvas coordinate of the image centre
+uniform float uDomeRadius; // image circle, pixels
+uniform float uDomeRadiansPerPixel;
+uniform vec3 uDomeAxis;    // planet frame, orthonormal
+uniform vec3 uDomeRight;
+uniform vec3 uDomeDown;
+
+// gl_FragCoord is bottom-up with centres at +0.5; canvas rows run top-down.
+vec2 fragmentCanvasPosition()
+{
+    return uPixelOffset + vec2(gl_FragCoord.x, float(uTileHeight) - gl_FragCoord.y);
+}
+
+// False for the pixels of a dome master outside its image circle, which stay black.
+bool fragmentInImage()
+{
+    return uDome == 0 || insideFisheye(fragmentCanvasPosition() - uDomeCentre, uDomeRadius);
+}
+
 vec3 fragmentRayDirection()
 {
-    // gl_FragCoord is bottom-up with centres at +0.5; canvas rows run top-down.
-    vec2 canvas = uPixelOffset + vec2(gl_FragCoord.x, float(uTileHeight) - gl_FragCoord.y);
-    return normalize(uRayOrigin + canvas.x * uRayStepRight + canvas.y * uRayStepDown);
+    vec2 canvas = fragmentCanvasPosition();
+    if (uDome != 0)
+        return fisheyeDirection(canvas - uDomeCentre, uDomeRadiansPerPixel, uDomeAxis, uDomeRight, uDomeDown);
+    vec3 origin = canvas.x >= uSplitX ? uRayOriginRight : uRayOrigin;
+    return normalize(origin + canvas.x * uRayStepRight + canvas.y * uRayStepDown);
 }

@@ -7,7 +7,8 @@ namespace aurorawall::render {
 
 namespace {
 
-const char* kPrelude[] = {"render/ray_sphere.glsl", "render/ray.glsl", "render/layers.glsl", "render/tile_rays.glsl"};
+const char* kPrelude[] = {"render/ray_sphere.glsl", "render/ray.glsl", "render/layers.glsl", "render/fisheye.glsl",
+                         "render/tile_rays.glsl"};
 const char* kMain = "render/main.frag";
 
 std::string defineOf(const scene::Component& c)

@@ -48,10 +48,20 @@ void TileRenderer::renderTile(const wall::TileRays& rays, gl::FloatTarget& targe
     program_.set("uRayOrigin", glm::vec3(wallToPlanet_ * rays.originDir));
     program_.set("uRayStepRight", glm::vec3(wallToPlanet_ * rays.stepRight));
     program_.set("uRayStepDown", glm::vec3(wallToPlanet_ * rays.stepDown));
+    program_.set("uRayOriginRight", glm::vec3(wallToPlanet_ * rays.originDirRight));
+    program_.set("uSplitX", static_cast<float>(rays.splitPx));
     program_.set("uPixelOffset", glm::vec2(rays.pixelOffset)); // integers: exact in float below 2^24
     program_.set("uTileHeight", target.height());
-    // Angular size of one pixel at the canvas origin, for drawing point-like stars.
-    program_.set("uPixelAngle", static_cast<float>(glm::length(rays.stepRight) / glm::length(rays.originDir)));
+    // Angular size of one pixel at the canvas origin (dome: at the image centre), for drawing point-like stars.
+    const double pixelAngle = rays.dome ? rays.domeRadiansPerPx : glm::length(rays.stepRight) / glm::length(rays.originDir);
+    program_.set("uPixelAngle", static_cast<float>(pixelAngle));
+    program_.set("uDome", rays.dome ? 1 : 0);
+    program_.set("uDomeCentre", glm::vec2(rays.domeCentrePx)); // whole or half pixels: exact in float
+    program_.set("uDomeRadius", static_cast<float>(rays.domeRadiusPx));
+    program_.set("uDomeRadiansPerPixel", static_cast<float>(rays.domeRadiansPerPx));
+    program_.set("uDomeAxis", glm::vec3(wallToPlanet_ * rays.domeAxis));
+    program_.set("uDomeRight", glm::vec3(wallToPlanet_ * rays.domeRight));
+    program_.set("uDomeDown", glm::vec3(wallToPlanet_ * rays.domeDown));
     // Texture bindings belong to the current context: bind every time.
     for (const auto& c : components_)
         c->bind(program_);

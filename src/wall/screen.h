@@ -17,6 +17,11 @@ struct WindowPlacement {
     bool fullscreen = false;
 };
 
+// The eye a screen shows: the wall's eye, or it moved half the interocular distance to the left or
+// right along the wall's x axis (stereo); sideBySide: the left eye's view of the whole screen
+// squeezed into its left half of the pixels, the right eye's into its right half.
+enum class Eye { centre, left, right, sideBySide };
+
 struct Screen {
     std::string name;
     int widthPx = 0, heightPx = 0;
@@ -25,6 +30,7 @@ struct Screen {
     int rank = 0;                         // MPI rank that renders and shows this screen
     WindowPlacement window;
     glm::ivec2 canvasOffsetPx{0};         // this screen's top-left pixel in the wall canvas, x right, y DOWN
+    Eye eye = Eye::centre;
 
     glm::dvec3 lowerLeft() const { return {lowerLeftMm, 0.0}; }
     glm::dvec3 lowerRight() const { return {lowerLeftMm.x + widthMm, lowerLeftMm.y, 0.0}; }

@@ -16,6 +16,12 @@ std::vector<int> Wall::screensOfRank(int rank) const
     return indices;
 }
 
+glm::dvec3 Wall::eyePosition(Eye eye) const
+{
+    const double side = eye == Eye::left ? -0.5 : eye == Eye::right ? 0.5 : 0.0;
+    return eyeMm + glm::dvec3(side * interocularMm, 0.0, 0.0);
+}
+
 namespace {
 
 bool nearlyEqual(double a, double b, double relative) { return std::abs(a - b) <= relative * std::max(std::abs(a), std::abs(b)); }
@@ -69,6 +75,17 @@ Wall assembleWall(std::vector<Screen> screens, glm::dvec3 eyeMm, std::string sou
         wall.canvasSizePx = glm::max(wall.canvasSizePx, s.canvasOffsetPx + glm::ivec2(s.widthPx, s.heightPx));
         wall.rankCount = std::max(wall.rankCount, s.rank + 1);
     }
+    // Two eyes: the right eye's screens move to a second copy of the canvas on the right.
+    const auto isRight = [](const Screen& s) { return s.eye == Eye::right; };
+    if (std::any_of(screens.begin(), screens.end(), isRight) && !std::all_of(screens.begin(), screens.end(), isRight)) {
+        wall.rightEyeCanvasShiftPx = wall.canvasSizePx.x;
+        if (2 * wall.canvasSizePx.x > maxCanvasPx)
+            throw std::invalid_argument("the stereo wall canvas is more than " + std::to_string(maxCanvasPx) + " pixels across");
+        for (Screen& s : screens)
+            if (isRight(s))
+                s.canvasOffsetPx.x += wall.rightEyeCanvasShiftPx;
+        wall.canvasSizePx.x *= 2;
+    }
     wall.screens = std::move(screens);
     return wall;
 }
@@ -107,12 +124,27 @@ Wall singleScreenEquivalent(const Wall& wall)
 {
     Screen s;
     s.name = "whole-wall";
-    s.widthPx = wall.canvasSizePx.x;
+    s.widthPx = wall.canvasSizePx.x - wall.rightEyeCanvasShiftPx;
     s.heightPx = wall.canvasSizePx.y;
-    s.widthMm = wall.canvasSizePx.x * wall.canvasPitchMm.x;
+    s.widthMm = s.widthPx * wall.canvasPitchMm.x;
     s.heightMm = wall.canvasSizePx.y * wall.canvasPitchMm.y;
     s.lowerLeftMm = {wall.canvasTopLeftMm.x, wall.canvasTopLeftMm.y - s.heightMm};
-    Wall single = assembleWall({s}, wall.eyeMm, wall.sourceFile);
+    // A wall of one eye keeps it (a side-by-side screen stays one, split at its middle column).
+    const Eye firstEye = wall.screens.front().eye;
+    if (std::all_of(wall.screens.begin(), wall.screens.end(), [&](const Screen& x) { return x.eye == firstEye; }))
+        s.eye = firstEye;
+    std::vector<Screen> screens{s};
+    if (wall.rightEyeCanvasShiftPx > 0) {
+        screens[0].name = "whole-wall-left";
+        screens[0].eye = Eye::left;
+        s.name = "whole-wall-right";
+        s.eye = Eye::right;
+        screens.push_back(s);
+    }
+    Wall single = assembleWall(std::move(screens), wall.eyeMm, wall.sourceFile);
+    single.interocularMm = wall.interocularMm;
+    single.projection = wall.projection;
+    single.dome = wall.dome;
     placeWindowsOnCanvas(single);
     return single;
 }

@@ -9,6 +9,11 @@
 // continues across all screens (see tile_rays.h). Otherwise the canvas is not shared and
 // canvasOffsetPx is the screen's position measured in the finest pitch of any screen and rounded;
 // it then only places the screen in the gathered whole-wall image, where screens never overlap.
+//
+// Stereo: screens showing the right eye may cover the same wall area as the left eye's screens
+// (passive stereo: two projectors on one screen). When a wall has right-eye screens and others,
+// the canvas holds the two eyes side by side: the right eye's screens sit rightEyeCanvasShiftPx
+// further right, so the gathered image is the left-eye wall next to the right-eye wall.
 #include "wall/screen.h"
 
 #include <glm/glm.hpp>
@@ -16,6 +21,15 @@
 #include <vector>
 
 namespace aurorawall::wall {
+
+// How canvas pixels become view directions: through the screens' physical geometry from the eye
+// (flat), or an angular fisheye of the whole canvas (dome; see tile_rays.h).
+enum class Projection { flat, dome };
+
+struct DomeMaster {
+    double fieldOfViewDeg = 180.0; // full angle across the circle inscribed in the canvas height, (0, 360]
+    double tiltDeg = 0.0;          // the dome's axis above the camera's view direction, [-90, 90]
+};
 
 struct Wall {
     std::string sourceFile;          // the wall file it came from; empty when built in code
@@ -26,15 +40,23 @@ struct Wall {
     bool sharedCanvas = false;       // one pixel grid across all screens (see above)
     glm::dvec2 canvasTopLeftMm{0.0}; // wall-plane position of the canvas's top-left corner
     glm::dvec2 canvasPitchMm{0.0};   // size of one canvas pixel along x and y
+    int rightEyeCanvasShiftPx = 0;   // see "Stereo" above; 0 when the canvas holds one eye
+    double interocularMm = 0.0;      // distance between the left and right eye
+    Projection projection = Projection::flat;
+    DomeMaster dome;                 // used when projection == Projection::dome
 
     // Indices into screens of the screens that rank drives, in screen order.
     std::vector<int> screensOfRank(int rank) const;
+    // The position of an eye: eyeMm, moved interocularMm/2 along -x (left) or +x (right).
+    glm::dvec3 eyePosition(Eye eye) const;
+    // The eye that screen shows (the centre one for a side-by-side screen).
+    glm::dvec3 eyeOf(const Screen& screen) const { return eyePosition(screen.eye); }
 };
 
 // Largest canvas side: pixel coordinates stay far below float's 2^24 exact integers.
 inline constexpr int maxCanvasPx = 1 << 20;
 
-// Completes a wall from its screens (ranks and lower-left corners set): canvas, rank count.
+// Completes a wall from its screens (ranks, eyes and lower-left corners set): canvas, rank count.
 // Throws std::invalid_argument for no screens or a canvas wider than maxCanvasPx.
 Wall assembleWall(std::vector<Screen> screens, glm::dvec3 eyeMm, std::string sourceFile = {});
 
@@ -56,8 +78,8 @@ struct GridSpec {
 // positions. Throws std::invalid_argument if screensPerRank does not divide the stacked dimension.
 Wall makeGridWall(const GridSpec& grid);
 
-// One screen covering the whole canvas with the wall's canvas pitch and the same eye: the image a
-// wall of any bezels cuts its screens out of.
+// One screen covering the whole canvas with the wall's canvas pitch, the same eye and projection:
+// the image a wall of any bezels cuts its screens out of. A stereo canvas gets one such screen per eye.
 Wall singleScreenEquivalent(const Wall& wall);
 
 // Windowed placement at the canvas positions: window top-left = desktopOriginPx + scale*canvasOffsetPx,

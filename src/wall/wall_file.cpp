@@ -26,12 +26,15 @@ constexpr int maxRank = 65535;
 constexpr int maxMonitor = 63;
 constexpr double maxWindowScale = 16.0;
 
-const std::vector<std::string> topKeys = {"grid", "screen", "eye", "ranks", "windows"};
+const std::vector<std::string> topKeys = {"grid", "screen", "eye", "ranks", "windows", "projection"};
 const std::vector<std::string> gridKeys = {"columns",  "rows",      "width_px",           "height_px",
                                            "width_mm", "height_mm", "bezel_horizontal_mm", "bezel_vertical_mm"};
 const std::vector<std::string> screenKeys = {"name", "width_px", "height_px", "width_mm",    "height_mm",  "x_mm",
-                                             "y_mm", "rank",     "monitor",   "window_x_px", "window_y_px"};
-const std::vector<std::string> eyeKeys = {"x_mm", "y_mm", "z_mm"};
+                                             "y_mm", "rank",     "monitor",   "window_x_px", "window_y_px", "eye", "stereo"};
+const std::vector<std::string> eyeKeys = {"x_mm", "y_mm", "z_mm", "interocular_mm"};
+const std::vector<std::string> projectionKeys = {"kind", "field_of_view_deg", "tilt_deg"};
+// Human interocular distances are 50-80 mm; the bound only catches unit mix-ups.
+constexpr double maxInterocularMm = 1000.0;
 const std::vector<std::string> rankKeys = {"screens_per_rank", "stacking", "per_screen", "count"};
 const std::vector<std::string> windowKeys = {"mode", "origin_x_px", "origin_y_px", "scale", "monitors"};
 
@@ -102,6 +105,7 @@ private:
     Wall screenListWall();
     void checkRankCount(const Wall& wall) const;
     void placeWindows(Wall& wall) const;
+    void readProjection(Wall& wall) const;
 
     std::string path_;
     TableReader top_;
@@ -121,12 +125,17 @@ Wall WallFile::load()
     Wall wall = top_.has("grid") ? gridWall() : screenListWall();
     checkRankCount(wall);
     placeWindows(wall);
+    readProjection(wall);
     return wall;
 }
 
 // The eye relative to the centre of the screens' bounding box; z is its distance from the wall.
+// A dome master does not use the eye: its [eye] may be left out.
 glm::dvec3 WallFile::eyeOffset() const
 {
+    const TableReader projection = top_.optionalTable("projection");
+    if (!top_.has("eye") && projection.has("kind") && projection.string("kind") == "dome")
+        return {0.0, 0.0, 1.0};
     if (!top_.has("eye"))
         failFile("missing table [eye] (z_mm: the eye's distance in front of the wall)");
     const TableReader eye = top_.table("eye");
@@ -207,8 +216,21 @@ Wall WallFile::screenListWall()
         screen.widthMm = s.numberAbove("width_mm", 0.0, maxMm);
         screen.heightMm = s.numberAbove("height_mm", 0.0, maxMm);
         screen.lowerLeftMm = {s.number("x_mm", -maxMm, maxMm), s.number("y_mm", -maxMm, maxMm)};
+        screen.eye = Eye(s.choice("eye", {"centre", "left", "right"}, 0));
+        if (s.has("stereo")) {
+            forbid(s, "eye", "cannot be combined with stereo: a side-by-side screen shows both eyes");
+            s.choice("stereo", {"side-by-side"}, 0);
+            if (screen.widthPx % 2 != 0)
+                s.fail("stereo", "a side-by-side screen needs an even width_px (got " + std::to_string(screen.widthPx) + ")");
+            screen.eye = Eye::sideBySide;
+        }
         for (std::size_t j = 0; j < screens.size(); ++j) {
             const Screen& other = screens[j];
+            // Passive stereo: a left-eye and a right-eye screen may share the wall area.
+            const bool otherEye = (screen.eye == Eye::left && other.eye == Eye::right) ||
+                                  (screen.eye == Eye::right && other.eye == Eye::left);
+            if (otherEye)
+                continue;
             const double overlapX = std::min(screen.lowerRight().x, other.lowerRight().x) -
                                     std::max(screen.lowerLeftMm.x, other.lowerLeftMm.x);
             const double overlapY = std::min(screen.upperLeft().y, other.upperLeft().y) -
@@ -255,6 +277,31 @@ Wall WallFile::screenListWall()
     } catch (const std::invalid_argument& e) {
         failFile(e.what());
     }
+}
+
+// The projection (flat or dome master) and the interocular distance of a stereo wall.
+void WallFile::readProjection(Wall& wall) const
+{
+    const TableReader eye = top_.optionalTable("eye");
+    wall.interocularMm = eye.number("interocular_mm", 0.0, maxInterocularMm, 0.0);
+    const bool stereo = std::any_of(wall.screens.begin(), wall.screens.end(),
+                                    [](const Screen& s) { return s.eye != Eye::centre; });
+    if (stereo && !eye.has("interocular_mm"))
+        eye.fail("interocular_mm", "missing: screens show a left or right eye");
+
+    const TableReader projection = top_.optionalTable("projection");
+    projection.rejectKeysOutside(projectionKeys);
+    const bool dome = projection.choice("kind", {"flat", "dome"}, 0) == 1;
+    if (!dome) {
+        forbid(projection, "field_of_view_deg", "applies only to projection.kind = \"dome\"");
+        forbid(projection, "tilt_deg", "applies only to projection.kind = \"dome\"");
+        return;
+    }
+    if (stereo || eye.has("interocular_mm"))
+        projection.fail("kind", "a dome master has one eye: remove eye.interocular_mm and the screens' eye keys");
+    wall.projection = Projection::dome;
+    wall.dome.fieldOfViewDeg = projection.numberAbove("field_of_view_deg", 0.0, 360.0, 180.0);
+    wall.dome.tiltDeg = projection.number("tilt_deg", -90.0, 90.0, 0.0);
 }
 
 void WallFile::checkRankCount(const Wall& wall) const

@@ -12,11 +12,15 @@
 //       and, so that the check means something, not all black in REF.
 //   compare_walls tiles WALL.toml REF.exr TILE_DIR [--half-ulps N]
 //       TILE_DIR/tile-<screen>.exr equals REF cropped at the screen's canvas offset, for every screen.
+//   compare_walls dome WALL.toml IMAGE.exr
+//       WALL is a dome master: every pixel whose centre lies outside the image circle (the canvas's
+//       inscribed circle of the canvas height) is exactly black, and the pixels inside it are not all black.
 //
 // Every command prints its measurements on one line ("max_abs=... max_rel=...") and exits 0 when
 // the check holds, 1 when it does not, 2 on bad usage or unreadable files.
 #include "io/exr.h"
 #include "io/image.h"
+#include "wall/tile_rays.h"
 #include "wall/wall_file.h"
 
 #include <algorithm>
@@ -345,10 +349,40 @@ int tilesCommand(int argc, char** argv)
 
 } // namespace
 
+int domeCommand(int argc, char** argv)
+{
+    const Args a = parseArgs(argc, argv, {});
+    if (a.positional.size() != 2)
+        usage("dome WALL.toml IMAGE.exr");
+    const aurorawall::wall::Wall wall = aurorawall::wall::loadWall(a.positional[0]);
+    const Image image = aurorawall::io::readExr(a.positional[1]);
+    if (wall.projection != aurorawall::wall::Projection::dome || image.width != wall.canvasSizePx.x ||
+        image.height != wall.canvasSizePx.y) {
+        std::printf("FAIL dome: need a dome wall and an image of its canvas size\n");
+        return 1;
+    }
+    const aurorawall::wall::TileRays rays = aurorawall::wall::tileRays(wall, 0);
+    long outside = 0, nonBlackOutside = 0, litInside = 0;
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x) {
+            const float* p = image.pixel(x, y);
+            const bool black = p[0] == 0.0f && p[1] == 0.0f && p[2] == 0.0f;
+            if (aurorawall::wall::domeDirection(rays, {x + 0.5, y + 0.5}) == glm::dvec3(0.0)) {
+                ++outside;
+                nonBlackOutside += !black;
+            } else {
+                litInside += !black;
+            }
+        }
+    std::printf("dome: %ld pixels outside the circle, %ld of them not black; %ld lit inside\n", outside,
+                nonBlackOutside, litInside);
+    return outside > 0 && nonBlackOutside == 0 && litInside > 0 ? 0 : 1;
+}
+
 int main(int argc, char** argv)
 {
     if (argc < 2)
-        usage("a command: diff, content, bezel or tiles");
+        usage("a command: diff, content, bezel, tiles or dome");
     const std::string command = argv[1];
     try {
         if (command == "diff")
@@ -359,6 +393,8 @@ int main(int argc, char** argv)
             return bezelCommand(argc, argv);
         if (command == "tiles")
             return tilesCommand(argc, argv);
+        if (command == "dome")
+            return domeCommand(argc, argv);
     } catch (const std::exception& e) {
         std::fprintf(stderr, "compare_walls: %s\n", e.what());
         return 2;

@@ -25,7 +25,7 @@ TEST(WallFile, EveryShippedWallIsTomlAndLoads)
         EXPECT_GE(wall.rankCount, 1);
         ++walls;
     }
-    EXPECT_EQ(walls, 10);
+    EXPECT_EQ(walls, 12);
 }
 
 TEST(WallFile, UafPowerwall)
@@ -259,7 +259,7 @@ INSTANTIATE_TEST_SUITE_P(
                     BadInput{"unclosed-section.toml", "invalid key"},
                     BadInput{"missing-key.toml", "missing key 'grid.width_mm'"},
                     BadInput{"unknown-key.toml", "unknown key 'grid.colums'; known keys: columns, rows"},
-                    BadInput{"unknown-section.toml", "unknown key 'eyes'; known keys: grid, screen, eye, ranks, windows"},
+                    BadInput{"unknown-section.toml", "unknown key 'eyes'; known keys: grid, screen, eye, ranks, windows, projection"},
                     BadInput{"screen-unknown-key.toml", "unknown key 'screen.widht_px'"},
                     BadInput{"duplicate-key.toml", "value (\"columns\") already exists"},
                     BadInput{"duplicate-screen-name.toml", "screen.name: \"a\" is already the name of the screen on line 1"},
@@ -288,7 +288,15 @@ INSTANTIATE_TEST_SUITE_P(
                     BadInput{"grid-and-screens.toml", "screen: [[screen]] cannot be combined with [grid]"},
                     BadInput{"old-ini-words.toml", "old INI syntax: " + iniMessage},
                     BadInput{"old-ini-screen.toml", "old INI syntax: " + iniMessage},
-                    BadInput{"old-ini-list.toml", "old INI syntax: " + iniMessage}),
+                    BadInput{"old-ini-list.toml", "old INI syntax: " + iniMessage},
+                    BadInput{"dome-fov-zero.toml", "projection.field_of_view_deg: must be a finite number in (0, 360] (got 0)"},
+                    BadInput{"dome-fov-above-360.toml", "projection.field_of_view_deg: must be a finite number in (0, 360] (got 361)"},
+                    BadInput{"negative-interocular.toml", "eye.interocular_mm: must be a finite number in [0, 1000] (got -63)"},
+                    BadInput{"stereo-without-interocular.toml", "eye.interocular_mm: missing: screens show a left or right eye"},
+                    BadInput{"dome-with-eyes.toml", "projection.kind: a dome master has one eye"},
+                    BadInput{"tilt-on-flat.toml", "projection.tilt_deg: applies only to projection.kind = \"dome\""},
+                    BadInput{"side-by-side-odd-width.toml", "screen.stereo: a side-by-side screen needs an even width_px (got 321)"},
+                    BadInput{"same-eye-overlap.toml", "screen 'left2' overlaps screen 'left' (line 1) by 80 x 45 mm"}),
     [](const testing::TestParamInfo<BadInput>& info) {
         std::string name = info.param.file;
         name = name.substr(0, name.find('.'));
