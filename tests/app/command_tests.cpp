@@ -534,5 +534,19 @@ TEST(CostMap, PictureIsTheMapWithALabelledScaleBarBelow)
     EXPECT_EQ(whiteIn(first + 6 * 21 + 1, width, stripEnd + labelRows, p.height), 0);
 }
 
+TEST(AccuracyCommand, FrameIsAWholeNumberForScenesOnly)
+{
+    for (const auto& [words, expected] : std::vector<std::pair<std::vector<std::string>, std::string>>{
+             {{"--scene", "s.toml", "--frame", "-1"}, "--frame must be a whole number in [0, 1e8] (got -1)"},
+             {{"--scene", "s.toml", "--frame", "2.5"}, "--frame"},
+             {{"--airmass", "--frame", "3"}, "--frame applies to --scene only"}}) {
+        const Result r = runAccuracy(words);
+        EXPECT_EQ(r.status, 2) << expected;
+        EXPECT_EQ(lines(r.err).size(), 1u) << r.err;
+        EXPECT_NE(r.err.find(expected), std::string::npos) << r.err;
+    }
+    EXPECT_NE(runAccuracy({"--help"}).out.find("--frame"), std::string::npos);
+}
+
 } // namespace
 } // namespace aurorawall::app
