@@ -17,12 +17,12 @@ namespace po = boost::program_options;
 
 // The options of each kind of run; giving one to the other kind is a usage error.
 const std::vector<std::string> kShaderOptions = {"repeat", "copies", "view-steps", "light-steps"};
-const std::vector<std::string> kSceneOptions = {"wall", "size", "pixels", "runs",
+const std::vector<std::string> kSceneOptions = {"wall", "size", "pixels", "frame", "runs",
                                                 "threads", "reference-step-km", "feature-costs"};
 
 const char* kUsage =
     "Usage: aurorawall accuracy --airmass | --sky [options]\n"
-    "       aurorawall accuracy --scene FILE [--wall FILE] [--size WxH] [--pixels N] [--feature-costs]\n"
+    "       aurorawall accuracy --scene FILE [--wall FILE] [--size WxH] [--pixels N] [--frame K] [--feature-costs]\n"
     "Error against cost of the approximations (docs/ACCURACY.md), on one headless EGL context in one\n"
     "process (no mpirun).\n"
     "--airmass: every airmass method over the sweep's rays; --sky: the single-scattering sky with 1, 2, 4 and\n"
@@ -30,10 +30,11 @@ const char* kUsage =
     "float results read back from the GPU and for the CPU float32/float64 evaluations of the same shader\n"
     "text. Costs are ns per evaluation inside a compute shader on this machine's GL renderer, an empty loop\n"
     "subtracted.\n"
-    "--scene: error against run time of the aurora's quality knobs: the scene's first frame at a small size,\n"
-    "each knob varied alone around the scene's defaults, compared with the GPU render at the finest settings\n"
-    "(every pixel) and the double-precision CPU reference (N sampled pixels). Stars, planet_texture and sky\n"
-    "are removed (the CPU reference does not model them). --feature-costs: instead, the frame time of each\n"
+    "--scene: error against run time of the aurora's quality knobs: the scene's frame K (default 0, the first)\n"
+    "at a small size, each knob varied alone around the scene's defaults, compared with the GPU render at the\n"
+    "finest settings (every pixel) and the double-precision CPU reference (N sampled pixels). Stars,\n"
+    "planet_texture and sky are removed (the CPU reference does not model them). --feature-costs: instead,\n"
+    "the frame time of each\n"
     "feature toggled alone, the full scene (the paper's table 2).\n"
     "Exit status: 0 success, 1 runtime failure (a file, no GL context, a shader), 2 usage error.\n";
 
@@ -74,6 +75,9 @@ int runAccuracyCommand(int argc, char** argv, std::ostream& out, std::ostream& e
              "config/walls/single.toml)")
             ("size", po::value(&size)->default_value(size), "--scene: render size WxH in pixels")
             ("pixels", po::value(&scene.pixels)->default_value(scene.pixels), "--scene: pixels of the CPU reference")
+            ("frame", po::value(&scene.frame)->default_value(scene.frame),
+             "--scene: the scene's frame K as render draws it (its start time plus K time steps, the camera "
+             "moved along its path)")
             ("runs", po::value(&scene.runs)->default_value(scene.runs),
              "--scene: timed frames per setting after one warm-up (the median is reported)")
             ("threads", po::value(&scene.threads)->default_value(scene.threads), "--scene: CPU reference threads")
@@ -100,6 +104,8 @@ int runAccuracyCommand(int argc, char** argv, std::ostream& out, std::ostream& e
                 throw cli.usageError("--scene needs a file name");
             if (!parseSize(size, scene.sizePx))
                 throw cli.usageError("--size must be WxH with positive whole W and H (got '" + size + "')");
+            if (scene.frame < 0 || scene.frame > 100000000)
+                throw cli.usageError("--frame must be a whole number in [0, 1e8] (got " + std::to_string(scene.frame) + ")");
             if (scene.pixels < 1 || scene.runs < 1 || scene.threads < 1 || !(scene.referenceStepKm > 0.0))
                 throw cli.usageError("--pixels, --runs, --threads and --reference-step-km must be positive");
             runSceneAccuracy(scene, out);

@@ -28,7 +28,7 @@ namespace aurorawall::app {
 using AuroraSettings = components::aurora::Settings;
 using FluidSettings = components::fluid_detail::Settings;
 
-SceneView sceneView(const scene::Scene& scene, const std::string& wallFile, glm::ivec2 sizePx)
+SceneView sceneView(const scene::Scene& scene, const std::string& wallFile, glm::ivec2 sizePx, long long frame)
 {
     const wall::Wall single = wall::singleScreenEquivalent(wall::loadWall(wallFile));
     const wall::Screen& screen = single.screens.front();
@@ -43,7 +43,9 @@ SceneView sceneView(const scene::Scene& scene, const std::string& wallFile, glm:
     cluster::ClockSettings clock;
     clock.startTimeS = scene.startTimeS;
     clock.timeStepS = scene.timeStepS;
-    view.frame = cluster::MasterClock(clock, scene.camera, scene.exposure).next(false);
+    cluster::MasterClock master(clock, scene.camera, scene.exposure);
+    for (long long k = 0; k <= frame; ++k)
+        view.frame = master.next(false);
     return view;
 }
 
@@ -371,12 +373,12 @@ void runSceneAccuracy(const SceneAccuracySettings& settings, std::ostream& out)
     scene::Scene scene = components::loadScene(settings.sceneFile);
     if (!settings.featureCosts)
         scene = withoutUnmodelled(scene);
-    const SceneView view = sceneView(scene, wallFile, settings.sizePx);
+    const SceneView view = sceneView(scene, wallFile, settings.sizePx, settings.frame);
     const auto context = openAccuracyContext(out);
     out << "scene: " << settings.sceneFile << " (components:";
     for (const scene::Component* c : scene.components())
         out << " " << c->name();
-    out << "), frame 0 at t = " << view.frame.timeS << " s, " << settings.sizePx.x << "x" << settings.sizePx.y
+    out << "), frame " << settings.frame << " at t = " << view.frame.timeS << " s, " << settings.sizePx.x << "x" << settings.sizePx.y
         << " px, field of view of " << wallFile << "; ms per frame: median of " << settings.runs
         << " frames (setFrame + renderTile + glFinish, CPU clock) after one warm-up\n";
     if (settings.featureCosts)

@@ -21,14 +21,15 @@
 namespace aurorawall::app {
 
 // One small view of a scene: the wall file's single-screen equivalent with the same physical screen
-// and eye (so the same field of view) at sizePx pixels, and the scene's first frame (frame 0 of the
-// master clock: the scene's start time and camera).
+// and eye (so the same field of view) at sizePx pixels, and the scene's frame `frame` as `render`
+// draws it (the master clock's frame: the scene's start time plus frame time steps, the camera moved
+// along its path for that long; frame 0 is the scene's start time and camera).
 struct SceneView {
     wall::Wall wall;
     wall::TileRays rays;
     cluster::FrameState frame;
 };
-SceneView sceneView(const scene::Scene& scene, const std::string& wallFile, glm::ivec2 sizePx);
+SceneView sceneView(const scene::Scene& scene, const std::string& wallFile, glm::ivec2 sizePx, long long frame = 0);
 
 // The view's pixel (x, y) (x right, y down from the top-left) as a unit direction in the planet
 // frame, in double: the direction through the pixel centre (tile_rays.h) rotated as TileRenderer does.
@@ -74,6 +75,7 @@ struct SceneAccuracySettings {
     glm::ivec2 sizePx{320, 180};  // the render size
     int pixels = 48;              // pixels of the CPU reference
     int runs = 3;                 // timed frames per setting after one warm-up (the median is reported)
+    long long frame = 0;          // the scene's frame (sceneView)
     int threads = 2;              // CPU reference threads
     double referenceStepKm = 0.05; // CPU reference step where a curtain is in reach
     bool featureCosts = false;    // the frame time of each feature toggled alone instead of the knobs

@@ -64,6 +64,10 @@ RenderOptions parseRenderOptions(int argc, char** argv)
         ("single-screen", po::bool_switch(&o.singleScreen),
          "render the wall's whole canvas (bezels included) as one screen on one rank: the reference a wall must match")
         ("stats", po::value(&o.statsFile), "write per-frame timings to FILE (.csv or .json)")
+        ("cost-map", po::value(&o.costMapFile),
+         "rank 0 writes the last frame's cost per pixel to FILE (.png): each ray's work (1 + aurora samples) "
+         "times its rank's render time per unit of work, an estimate in ns per pixel, as viridis on a log "
+         "scale with a labelled scale bar below the wall. Draws with the static split (--balance off)")
         ("data-dir", po::value(&o.dataDir), "folder holding shaders/ (default: installed share/aurorawall or the source tree)")
         ("control-port", po::value(&o.controlPort),
          "the master takes commands on this TCP port (0: a free one, printed), one per line: status, pause, play, "
@@ -115,6 +119,13 @@ RenderOptions parseRenderOptions(int argc, char** argv)
     if (cli.given("movie"))
         check(!o.movieDir.empty(), "--movie must not be empty");
     check(!o.movieExr || cli.given("movie"), "--movie-exr needs --movie");
+    if (cli.given("cost-map")) {
+        const bool png = o.costMapFile.size() > 4 && o.costMapFile.compare(o.costMapFile.size() - 4, 4, ".png") == 0;
+        check(png, "--cost-map " + o.costMapFile + ": the file name must end in .png");
+        // A band drawn by another rank brings its radiance home but not its work.
+        check(o.balance != Balance::On, "--cost-map needs the static split: --balance off (or no --balance)");
+        o.balance = Balance::Off;
+    }
     check(!o.outDir.empty(), "--out must not be empty");
     check(o.balanceBands >= 1 && o.balanceBands <= 256, "--balance-bands must be in [1, 256]");
     return o;

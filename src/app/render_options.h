@@ -17,6 +17,7 @@ struct RenderOptions {
     gl::Backend backend = gl::Backend::Egl;
     std::string outDir = "out";
     std::string statsFile;
+    std::string costMapFile; // --cost-map; empty: none
     std::string dataDir; // empty: see common/data_dir.h
     io::ToneMap::Curve toneMap = io::ToneMap::Curve::AcesFilmic;
     long long frames = 1;

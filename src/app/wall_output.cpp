@@ -1,6 +1,7 @@
 #include "app/wall_output.h"
 
 #include "app/cli/exit_status.h"
+#include "app/cost_map.h"
 #include "io/atomic_file.h"
 #include "io/exr.h"
 #include "io/half_pixels.h"
@@ -141,6 +142,8 @@ int writeOutputs(WallSession& session, const cluster::MpiWorld& world, const clu
             if (!options.statsFile.empty())
                 stats.write(options.statsFile);
         });
+    if (status == cli::kSuccess && !options.costMapFile.empty())
+        status = writeCostMap(session, world, stats);
     if (world.isMaster()) {
         std::printf("%s\n", stats.summary().c_str());
         if (status == cli::kSuccess && options.gather)

@@ -4,6 +4,7 @@
 #include "app/airmass_command.h"
 #include "app/cli/command_line.h"
 #include "app/cli/exit_status.h"
+#include "app/cost_map.h"
 #include "app/mie_command.h"
 #include "app/render_options.h"
 #include "app/tables_command.h"
@@ -423,6 +424,143 @@ TEST(MieCommand, BadOptionsNameTheOptionAndExit2)
         EXPECT_EQ(r.err.rfind("aurorawall mie: ", 0), 0u) << r.err;
         EXPECT_EQ(lines(r.err).size(), 1u) << r.err;
     }
+}
+
+// ---- render --cost-map: option, colour map and scale bar ----
+
+TEST(RenderOptions, CostMapNeedsAPngAndTheStaticSplit)
+{
+    const RenderOptions o = parseRender({"--wall", "w.ini", "--scene", "s.toml", "--cost-map", "cost.png"});
+    EXPECT_EQ(o.costMapFile, "cost.png");
+    EXPECT_EQ(o.balance, Balance::Off);
+    for (const auto& [extra, expected] : std::vector<std::pair<std::vector<std::string>, std::string>>{
+             {{"--cost-map", "cost.exr"}, "--cost-map cost.exr: the file name must end in .png"},
+             {{"--cost-map", "cost.png", "--balance"}, "--cost-map needs the static split"}}) {
+        std::vector<std::string> words = {"--wall", "w.ini", "--scene", "s.toml"};
+        words.insert(words.end(), extra.begin(), extra.end());
+        EXPECT_THROW(
+            try { parseRender(words); } catch (const UsageError& e) {
+                EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << e.what();
+                throw;
+            },
+            UsageError);
+    }
+}
+
+// The most 8-bit rounding may lower the luminance from one colour-map step to the next.
+constexpr double kRoundingDip = 5e-4;
+
+// Relative luminance Y of an 8-bit sRGB colour (IEC 61966-2-1 transfer function, Rec. 709 weights).
+double luminance(Rgb8 c)
+{
+    auto linear = [](std::uint8_t v) {
+        const double e = v / 255.0;
+        return e <= 0.04045 ? e / 12.92 : std::pow((e + 0.055) / 1.055, 2.4);
+    };
+    return 0.2126 * linear(c[0]) + 0.7152 * linear(c[1]) + 0.0722 * linear(c[2]);
+}
+
+TEST(CostMap, ViridisRunsFromTheTablesFirstToItsLastEntry)
+{
+    // Matplotlib's viridis entries 0 and 255, times 255, rounded.
+    EXPECT_EQ(viridis(0.0), (Rgb8{68, 1, 84}));
+    EXPECT_EQ(viridis(1.0), (Rgb8{253, 231, 37}));
+    EXPECT_EQ(viridis(-3.0), viridis(0.0));
+    EXPECT_EQ(viridis(7.0), viridis(1.0));
+    // Entry 128 is a table node: (0.127568, 0.566949, 0.550556).
+    EXPECT_EQ(viridis(128.0 / 255.0), (Rgb8{33, 145, 140}));
+}
+
+TEST(CostMap, ViridisLuminanceIncreasesMonotonically)
+{
+    // Strictly increasing over steps of 1/32, and a wide range: Y runs from 0.013 to 0.77. Between
+    // neighbouring 8-bit steps rounding can swap the order by less than one code of red and blue
+    // (about 3.6e-4 in Y mid-range; the largest dip measured is 2.9e-4).
+    for (int i = 1; i <= 255; ++i)
+        EXPECT_LE(luminance(viridis((i - 1) / 255.0)), luminance(viridis(i / 255.0)) + kRoundingDip) << i;
+    for (int i = 1; i <= 32; ++i)
+        EXPECT_LT(luminance(viridis((i - 1) / 32.0)), luminance(viridis(i / 32.0))) << i;
+    EXPECT_LT(luminance(viridis(0.0)), 0.02);
+    EXPECT_GT(luminance(viridis(1.0)), 0.7);
+}
+
+TEST(CostMap, ScaleIsLogarithmicBetweenTheCheapestAndTheCostliestPixel)
+{
+    const CostScale scale{10.0, 1000.0};
+    EXPECT_DOUBLE_EQ(scale.position(10.0), 0.0);
+    EXPECT_DOUBLE_EQ(scale.position(1000.0), 1.0);
+    EXPECT_NEAR(scale.position(100.0), 0.5, 1e-15);
+    EXPECT_DOUBLE_EQ(scale.position(1.0), 0.0);
+    EXPECT_DOUBLE_EQ(scale.position(1e6), 1.0);
+    EXPECT_DOUBLE_EQ((CostScale{5.0, 5.0}).position(5.0), 0.0);
+}
+
+TEST(CostMap, PictureIsTheMapWithALabelledScaleBarBelow)
+{
+    const int width = 400, height = 10;
+    std::vector<double> cost(width * height, 100.0);
+    cost[0] = 10.0;   // cheapest: the colour map's first entry
+    cost[1] = 1000.0; // costliest: its last
+    cost[2] = 0.0;    // nothing drawn (a bezel): black
+    const Picture p = costMapPicture(width, height, cost);
+    ASSERT_EQ(p.width, width);
+    ASSERT_EQ(p.height, height + scaleBarHeight(width));
+    EXPECT_EQ(p.at(0, 0), viridis(0.0));
+    EXPECT_EQ(p.at(1, 0), viridis(1.0));
+    EXPECT_EQ(p.at(2, 0), (Rgb8{0, 0, 0}));
+    EXPECT_EQ(p.at(3, 0), viridis(0.5));
+
+    // The strip: a row of the bar whose colours run from the map's first to its last entry with
+    // luminance increasing (up to 8-bit rounding).
+    int stripRow = -1;
+    for (int y = height; y < p.height && stripRow < 0; ++y)
+        for (int x = 0; x < width; ++x)
+            if (p.at(x, y) == viridis(0.0)) {
+                stripRow = y;
+                break;
+            }
+    ASSERT_GE(stripRow, height);
+    int first = 0, last = width - 1;
+    while (p.at(first, stripRow) != viridis(0.0)) ++first;
+    while (p.at(last, stripRow) != viridis(1.0)) --last;
+    EXPECT_GT(last - first, width * 9 / 10);
+    for (int x = first + 1; x <= last; ++x)
+        EXPECT_LE(luminance(p.at(x - 1, stripRow)), luminance(p.at(x, stripRow)) + kRoundingDip) << x;
+
+    // Labels: white text below the strip at both ends and the middle of the strip ("10.0", "100",
+    // "1000"), and the caption on the last text line.
+    auto whiteIn = [&](int x0, int x1, int y0, int y1) {
+        int n = 0;
+        for (int y = y0; y < y1; ++y)
+            for (int x = std::max(0, x0); x < std::min(width, x1); ++x)
+                n += p.at(x, y) == Rgb8{255, 255, 255};
+        return n;
+    };
+    const int stripEnd = [&] {
+        int y = stripRow;
+        while (p.at(first, y) == viridis(0.0)) ++y;
+        return y;
+    }();
+    const int labelRows = (p.height - stripEnd) / 2;
+    EXPECT_GT(whiteIn(first, first + 30, stripEnd + 3, stripEnd + labelRows), 10);
+    EXPECT_GT(whiteIn((first + last) / 2 - 15, (first + last) / 2 + 15, stripEnd + 3, stripEnd + labelRows), 10);
+    EXPECT_GT(whiteIn(last - 30, last + 1, stripEnd + 3, stripEnd + labelRows), 10);
+    EXPECT_GT(whiteIn(first, first + 6 * 21, stripEnd + labelRows, p.height), 100); // "ns per pixel estimate"
+    EXPECT_EQ(whiteIn(first + 6 * 21 + 1, width, stripEnd + labelRows, p.height), 0);
+}
+
+TEST(AccuracyCommand, FrameIsAWholeNumberForScenesOnly)
+{
+    for (const auto& [words, expected] : std::vector<std::pair<std::vector<std::string>, std::string>>{
+             {{"--scene", "s.toml", "--frame", "-1"}, "--frame must be a whole number in [0, 1e8] (got -1)"},
+             {{"--scene", "s.toml", "--frame", "2.5"}, "--frame"},
+             {{"--airmass", "--frame", "3"}, "--frame applies to --scene only"}}) {
+        const Result r = runAccuracy(words);
+        EXPECT_EQ(r.status, 2) << expected;
+        EXPECT_EQ(lines(r.err).size(), 1u) << r.err;
+        EXPECT_NE(r.err.find(expected), std::string::npos) << r.err;
+    }
+    EXPECT_NE(runAccuracy({"--help"}).out.find("--frame"), std::string::npos);
 }
 
 } // namespace
