@@ -1,9 +1,7 @@
 #include "app/cost_map.h"
 
 #include "app/cli/exit_status.h"
-#include "io/atomic_file.h"
-
-#include <png.h>
+#include "io/png.h"
 
 #include <algorithm>
 #include <cmath>
@@ -162,15 +160,7 @@ Picture costMapPicture(int width, int height, const std::vector<double>& costNs)
 
 void writePicturePng(const std::string& path, const Picture& picture)
 {
-    io::writeFileAtomically(path, [&](const std::string& temporary) {
-        png_image png{};
-        png.version = PNG_IMAGE_VERSION;
-        png.width = png_uint_32(picture.width);
-        png.height = png_uint_32(picture.height);
-        png.format = PNG_FORMAT_RGB; // 8-bit sRGB
-        if (!png_image_write_to_file(&png, temporary.c_str(), 0, picture.rgb.data(), 0, nullptr))
-            throw std::runtime_error(path + ": cannot write PNG: " + png.message);
-    });
+    io::writePngRgb8(path, picture.width, picture.height, picture.rgb);
 }
 
 int writeCostMap(WallSession& session, const cluster::MpiWorld& world, const cluster::FrameStats& stats)

@@ -28,13 +28,21 @@ void writePng(const std::string& path, const Image& image, const ToneMap& toneMa
             bytes[3 * i + c] = std::uint8_t(std::lround(255.0 * display[c]));
     }
 
+    writePngRgb8(path, image.width, image.height, bytes);
+}
+
+void writePngRgb8(const std::string& path, int width, int height, const std::vector<std::uint8_t>& rgb)
+{
+    if (width <= 0 || height <= 0 || rgb.size() != 3 * std::size_t(width) * std::size_t(height))
+        throw std::invalid_argument(path + ": cannot write a PNG of " + std::to_string(rgb.size()) + " bytes as " +
+                                    std::to_string(width) + " x " + std::to_string(height) + " RGB");
     writeFileAtomically(path, [&](const std::string& temporary) {
         png_image png{};
         png.version = PNG_IMAGE_VERSION;
-        png.width = png_uint_32(image.width);
-        png.height = png_uint_32(image.height);
+        png.width = png_uint_32(width);
+        png.height = png_uint_32(height);
         png.format = PNG_FORMAT_RGB; // 8-bit, not linear: libpng writes an sRGB chunk
-        if (!png_image_write_to_file(&png, temporary.c_str(), 0, bytes.data(), 0, nullptr))
+        if (!png_image_write_to_file(&png, temporary.c_str(), 0, rgb.data(), 0, nullptr))
             throw std::runtime_error(path + ": cannot write PNG: " + png.message);
     });
 }

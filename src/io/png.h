@@ -3,7 +3,9 @@
 #include "io/image.h"
 #include "io/tone_map.h"
 
+#include <cstdint>
 #include <string>
+#include <vector>
 
 namespace aurorawall::io {
 
@@ -11,6 +13,9 @@ namespace aurorawall::io {
 // RGB PNG tagged sRGB, atomically (see atomic_file.h). Alpha is not written.
 // Throws std::invalid_argument for an empty or inconsistent image, std::runtime_error on I/O errors.
 void writePng(const std::string& path, const Image& image, const ToneMap& toneMap);
+
+// Display-ready 8-bit sRGB pixels (rgb: 3 bytes a pixel, rows top-down), written atomically.
+void writePngRgb8(const std::string& path, int width, int height, const std::vector<std::uint8_t>& rgb);
 
 // Reads a PNG as 8-bit RGBA; each channel holds the ENCODED byte value / 255 (not linear radiance).
 // Throws std::runtime_error.
