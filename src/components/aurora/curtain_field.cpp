@@ -37,6 +37,15 @@ physics::FootprintMapSpec capAround(const std::vector<physics::CurtainPolyline>&
     return spec;
 }
 
+// Uploads into the texture kept from the last frame when its size is the same, else into a new one.
+void uploadInto(std::unique_ptr<gl::Texture>& texture, int width, int height, const std::vector<float>& texels)
+{
+    if (!texture || texture->width() != width || texture->height() != height)
+        texture = std::make_unique<gl::Texture>(
+            gl::Texture::create2D(width, height, gl::TexelFormat::RGBA32F, gl::Filter::Nearest, gl::Wrap::Clamp));
+    texture->upload(texels);
+}
+
 } // namespace
 
 CurtainField::CurtainField(const CurtainModel& model) : model_(model)
@@ -49,19 +58,46 @@ CurtainField::CurtainField(const CurtainModel& model) : model_(model)
 void CurtainField::update(double timeS)
 {
     const auto start = std::chrono::steady_clock::now();
+    const std::vector<CurtainState> states = model_.statesAt(timeS);
+    // The polylines and the map are functions of the control points alone: rebuilt only when those
+    // differ (exactly) from the last build's, e.g. not while every curtain holds still.
+    std::vector<std::vector<glm::dvec2>> controlPoints;
+    for (const CurtainState& s : states)
+        controlPoints.push_back(s.controlPointsLatLonDeg);
+    const bool rebuilt = !footprint_ || controlPoints != controlPoints_;
+    if (rebuilt) {
+        controlPoints_ = std::move(controlPoints);
+        rebuild(states);
+    }
+    for (size_t i = 0; i < states.size(); ++i) {
+        const CurtainState& s = states[i];
+        state_[i] = glm::vec4(s.energyFluxErgPerCm2S, s.energyKeV, static_cast<float>(pointCounts_[i]), 0.0f);
+        detailUniform_[i] = glm::vec4(s.detailOffsetKm, s.detailPhase, model_.lateralScale(i), 0.0f);
+    }
+
+    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    char text[240];
+    std::snprintf(text, sizeof text,
+                  "curtains: %zu, %zu points, footprint map %d^2 (radius %.1f deg, margin %.2f km), %s: %.1f ms",
+                  states.size(), pointTotal_, static_cast<int>(size_), angularRadiusDeg_, marginKm_,
+                  rebuilt ? "rebuilt" : "unchanged", ms);
+    summary_ = text;
+}
+
+void CurtainField::rebuild(const std::vector<CurtainState>& states)
+{
     const Settings& aurora = model_.settings();
     const double R = model_.planetRadiusKm();
     std::vector<physics::CurtainPolyline> polylines;
-    size_t widest = 1, points = 0;
-    std::vector<CurtainNow> now = model_.at(timeS);
-    for (size_t i = 0; i < now.size(); ++i) {
-        const CurtainState& s = now[i].state;
-        polylines.push_back(std::move(now[i].polyline));
+    size_t widest = 1;
+    pointCounts_.clear();
+    pointTotal_ = 0;
+    for (const CurtainState& s : states) {
+        polylines.push_back(model_.footprint(s));
         const size_t n = polylines.back().points.size();
         widest = std::max(widest, n);
-        points += n;
-        state_[i] = glm::vec4(s.energyFluxErgPerCm2S, s.energyKeV, static_cast<float>(n), 0.0f);
-        detailUniform_[i] = glm::vec4(s.detailOffsetKm, s.detailPhase, now[i].lateralScale, 0.0f);
+        pointCounts_.push_back(n);
+        pointTotal_ += n;
     }
 
     // One row per curtain: unit vector and arclength (km); rows padded with their last point.
@@ -77,29 +113,20 @@ void CurtainField::update(double timeS)
             t[2] = static_cast<float>(p.z);
             t[3] = static_cast<float>(polylines[c].arclengthKm[j]);
         }
-    polylines_ = std::make_unique<gl::Texture>(gl::Texture::create2D(
-        static_cast<int>(widest), static_cast<int>(rows), gl::TexelFormat::RGBA32F, gl::Filter::Nearest, gl::Wrap::Clamp));
-    polylines_->upload(texels);
+    uploadInto(polylines_, static_cast<int>(widest), static_cast<int>(rows), texels);
 
     // The cap must hold every curtain's emitting band plus the map's margin (at most a few texels).
     const double extraKm = reachKm_ + 2.0 * aurora.polylineSpacingKm + 100.0;
     physics::FootprintMapSpec spec = capAround(polylines, extraKm, R, aurora.footprintMapSize);
     spec.reachKm = reachKm_;
     const physics::FootprintMap map = physics::buildFootprintMap(polylines, spec, R);
-    footprint_ = std::make_unique<gl::Texture>(gl::Texture::create2D(
-        map.spec.size, map.spec.size, gl::TexelFormat::RGBA32F, gl::Filter::Nearest, gl::Wrap::Clamp));
-    footprint_->upload(map.texels);
+    uploadInto(footprint_, map.spec.size, map.spec.size, map.texels);
     centre_ = glm::vec3(map.centre);
     east_ = glm::vec3(map.east);
     angularRadius_ = static_cast<float>(map.angularRadius);
+    angularRadiusDeg_ = map.spec.angularRadiusDeg;
     size_ = static_cast<float>(map.spec.size);
     marginKm_ = static_cast<float>(map.marginKm);
-
-    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    char text[200];
-    std::snprintf(text, sizeof text, "curtains: %zu, %zu points, footprint map %d^2 (radius %.1f deg, margin %.2f km): %.1f ms",
-                  polylines.size(), points, map.spec.size, map.spec.angularRadiusDeg, map.marginKm, ms);
-    summary_ = text;
 }
 
 void CurtainField::bind(gl::Program& program) const

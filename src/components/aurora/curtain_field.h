@@ -2,7 +2,8 @@
 // The aurora's curtains for one frame, on the GPU: each curtain's spline sampled into a dense
 // polyline (one texture row each) and the jump-flooded footprint map that finds the nearest
 // curtain point from anywhere (src/components/aurora/physics/footprint_map.h). Rebuilt on the CPU every frame from
-// the master's animation time, deterministically, so every rank uploads the same bytes.
+// the master's animation time, deterministically, so every rank uploads the same bytes; kept (with
+// their textures) while the curtains' control points stay exactly the same.
 #include "gl/shader_program.h"
 #include "gl/texture.h"
 #include "components/aurora/curtain_model.h"
@@ -19,17 +20,28 @@ class CurtainField {
 public:
     explicit CurtainField(const CurtainModel& model);
 
-    // Evaluates the keyframes at timeS and rebuilds and uploads the polylines and the map.
+    // Evaluates the keyframes at timeS; rebuilds and uploads the polylines and the map when the
+    // control points differ from the last build's.
     void update(double timeS);
 
     // Texture units 4 and 5 and the curtain uniforms of shaders/components/aurora/aurora_curtains.glsl.
     void bind(gl::Program& program) const;
 
-    // "curtains: 5, 2311 points, footprint map 512^2 (radius 21.3 deg, margin 2.9 km): 14.2 ms"
+    // The uploaded polylines and footprint map (valid after the first update).
+    const gl::Texture& polylines() const { return *polylines_; }
+    const gl::Texture& footprintMap() const { return *footprint_; }
+
+    // "curtains: 5, 2311 points, footprint map 512^2 (radius 21.3 deg, margin 2.9 km), rebuilt: 14.2 ms"
     const std::string& summary() const { return summary_; }
 
 private:
+    void rebuild(const std::vector<CurtainState>& states);
+
     const CurtainModel& model_;
+    std::vector<std::vector<glm::dvec2>> controlPoints_; // of the last build
+    std::vector<size_t> pointCounts_;
+    size_t pointTotal_ = 0;
+    double angularRadiusDeg_ = 0.0;
     std::unique_ptr<gl::Texture> polylines_;
     std::unique_ptr<gl::Texture> footprint_;
     std::vector<glm::vec4> state_;  // per curtain: peak flux, energy keV, point count, 0

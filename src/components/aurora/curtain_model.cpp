@@ -17,15 +17,28 @@ CurtainModel::CurtainModel(const Settings& aurora, double planetRadiusKm, const 
     }
 }
 
-std::vector<CurtainNow> CurtainModel::at(double timeS) const
+std::vector<CurtainState> CurtainModel::statesAt(double timeS) const
 {
     const double stripLength = detail_ ? detail_->stripLengthKm : 1.0;
+    std::vector<CurtainState> states;
+    for (const Curtain& c : aurora_.curtains)
+        states.push_back(curtainAt(c, timeS, stripLength));
+    return states;
+}
+
+physics::CurtainPolyline CurtainModel::footprint(const CurtainState& state) const
+{
+    return physics::sampleCurtain(state.controlPointsLatLonDeg, planetRadiusKm_, aurora_.polylineSpacingKm);
+}
+
+std::vector<CurtainNow> CurtainModel::at(double timeS) const
+{
     std::vector<CurtainNow> now;
-    for (size_t i = 0; i < aurora_.curtains.size(); ++i) {
+    std::vector<CurtainState> states = statesAt(timeS);
+    for (size_t i = 0; i < states.size(); ++i) {
         CurtainNow c;
-        c.state = curtainAt(aurora_.curtains[i], timeS, stripLength);
-        c.polyline = physics::sampleCurtain(c.state.controlPointsLatLonDeg, planetRadiusKm_,
-                                                         aurora_.polylineSpacingKm);
+        c.polyline = footprint(states[i]);
+        c.state = std::move(states[i]);
         c.lateralScale = lateralScale_[i];
         now.push_back(std::move(c));
     }

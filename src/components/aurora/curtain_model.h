@@ -27,8 +27,14 @@ public:
     // detail: the fluid_detail frames' shape, or null when the scene does not list it.
     CurtainModel(const Settings& aurora, double planetRadiusKm, const fluid_detail::DetailShape* detail);
 
-    // Every curtain at animation time timeS, in the scene's order.
+    // Every curtain at animation time timeS, in the scene's order: statesAt, then footprint of each.
     std::vector<CurtainNow> at(double timeS) const;
+    // Every curtain's keyframed state at timeS (cheap: no spline sampling), in the scene's order.
+    std::vector<CurtainState> statesAt(double timeS) const;
+    // The dense polyline of a state's control points: a function of those points alone.
+    physics::CurtainPolyline footprint(const CurtainState& state) const;
+    // Profile coordinate per km across curtain i.
+    double lateralScale(size_t i) const { return lateralScale_[i]; }
 
     // Beyond this distance from its centre line (km on the ground) no curtain emits.
     double reachKm() const { return reachKm_; }
