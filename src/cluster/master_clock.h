@@ -42,9 +42,11 @@ public:
     double timeS() const { return jumpPending_ ? anchorTimeS_ : lastTimeS_; }
     // The number the next frame gets (frames are numbered from 0).
     std::uint64_t nextFrame() const { return frame_; }
-    // The camera at timeS(): the scene's camera flown along its path (forward at speedKmPerS).
+    // The camera at timeS(): on its keyed path (scene::CameraPath) if it has one, a still pose without
+    // the path; otherwise the scene's camera flown straight along its view (forward at speedKmPerS).
     scene::Camera camera() const;
-    // Puts the camera there at timeS(); it flies on from there as the animation time runs.
+    // Puts the camera there at timeS(); it flies on from there as the animation time runs, along its
+    // own path if it has one (a camera without one leaves the scene's keyed path).
     void setCamera(const scene::Camera& camera);
 
 private:

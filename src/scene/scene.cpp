@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <sstream>
 
 namespace aurorawall::scene {
 
@@ -16,9 +17,132 @@ using config::parseTomlFile, config::TableReader, config::TomlValue;
 namespace {
 
 
+// The local horizon at a point of the planet frame: zenith, north and east (unit vectors).
+LocalFrame horizonAt(const glm::dvec3& positionKm)
+{
+    LocalFrame f;
+    f.up = glm::normalize(positionKm);
+    const glm::dvec3 north = glm::dvec3(0, 0, 1) - f.up * f.up.z;
+    f.north = glm::length(north) > 1e-12 ? glm::normalize(north) : glm::dvec3(1, 0, 0); // at a pole: any
+    f.east = glm::cross(f.north, f.up);
+    return f;
+}
+
+// A frame looking along `forward` with up as near the zenith as it can be; looking straight up or
+// down, up is `fallbackUp`.
+CameraFrame levelFrame(const glm::dvec3& forward, const glm::dvec3& zenith, const glm::dvec3& fallbackUp)
+{
+    CameraFrame f;
+    f.forward = glm::normalize(forward);
+    const glm::dvec3 up = zenith - f.forward * glm::dot(zenith, f.forward);
+    f.up = glm::length(up) > 1e-9 ? glm::normalize(up) : fallbackUp;
+    return f;
+}
+
+// A point given as `PREFIXlatitude_deg`, `PREFIXlongitude_deg`, `PREFIXaltitude_km` (above the planet's
+// sphere), or as `PREFIXposition_km` or `PREFIXposition_radii` in the planet frame.
+glm::dvec3 readPoint(const TableReader& t, const std::string& prefix, double planetRadiusKm)
+{
+    if (t.has(prefix + "position_km"))
+        return t.vector3(prefix + "position_km");
+    if (t.has(prefix + "position_radii"))
+        return t.vector3(prefix + "position_radii") * planetRadiusKm;
+    const double lat = t.number(prefix + "latitude_deg", -90, 90), lon = t.number(prefix + "longitude_deg", -360, 360);
+    const double alt = t.number(prefix + "altitude_km", -planetRadiusKm + 1, 1e9);
+    return planetPoint(lat, lon, planetRadiusKm + alt);
+}
+
+// One [[camera.key]]: its time, a position and one orientation: heading_deg/pitch_deg, a look-at
+// point (look_at_km, or look_at_latitude_deg/look_at_longitude_deg/look_at_altitude_km), or explicit
+// direction/up vectors; roll_deg (clockwise as seen from behind) turns the first two about the view.
+CameraKey readCameraKey(const TableReader& k, double planetRadiusKm)
+{
+    CameraKey key;
+    key.timeS = k.number("time_s", -1e15, 1e15);
+    key.positionKm = readPoint(k, "", planetRadiusKm);
+    const LocalFrame horizon = horizonAt(key.positionKm);
+
+    const std::vector<std::string> forms = {"heading_deg", "look_at_km", "look_at_latitude_deg", "direction"};
+    std::string given;
+    for (const std::string& form : forms)
+        if (k.has(form)) {
+            if (!given.empty())
+                k.fail(form, "give one orientation: heading_deg and pitch_deg, look_at_km, "
+                             "look_at_latitude_deg/longitude_deg/altitude_km, or direction and up (" +
+                                 given + " is given too)");
+            given = form;
+        }
+    if (given.empty())
+        k.fail("heading_deg", "missing: give heading_deg and pitch_deg, look_at_km, "
+                              "look_at_latitude_deg/longitude_deg/altitude_km, or direction and up");
+
+    CameraFrame frame;
+    if (given == "direction") {
+        frame.forward = k.vector3("direction");
+        frame.up = k.vector3("up");
+        if (glm::length(frame.forward) < 1e-12)
+            k.fail("direction", "must not be zero");
+        frame.forward = glm::normalize(frame.forward);
+        frame.up -= frame.forward * glm::dot(frame.up, frame.forward);
+        if (glm::length(frame.up) < 1e-9)
+            k.fail("up", "must not be parallel to the view direction");
+        frame.up = glm::normalize(frame.up);
+    } else {
+        if (given == "heading_deg") {
+            const double heading = k.number("heading_deg", -360, 360) * kDegree;
+            const double pitch = k.number("pitch_deg", -90, 90) * kDegree;
+            const glm::dvec3 horizontal = std::cos(heading) * horizon.north + std::sin(heading) * horizon.east;
+            frame = levelFrame(std::cos(pitch) * horizontal + std::sin(pitch) * horizon.up, horizon.up,
+                               pitch > 0 ? -horizontal : horizontal);
+        } else {
+            const std::string field = given == "look_at_km" ? "look_at_km" : "look_at_latitude_deg";
+            const glm::dvec3 target = given == "look_at_km" ? k.vector3("look_at_km")
+                                                            : readPoint(k, "look_at_", planetRadiusKm);
+            if (glm::length(target - key.positionKm) < 1e-9)
+                k.fail(field, "the look-at point is the camera's position");
+            frame = levelFrame(target - key.positionKm, horizon.up, horizon.north);
+        }
+        const double roll = k.number("roll_deg", -180, 180, 0.0) * kDegree;
+        const glm::dvec3 right = glm::cross(frame.forward, frame.up);
+        frame.up = std::cos(roll) * frame.up + std::sin(roll) * right;
+    }
+    key.orientation = orientationOf(frame);
+    k.rejectUnknownKeys();
+    return key;
+}
+
+// [[camera.key]]: at least 2 keys in increasing time.
+CameraPath readCameraPath(const TableReader& t, double planetRadiusKm)
+{
+    t.rejectKeysOutside({"key"});
+    const std::vector<TableReader> tables = t.arrayOfTables("key");
+    if (tables.size() < 2)
+        t.fail("key", "a camera path needs at least 2 keys, got " + std::to_string(tables.size()));
+    std::vector<CameraKey> keys;
+    for (const TableReader& k : tables) {
+        keys.push_back(readCameraKey(k, planetRadiusKm));
+        if (keys.size() > 1 && !(keys.back().timeS > keys[keys.size() - 2].timeS))
+        {
+            std::ostringstream previous;
+            previous << keys[keys.size() - 2].timeS;
+            k.fail("time_s", "keys must be in increasing time (the previous key is at " + previous.str() + " s)");
+        }
+    }
+    return CameraPath(std::move(keys));
+}
+
 Camera readCamera(const TableReader& t, double planetRadiusKm)
 {
     Camera c;
+    if (t.has("key")) {
+        c.path = readCameraPath(t, planetRadiusKm);
+        const CameraKey& first = c.path.keys().front();
+        const CameraFrame frame = frameOf(first.orientation);
+        c.positionKm = first.positionKm;
+        c.forward = frame.forward;
+        c.up = frame.up;
+        return c;
+    }
     if (t.has("position_radii") || t.has("position_km")) {
         // Explicit vectors, e.g. the paper's benchmark view in planet radii.
         c.positionKm = t.has("position_radii") ? t.vector3("position_radii") * planetRadiusKm

@@ -4,6 +4,7 @@
 // Units: kilometres, degrees, seconds, cd/m^2. Planet frame: centre at the origin, z toward the
 // north pole, x toward longitude 180 deg and y toward longitude 90 deg W (the frame of the
 // paper's published benchmark camera).
+#include "scene/camera_path.h"
 #include "scene/component.h"
 
 #include <glm/glm.hpp>
@@ -22,6 +23,9 @@ struct Camera {
     glm::dvec3 forward{0.0, 1.0, 0.0};
     glm::dvec3 up{0.0, 0.0, 1.0};
     double speedKmPerS = 0.0; // flies along `forward` as animation time runs
+    // A keyed flight ([[camera.key]]); when given it sets the camera at every animation time and the
+    // pose above is its first key's.
+    CameraPath path;
 };
 
 struct Scene {

@@ -1,5 +1,5 @@
 // The master clock: the animation time of every frame, exact in double, through pause, play, speed,
-// single steps and jumps; the camera along its path; the frame count.
+// single steps and jumps; the camera along its straight or keyed path; the frame count.
 #include "cluster/master_clock.h"
 
 #include <gtest/gtest.h>
@@ -130,4 +130,27 @@ TEST(MasterClock, TheCameraFliesWithAnimationTime)
     EXPECT_EQ(later.timeS, 142.0);
     EXPECT_EQ(later.cameraPositionKm, glm::dvec3(6500.0, 0.0, 5.0));
     EXPECT_EQ(later.cameraBack, glm::dvec3(0.0, 0.0, -1.0));
+}
+
+TEST(MasterClock, TheCameraFollowsItsKeyedPathUntilPutElsewhere)
+{
+    // Two keys 10 s apart on a straight line at 10 km/s: the path is that line, held after 10 s.
+    const scene::CameraFrame frame{{0.0, 1.0, 0.0}, {0.0, 0.0, 1.0}};
+    const glm::dquat q = scene::orientationOf(frame);
+    scene::Camera c;
+    c.path = scene::CameraPath({{0.0, {0.0, 0.0, 6441.0}, q}, {10.0, {0.0, 100.0, 6441.0}, q}});
+    MasterClock clock(fixedStep(0.0, 0.5), c, 1.0);
+    clock.setTime(2.5);
+    const FrameState s = clock.next(false);
+    EXPECT_NEAR(glm::length(s.cameraPositionKm - glm::dvec3(0.0, 25.0, 6441.0)), 0.0, 1e-12);
+    EXPECT_NEAR(glm::length(s.cameraBack - glm::dvec3(0.0, -1.0, 0.0)), 0.0, 1e-15);
+    clock.setTime(50.0); // after the last key: held at it
+    EXPECT_EQ(clock.next(false).cameraPositionKm, glm::dvec3(0.0, 100.0, 6441.0));
+    EXPECT_TRUE(clock.camera().path.empty()); // the pose shown, not the path
+    // Put elsewhere without a path (the remote control's goto), the camera stays there.
+    scene::Camera still = clock.camera();
+    still.positionKm = {6500.0, 0.0, 0.0};
+    clock.setCamera(still);
+    clock.setTime(5.0);
+    EXPECT_EQ(clock.next(false).cameraPositionKm, glm::dvec3(6500.0, 0.0, 0.0));
 }

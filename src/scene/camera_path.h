@@ -1,0 +1,53 @@
+#pragma once
+// A keyed camera flight: positions and orientations at given animation times, interpolated in
+// double. Positions follow a cubic Hermite spline whose tangents are finite differences of the
+// neighbouring keys (one-sided at the ends), so the position and the velocity are continuous (C1)
+// and keys on a straight line at constant speed give that line exactly. Orientations are unit
+// quaternions interpolated by slerp between consecutive keys, each key's quaternion first made to
+// lie in the same hemisphere as the previous one (non-negative dot product), so the camera always
+// turns the short way and never flips. Before the first key and after the last the camera holds
+// still. The path is a function of animation time alone: it plays the same at any frame rate.
+#include <glm/glm.hpp>
+#include <glm/gtc/quaternion.hpp>
+
+#include <vector>
+
+namespace aurorawall::scene {
+
+// A camera orientation: forward (where it looks) and up, orthonormal.
+struct CameraFrame {
+    glm::dvec3 forward{0.0, 1.0, 0.0};
+    glm::dvec3 up{0.0, 0.0, 1.0};
+};
+
+// The rotation taking the camera's axes (right, up, back = -forward) to the planet frame.
+glm::dquat orientationOf(const CameraFrame& frame);
+CameraFrame frameOf(const glm::dquat& orientation);
+
+struct CameraKey {
+    double timeS = 0.0;           // animation time, s
+    glm::dvec3 positionKm{0.0};   // planet frame, km
+    glm::dquat orientation{1.0, 0.0, 0.0, 0.0};
+};
+
+class CameraPath {
+public:
+    CameraPath() = default;
+    // At least 2 keys with strictly increasing times (the scene reader checks and reports).
+    explicit CameraPath(std::vector<CameraKey> keys);
+
+    bool empty() const { return keys_.empty(); }
+    const std::vector<CameraKey>& keys() const { return keys_; }
+
+    glm::dvec3 positionAt(double timeS) const;
+    glm::dquat orientationAt(double timeS) const;
+
+private:
+    // The index i of the segment [key i, key i+1] holding timeS, and its fraction s in [0, 1).
+    std::size_t segment(double timeS, double& s) const;
+
+    std::vector<CameraKey> keys_;
+    std::vector<glm::dvec3> tangentsKmPerS_; // dp/dt at each key
+};
+
+} // namespace aurorawall::scene

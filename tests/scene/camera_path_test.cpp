@@ -1,0 +1,227 @@
+// Keyed camera paths: C1 positions, orientations without flips, exact at the keys, held outside
+// them, independent of the frame step; the benchmark flight as a path; errors naming file:line:key.
+#include "cluster/master_clock.h"
+#include "common/input_error.h"
+#include "components/registry.h"
+#include "scene/camera_path.h"
+#include "scene/scene.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+using namespace aurorawall;
+using scene::CameraFrame, scene::CameraKey, scene::CameraPath;
+
+namespace {
+
+const std::string kData = SCENE_TEST_DATA;
+const std::string kScenes = SCENE_CONFIG_DIR;
+
+// The rotation angle between two orientations (radians; q and -q are the same rotation).
+double angleBetween(const glm::dquat& a, const glm::dquat& b)
+{
+    return 2.0 * std::acos(std::min(1.0, std::abs(glm::dot(a, b))));
+}
+
+// A frame turned by `angle` about the planet's z axis from looking along +y, tilted so that both
+// forward and up change.
+CameraFrame turned(double angle)
+{
+    const glm::dvec3 forward{-std::sin(angle), std::cos(angle), 0.3};
+    const glm::dvec3 up = glm::normalize(glm::dvec3(0.2 * std::cos(angle), 0.2 * std::sin(angle), 1.0));
+    CameraFrame f;
+    f.forward = glm::normalize(forward);
+    f.up = glm::normalize(up - f.forward * glm::dot(up, f.forward));
+    return f;
+}
+
+// Five keys at uneven times along a curve 70-250 km up, turning 60 deg per key.
+std::vector<CameraKey> curvedKeys()
+{
+    const double times[] = {0.0, 4.0, 5.5, 12.0, 13.0};
+    const glm::dvec3 positions[] = {
+        {0.0, 0.0, 6441.0}, {30.0, 80.0, 6450.0}, {70.0, 95.0, 6480.0}, {40.0, 200.0, 6520.0}, {45.0, 230.0, 6600.0}};
+    std::vector<CameraKey> keys;
+    for (int i = 0; i < 5; ++i)
+        keys.push_back({times[i], positions[i], scene::orientationOf(turned(i * M_PI / 3.0))});
+    return keys;
+}
+
+std::string loadError(const std::string& file)
+{
+    try {
+        components::loadScene(file);
+    } catch (const InputError& e) {
+        return e.what();
+    }
+    return "";
+}
+
+} // namespace
+
+TEST(CameraPath, ExactAtTheKeys)
+{
+    const std::vector<CameraKey> keys = curvedKeys();
+    const CameraPath path(keys);
+    for (std::size_t i = 0; i < keys.size(); ++i) {
+        EXPECT_EQ(path.positionAt(keys[i].timeS), keys[i].positionKm) << "key " << i;
+        const CameraFrame want = turned(static_cast<double>(i) * M_PI / 3.0);
+        const CameraFrame got = scene::frameOf(path.orientationAt(keys[i].timeS));
+        EXPECT_NEAR(glm::length(got.forward - want.forward), 0.0, 1e-14) << "key " << i;
+        EXPECT_NEAR(glm::length(got.up - want.up), 0.0, 1e-14) << "key " << i;
+    }
+}
+
+TEST(CameraPath, PositionAndVelocityAreContinuousAtTheKeys)
+{
+    const std::vector<CameraKey> keys = curvedKeys();
+    const CameraPath path(keys);
+    // Second-order one-sided differences from each side of a key, (3 p(t) - 4 p(t - eps) + p(t - 2 eps))
+    // / 2 eps and its mirror: off the derivative by |third derivative| eps^2 / 3 (measured: at most
+    // 1.3e-6 km/s at eps = 1e-4 s), rounding adds about 4e-12 km / eps. A path only C0 at the keys
+    // (straight segments) jumps in velocity by the change of chord slope, above 10 km/s on these keys.
+    const double eps = 1e-4;
+    for (std::size_t i = 1; i + 1 < keys.size(); ++i) {
+        const double t = keys[i].timeS;
+        const glm::dvec3 p = path.positionAt(t);
+        EXPECT_LT(glm::length(path.positionAt(t - eps) - p), 1e-2) << "key " << i;
+        EXPECT_LT(glm::length(path.positionAt(t + eps) - p), 1e-2) << "key " << i;
+        const glm::dvec3 before = (3.0 * p - 4.0 * path.positionAt(t - eps) + path.positionAt(t - 2 * eps)) / (2 * eps);
+        const glm::dvec3 after = (-3.0 * p + 4.0 * path.positionAt(t + eps) - path.positionAt(t + 2 * eps)) / (2 * eps);
+        EXPECT_LT(glm::length(after - before), 1e-5) << "key " << i;
+        // The velocity at a key is the centred difference of its neighbours.
+        const glm::dvec3 tangent = (keys[i + 1].positionKm - keys[i - 1].positionKm) / (keys[i + 1].timeS - keys[i - 1].timeS);
+        EXPECT_LT(glm::length(after - tangent), 1e-5) << "key " << i;
+        const glm::dvec3 chordBefore = (keys[i].positionKm - keys[i - 1].positionKm) / (keys[i].timeS - keys[i - 1].timeS);
+        const glm::dvec3 chordAfter = (keys[i + 1].positionKm - keys[i].positionKm) / (keys[i + 1].timeS - keys[i].timeS);
+        EXPECT_GT(glm::length(chordAfter - chordBefore), 10.0) << "the test's keys must bend";
+    }
+}
+
+TEST(CameraPath, NoOrientationFlipsEvenForKeysOfOppositeSign)
+{
+    std::vector<CameraKey> keys = curvedKeys();
+    for (std::size_t i = 1; i < keys.size(); i += 2)
+        keys[i].orientation = -keys[i].orientation; // the same rotations, quaternions of the other sign
+    const CameraPath path(keys);
+    // Slerp turns at a constant rate within a segment: the angle between samples dt apart is at most
+    // the key step (60 deg) x dt / the shortest segment (1 s). The long way round (300 deg) would be
+    // five times more.
+    const double dt = 1e-3, keyStep = M_PI / 3.0, shortest = 1.0;
+    double largest = 0.0;
+    glm::dquat last = path.orientationAt(-1.0);
+    for (double t = -1.0 + dt; t < 14.0; t += dt) {
+        const glm::dquat q = path.orientationAt(t);
+        largest = std::max(largest, angleBetween(last, q));
+        last = q;
+    }
+    EXPECT_LE(largest, keyStep * dt / shortest * (1.0 + 1e-6));
+    EXPECT_GT(largest, 0.5 * keyStep * dt / shortest); // the measure sees the fastest segment
+}
+
+TEST(CameraPath, HoldsStillBeforeTheFirstKeyAndAfterTheLast)
+{
+    const std::vector<CameraKey> keys = curvedKeys();
+    const CameraPath path(keys);
+    for (double t : {-1e6, -1.0, 0.0}) {
+        EXPECT_EQ(path.positionAt(t), keys.front().positionKm);
+        EXPECT_EQ(path.orientationAt(t), keys.front().orientation);
+    }
+    for (double t : {13.0, 14.0, 1e6}) {
+        EXPECT_EQ(path.positionAt(t), keys.back().positionKm);
+        EXPECT_EQ(angleBetween(path.orientationAt(t), keys.back().orientation), 0.0);
+    }
+}
+
+TEST(CameraPath, PlaysTheSameAtAnyFrameStep)
+{
+    scene::Camera camera;
+    camera.path = CameraPath(curvedKeys());
+    cluster::ClockSettings at30, at7;
+    at30.timeStepS = 1.0 / 30.0;
+    at7.timeStepS = 1.0 / 7.0;
+    at30.frames = at7.frames = 0;
+    cluster::MasterClock clock30(at30, camera, 1.0), clock7(at7, camera, 1.0);
+    // Whole seconds: frame 30 n of one clock and frame 7 n of the other show the same time (to the
+    // rounding of n x dt) and so the same camera.
+    for (int second = 0; second <= 14; ++second) {
+        cluster::FrameState a = clock30.next(false), b = clock7.next(false);
+        for (int n = 1; second > 0 && n < 30; ++n)
+            a = clock30.next(false);
+        for (int n = 1; second > 0 && n < 7; ++n)
+            b = clock7.next(false);
+        ASSERT_NEAR(a.timeS, second, 1e-12);
+        ASSERT_NEAR(b.timeS, second, 1e-12);
+        EXPECT_LT(glm::length(a.cameraPositionKm - b.cameraPositionKm), 1e-9) << second << " s";
+        EXPECT_LT(glm::length(a.cameraBack - b.cameraBack), 1e-12) << second << " s";
+        EXPECT_LT(glm::length(a.cameraUp - b.cameraUp), 1e-12) << second << " s";
+        EXPECT_EQ(a.cameraPositionKm, camera.path.positionAt(a.timeS));
+    }
+}
+
+TEST(CameraPath, TheBenchmarkPathIsTheStraightBenchmarkFlight)
+{
+    const scene::Scene straight = components::loadScene(kScenes + "/benchmark-view.toml");
+    const scene::Scene keyed = components::loadScene(kScenes + "/benchmark-path.toml");
+    ASSERT_TRUE(straight.camera.path.empty());
+    ASSERT_EQ(keyed.camera.path.keys().size(), 2u);
+    cluster::ClockSettings settings;
+    settings.startTimeS = straight.startTimeS;
+    settings.timeStepS = straight.timeStepS;
+    settings.frames = 61;
+    ASSERT_EQ(keyed.startTimeS, settings.startTimeS);
+    ASSERT_EQ(keyed.timeStepS, settings.timeStepS);
+    cluster::MasterClock a(settings, straight.camera, 1.0), b(settings, keyed.camera, 1.0);
+    double largest = 0.0;
+    for (int frame = 0; frame < 61; ++frame) {
+        const cluster::FrameState s = a.next(false), k = b.next(false);
+        ASSERT_EQ(s.timeS, k.timeS);
+        largest = std::max(largest, glm::length(s.cameraPositionKm - k.cameraPositionKm));
+        EXPECT_LT(glm::length(s.cameraBack - k.cameraBack), 1e-12) << "frame " << frame;
+        EXPECT_LT(glm::length(s.cameraUp - k.cameraUp), 1e-12) << "frame " << frame;
+        EXPECT_LT(glm::length(s.cameraRight - k.cameraRight), 1e-12) << "frame " << frame;
+    }
+    EXPECT_LT(largest, 1e-9); // km, over 764.5 km of flight
+}
+
+TEST(CameraPath, SceneKeysInEachForm)
+{
+    const scene::Scene s = components::loadScene(kData + "/path_forms.toml");
+    const std::vector<CameraKey>& keys = s.camera.path.keys();
+    ASSERT_EQ(keys.size(), 3u);
+    // Heading 90 (east), pitch 20 deg at 67.85 N 20.22 E, 10 km up.
+    const scene::LocalFrame local = scene::localFrame(67.85, 20.22);
+    EXPECT_LT(glm::length(keys[0].positionKm - scene::planetPoint(67.85, 20.22, 6381.0)), 1e-9);
+    const CameraFrame first = scene::frameOf(keys[0].orientation);
+    EXPECT_NEAR(std::asin(glm::dot(first.forward, local.up)) * 180.0 / M_PI, 20.0, 1e-9);
+    EXPECT_NEAR(glm::dot(first.forward, local.north), 0.0, 1e-12);
+    EXPECT_GT(glm::dot(first.forward, local.east), 0.0);
+    EXPECT_EQ(s.camera.positionKm, keys[0].positionKm);
+    EXPECT_LT(glm::length(s.camera.forward - first.forward), 1e-15);
+    // Looking at a geographic point, rolled 10 deg: up turns 10 deg from the vertical plane.
+    const glm::dvec3 target = scene::planetPoint(69.0, 21.0, 6371.0 + 110.0);
+    const CameraFrame second = scene::frameOf(keys[1].orientation);
+    EXPECT_NEAR(glm::dot(second.forward, glm::normalize(target - keys[1].positionKm)), 1.0, 1e-12);
+    const glm::dvec3 zenith = glm::normalize(keys[1].positionKm);
+    const glm::dvec3 level = glm::normalize(zenith - second.forward * glm::dot(zenith, second.forward));
+    EXPECT_NEAR(std::acos(glm::dot(second.up, level)) * 180.0 / M_PI, 10.0, 1e-9);
+    // Looking at a point in the planet frame.
+    const CameraFrame third = scene::frameOf(keys[2].orientation);
+    EXPECT_NEAR(glm::dot(third.forward, glm::normalize(glm::dvec3(100.0, 0.0, 100.0))), 1.0, 1e-12);
+}
+
+TEST(CameraPathErrors, OneLineNamingFileLineAndKey)
+{
+    EXPECT_EQ(loadError(kData + "/path_one_key.toml"),
+              kData + "/path_one_key.toml:5: camera.key: a camera path needs at least 2 keys, got 1");
+    EXPECT_EQ(loadError(kData + "/path_time_order.toml"),
+              kData + "/path_time_order.toml:14: camera.key.time_s: keys must be in increasing time "
+                      "(the previous key is at 10 s)");
+    const std::string both = loadError(kData + "/path_two_orientations.toml");
+    EXPECT_EQ(both.rfind(kData + "/path_two_orientations.toml:12: camera.key.look_at_km: give one orientation", 0), 0u)
+        << both;
+    EXPECT_EQ(both.find('\n'), std::string::npos);
+}
