@@ -155,13 +155,18 @@ private:
             return;
         GlfwContext& context = of(window);
         context.dragging_ = action == GLFW_PRESS;
-        glfwGetCursorPos(window, &context.cursorX_, &context.cursorY_);
+        // The drag starts where the last motion event left the pointer: asking the server now would
+        // give where it is after motions still queued, which would then be lost.
+        if (context.cursorWindow_ != window) {
+            glfwGetCursorPos(window, &context.cursorX_, &context.cursorY_);
+            context.cursorWindow_ = window;
+        }
     }
 
     static void onCursor(GLFWwindow* window, double x, double y)
     {
         GlfwContext& context = of(window);
-        if (context.dragging_) {
+        if (context.dragging_ && context.cursorWindow_ == window) {
             std::vector<InputEvent>& events = context.events_;
             if (events.empty() || events.back().type != InputEvent::Dragged)
                 events.push_back({InputEvent::Dragged, 0, 0.0, 0.0});
@@ -170,13 +175,15 @@ private:
         }
         context.cursorX_ = x;
         context.cursorY_ = y;
+        context.cursorWindow_ = window;
     }
 
     static inline int liveContexts_ = 0;
     std::vector<GLFWwindow*> windows_;
     std::vector<InputEvent> events_; // since the last takeInputEvents
     bool dragging_ = false;          // the left button is held in one of the windows
-    double cursorX_ = 0.0, cursorY_ = 0.0;
+    double cursorX_ = 0.0, cursorY_ = 0.0; // the pointer in cursorWindow_, window pixels
+    GLFWwindow* cursorWindow_ = nullptr;
 };
 
 } // namespace

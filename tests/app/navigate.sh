@@ -2,7 +2,7 @@
 # Navigation from the windows, under Xvfb: a 2-rank glfw wall (the tiny 2x2 wall, two screens per
 # rank) with --control-port; key presses typed with xdotool into a window of the SECOND rank (an
 # operator at rank 1's screen) reach the master and fly the camera: Right turns the heading, R climbs,
-# as `status` shows, and the screenshot changes. Exits 77 (skipped) without xvfb-run or xdotool.
+# a drag upwards with the left button raises the view, as `status` shows, and the screenshot changes. Exits 77 (skipped) without xvfb-run or xdotool.
 source "$(dirname "$0")/lib.sh"
 client=(python3 "$SRC_DIR/launch/wall-control")
 
@@ -48,8 +48,19 @@ for _ in $(seq 200); do
     sleep 0.1
 done
 sleep 1 # the last presses
+keyed=$(ask status)
+echo "keys:   $keyed"
+
+# A drag 15 px up inside the 32x18 window: the view follows the pointer, 0.2 degrees a pixel.
+xdotool mousemove --window "$window" 16 17 mousedown 1 mousemove --window "$window" 16 2 mouseup 1
+for _ in $(seq 200); do
+    after=$(ask status)
+    [ "$(field pitch_deg "$after")" != "$(field pitch_deg "$keyed")" ] && break
+    sleep 0.1
+done
+sleep 1
 after=$(ask status)
-echo "after:  $after"
+echo "drag:   $after"
 ask "screenshot $WORK/after.png" >/dev/null
 ask quit >/dev/null
 for _ in $(seq 300); do kill -0 $job 2>/dev/null || break; sleep 0.1; done
@@ -60,16 +71,17 @@ status=0; wait $job || status=$?
 # Expected from the scene's camera (500 m up, heading 0, pitch 30 degrees): three turns of 2 degrees
 # about the camera's up take the heading to atan(sin 6 / (cos 6 cos 30)) = 6.9 degrees; five climbs
 # of 0.1 x altitude along the camera's up (cos 30 of it vertical) multiply the altitude by about
-# 1.087^5 = 1.5.
-awk -v h0="$(field heading_deg "$before")" -v h1="$(field heading_deg "$after")" \
-    -v a0="$(field alt_km "$before")" -v a1="$(field alt_km "$after")" \
-    -v p1="$(field pitch_deg "$after")" '
+# 1.087^5 = 1.5; the drag turns 3 degrees about the camera's right, nearly horizontal.
+awk -v h0="$(field heading_deg "$before")" -v h1="$(field heading_deg "$keyed")" \
+    -v a0="$(field alt_km "$before")" -v a1="$(field alt_km "$keyed")" \
+    -v p1="$(field pitch_deg "$keyed")" -v p2="$(field pitch_deg "$after")" '
     function bad(msg) { print "FAIL: " msg > "/dev/stderr"; exit 1 }
     BEGIN {
         turn = h1 - h0; if (turn < -180) turn += 360
-        printf "heading %+.3f deg, altitude x%.4f, pitch %.3f deg\n", turn, a1 / a0, p1
+        printf "keys: heading %+.3f deg, altitude x%.4f; drag: pitch %+.3f deg\n", turn, a1 / a0, p2 - p1
         if (turn < 6.0 || turn > 8.0) bad("the heading turned by " turn " degrees, expected about 6.9")
         if (a1 / a0 < 1.3 || a1 / a0 > 1.7) bad("the altitude went from " a0 " to " a1 " km, expected x1.5")
+        if (p2 - p1 < 2.5 || p2 - p1 > 3.5) bad("the drag raised the pitch by " p2 - p1 " degrees, expected about 3")
     }'
 cmp -s "$WORK/before.png" "$WORK/after.png" && fail "the screenshots before and after the keys are the same"
 echo "PASS navigate"
