@@ -3,6 +3,7 @@
 #include "app/band_frame.h"
 #include "app/band_split.h"
 #include "app/control/remote_control.h"
+#include "app/navigation.h"
 #include "app/wall_output.h"
 #include "cluster/frame_message.h"
 #include "cluster/master_clock.h"
@@ -26,6 +27,15 @@ cluster::ClockSettings clockSettings(const WallSession& s)
     c.timeStepS = s.options.timeStepS >= 0 ? s.options.timeStepS : s.scene.timeStepS;
     c.realTime = s.options.realTime;
     return c;
+}
+
+// This rank's window events since its last message, as they travel to the master.
+std::vector<cluster::InputEvent> windowEvents(gl::Context& context)
+{
+    std::vector<cluster::InputEvent> events;
+    for (const gl::InputEvent& e : context.takeInputEvents(cluster::kMaxInputEvents))
+        events.push_back({e.type, e.key, e.dx, e.dy});
+    return events;
 }
 
 double pixelsPerFrame(const wall::Wall& wall)
@@ -78,6 +88,8 @@ cluster::FrameStats runFrames(WallSession& session, const cluster::MpiWorld& wor
     // The master alone keeps the clock and splits the bands.
     std::optional<cluster::MasterClock> clock;
     std::optional<BandSplit> split;
+    Navigation navigation(session.scene.planetRadiusKm);
+    std::vector<cluster::InputEvent> navigationEvents; // every rank's, gathered with the last frame
     if (world.isMaster()) {
         clock.emplace(clockSettings(session), session.scene.camera, session.exposure);
         split.emplace(session.bands, world.size(), session.balanced,
@@ -95,10 +107,13 @@ cluster::FrameStats runFrames(WallSession& session, const cluster::MpiWorld& wor
     auto waitStart = SteadyClock::now(); // from this rank's previous report to this frame's message
     auto previousFrameStart = SteadyClock::now();
     while (true) {
-        // 1. The master carries out the remote control's commands and decides the frame; one
-        // broadcast tells every rank.
+        // 1. The master flies the camera by the window events of the last frame, carries out the
+        // remote control's commands and decides the frame; one broadcast tells every rank.
         const auto frameStart = SteadyClock::now();
         if (world.isMaster()) {
+            if (!navigationEvents.empty())
+                clock->setCamera(navigation.apply(clock->camera(), navigationEvents));
+            navigationEvents.clear();
             if (session.control) {
                 if (!stats.records().empty()) // over the last frame: drawing, gathering, commands
                     wallStatus.fps = 1.0 / std::chrono::duration<double>(frameStart - previousFrameStart).count();
@@ -147,12 +162,13 @@ cluster::FrameStats runFrames(WallSession& session, const cluster::MpiWorld& wor
                 session.context->swapBuffers(s.window);
             session.context->pollEvents();
             report.closeRequested = session.context->closeRequested();
+            mine.events = windowEvents(*session.context);
             report.swapMs = millisecondsSince(phase);
             session.context->makeCurrent(0);
         }
 
         // 4. One gather: the master learns what every rank drew, how long it took, what its bands
-        // cost, and whether to stop.
+        // cost, what was pressed in its windows, and whether to stop.
         waitStart = SteadyClock::now();
         world.setPhase(cluster::RankPhase::Gather, frame.state.frame);
         const std::vector<char> gathered = world.gather(cluster::packRankMessage(mine, bandCount));
@@ -162,6 +178,7 @@ cluster::FrameStats runFrames(WallSession& session, const cluster::MpiWorld& wor
             for (const cluster::RankMessage& r : ranks) {
                 stopRequested = stopRequested || r.report.closeRequested;
                 record.ranks.push_back(r.report);
+                navigationEvents.insert(navigationEvents.end(), r.events.begin(), r.events.end());
             }
             split->observe(ranks);
             if (!session.options.quiet)

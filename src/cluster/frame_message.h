@@ -9,12 +9,13 @@
 
 namespace aurorawall::cluster {
 
-// An input event the master read from its windows (a key or a pointer), passed on so that every rank
-// reacts alike. No input is read yet: the message keeps room for kMaxInputEvents of them per frame.
+// An input event of a window (a key or a pointer, gl::InputEvent). Ranks send theirs to the master
+// in their RankMessage (app/navigation flies the camera with them); the frame message keeps room for
+// kMaxInputEvents of them per frame that every rank would react to alike, unused so far.
 struct InputEvent {
     std::int32_t type = 0; // what happened
     std::int32_t code = 0; // which key or button
-    double x = 0.0, y = 0.0; // pointer position, wall canvas pixels
+    double x = 0.0, y = 0.0; // a drag: the pointer's movement, window pixels
 };
 
 constexpr std::size_t kMaxInputEvents = 32;

@@ -1,7 +1,8 @@
 #pragma once
-// What every rank sends the master once per frame, in one gather: its RankReport and the cost of each
-// band it drew. The message has the same size on every rank (room for every band of the wall), so
-// the gather needs no sizes first.
+// What every rank sends the master once per frame, in one gather: its RankReport, the cost of each
+// band it drew and the input events of its windows. The message has the same size on every rank
+// (room for every band of the wall and kMaxInputEvents events), so the gather needs no sizes first.
+#include "cluster/frame_message.h"
 #include "cluster/frame_stats.h"
 
 #include <cstdint>
@@ -21,17 +22,19 @@ struct BandCost {
 struct RankMessage {
     RankReport report;
     std::vector<BandCost> costs; // the bands it drew (none when nothing is balanced)
+    std::vector<InputEvent> events; // keys and drags in its windows since its last message, at most kMaxInputEvents
 };
 
 // The size of every rank's message on a wall of `bandCount` bands.
 std::size_t rankMessageBytes(std::size_t bandCount);
 
-// The message as bytes of rankMessageBytes(bandCount): the report, the cost count, the costs (zeros
-// after the last). Throws std::invalid_argument for more costs than bands.
+// The message as bytes of rankMessageBytes(bandCount): the report, the cost count, the event count,
+// the costs, the events (zeros after the last). Throws std::invalid_argument for more costs than
+// bands or more than kMaxInputEvents events.
 std::vector<char> packRankMessage(const RankMessage& message, std::size_t bandCount);
 
 // One message from rankMessageBytes(bandCount) bytes at `bytes`. Throws std::runtime_error if they
-// do not hold one (a count beyond the bands, a band index outside the wall).
+// do not hold one (a count beyond the bands or kMaxInputEvents, a band index outside the wall).
 RankMessage unpackRankMessage(const char* bytes, std::size_t bandCount);
 
 // The master's gather, split into the ranks' messages, in rank order.

@@ -10,11 +10,33 @@
 // Creating a context leaves it current (window 0) and prints nothing.
 #include "gl/backend.h"
 
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
 
 namespace aurorawall::gl {
+
+// The keys a window reports: the letters A to Z by their upper-case ASCII codes, and these.
+enum Key : std::int32_t {
+    KeyUp = 256,
+    KeyDown,
+    KeyLeft,
+    KeyRight,
+    KeyPlus,  // '+' or '=' on the main keyboard, '+' on the keypad
+    KeyMinus, // '-' on either
+};
+
+// What an operator did in a window since the last takeInputEvents().
+struct InputEvent {
+    enum Type : std::int32_t {
+        KeyPressed = 1, // `key` went down, or repeats while held
+        Dragged = 2,    // the pointer moved by (dx, dy) window pixels with the left button held
+    };
+    std::int32_t type = KeyPressed;
+    std::int32_t key = 0; // a Key
+    double dx = 0.0, dy = 0.0; // x to the right, y down
+};
 
 // One window of the GLFW backend, in screen pixels.
 struct WindowSpec {
@@ -42,6 +64,10 @@ public:
     virtual void pollEvents() {}
     // A window was closed or Esc was pressed in one.
     virtual bool closeRequested() const { return false; }
+    // The key presses and drags in this context's windows that pollEvents() saw since the last
+    // call, oldest first (consecutive drags merged into one), at most `maxEvents`: later ones are
+    // dropped. Headless: none.
+    virtual std::vector<InputEvent> takeInputEvents(std::size_t /*maxEvents*/) { return {}; }
 
     // GL_RENDERER and GL_VERSION of the current context, for logs (e.g. "llvmpipe (LLVM 15.0.6, 256 bits)").
     std::string rendererName() const;

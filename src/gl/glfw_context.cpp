@@ -7,6 +7,7 @@
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
+#include <cstdint>
 #include <stdexcept>
 #include <string>
 
@@ -22,10 +23,22 @@ void* glfwProcAddress(const char* name)
     return reinterpret_cast<void*>(glfwGetProcAddress(name));
 }
 
-void closeOnEscape(GLFWwindow* window, int key, int, int action, int)
+// The Key of a GLFW key code, or 0 for a key the wall does not report.
+std::int32_t keyOf(int glfwKey)
 {
-    if (key == GLFW_KEY_ESCAPE && action == GLFW_PRESS)
-        glfwSetWindowShouldClose(window, GLFW_TRUE);
+    if (glfwKey >= GLFW_KEY_A && glfwKey <= GLFW_KEY_Z) // GLFW's letter codes are their ASCII codes
+        return glfwKey;
+    switch (glfwKey) {
+    case GLFW_KEY_UP: return KeyUp;
+    case GLFW_KEY_DOWN: return KeyDown;
+    case GLFW_KEY_LEFT: return KeyLeft;
+    case GLFW_KEY_RIGHT: return KeyRight;
+    case GLFW_KEY_EQUAL:
+    case GLFW_KEY_KP_ADD: return KeyPlus;
+    case GLFW_KEY_MINUS:
+    case GLFW_KEY_KP_SUBTRACT: return KeyMinus;
+    default: return 0;
+    }
 }
 
 class GlfwContext : public Context {
@@ -74,7 +87,10 @@ public:
         if (!window)
             throw std::runtime_error(name + ": no OpenGL 4.5 core window (" + lastGlfwError + ")");
         windows_.push_back(window);
-        glfwSetKeyCallback(window, closeOnEscape);
+        glfwSetWindowUserPointer(window, this);
+        glfwSetKeyCallback(window, onKey);
+        glfwSetMouseButtonCallback(window, onMouseButton);
+        glfwSetCursorPosCallback(window, onCursor);
         if (!monitor && spec.x >= 0 && spec.y >= 0)
             glfwSetWindowPos(window, spec.x, spec.y);
         glfwShowWindow(window);
@@ -111,9 +127,63 @@ public:
         return false;
     }
 
+    std::vector<InputEvent> takeInputEvents(std::size_t maxEvents) override
+    {
+        std::vector<InputEvent> events;
+        events.swap(events_);
+        if (events.size() > maxEvents)
+            events.resize(maxEvents);
+        return events;
+    }
+
 private:
+    static GlfwContext& of(GLFWwindow* window) { return *static_cast<GlfwContext*>(glfwGetWindowUserPointer(window)); }
+
+    // Esc asks to close; other keys are recorded as pressed, also while they repeat.
+    static void onKey(GLFWwindow* window, int glfwKey, int, int action, int)
+    {
+        if (glfwKey == GLFW_KEY_ESCAPE && action == GLFW_PRESS)
+            glfwSetWindowShouldClose(window, GLFW_TRUE);
+        const std::int32_t key = keyOf(glfwKey);
+        if (key != 0 && (action == GLFW_PRESS || action == GLFW_REPEAT))
+            of(window).events_.push_back({InputEvent::KeyPressed, key, 0.0, 0.0});
+    }
+
+    static void onMouseButton(GLFWwindow* window, int button, int action, int)
+    {
+        if (button != GLFW_MOUSE_BUTTON_LEFT)
+            return;
+        GlfwContext& context = of(window);
+        context.dragging_ = action == GLFW_PRESS;
+        // The drag starts where the last motion event left the pointer: asking the server now would
+        // give where it is after motions still queued, which would then be lost.
+        if (context.cursorWindow_ != window) {
+            glfwGetCursorPos(window, &context.cursorX_, &context.cursorY_);
+            context.cursorWindow_ = window;
+        }
+    }
+
+    static void onCursor(GLFWwindow* window, double x, double y)
+    {
+        GlfwContext& context = of(window);
+        if (context.dragging_ && context.cursorWindow_ == window) {
+            std::vector<InputEvent>& events = context.events_;
+            if (events.empty() || events.back().type != InputEvent::Dragged)
+                events.push_back({InputEvent::Dragged, 0, 0.0, 0.0});
+            events.back().dx += x - context.cursorX_;
+            events.back().dy += y - context.cursorY_;
+        }
+        context.cursorX_ = x;
+        context.cursorY_ = y;
+        context.cursorWindow_ = window;
+    }
+
     static inline int liveContexts_ = 0;
     std::vector<GLFWwindow*> windows_;
+    std::vector<InputEvent> events_; // since the last takeInputEvents
+    bool dragging_ = false;          // the left button is held in one of the windows
+    double cursorX_ = 0.0, cursorY_ = 0.0; // the pointer in cursorWindow_, window pixels
+    GLFWwindow* cursorWindow_ = nullptr;
 };
 
 } // namespace

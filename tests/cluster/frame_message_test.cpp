@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 
 using namespace aurorawall::cluster;
 
@@ -107,6 +108,8 @@ TEST(RankMessage, RoundTripOfSeveralRanks)
     }
     sent[0].costs = {{0, 10.5, 1000.0}, {4, 0.25, 20.0}};
     sent[2].costs = {{1, 3.0, 300.0}, {2, 4.0, 400.0}, {3, 5.0, 500.0}};
+    sent[1].events = {{1, 87, 0.0, 0.0}, {2, 0, -12.5, 3.25}};
+    sent[2].events.assign(kMaxInputEvents, InputEvent{1, 258, 0.0, 0.0});
     for (const RankMessage& m : sent) {
         const std::vector<char> bytes = packRankMessage(m, bands);
         ASSERT_EQ(bytes.size(), rankMessageBytes(bands));
@@ -134,6 +137,13 @@ TEST(RankMessage, RoundTripOfSeveralRanks)
             EXPECT_EQ(got[r].costs[i].cpuMs, sent[r].costs[i].cpuMs);
             EXPECT_EQ(got[r].costs[i].work, sent[r].costs[i].work);
         }
+        ASSERT_EQ(got[r].events.size(), sent[r].events.size()) << "rank " << r;
+        for (size_t i = 0; i < sent[r].events.size(); ++i) {
+            EXPECT_EQ(got[r].events[i].type, sent[r].events[i].type);
+            EXPECT_EQ(got[r].events[i].code, sent[r].events[i].code);
+            EXPECT_EQ(got[r].events[i].x, sent[r].events[i].x);
+            EXPECT_EQ(got[r].events[i].y, sent[r].events[i].y);
+        }
     }
 
     // The balancer's input: one value per band by the chosen measure, NaN where nobody drew it.
@@ -154,4 +164,13 @@ TEST(RankMessage, RefusesWhatDoesNotFit)
     EXPECT_THROW(unpackRankMessages(bytes, 7), std::runtime_error); // not a whole number of messages
     EXPECT_EQ(unpackRankMessages(bytes, 8)[0].costs[0].band, 7);
     EXPECT_THROW(unpackRankMessages(packRankMessage(m, 7), 7), std::runtime_error); // band 7 of 0..6
+
+    RankMessage keys;
+    keys.events.assign(kMaxInputEvents + 1, InputEvent{});
+    EXPECT_THROW(packRankMessage(keys, 2), std::invalid_argument);
+    keys.events.pop_back();
+    std::vector<char> tooMany = packRankMessage(keys, 2);
+    const std::int32_t count = kMaxInputEvents + 1; // the event count follows the report and the cost count
+    std::memcpy(tooMany.data() + sizeof(RankReport) + sizeof(std::int32_t), &count, sizeof count);
+    EXPECT_THROW(unpackRankMessages(tooMany, 2), std::runtime_error);
 }

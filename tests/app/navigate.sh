@@ -1,0 +1,87 @@
+#!/bin/bash
+# Navigation from the windows, under Xvfb: a 2-rank glfw wall (the tiny 2x2 wall, two screens per
+# rank) with --control-port; key presses typed with xdotool into a window of the SECOND rank (an
+# operator at rank 1's screen) reach the master and fly the camera: Right turns the heading, R climbs,
+# a drag upwards with the left button raises the view, as `status` shows, and the screenshot changes. Exits 77 (skipped) without xvfb-run or xdotool.
+source "$(dirname "$0")/lib.sh"
+client=(python3 "$SRC_DIR/launch/wall-control")
+
+if [ "${1:-}" != --inside-x ]; then
+    if [ -z "${XVFB_RUN:-}" ] || ! [ -x "$XVFB_RUN" ]; then echo "SKIP: xvfb-run is not installed"; exit 77; fi
+    if ! command -v xdotool >/dev/null; then echo "SKIP: xdotool is not installed"; exit 77; fi
+    exec "$XVFB_RUN" -a -s "-screen 0 640x480x24" bash "$0" --inside-x
+fi
+
+wall="$WORK/tiny-2-ranks.toml"
+{ cat "$DATA/tiny-2x2.toml"; printf '\n[ranks]\nscreens_per_rank = 2\n'; } > "$wall"
+aw_mpirun 2 render --wall "$wall" --scene "$SCENE" --backend glfw --frames 0 --control-port 0 --quiet \
+    > "$WORK/log" 2>&1 &
+job=$!
+for _ in $(seq 600); do
+    grep -q "control: listening on" "$WORK/log" && break
+    kill -0 $job 2>/dev/null || { cat "$WORK/log"; fail "the wall exited before listening"; }
+    sleep 0.1
+done
+port=$(sed -n 's/^control: listening on 127\.0\.0\.1:\([0-9]*\)$/\1/p' "$WORK/log")
+[ -n "$port" ] || { cat "$WORK/log"; kill $job; fail "no 'control: listening on 127.0.0.1:PORT' line"; }
+
+ask() { "${client[@]}" --port "$port" "$@" || { kill $job; fail "'$*' was not answered ok"; }; }
+# field NAME LINE: the value of NAME=... in a status line.
+field() { sed -n "s/.* $1=\([^ ]*\).*/\1/p" <<<"$2"; }
+
+ask pause >/dev/null
+before=$(ask status)
+echo "before: $before"
+ask "screenshot $WORK/before.png" >/dev/null
+
+# rank 1 drives the screens of row 1; the operator types into r1c0's window.
+window=$(xdotool search --name '^aurorawall r1c0$' | head -n 1)
+[ -n "$window" ] || { kill $job; fail "no window 'aurorawall r1c0'"; }
+xdotool windowfocus --sync "$window"
+xdotool key --delay 50 Right Right Right r r r r r
+
+# The master applies them within a frame or two of their arrival.
+for _ in $(seq 200); do
+    after=$(ask status)
+    [ "$(field alt_km "$after")" != "$(field alt_km "$before")" ] &&
+        [ "$(field heading_deg "$after")" != "$(field heading_deg "$before")" ] && break
+    sleep 0.1
+done
+sleep 1 # the last presses
+keyed=$(ask status)
+echo "keys:   $keyed"
+
+# A drag 15 px up inside the 32x18 window: the view follows the pointer, 0.2 degrees a pixel.
+xdotool mousemove --window "$window" 16 17 mousedown 1 mousemove --window "$window" 16 2 mouseup 1
+for _ in $(seq 200); do
+    after=$(ask status)
+    [ "$(field pitch_deg "$after")" != "$(field pitch_deg "$keyed")" ] && break
+    sleep 0.1
+done
+sleep 1
+after=$(ask status)
+echo "drag:   $after"
+ask "screenshot $WORK/after.png" >/dev/null
+ask quit >/dev/null
+for _ in $(seq 300); do kill -0 $job 2>/dev/null || break; sleep 0.1; done
+kill -0 $job 2>/dev/null && { kill $job; fail "still running 30 s after quit"; }
+status=0; wait $job || status=$?
+[ $status -eq 0 ] || { cat "$WORK/log"; fail "the job exited $status after quit"; }
+
+# Expected from the scene's camera (500 m up, heading 0, pitch 30 degrees): three turns of 2 degrees
+# about the camera's up take the heading to atan(sin 6 / (cos 6 cos 30)) = 6.9 degrees; five climbs
+# of 0.1 x altitude along the camera's up (cos 30 of it vertical) multiply the altitude by about
+# 1.087^5 = 1.5; the drag turns 3 degrees about the camera's right, nearly horizontal.
+awk -v h0="$(field heading_deg "$before")" -v h1="$(field heading_deg "$keyed")" \
+    -v a0="$(field alt_km "$before")" -v a1="$(field alt_km "$keyed")" \
+    -v p1="$(field pitch_deg "$keyed")" -v p2="$(field pitch_deg "$after")" '
+    function bad(msg) { print "FAIL: " msg > "/dev/stderr"; exit 1 }
+    BEGIN {
+        turn = h1 - h0; if (turn < -180) turn += 360
+        printf "keys: heading %+.3f deg, altitude x%.4f; drag: pitch %+.3f deg\n", turn, a1 / a0, p2 - p1
+        if (turn < 6.0 || turn > 8.0) bad("the heading turned by " turn " degrees, expected about 6.9")
+        if (a1 / a0 < 1.3 || a1 / a0 > 1.7) bad("the altitude went from " a0 " to " a1 " km, expected x1.5")
+        if (p2 - p1 < 2.5 || p2 - p1 > 3.5) bad("the drag raised the pitch by " p2 - p1 " degrees, expected about 3")
+    }'
+cmp -s "$WORK/before.png" "$WORK/after.png" && fail "the screenshots before and after the keys are the same"
+echo "PASS navigate"
