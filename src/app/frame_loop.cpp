@@ -4,6 +4,7 @@
 #include "app/band_split.h"
 #include "app/control/remote_control.h"
 #include "app/navigation.h"
+#include "app/path_recorder.h"
 #include "app/wall_output.h"
 #include "cluster/frame_message.h"
 #include "cluster/master_clock.h"
@@ -103,6 +104,11 @@ cluster::FrameStats runFrames(WallSession& session, const cluster::MpiWorld& wor
     std::optional<MovieWriter> movie;
     if (world.isMaster() && !session.options.movieDir.empty())
         movie.emplace(session.options.movieDir, session.options.movieExr, session.toneMap);
+    std::optional<PathRecorder> recorder;
+    if (world.isMaster() && !session.options.recordPath.empty()) {
+        const cluster::ClockSettings c = clockSettings(session);
+        recorder.emplace(session.options.recordPath, session.options.sceneFile, c.startTimeS, c.timeStepS);
+    }
     std::vector<char> message(cluster::frameMessageBytes(bandCount));
     auto waitStart = SteadyClock::now(); // from this rank's previous report to this frame's message
     auto previousFrameStart = SteadyClock::now();
@@ -124,6 +130,8 @@ cluster::FrameStats runFrames(WallSession& session, const cluster::MpiWorld& wor
             }
             cluster::FrameState state = clock->next(stopRequested);
             state.gatherWall = !screenshots.empty() || movie.has_value();
+            if (recorder && !state.quit)
+                recorder->add(state);
             message = cluster::packFrameMessage({state, split->next(), {}}, bandCount);
         }
         previousFrameStart = frameStart;
@@ -201,6 +209,13 @@ cluster::FrameStats runFrames(WallSession& session, const cluster::MpiWorld& wor
             screenshots.clear();
         }
         world.setPhase(cluster::RankPhase::Broadcast, frame.state.frame);
+    }
+    if (recorder) {
+        try {
+            recorder->write();
+        } catch (const std::exception& e) {
+            session.recordError = std::string("--record-path: ") + e.what();
+        }
     }
     return stats;
 }

@@ -82,6 +82,10 @@ RenderOptions parseRenderOptions(int argc, char** argv)
          "the master writes every frame's wall into this folder: frame-000000.png, ... and frames.csv "
          "(frame number, animation time); every rank sends its screens every frame")
         ("movie-exr", po::bool_switch(&o.movieExr), "with --movie, also frame-000000.exr, ... (linear, half float)")
+        ("record-path", po::value(&o.recordPath),
+         "at the end of the run (or on quit) the master writes the camera of every frame to FILE (.toml): a "
+         "scene deriving from --scene whose [[camera.key]] path, one key per frame, replays that camera at "
+         "every recorded animation time")
         ("quiet", po::bool_switch(&o.quiet), "print only the summary, not a line per frame")
         ("verbose", po::bool_switch(&o.verbose), "also print the per-frame work of the components (curtain map build)");
     o.helpText = cli.help();
@@ -119,6 +123,10 @@ RenderOptions parseRenderOptions(int argc, char** argv)
     if (cli.given("movie"))
         check(!o.movieDir.empty(), "--movie must not be empty");
     check(!o.movieExr || cli.given("movie"), "--movie-exr needs --movie");
+    if (cli.given("record-path")) {
+        const bool toml = o.recordPath.size() > 5 && o.recordPath.compare(o.recordPath.size() - 5, 5, ".toml") == 0;
+        check(toml, "--record-path " + o.recordPath + ": the file name must end in .toml");
+    }
     if (cli.given("cost-map")) {
         const bool png = o.costMapFile.size() > 4 && o.costMapFile.compare(o.costMapFile.size() - 4, 4, ".png") == 0;
         check(png, "--cost-map " + o.costMapFile + ": the file name must end in .png");

@@ -37,6 +37,7 @@ struct RenderOptions {
     double rankTimeoutS = 10.0;          // --rank-timeout: a rank silent this long ends the job (exit status 3)
     std::string movieDir;                // --movie: every frame's wall as OUT/frame-NNNNNN.png; empty: none
     bool movieExr = false;               // --movie-exr: also frame-NNNNNN.exr
+    std::string recordPath;              // --record-path: the master writes the flown camera as a scene (.toml); empty: none
     bool quiet = false;
     bool verbose = false;
     bool help = false;

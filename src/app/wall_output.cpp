@@ -135,6 +135,8 @@ int writeOutputs(WallSession& session, const cluster::MpiWorld& world, const clu
                 return;
             if (!session.movieError.empty())
                 throw std::runtime_error(session.movieError);
+            if (!session.recordError.empty())
+                throw std::runtime_error(session.recordError);
             if (options.gather) {
                 io::writeExr(options.outDir + "/wall.exr", canvas);
                 io::writePng(options.outDir + "/wall.png", canvas, session.toneMap);

@@ -39,6 +39,7 @@ struct WallSession {
     bool balanced = false;
     std::unique_ptr<control::ControlServer> control; // master with --control-port only
     std::string movieError; // master: why a --movie frame could not be written (the run then stops)
+    std::string recordError; // master: why the --record-path file could not be written
 };
 
 // Runs one step on every rank and agrees on its outcome: the largest exit status over the ranks

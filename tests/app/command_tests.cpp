@@ -6,14 +6,18 @@
 #include "app/cli/exit_status.h"
 #include "app/cost_map.h"
 #include "app/mie_command.h"
+#include "app/path_recorder.h"
 #include "app/render_options.h"
 #include "app/tables_command.h"
 #include "atmosphere/airmass.h"
+#include "cluster/master_clock.h"
+#include "components/registry.h"
 #include "components/aurora/physics/deposition_table.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -561,6 +565,100 @@ TEST(AccuracyCommand, FrameIsAWholeNumberForScenesOnly)
         EXPECT_NE(r.err.find(expected), std::string::npos) << r.err;
     }
     EXPECT_NE(runAccuracy({"--help"}).out.find("--frame"), std::string::npos);
+}
+
+} // namespace
+} // namespace aurorawall::app
+
+namespace aurorawall::app {
+namespace {
+
+// A frame's state with a camera turned by `angle` about the planet's z axis and tilted, 6400 km out.
+cluster::FrameState recordedFrame(std::uint64_t frame, double timeS, double angle)
+{
+    cluster::FrameState s;
+    s.frame = frame;
+    s.timeS = timeS;
+    s.cameraPositionKm = glm::dvec3(6400.0 * std::cos(angle), 6400.0 * std::sin(angle), 123.456789 * angle);
+    const glm::dvec3 forward = glm::normalize(glm::dvec3(-std::sin(angle), std::cos(angle), 0.3 + angle));
+    const glm::dvec3 up0 = glm::dvec3(0.2 * std::cos(angle), 0.2 * std::sin(angle), 1.0);
+    s.cameraBack = -forward;
+    s.cameraUp = glm::normalize(up0 - forward * glm::dot(up0, forward));
+    s.cameraRight = glm::cross(forward, s.cameraUp);
+    return s;
+}
+
+std::string recordFile(const std::string& name)
+{
+    const std::filesystem::path folder = std::filesystem::temp_directory_path() / "aurorawall-record-test";
+    std::filesystem::create_directories(folder);
+    return (folder / name).string();
+}
+
+// The recorded scene, read back by the scene reader and played by the master clock with the
+// recorded start time and step, gives the recorded camera at every frame: the keys hold 17
+// significant digits (exact doubles), the path is exact at its keys, and the camera's vectors go
+// through a quaternion (orientationOf/frameOf), a rounding of about 1e-16 each.
+TEST(PathRecorder, RecordedSceneReplaysTheCameraOfEveryFrame)
+{
+    const std::string file = recordFile("flight.toml");
+    PathRecorder recorder(file, AW_SCENES_DIR "/substorm.toml", 180.0, 0.5);
+    std::vector<cluster::FrameState> frames;
+    for (std::uint64_t f = 0; f < 7; ++f) {
+        frames.push_back(recordedFrame(f, 180.0 + f * 0.5, 0.37 * f * f)); // turning faster and faster
+        recorder.add(frames.back());
+    }
+    recorder.write();
+
+    const scene::Scene replayed = components::loadScene(file);
+    EXPECT_EQ(replayed.startTimeS, 180.0);
+    EXPECT_EQ(replayed.timeStepS, 0.5);
+    ASSERT_EQ(replayed.camera.path.keys().size(), frames.size());
+    cluster::ClockSettings settings;
+    settings.frames = frames.size();
+    settings.startTimeS = replayed.startTimeS;
+    settings.timeStepS = replayed.timeStepS;
+    cluster::MasterClock clock(settings, replayed.camera, 1.0);
+    for (const cluster::FrameState& recorded : frames) {
+        const cluster::FrameState played = clock.next(false);
+        EXPECT_EQ(played.timeS, recorded.timeS);
+        for (int i = 0; i < 3; ++i) {
+            EXPECT_NEAR(played.cameraPositionKm[i], recorded.cameraPositionKm[i], 1e-12) << "frame " << recorded.frame;
+            EXPECT_NEAR(played.cameraBack[i], recorded.cameraBack[i], 1e-12) << "frame " << recorded.frame;
+            EXPECT_NEAR(played.cameraUp[i], recorded.cameraUp[i], 1e-12) << "frame " << recorded.frame;
+        }
+    }
+    // Between keys the path interpolates: half a step after the second key the camera has moved on.
+    const glm::dvec3 between = replayed.camera.path.positionAt(180.75);
+    EXPECT_GT(glm::length(between - frames[1].cameraPositionKm), 1.0);
+}
+
+// Keys need increasing times: a paused frame replaces the last key, a clock set back drops the keys
+// from its time on; one camera is written as a still [camera], which the reader accepts.
+TEST(PathRecorder, KeepsTheFlightLastFlownThroughEachTime)
+{
+    const std::string file = recordFile("paused.toml");
+    PathRecorder recorder(file, AW_SCENES_DIR "/substorm.toml", 0.0, 1.0);
+    recorder.add(recordedFrame(0, 0.0, 0.0));
+    recorder.add(recordedFrame(1, 1.0, 0.1));
+    recorder.add(recordedFrame(2, 2.0, 0.2));
+    recorder.add(recordedFrame(3, 2.0, 0.3)); // paused, then moved: replaces the key at 2 s
+    ASSERT_EQ(recorder.cameras().size(), 3u);
+    EXPECT_EQ(recorder.cameras().back().positionKm, recordedFrame(3, 2.0, 0.3).cameraPositionKm);
+    recorder.add(recordedFrame(4, 1.0, 0.4)); // set back to 1 s: the keys at 1 s and 2 s go
+    ASSERT_EQ(recorder.cameras().size(), 2u);
+    EXPECT_EQ(recorder.cameras().back().positionKm, recordedFrame(4, 1.0, 0.4).cameraPositionKm);
+
+    PathRecorder still(file, AW_SCENES_DIR "/substorm.toml", 5.0, 1.0);
+    still.add(recordedFrame(0, 5.0, 0.7));
+    still.write();
+    const scene::Scene s = components::loadScene(file);
+    EXPECT_TRUE(s.camera.path.empty());
+    EXPECT_EQ(s.camera.speedKmPerS, 0.0);
+    for (int i = 0; i < 3; ++i) {
+        EXPECT_EQ(s.camera.positionKm[i], recordedFrame(0, 5.0, 0.7).cameraPositionKm[i]);
+        EXPECT_NEAR(s.camera.forward[i], -recordedFrame(0, 5.0, 0.7).cameraBack[i], 1e-15);
+    }
 }
 
 } // namespace
