@@ -12,7 +12,8 @@ namespace aurorawall::plasma {
 struct VerifyRow {
     std::string parameter;
     double measured = 0.0;
-    // Absent for a setting of the run (ω_pΔt, ω_cΔt, Δx/λ_D, particle and cell counts).
+    // Absent for a setting of the run (ω_pΔt, ω_cΔt, Δx/λ_D, particle and cell counts) and for a
+    // measurement without a closed form (the heating rate).
     std::optional<double> expected;
     // |measured − expected|/|expected|, or |measured − expected| where expected is 0.
     double relativeError() const;
