@@ -62,7 +62,8 @@ int runPlasmaCommand(int argc, char** argv, std::ostream& out, std::ostream& err
             "Usage: aurorawall plasma verify [--case NAME] [--wp-dt X] [--wc-dt X] [--dx-lambda-d X]\n"
             "Runs the electrostatic particle-in-cell plasma's verification cases and prints CSV\n"
             "case,parameter,measured,expected,rel_error; expected comes from theory (frequencies and rates in\n"
-            "units of the plasma frequency omega_p); rows of a run's settings leave expected and rel_error empty\n"
+            "units of the plasma frequency omega_p); rows of a run's settings, and the heating rates (no closed\n"
+            "form), leave expected and rel_error empty\n"
             "(docs/PLASMA.md). Exit status: 0 success, 1 a run failed or output not written, 2 usage error.\n");
         std::string actionName;
         Case chosen = Case::All;
