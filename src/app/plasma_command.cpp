@@ -63,8 +63,8 @@ int runPlasmaCommand(int argc, char** argv, std::ostream& out, std::ostream& err
             "Runs the electrostatic particle-in-cell plasma's verification cases and prints CSV\n"
             "case,parameter,measured,expected,rel_error; expected comes from theory (frequencies and rates in\n"
             "units of the plasma frequency omega_p); rows of a run's settings, and the heating rates (no closed\n"
-            "form), leave expected and rel_error empty\n"
-            "(docs/PLASMA.md). Exit status: 0 success, 1 a run failed or output not written, 2 usage error.\n");
+            "form), leave expected and rel_error empty (docs/PLASMA.md).\n"
+            "Exit status: 0 success, 1 a run failed or output not written, 2 usage error.\n");
         std::string actionName;
         Case chosen = Case::All;
         double wpDt = 0.2, wcDt = 1.0;
