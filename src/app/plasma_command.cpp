@@ -18,11 +18,19 @@ namespace po = boost::program_options;
 enum class Action { Verify };
 const cli::Choices<Action> kActions = {{"verify", Action::Verify}};
 
-enum class Case { All, Langmuir, Boris, ExB, TwoStream, Energy, Landau };
-const cli::Choices<Case> kCases = {{"all", Case::All},         {"langmuir", Case::Langmuir},
-                                   {"boris", Case::Boris},     {"exb", Case::ExB},
-                                   {"two-stream", Case::TwoStream}, {"energy", Case::Energy},
+enum class Case { All, Langmuir, Langmuir2D, Boris, ExB, TwoStream, Energy, Heating, Landau };
+const cli::Choices<Case> kCases = {{"all", Case::All},
+                                   {"langmuir", Case::Langmuir},
+                                   {"langmuir-2d", Case::Langmuir2D},
+                                   {"boris", Case::Boris},
+                                   {"exb", Case::ExB},
+                                   {"two-stream", Case::TwoStream},
+                                   {"energy", Case::Energy},
+                                   {"heating", Case::Heating},
                                    {"landau", Case::Landau}};
+
+// The heating case's grid spacings in Debye lengths when --dx-lambda-d is not given.
+const std::vector<double> kHeatingSpacings = {0.5, 2.0, 8.0};
 
 std::string number(double value)
 {
@@ -51,19 +59,24 @@ int runPlasmaCommand(int argc, char** argv, std::ostream& out, std::ostream& err
     return cli::runCommand("plasma", out, err, [&] {
         cli::CommandLine cli(
             "plasma",
-            "Usage: aurorawall plasma verify [--case NAME] [--wp-dt X] [--wc-dt X]\n"
+            "Usage: aurorawall plasma verify [--case NAME] [--wp-dt X] [--wc-dt X] [--dx-lambda-d X]\n"
             "Runs the electrostatic particle-in-cell plasma's verification cases and prints CSV\n"
             "case,parameter,measured,expected,rel_error; expected comes from theory (frequencies and rates in\n"
-            "units of the plasma frequency omega_p); rows of a run's settings leave expected and rel_error empty\n"
-            "(docs/PLASMA.md). Exit status: 0 success, 1 a run failed or output not written, 2 usage error.\n");
+            "units of the plasma frequency omega_p); rows of a run's settings, and the heating rates (no closed\n"
+            "form), leave expected and rel_error empty (docs/PLASMA.md).\n"
+            "Exit status: 0 success, 1 a run failed or output not written, 2 usage error.\n");
         std::string actionName;
         Case chosen = Case::All;
         double wpDt = 0.2, wcDt = 1.0;
+        std::vector<double> heatingSpacings = kHeatingSpacings;
         cli.addChoice("case", &chosen, kCases, "the case to run (all: each in turn)");
         cli.add()("wp-dt", po::value<double>(&wpDt)->default_value(0.2, "0.2"),
-                  "omega_p dt of langmuir, two-stream, energy and landau, in (0, 2): the leapfrog is unstable "
+                  "omega_p dt of langmuir, langmuir-2d, two-stream, energy, heating and landau, in (0, 2): the leapfrog is unstable "
                   "from 2 on")("wc-dt", po::value<double>(&wcDt)->default_value(1.0),
                               "omega_c dt of boris and exb, > 0 (the Boris push is stable for any)");
+        double dxOverDebye = 0.0;
+        cli.add()("dx-lambda-d", po::value<double>(&dxOverDebye),
+                  "the heating case's grid spacing in Debye lengths, > 0 (default: 0.5, 2 and 8 in turn)");
         cli.addPositional("action", &actionName);
         if (!cli.parse(argc, argv)) {
             out << cli.help();
@@ -79,14 +92,23 @@ int runPlasmaCommand(int argc, char** argv, std::ostream& out, std::ostream& err
                                  number(wpDt) + ")");
         if (!(wcDt > 0.0) || !std::isfinite(wcDt))
             throw cli.usageError("--wc-dt must be a finite number > 0 (got " + number(wcDt) + ")");
+        if (cli.given("dx-lambda-d")) {
+            if (!(dxOverDebye > 0.0) || !std::isfinite(dxOverDebye))
+                throw cli.usageError("--dx-lambda-d must be a finite number > 0 (got " + number(dxOverDebye) + ")");
+            heatingSpacings = {dxOverDebye};
+        }
 
         out << "case,parameter,measured,expected,rel_error\n";
         const auto runs = [chosen](Case c) { return chosen == Case::All || chosen == c; };
         if (runs(Case::Langmuir)) printRows(out, "langmuir", plasma::verifyLangmuir(wpDt));
+        if (runs(Case::Langmuir2D)) printRows(out, "langmuir-2d", plasma::verifyLangmuir2D(wpDt));
         if (runs(Case::Boris)) printRows(out, "boris", plasma::verifyBoris(wcDt));
         if (runs(Case::ExB)) printRows(out, "exb", plasma::verifyExB(wcDt));
         if (runs(Case::TwoStream)) printRows(out, "two-stream", plasma::verifyTwoStream(wpDt));
         if (runs(Case::Energy)) printRows(out, "energy", plasma::verifyEnergy(wpDt));
+        if (runs(Case::Heating))
+            for (const double spacing : heatingSpacings)
+                printRows(out, "heating", plasma::verifyHeating(wpDt, spacing));
         if (runs(Case::Landau)) printRows(out, "landau", plasma::verifyLandau(wpDt));
     });
 }

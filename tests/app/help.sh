@@ -116,4 +116,7 @@ expect 2 "^aurorawall plasma: --case: unknown value 'ion-acoustic' \(allowed: al
 expect 2 "^aurorawall plasma: --wp-dt must be in \(0, 2\): the leapfrog is unstable" plasma verify --wp-dt 2
 expect 2 "^aurorawall plasma: --wc-dt must be a finite number > 0" plasma verify --case boris --wc-dt 0
 expect 2 "^aurorawall plasma: .*--wp-dt" plasma verify --wp-dt fast
+expect 0 "--dx-lambda-d" plasma --help
+expect 2 "^aurorawall plasma: --dx-lambda-d must be a finite number > 0" plasma verify --case heating --dx-lambda-d 0
+expect 2 "^aurorawall plasma: .*--dx-lambda-d" plasma verify --case heating --dx-lambda-d wide
 echo "PASS help"

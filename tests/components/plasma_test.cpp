@@ -18,6 +18,7 @@
 
 #include <cmath>
 #include <complex>
+#include <cstdint>
 #include <cstring>
 #include <random>
 
@@ -343,4 +344,48 @@ TEST(PlasmaVerify, RefusesAnUnstableTimeStep)
     EXPECT_THROW(verifyLangmuir(2.0), std::domain_error);
     EXPECT_THROW(verifyTwoStream(-0.1), std::domain_error);
     EXPECT_THROW(verifyBoris(0.0), std::domain_error);
+}
+
+// Langmuir in 2D, the wave along the diagonal of 256² cells: the leapfrog relation to 3e-4. The grid's
+// dispersion is the 1D one at |k|Δx = √2·2π/256: −(|k|Δx)²/8 = −1.51e-4, measured −1.51e-4 at
+// ω_pΔt = 0.2; the leapfrog's shift it resolves is 1.7e-3 and 4.7e-2.
+TEST(PlasmaVerify, Langmuir2DFollowsTheLeapfrogRelation)
+{
+    for (const double wpDt : {0.2, 1.0}) {
+        const VerifyRow r = row(verifyLangmuir2D(wpDt), "omega_over_wp");
+        EXPECT_LT(r.relativeError(), 3e-4) << "omega_p dt = " << wpDt << ": " << r.measured;
+    }
+}
+
+namespace {
+
+// The heating case's rate d(kT)/dt/(kT ω_p).
+double heatingRate(double dxOverDebye, std::uint64_t seed)
+{
+    for (const VerifyRow& r : verifyHeating(0.2, dxOverDebye, seed))
+        if (r.parameter == "heating_rate_over_wp")
+            return r.measured;
+    ADD_FAILURE() << "no heating rate";
+    return std::nan("");
+}
+
+} // namespace
+
+// Grid heating: negligible for Δx/λ_D = 0.5, growing with Δx/λ_D. Over seeds 1–6 the rate at
+// Δx/λ_D = 0.5 scattered between −1.1e-6 and 5.5e-6 (the particles' noise: no heating resolved), at
+// 2 between 7.0e-5 and 1.5e-4, at 8 between 2.4e-3 and 3.9e-3. Bounds: |rate| < 2e-5 at 0.5 (about
+// four times the largest noise seen), and at 8 at least ten times the rate at 0.5 and above the rate at 2.
+TEST(PlasmaVerify, GridHeatingGrowsWithTheSpacingInDebyeLengths)
+{
+    for (const std::uint64_t seed : {1u, 2u}) {
+        const double resolved = heatingRate(0.5, seed), coarse = heatingRate(2.0, seed),
+                     coarsest = heatingRate(8.0, seed);
+        ASSERT_TRUE(std::isfinite(resolved) && std::isfinite(coarse) && std::isfinite(coarsest)) << seed;
+        EXPECT_LT(std::abs(resolved), 2e-5) << seed;
+        EXPECT_GT(coarse, std::abs(resolved)) << seed;
+        EXPECT_GT(coarsest, coarse) << seed;
+        EXPECT_GE(coarsest, 10.0 * std::abs(resolved)) << seed;
+    }
+    EXPECT_THROW(verifyHeating(0.2, 0.0), std::domain_error);
+    EXPECT_THROW(verifyHeating(2.0, 1.0), std::domain_error);
 }

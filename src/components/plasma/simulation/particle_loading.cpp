@@ -41,6 +41,29 @@ Particles quietStart(const PeriodicGrid& grid, int count, double electronDensity
     return p;
 }
 
+Particles diagonalWaveLattice(const PeriodicGrid& grid, int perCellPerAxis, double electronDensity,
+                              Perturbation perturbation)
+{
+    if (grid.dimension != 2 || perCellPerAxis < 1)
+        throw std::invalid_argument("diagonalWaveLattice: needs a 2D grid and at least one particle per axis");
+    const int nx = grid.cells[0] * perCellPerAxis, ny = grid.cells[1] * perCellPerAxis;
+    const glm::dvec3 box = grid.boxLength();
+    const glm::dvec3 diagonal(1.0 / std::sqrt(2.0), 1.0 / std::sqrt(2.0), 0.0);
+    Particles p;
+    p.weight = weightFor(grid, nx * ny, electronDensity);
+    for (int j = 0; j < ny; ++j)
+        for (int i = 0; i < nx; ++i) {
+            const glm::dvec3 x((i + 0.5) * box.x / nx, (j + 0.5) * box.y / ny, 0.5 * box.z);
+            const double phase = 2.0 * kPi * perturbation.mode * (x.x / box.x + x.y / box.y);
+            glm::dvec3 displaced = x + perturbation.amplitude * std::sin(phase) * diagonal;
+            displaced.x -= box.x * std::floor(displaced.x / box.x);
+            displaced.y -= box.y * std::floor(displaced.y / box.y);
+            p.position.push_back(displaced);
+            p.velocity.push_back(glm::dvec3(0.0));
+        }
+    return p;
+}
+
 Particles quietMaxwellian(const PeriodicGrid& grid, int count, double electronDensity, Perturbation perturbation,
                           double thermalSpeed)
 {

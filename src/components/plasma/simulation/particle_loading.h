@@ -21,6 +21,13 @@ struct Perturbation {
 Particles quietStart(const PeriodicGrid& grid, int count, double electronDensity, Perturbation perturbation,
                      glm::dvec3 drift);
 
+// A cold 2D lattice: perCellPerAxis² electrons per cell evenly spaced along x and y, then displaced
+// along the diagonal unit vector d = (1, 1)/√2 by amplitude · sin(k·x), k = 2π mode (1/L_x, 1/L_y):
+// a density wave δn/n = −|k| · amplitude · cos(k·x) to first order, travelling along d on a square
+// box. All at rest; z at the box's middle. For 2D runs.
+Particles diagonalWaveLattice(const PeriodicGrid& grid, int perCellPerAxis, double electronDensity,
+                              Perturbation perturbation);
+
 // A quiet Maxwellian along x: as quietStart, with x-velocities the normal quantiles
 // thermalSpeed · √2 · erf⁻¹(2u − 1) at u = (r + 1/2)/count, r the bit-reversed index of the particle
 // (Birdsall & Langdon 1991, §16-6: the reversal keeps positions and velocities uncorrelated);

@@ -63,6 +63,18 @@ double fittedSlope(const std::vector<double>& t, const std::vector<double>& y)
     return sty / stt;
 }
 
+// The frequency ωΔt of a leapfrog mode: a sampled cosine s_n obeys s_{n+1} + s_{n−1} = 2 cos(ωΔt) s_n
+// exactly, so cos(ωΔt) by least squares over the samples.
+double sampledCosineFrequency(const std::vector<double>& s)
+{
+    double numerator = 0.0, denominator = 0.0;
+    for (std::size_t n = 1; n + 1 < s.size(); ++n) {
+        numerator += s[n] * (s[n + 1] + s[n - 1]);
+        denominator += 2.0 * s[n] * s[n];
+    }
+    return std::acos(numerator / denominator);
+}
+
 void requireLeapfrogStable(double wpDt)
 {
     if (!(wpDt > 0.0 && wpDt < 2.0))
@@ -88,21 +100,52 @@ std::vector<VerifyRow> verifyLangmuir(double wpDt)
     const PeriodicGrid grid(1, {kCells, 1, 1}, {length / kCells, 1.0, 1.0});
     ElectrostaticPic pic(grid, quietStart(grid, kParticles, kDensity, {1, 0.01 * length / kCells}, glm::dvec3(0.0)),
                          glm::dvec3(0.0), dt);
-    // The leapfrog's mode is a sampled cosine s_n, for which s_{n+1} + s_{n−1} = 2 cos(ωΔt) s_n exactly:
-    // cos(ωΔt) by least squares over 20 plasma periods.
+    // The field mode over 20 plasma periods.
     std::vector<double> s;
     const long steps = long(std::ceil(20 * 2.0 * kPi / wpDt));
     for (long n = 0; n <= steps; ++n) {
         s.push_back(fieldMode(pic, 1).imag());
         pic.step();
     }
-    double numerator = 0.0, denominator = 0.0;
-    for (std::size_t n = 1; n + 1 < s.size(); ++n) {
-        numerator += s[n] * (s[n + 1] + s[n - 1]);
-        denominator += 2.0 * s[n] * s[n];
-    }
-    const double omegaDt = std::acos(numerator / denominator);
+    const double omegaDt = sampledCosineFrequency(s);
     return {setting("wp_dt", wpDt), setting("cells", kCells), setting("particles", kParticles),
+            {"omega_over_wp", omegaDt / wpDt, leapfrogPlasmaFrequency(wpDt)}};
+}
+
+std::vector<VerifyRow> verifyLangmuir2D(double wpDt)
+{
+    requireLeapfrogStable(wpDt);
+    // Mode (1, 1) on 256² cells, one cold particle per cell displaced along the diagonal by a hundredth
+    // of a cell. The grid's dispersion is now −(kΔx)²/8 per axis with kΔx = 2π/256 (about 1e-4).
+    constexpr int kCells = 256, kParticles = kCells * kCells;
+    const double wp = plasmaFrequency(kDensity), dt = wpDt / wp;
+    const double length = 1.0; // m
+    const double spacing = length / kCells;
+    const PeriodicGrid grid(2, {kCells, kCells, 1}, {spacing, spacing, 1.0});
+    ElectrostaticPic pic(grid, diagonalWaveLattice(grid, 1, kDensity, {1, 0.01 * spacing}), glm::dvec3(0.0), dt);
+    // The mode's field along the diagonal: Σ_ij (E_x + E_y)/√2 · exp(−i k·x_ij) (up to a constant
+    // factor), sin-like as in 1D; the phase depends on (i + j) mod n only.
+    std::vector<std::complex<double>> phase(kCells);
+    for (int m = 0; m < kCells; ++m)
+        phase[m] = std::polar(1.0, -2.0 * kPi * m / kCells);
+    const auto diagonalMode = [&pic, &phase] {
+        const std::vector<glm::dvec3>& e = pic.nodeField();
+        std::complex<double> sum = 0.0;
+        for (int j = 0; j < kCells; ++j)
+            for (int i = 0; i < kCells; ++i) {
+                const glm::dvec3& node = e[pic.grid().index(i, j, 0)];
+                sum += (node.x + node.y) * phase[(i + j) % kCells];
+            }
+        return sum.imag();
+    };
+    std::vector<double> s;
+    const long steps = long(std::ceil(20 * 2.0 * kPi / wpDt));
+    for (long n = 0; n <= steps; ++n) {
+        s.push_back(diagonalMode());
+        pic.step();
+    }
+    const double omegaDt = sampledCosineFrequency(s);
+    return {setting("wp_dt", wpDt), setting("cells_per_axis", kCells), setting("particles", kParticles),
             {"omega_over_wp", omegaDt / wpDt, leapfrogPlasmaFrequency(wpDt)}};
 }
 
@@ -205,6 +248,36 @@ std::vector<VerifyRow> verifyEnergy(double wpDt)
     return {setting("wp_dt", wpDt), setting("dx_over_debye", 1.0), setting("cells", kCells),
             setting("particles", kParticles), setting("plasma_periods", kPlasmaPeriods),
             {"relative_energy_drift", (last - initial) / initial, 0.0}};
+}
+
+std::vector<VerifyRow> verifyHeating(double wpDt, double dxOverDebye, std::uint64_t seed)
+{
+    requireLeapfrogStable(wpDt);
+    if (!(dxOverDebye > 0.0) || !std::isfinite(dxOverDebye))
+        throw std::domain_error("dx/lambda_D must be a finite number > 0");
+    constexpr int kCells = 64, kParticles = 64 * kCells;
+    constexpr double kFitStart = 10.0, kFitEnd = 200.0; // 1/ω_p: after the start's field has formed
+    const double wp = plasmaFrequency(kDensity), dt = wpDt / wp;
+    const double thermalSpeed = 4.19e5; // m/s: 1 eV electrons
+    const double lambdaD = debyeLength(thermalSpeed, kDensity);
+    const PeriodicGrid grid(1, {kCells, 1, 1}, {dxOverDebye * lambdaD, 1.0, 1.0});
+    ElectrostaticPic pic(grid, randomStart(grid, kParticles, kDensity, thermalSpeed, seed), glm::dvec3(0.0), dt);
+    // kT_x/kT_0 = ⟨v_x²⟩/v_th² at each half step, against ω_p t.
+    std::vector<double> t, temperature;
+    const long steps = long(std::ceil(kFitEnd / wpDt));
+    for (long n = 0; n < steps; ++n) {
+        pic.step();
+        const double time = (double(n) + 0.5) * wpDt;
+        if (time < kFitStart) continue;
+        double sum = 0.0;
+        for (const glm::dvec3& v : pic.electrons().velocity)
+            sum += v.x * v.x;
+        t.push_back(time);
+        temperature.push_back(sum / (double(kParticles) * thermalSpeed * thermalSpeed));
+    }
+    return {setting("wp_dt", wpDt), setting("dx_over_debye", dxOverDebye), setting("cells", kCells),
+            setting("particles", kParticles), setting("seed", double(seed)),
+            {"heating_rate_over_wp", fittedSlope(t, temperature), std::nullopt}};
 }
 
 std::vector<VerifyRow> verifyLandau(double wpDt)

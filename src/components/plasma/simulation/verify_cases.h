@@ -2,6 +2,7 @@
 // The verification cases of `aurorawall plasma verify`: each runs the simulation (or its push) in a
 // setting where theory gives the answer, and returns what it measured beside what the theory, or the
 // scheme's own exact dispersion, expects. Frequencies and rates are in units of ω_p.
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -11,7 +12,8 @@ namespace aurorawall::plasma {
 struct VerifyRow {
     std::string parameter;
     double measured = 0.0;
-    // Absent for a setting of the run (ω_pΔt, ω_cΔt, Δx/λ_D, particle and cell counts).
+    // Absent for a setting of the run (ω_pΔt, ω_cΔt, Δx/λ_D, particle and cell counts) and for a
+    // measurement without a closed form (the heating rate).
     std::optional<double> expected;
     // |measured − expected|/|expected|, or |measured − expected| where expected is 0.
     double relativeError() const;
@@ -19,6 +21,8 @@ struct VerifyRow {
 
 // Cold plasma oscillation: frequency against sin(ωΔt/2) = ω_pΔt/2 (0 < ω_pΔt < 2).
 std::vector<VerifyRow> verifyLangmuir(double plasmaFrequencyTimesDt);
+// The same on a 2D grid, the wave along the diagonal of a square box.
+std::vector<VerifyRow> verifyLangmuir2D(double plasmaFrequencyTimesDt);
 // One electron in a uniform B: rotation per step against 2·atan(ω_cΔt/2), and the relative change of
 // its speed over the run (expected 0: rounding only). ω_cΔt > 0.
 std::vector<VerifyRow> verifyBoris(double cyclotronFrequencyTimesDt, long steps = 1000);
@@ -29,6 +33,11 @@ std::vector<VerifyRow> verifyExB(double cyclotronFrequencyTimesDt);
 std::vector<VerifyRow> verifyTwoStream(double plasmaFrequencyTimesDt);
 // A thermal plasma (random start, Δx = λ_D) over a long run: the relative drift of the total energy.
 std::vector<VerifyRow> verifyEnergy(double plasmaFrequencyTimesDt);
+// Numerical heating of a thermal plasma (random start, `seed`) on a grid of spacing
+// dxOverDebyeLength · λ_D: the rate d(kT)/dt/(kT ω_p) of the temperature along x, from a least-squares
+// line through kT_x(t). No closed form: the grid's aliasing heats ever faster as Δx/λ_D grows past ~1
+// (Birdsall & Langdon 1991, ch. 12). dxOverDebyeLength > 0.
+std::vector<VerifyRow> verifyHeating(double plasmaFrequencyTimesDt, double dxOverDebyeLength, std::uint64_t seed = 1);
 // Landau damping of a Langmuir wave at k λ_D = 0.5 (quiet Maxwellian): frequency and damping rate
 // against the root of the kinetic dispersion relation.
 std::vector<VerifyRow> verifyLandau(double plasmaFrequencyTimesDt);
