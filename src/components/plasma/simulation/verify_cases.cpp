@@ -112,12 +112,13 @@ std::vector<VerifyRow> verifyLangmuir(double wpDt)
             {"omega_over_wp", omegaDt / wpDt, leapfrogPlasmaFrequency(wpDt)}};
 }
 
-std::vector<VerifyRow> verifyLangmuir2D(double wpDt)
+std::vector<VerifyRow> verifyLangmuir2D(double wpDt, int kCells)
 {
     requireLeapfrogStable(wpDt);
-    // Mode (1, 1) on 256² cells, one cold particle per cell displaced along the diagonal by a hundredth
-    // of a cell. The grid's dispersion is now −(kΔx)²/8 per axis with kΔx = 2π/256 (about 1e-4).
-    constexpr int kCells = 256, kParticles = kCells * kCells;
+    // Mode (1, 1) on kCells² cells, one cold particle per cell displaced along the diagonal by a
+    // hundredth of a cell. The grid's dispersion is now −(kΔx)²/8 per axis with kΔx = 2π/kCells
+    // (about 1e-4 for 256 cells).
+    const int kParticles = kCells * kCells;
     const double wp = plasmaFrequency(kDensity), dt = wpDt / wp;
     const double length = 1.0; // m
     const double spacing = length / kCells;
@@ -128,7 +129,7 @@ std::vector<VerifyRow> verifyLangmuir2D(double wpDt)
     std::vector<std::complex<double>> phase(kCells);
     for (int m = 0; m < kCells; ++m)
         phase[m] = std::polar(1.0, -2.0 * kPi * m / kCells);
-    const auto diagonalMode = [&pic, &phase] {
+    const auto diagonalMode = [&pic, &phase, kCells] {
         const std::vector<glm::dvec3>& e = pic.nodeField();
         std::complex<double> sum = 0.0;
         for (int j = 0; j < kCells; ++j)

@@ -22,7 +22,7 @@ struct VerifyRow {
 // Cold plasma oscillation: frequency against sin(ωΔt/2) = ω_pΔt/2 (0 < ω_pΔt < 2).
 std::vector<VerifyRow> verifyLangmuir(double plasmaFrequencyTimesDt);
 // The same on a 2D grid, the wave along the diagonal of a square box.
-std::vector<VerifyRow> verifyLangmuir2D(double plasmaFrequencyTimesDt);
+std::vector<VerifyRow> verifyLangmuir2D(double plasmaFrequencyTimesDt, int cellsPerAxis = 256);
 // One electron in a uniform B: rotation per step against 2·atan(ω_cΔt/2), and the relative change of
 // its speed over the run (expected 0: rounding only). ω_cΔt > 0.
 std::vector<VerifyRow> verifyBoris(double cyclotronFrequencyTimesDt, long steps = 1000);
