@@ -14,13 +14,7 @@ wall="$WORK/tiny-2-ranks.toml"
 aw_mpirun 2 render --wall "$wall" --scene "$SCENE" --frames 0 --control-port 0 --quiet \
     --stats "$WORK/s.csv" > "$WORK/log" 2>&1 &
 job=$!
-for _ in $(seq 600); do
-    grep -q "control: listening on" "$WORK/log" && break
-    kill -0 $job 2>/dev/null || { cat "$WORK/log"; fail "the wall exited before listening"; }
-    sleep 0.1
-done
-port=$(sed -n 's/^control: listening on 127\.0\.0\.1:\([0-9]*\)$/\1/p' "$WORK/log")
-[ -n "$port" ] || { cat "$WORK/log"; kill $job; fail "no 'control: listening on 127.0.0.1:PORT' line"; }
+port=$(control_port "$WORK/log" "$job")
 note "wall on port $port"
 
 # ask EXPECTED COMMAND...: the commands through the client; the last answer must match the regex

@@ -17,13 +17,7 @@ wall="$WORK/tiny-2-ranks.toml"
 aw_mpirun 2 render --wall "$wall" --scene "$SCENE" --backend glfw --frames 0 --control-port 0 --quiet \
     > "$WORK/log" 2>&1 &
 job=$!
-for _ in $(seq 600); do
-    grep -q "control: listening on" "$WORK/log" && break
-    kill -0 $job 2>/dev/null || { cat "$WORK/log"; fail "the wall exited before listening"; }
-    sleep 0.1
-done
-port=$(sed -n 's/^control: listening on 127\.0\.0\.1:\([0-9]*\)$/\1/p' "$WORK/log")
-[ -n "$port" ] || { cat "$WORK/log"; kill $job; fail "no 'control: listening on 127.0.0.1:PORT' line"; }
+port=$(control_port "$WORK/log" "$job")
 
 ask() { "${client[@]}" --port "$port" "$@" || { kill $job; fail "'$*' was not answered ok"; }; }
 # field NAME LINE: the value of NAME=... in a status line.

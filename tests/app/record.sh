@@ -16,13 +16,7 @@ aw_mpirun 1 render --wall "$wall" --scene "$SCENE" --frames 0 --control-port 0 -
     --start-time 100 --record-path "$flight" --movie "$WORK/flown" --movie-exr --gather --out "$WORK/flown-out" \
     > "$WORK/log" 2>&1 &
 job=$!
-for _ in $(seq 600); do
-    grep -q "control: listening on" "$WORK/log" && break
-    kill -0 $job 2>/dev/null || { cat "$WORK/log"; fail "the wall exited before listening"; }
-    sleep 0.1
-done
-port=$(sed -n 's/^control: listening on 127\.0\.0\.1:\([0-9]*\)$/\1/p' "$WORK/log")
-[ -n "$port" ] || { cat "$WORK/log"; kill $job; fail "no 'control: listening on 127.0.0.1:PORT' line"; }
+port=$(control_port "$WORK/log" "$job")
 sleep 0.3
 "${client[@]}" --port "$port" "goto 65 25 200" || { kill $job; fail "goto refused"; }
 sleep 0.3
