@@ -5,6 +5,7 @@
 #include "components/registry.h"
 #include "scene/camera_path.h"
 #include "scene/scene.h"
+#include "load_error.h"
 
 #include <gtest/gtest.h>
 
@@ -50,15 +51,7 @@ std::vector<CameraKey> curvedKeys()
     return keys;
 }
 
-std::string loadError(const std::string& file)
-{
-    try {
-        components::loadScene(file);
-    } catch (const InputError& e) {
-        return e.what();
-    }
-    return "";
-}
+using aurorawall::test::loadError;
 
 } // namespace
 

@@ -3,6 +3,7 @@
 #include "components/fluid_detail/fluid_detail.h"
 #include "components/registry.h"
 #include "scene/scene.h"
+#include "load_error.h"
 
 #include <gtest/gtest.h>
 
@@ -16,16 +17,7 @@ namespace {
 const std::string kData = SCENE_TEST_DATA;
 const std::string kScenes = SCENE_CONFIG_DIR;
 
-// The message of the InputError that loading `file` throws ("" if none).
-std::string loadError(const std::string& file)
-{
-    try {
-        components::loadScene(file);
-    } catch (const InputError& e) {
-        return e.what();
-    }
-    return "";
-}
+using aurorawall::test::loadError;
 
 } // namespace
 
