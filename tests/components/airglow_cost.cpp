@@ -3,7 +3,7 @@
 // the same shell parts, each against a fine march in double (0.01 km). The rays: 12 random
 // directions and the grazing ones from the ground, 1 m, 50 km, inside the layer, 400 km and
 // 36000 km, for the green and the red layer. Not a test (timings); run by launch/accuracy-airglow.
-#include "common/glsl.h"
+#include "airglow_columns.h"
 #include "components/airglow/airglow.h"
 
 #include <chrono>
@@ -13,23 +13,15 @@
 #include <random>
 #include <vector>
 
-namespace aurorawall::airglow_cost::f32 {
-AURORAWALL_GLSL_PRECISION(float)
-#include "render/ray_sphere.glsl"
-#include "atmosphere/airmass_common.glsl"
-#include "atmosphere/airmass_chapman.glsl"
-#include "components/airglow/airglow_layer.glsl"
-} // namespace aurorawall::airglow_cost::f32
-
 using namespace aurorawall;
-namespace f32 = aurorawall::airglow_cost::f32;
+namespace f32 = aurorawall::airglow_columns::f32;
 using components::airglow::Layer;
 using components::airglow::LayerProfile;
 
 namespace {
 
-constexpr double R = 6371.0;
-constexpr double kTop = 40.0;
+using airglow_columns::marchedColumn;
+constexpr double R = airglow_columns::kPlanetRadiusKm;
 
 struct Case {
     LayerProfile p;
@@ -37,32 +29,6 @@ struct Case {
     f32::ShellSegments shell;
     double exact = 0.0;
 };
-
-double groundDistance(glm::dvec3 o, glm::dvec3 d)
-{
-    const double b = glm::dot(o, d), c = glm::dot(o, o) - R * R, disc = b * b - c;
-    if (c < 0.0)
-        return 0.0;
-    if (disc < 0.0)
-        return 1e30;
-    const double t = -b - std::sqrt(disc);
-    return t > 0.0 ? t : 1e30;
-}
-
-double fineMarch(const LayerProfile& p, glm::dvec3 o, glm::dvec3 d)
-{
-    const double rTop = R + p.baseKm + kTop * p.upperScaleHeightKm;
-    const double b = glm::dot(o, d), c = glm::dot(o, o) - rTop * rTop, disc = b * b - c;
-    if (disc < 0.0)
-        return 0.0;
-    const double t0 = std::max(0.0, -b - std::sqrt(disc)), t1 = std::min(-b + std::sqrt(disc), groundDistance(o, d));
-    double sum = 0.0;
-    for (double t = t0; t < t1; t += 0.01) {
-        const double h = std::min(0.01, t1 - t);
-        sum += h * components::airglow::volumeEmission(p, glm::length(o + (t + 0.5 * h) * d) - R);
-    }
-    return sum;
-}
 
 float closedForm(const Case& c)
 {
@@ -111,12 +77,10 @@ int main()
                     directions.push_back({s, 0.0, -std::sqrt(1.0 - s * s)});
                 }
             for (const glm::dvec3& d : directions) {
-                Case c{p, glm::vec3(o), glm::vec3(d), {}, fineMarch(p, o, d)};
+                Case c{p, glm::vec3(o), glm::vec3(d), {}, marchedColumn(p, o, d, 0.01)};
                 if (c.exact < 1e-3 * layer.zenithRayleigh)
                     continue;
-                const double base = p.baseKm, top = base + kTop * p.upperScaleHeightKm;
-                c.shell = f32::rayShell(c.o, c.d, float(R + base), float(altitude - base), float(R + top),
-                                        float(altitude - top), float(groundDistance(o, d)));
+                c.shell = airglow_columns::shellParts(p, o, d);
                 cases.push_back(c);
             }
         }

@@ -1,7 +1,7 @@
 // The airglow layers' column along a ray: the shader's closed form (airglow_layer.glsl, here in
 // float as on the GPU) against a fine march of the volume emission rate in double, the published
 // zenith brightness, the van Rhijn brightening toward the horizon and the limb seen from orbit.
-#include "common/glsl.h"
+#include "airglow_columns.h"
 #include "components/airglow/airglow.h"
 #include "components/registry.h"
 #include "render/fragment_shader.h"
@@ -13,74 +13,27 @@
 #include <cstdio>
 #include <random>
 
-// The shared modules in float, as the GPU evaluates them (a named namespace: not every function is used).
-namespace aurorawall::airglow_test::f32 {
-AURORAWALL_GLSL_PRECISION(float)
-#include "render/ray_sphere.glsl"
-#include "atmosphere/airmass_common.glsl"
-#include "atmosphere/airmass_chapman.glsl"
-#include "components/airglow/airglow_layer.glsl"
-} // namespace aurorawall::airglow_test::f32
-
 using namespace aurorawall;
-namespace f32 = aurorawall::airglow_test::f32;
 using components::airglow::Layer;
 using components::airglow::LayerProfile;
 using components::airglow::Line;
 
 namespace {
 
-constexpr double R = 6371.0;
-constexpr double kTopScaleHeights = 40.0; // AIRGLOW_TOP_SCALE_HEIGHTS of airglow.glsl
+using components::airglow::layerProfile;
+constexpr double R = airglow_columns::kPlanetRadiusKm;
 
 const std::vector<Layer> kLayers = components::airglow::Settings().layers;
 
-// Where a ray from o along d (unit) meets the ground, else "never".
-double groundDistance(glm::dvec3 o, glm::dvec3 d)
-{
-    const double b = glm::dot(o, d), c = glm::dot(o, o) - R * R;
-    const double disc = b * b - c;
-    if (disc < 0.0 || c < 0.0)
-        return c < 0.0 ? 0.0 : 1e30;
-    const double t = -b - std::sqrt(disc);
-    return t > 0.0 ? t : 1e30;
-}
-
-// The column as the shader computes it: the layer's shell parts in float, each in closed form.
+// The column as the shader computes it, and by a fine march in double (airglow_columns.h).
 double closedFormColumn(const Layer& layer, glm::dvec3 o, glm::dvec3 d)
 {
-    const LayerProfile p = components::airglow::layerProfile(layer);
-    const double altitude = glm::length(o) - R;
-    const double base = p.baseKm, top = base + kTopScaleHeights * p.upperScaleHeightKm;
-    const glm::vec3 of(o), df(d);
-    const glm::vec4 l(p.baseKm, p.upperScaleHeightKm, p.lowerScaleHeightKm, p.rayleighPerKm);
-    const f32::ShellSegments shell =
-        f32::rayShell(of, df, float(R + base), float(altitude - base), float(R + top), float(altitude - top),
-                      float(groundDistance(o, d)));
-    double sum = 0.0;
-    for (const glm::vec2 part : {shell.first, shell.second})
-        if (part.x < part.y)
-            sum += f32::airglowColumn(of, df, part.x, part.y, l, float(R + base));
-    return sum;
+    return airglow_columns::closedFormColumn(layerProfile(layer), o, d);
 }
 
-// The column by the midpoint rule with step h over the part of the ray below the layer's top.
 double marchedColumn(const Layer& layer, glm::dvec3 o, glm::dvec3 d, double h)
 {
-    const LayerProfile p = components::airglow::layerProfile(layer);
-    const double rTop = R + p.baseKm + kTopScaleHeights * p.upperScaleHeightKm;
-    const double b = glm::dot(o, d), c = glm::dot(o, o) - rTop * rTop;
-    const double disc = b * b - c;
-    if (disc < 0.0)
-        return 0.0;
-    const double t0 = std::max(0.0, -b - std::sqrt(disc));
-    const double t1 = std::min(-b + std::sqrt(disc), groundDistance(o, d));
-    double sum = 0.0;
-    for (double t = t0; t < t1; t += h) {
-        const double step = std::min(h, t1 - t);
-        sum += step * components::airglow::volumeEmission(p, glm::length(o + (t + 0.5 * step) * d) - R);
-    }
-    return sum;
+    return airglow_columns::marchedColumn(layerProfile(layer), o, d, h);
 }
 
 glm::dvec3 fromZenithAngle(double zenithDeg)
