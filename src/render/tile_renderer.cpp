@@ -8,13 +8,14 @@ TileRenderer::TileRenderer(const scene::Scene& scene, const std::string& shaderD
     : scene_(scene),
       program_(gl::Program::graphics(gl::fullScreenTriangleVertexShader(), fragmentShaderSource(scene, shaderDir)))
 {
+    // A component finds the GPU parts of those made before it (registry order).
+    const scene::FindRenderer find = [&](const std::string& name) -> scene::ComponentRenderer* {
+        for (size_t i = 0; i < components_.size(); ++i)
+            if (scene.components()[i]->name() == name)
+                return components_[i].get();
+        return nullptr;
+    };
     for (const scene::Component* c : scene.components()) {
-        const scene::FindRenderer find = [&](const std::string& name) -> scene::ComponentRenderer* {
-            for (size_t i = 0; i < components_.size(); ++i)
-                if (scene.components()[i]->name() == name)
-                    return components_[i].get();
-            return nullptr;
-        };
         components_.push_back(c->makeRenderer(scene, find));
         const std::string log = components_.back()->precomputationLog();
         if (!log.empty())
