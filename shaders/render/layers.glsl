@@ -32,6 +32,12 @@ Ray boundByGround(Ray ray, real R, real altitude)
     return ray;
 }
 
+// Does the ray leave the planet's layers with nothing opaque ending it (stars are seen)?
+bool reachesSpace(Ray ray)
+{
+    return ray.end >= real(1e30);
+}
+
 // The part of the ray inside the shell from the ground up to `top` km, before the ray ends.
 vec2 lowerShellSegment(Ray ray, real R, real top)
 {

@@ -12,8 +12,8 @@ struct Ray {
     vec3 direction;
     real altitude;      // camera above the ground, km (0 without a planet)
     bool blocked;       // nothing is seen (the camera is below the ground)
-    real groundT;       // where the ray meets the ground; negative if it never does
-    real end;           // where the ray stops: the ground, else 1e30
+    real groundT;       // where the ray meets the ground; negative if it never does or something hides it
+    real end;           // where the ray stops: the ground or an opaque layer (a cloud deck), else 1e30
     vec2 atmosphere;    // the part inside the lower atmosphere (empty when x >= y)
     vec3 transmittance; // of the lower atmosphere, for whatever lies behind it
     vec3 radiance;      // gathered so far (cd/m^2, linear sRGB)

@@ -196,6 +196,14 @@ LocalFrame localFrame(double latitudeDeg, double longitudeDeg)
     return f;
 }
 
+glm::dvec3 directionInSky(double latitudeDeg, double longitudeDeg, double elevationDeg, double azimuthDeg)
+{
+    const LocalFrame local = localFrame(latitudeDeg, longitudeDeg);
+    const double elevation = glm::radians(elevationDeg), azimuth = glm::radians(azimuthDeg);
+    return std::cos(elevation) * (std::cos(azimuth) * local.north + std::sin(azimuth) * local.east) +
+           std::sin(elevation) * local.up;
+}
+
 Scene::Scene(const Scene& other)
     : sourceFile(other.sourceFile), name(other.name), planetRadiusKm(other.planetRadiusKm), camera(other.camera),
       startTimeS(other.startTimeS), timeStepS(other.timeStepS), exposure(other.exposure),

@@ -35,10 +35,10 @@ vec3 starRadiance(vec3 d)
     return uStarBrightness * magnitude * tint * exp(-dot(offsetRad, offsetRad) / (sigma * sigma));
 }
 
-// The stars close a ray that leaves the planet, seen through the lower atmosphere.
+// The stars close a ray that nothing opaque ends, seen through the lower atmosphere.
 Ray shadeStars(Ray ray)
 {
-    if (ray.groundT < 0.0)
+    if (reachesSpace(ray))
         ray.radiance += starRadiance(ray.direction) * ray.transmittance;
     return ray;
 }

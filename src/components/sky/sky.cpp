@@ -38,11 +38,7 @@ Light readLight(const config::TableReader& t)
 {
     Light l;
     const double lat = t.number("site_latitude_deg", -90, 90), lon = t.number("site_longitude_deg", -360, 360);
-    const double elevation = t.number("elevation_deg", -90, 90) * kDegree;
-    const double azimuth = t.number("azimuth_deg", -360, 360) * kDegree;
-    const scene::LocalFrame local = scene::localFrame(lat, lon);
-    l.direction = std::cos(elevation) * (std::cos(azimuth) * local.north + std::sin(azimuth) * local.east) +
-                  std::sin(elevation) * local.up;
+    l.direction = scene::directionInSky(lat, lon, t.number("elevation_deg", -90, 90), t.number("azimuth_deg", -360, 360));
     l.illuminanceLux = glm::dvec3(t.number("illuminance_lux", 0.0, 1e7, 1.28e5));
     t.rejectUnknownKeys();
     return l;

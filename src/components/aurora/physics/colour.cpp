@@ -1,34 +1,23 @@
 #include "components/aurora/physics/colour.h"
 
 #include "common/constants.h"
+#include "common/glsl.h"
 
 #include <algorithm>
 #include <cmath>
 
 namespace aurorawall::aurora {
 
-glm::dvec3 xyzToLinearSrgb(glm::dvec3 xyz)
-{
-    return {3.2406 * xyz.x - 1.5372 * xyz.y - 0.4986 * xyz.z,
-            -0.9689 * xyz.x + 1.8758 * xyz.y + 0.0415 * xyz.z,
-            0.0557 * xyz.x - 0.2040 * xyz.y + 1.0570 * xyz.z};
-}
+namespace shared {
+AURORAWALL_GLSL_PRECISION(double)
+#include "render/colour.glsl"
+} // namespace shared
 
-double linearSrgbLuminance(glm::dvec3 rgb)
-{
-    return 0.2126 * rgb.r + 0.7152 * rgb.g + 0.0722 * rgb.b;
-}
+glm::dvec3 xyzToLinearSrgb(glm::dvec3 xyz) { return shared::xyzToLinearSrgb(xyz); }
 
-glm::dvec3 desaturateIntoGamut(glm::dvec3 rgb)
-{
-    double luminance = std::max(linearSrgbLuminance(rgb), 0.0);
-    glm::dvec3 grey(luminance);
-    double saturation = 1.0;
-    for (int k = 0; k < 3; ++k) {
-        if (rgb[k] < 0.0) saturation = std::min(saturation, luminance / (luminance - rgb[k]));
-    }
-    return grey + saturation * (rgb - grey);
-}
+double linearSrgbLuminance(glm::dvec3 rgb) { return shared::linearSrgbLuminance(rgb); }
+
+glm::dvec3 desaturateIntoGamut(glm::dvec3 rgb) { return shared::desaturateIntoGamut(rgb); }
 
 double rayleighFromColumnRate(double photonsPerCm2PerS)
 {
