@@ -73,3 +73,27 @@ TEST(FragmentShader, ShadeRayCallsTheListedComponentsInCompositingOrder)
     EXPECT_EQ(code.find("shadeSky("), std::string::npos) << code;
     EXPECT_EQ(code.find("shadeNightLights("), std::string::npos) << code;
 }
+
+// The glory's modules, uniforms and steps are in the shader of a scene that lists it, between the
+// aurora and the ground, and in no other; a scene without it precomputes no table either (its
+// renderer is made only for listed components).
+TEST(FragmentShader, GloryOnlyWhereListed)
+{
+    const std::string dir = std::string(AURORAWALL_SOURCE_DIR) + "/config/scenes/";
+    const scene::Scene lunar = components::loadScene(dir + "lunar-glory.toml");
+    const std::string code = render::compositingSource(lunar);
+    EXPECT_LT(code.find("boundByGround("), code.find("boundByCloudDeck("));
+    EXPECT_LT(code.find("shadeAurora("), code.find("shadeGlory("));
+    EXPECT_LT(code.find("shadeGlory("), code.find("shadeGround("));
+    EXPECT_TRUE(contains(render::fragmentModuleNames(lunar), "components/glory/glory.glsl"));
+
+    for (const char* file : {"quiet-arc.toml", "substorm.toml", "airglow-limb.toml"}) {
+        const scene::Scene s = components::loadScene(dir + file);
+        const gl::ShaderSource source = render::fragmentShaderSource(s, kShaders);
+        EXPECT_FALSE(contains(source.defines, "HAS_GLORY")) << file;
+        for (const gl::ShaderModule& m : source.modules) {
+            EXPECT_EQ(m.file.find("glory"), std::string::npos) << file << ": " << m.file;
+            EXPECT_EQ(m.text.find("uGlory"), std::string::npos) << file << ": " << m.file;
+        }
+    }
+}
