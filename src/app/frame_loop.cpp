@@ -122,6 +122,17 @@ void flyByGamepad(gl::Context& context, cluster::MasterClock& clock, Navigation&
         clock.setCamera(navigation.apply(clock.camera(), motion));
 }
 
+// The master shows the gathered wall, downsampled, with the HUD in its console window.
+void showConsole(WallSession& session, const io::Image& canvas)
+{
+    ConsoleView& console = *session.console;
+    session.context->makeCurrent(console.window);
+    console.image->upload(previewTexels(canvas, console.image->width(), console.image->height()));
+    session.presenter->present(*session.context, console.window, *console.image, *console.triangle, true);
+    session.context->swapBuffers(console.window);
+    session.context->makeCurrent(0);
+}
+
 } // namespace
 
 cluster::FrameStats runFrames(WallSession& session, const cluster::MpiWorld& world)
@@ -177,7 +188,7 @@ cluster::FrameStats runFrames(WallSession& session, const cluster::MpiWorld& wor
                 screenshots = requests.screenshots;
             }
             cluster::FrameState state = clock->next(stopRequested);
-            state.gatherWall = !screenshots.empty() || movie.has_value();
+            state.gatherWall = !screenshots.empty() || movie.has_value() || session.console != nullptr;
             if (recorder && !state.quit)
                 recorder->add(state);
             std::vector<std::string> hud;
@@ -215,7 +226,7 @@ cluster::FrameStats runFrames(WallSession& session, const cluster::MpiWorld& wor
             session.context->makeCurrent(0);
             session.presenter->setHud(frame.hud);
             for (ScreenTarget& s : session.screens)
-                session.presenter->present(*session.context, s.window, *s.target, *s.triangle, s.screen == 0);
+                session.presenter->present(*session.context, s.window, s.target->texture(), *s.triangle, s.screen == 0);
             phase = SteadyClock::now();
             world.swapBarrier();
             report.waitMs += millisecondsSince(phase);
@@ -259,6 +270,8 @@ cluster::FrameStats runFrames(WallSession& session, const cluster::MpiWorld& wor
                 writeScreenshots(session, canvas, status, screenshots);
                 if (movie)
                     writeMovieFrame(session, *movie, canvas, status, frame.state, stopRequested);
+                if (session.console && status == 0)
+                    showConsole(session, canvas);
             }
             screenshots.clear();
         }

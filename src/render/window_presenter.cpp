@@ -36,15 +36,15 @@ void WindowPresenter::setHud(const std::vector<std::string>& lines)
     hud_->upload(mask.coverage);
 }
 
-void WindowPresenter::present(gl::Context& context, int window, const gl::FloatTarget& tile,
+void WindowPresenter::present(gl::Context& context, int window, const gl::Texture& image,
                               const gl::FullScreenTriangle& triangle, bool withHud)
 {
     context.bindWindowFramebuffer(window);
-    program_.bindTexture("uTile", 0, tile.texture().id());
+    program_.bindTexture("uTile", 0, image.id());
     const bool hud = withHud && hud_.has_value();
     if (hud)
         program_.bindTexture("uHud", 1, hud_->id());
-    program_.set("uHudScale", hud ? (tile.height() >= kLargeHudHeightPx ? 2 : 1) : 0);
+    program_.set("uHudScale", hud ? (image.height() >= kLargeHudHeightPx ? 2 : 1) : 0);
     program_.use();
     triangle.draw();
 }

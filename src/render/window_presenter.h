@@ -24,9 +24,10 @@ public:
     // window's context current.
     void setHud(const std::vector<std::string>& lines);
 
-    // withHud: draws the HUD (if there are lines) in the window's top-left corner, at 2 window
-    // pixels a font pixel on tiles at least kLargeHudHeightPx high, else at 1.
-    void present(gl::Context& context, int window, const gl::FloatTarget& tile, const gl::FullScreenTriangle& triangle,
+    // Draws `image` (a float texture of the window's size: a screen's tile, or the console's
+    // preview) into the window. withHud: the HUD (if there are lines) in its top-left corner, at 2
+    // window pixels a font pixel on images at least kLargeHudHeightPx high, else at 1.
+    void present(gl::Context& context, int window, const gl::Texture& image, const gl::FullScreenTriangle& triangle,
                  bool withHud = false);
 
     static constexpr int kLargeHudHeightPx = 600;
