@@ -118,8 +118,9 @@ void flyByGamepad(gl::Context& context, cluster::MasterClock& clock, Navigation&
         else
             clock.pause();
     }
-    if (motion.movesCamera() || motion.speedFactor != 1.0)
-        clock.setCamera(navigation.apply(clock.camera(), motion));
+    const scene::Camera moved = navigation.apply(clock.camera(), motion); // also sets the speed factor
+    if (motion.movesCamera())
+        clock.setCamera(moved);
 }
 
 // The master shows the gathered wall, downsampled, with the HUD in its console window.
