@@ -2,7 +2,10 @@
 
 #include "app/band_frame.h"
 #include "app/band_split.h"
+#include "app/control/geographic_camera.h"
 #include "app/control/remote_control.h"
+#include "app/gamepad.h"
+#include "app/hud.h"
 #include "app/navigation.h"
 #include "app/path_recorder.h"
 #include "app/wall_output.h"
@@ -81,6 +84,56 @@ void writeMovieFrame(WallSession& session, MovieWriter& movie, const io::Image& 
     }
 }
 
+// The HUD's text for the frame the master has just decided (the clock shows its time and camera),
+// with the statistics of the frame before.
+std::vector<std::string> hudFor(const cluster::MasterClock& clock, const cluster::FrameStats& stats, double framesPerS,
+                                double planetRadiusKm)
+{
+    HudFacts facts;
+    facts.framesPerS = framesPerS;
+    if (!stats.records().empty())
+        for (const cluster::RankReport& r : stats.records().back().ranks)
+            facts.rankRenderMs.push_back(r.renderMs);
+    facts.timeS = clock.timeS();
+    facts.paused = clock.paused();
+    const control::GeographicPose pose = control::poseOf(clock.camera(), planetRadiusKm);
+    facts.altitudeKm = pose.altitudeKm;
+    facts.latitudeDeg = pose.latitudeDeg;
+    facts.longitudeDeg = pose.longitudeDeg;
+    return hudLines(facts);
+}
+
+// The master flies the camera with the gamepad, if one is connected to its machine.
+void flyByGamepad(gl::Context& context, cluster::MasterClock& clock, Navigation& navigation,
+                  gl::GamepadState& previous, double frameS)
+{
+    gl::GamepadState pad;
+    if (!context.gamepad(pad))
+        return;
+    const GamepadMotion motion = gamepadMotion(pad, previous, frameS);
+    previous = pad;
+    if (motion.togglePause) {
+        if (clock.paused())
+            clock.play();
+        else
+            clock.pause();
+    }
+    const scene::Camera moved = navigation.apply(clock.camera(), motion); // also sets the speed factor
+    if (motion.movesCamera())
+        clock.setCamera(moved);
+}
+
+// The master shows the gathered wall, downsampled, with the HUD in its console window.
+void showConsole(WallSession& session, const io::Image& canvas)
+{
+    ConsoleView& console = *session.console;
+    session.context->makeCurrent(console.window);
+    console.image->upload(previewTexels(canvas, console.image->width(), console.image->height()));
+    session.presenter->present(*session.context, console.window, *console.image, *console.triangle, true);
+    session.context->swapBuffers(console.window);
+    session.context->makeCurrent(0);
+}
+
 } // namespace
 
 cluster::FrameStats runFrames(WallSession& session, const cluster::MpiWorld& world)
@@ -91,6 +144,8 @@ cluster::FrameStats runFrames(WallSession& session, const cluster::MpiWorld& wor
     std::optional<BandSplit> split;
     Navigation navigation(session.scene.planetRadiusKm);
     std::vector<cluster::InputEvent> navigationEvents; // every rank's, gathered with the last frame
+    bool hudShown = false;                             // the master's: H in any window toggles it
+    gl::GamepadState gamepadBefore;
     if (world.isMaster()) {
         clock.emplace(clockSettings(session), session.scene.camera, session.exposure);
         split.emplace(session.bands, world.size(), session.balanced,
@@ -117,22 +172,30 @@ cluster::FrameStats runFrames(WallSession& session, const cluster::MpiWorld& wor
         // remote control's commands and decides the frame; one broadcast tells every rank.
         const auto frameStart = SteadyClock::now();
         if (world.isMaster()) {
+            const double lastFrameS = std::chrono::duration<double>(frameStart - previousFrameStart).count();
+            if (!stats.records().empty()) // over the last frame: drawing, gathering, commands
+                wallStatus.fps = 1.0 / lastFrameS;
+            for (const cluster::InputEvent& e : navigationEvents)
+                if (e.type == gl::InputEvent::KeyPressed && e.code == 'H')
+                    hudShown = !hudShown;
             if (!navigationEvents.empty())
                 clock->setCamera(navigation.apply(clock->camera(), navigationEvents));
             navigationEvents.clear();
+            flyByGamepad(*session.context, *clock, navigation, gamepadBefore, stats.records().empty() ? 0.0 : lastFrameS);
             if (session.control) {
-                if (!stats.records().empty()) // over the last frame: drawing, gathering, commands
-                    wallStatus.fps = 1.0 / std::chrono::duration<double>(frameStart - previousFrameStart).count();
                 const control::FrameRequests requests =
                     control::serveCommands(*session.control, *clock, wallStatus, session.scene.planetRadiusKm);
                 stopRequested = stopRequested || requests.quit;
                 screenshots = requests.screenshots;
             }
             cluster::FrameState state = clock->next(stopRequested);
-            state.gatherWall = !screenshots.empty() || movie.has_value();
+            state.gatherWall = !screenshots.empty() || movie.has_value() || session.console != nullptr;
             if (recorder && !state.quit)
                 recorder->add(state);
-            message = cluster::packFrameMessage({state, split->next(), {}}, bandCount);
+            std::vector<std::string> hud;
+            if (hudShown)
+                hud = hudFor(*clock, stats, wallStatus.fps, session.scene.planetRadiusKm);
+            message = cluster::packFrameMessage({state, split->next(), {}, hud}, bandCount);
         }
         previousFrameStart = frameStart;
         world.broadcast(message);
@@ -159,9 +222,12 @@ cluster::FrameStats runFrames(WallSession& session, const cluster::MpiWorld& wor
 
         // 3. Windows show the screens' targets and flip together: the swap barrier makes every rank
         // wait until all have drawn into their back buffers, so no screen shows the next frame early.
+        // The HUD only on the window of the wall's first screen (one copy, where a reader looks first).
         if (session.presenter) {
+            session.context->makeCurrent(0);
+            session.presenter->setHud(frame.hud);
             for (ScreenTarget& s : session.screens)
-                session.presenter->present(*session.context, s.window, *s.target, *s.triangle);
+                session.presenter->present(*session.context, s.window, s.target->texture(), *s.triangle, s.screen == 0);
             phase = SteadyClock::now();
             world.swapBarrier();
             report.waitMs += millisecondsSince(phase);
@@ -205,6 +271,8 @@ cluster::FrameStats runFrames(WallSession& session, const cluster::MpiWorld& wor
                 writeScreenshots(session, canvas, status, screenshots);
                 if (movie)
                     writeMovieFrame(session, *movie, canvas, status, frame.state, stopRequested);
+                if (session.console && status == 0)
+                    showConsole(session, canvas);
             }
             screenshots.clear();
         }

@@ -1,6 +1,6 @@
 #pragma once
 // The frame loop of `aurorawall render`. Per frame, exactly one broadcast from the master (the
-// FrameMessage: frame state, band assignment, input events) and one gather to the master (each
+// FrameMessage: frame state, band assignment, input events, HUD) and one gather to the master (each
 // rank's RankMessage: its report and its bands' costs), with the band exchange between them; with
 // windows also the swap barrier before the flip.
 #include "app/wall_session.h"

@@ -30,6 +30,16 @@ glm::dquat turned(const glm::dquat& orientation, const glm::dvec3& ownAxis, doub
     return glm::normalize(orientation * glm::angleAxis(deg * kDegree, ownAxis));
 }
 
+// The camera at `position` with `orientation`, its speed along the view kept.
+scene::Camera posed(const scene::Camera& camera, const glm::dvec3& position, const glm::dquat& orientation)
+{
+    scene::Camera c = camera;
+    c.positionKm = position;
+    c.forward = orientation * kForward;
+    c.up = orientation * kUp;
+    return c;
+}
+
 } // namespace
 
 double Navigation::speedKmPerS(double altitudeKm) const
@@ -68,20 +78,34 @@ scene::Camera Navigation::apply(const scene::Camera& camera, const std::vector<c
         case gl::KeyMinus: speedPerS_ = std::max(0.5 * speedPerS_, kMinSpeedPerS); break;
         default: break;
         }
-        if (move == glm::dvec3(0.0))
-            continue;
-        const double altitudeKm = glm::length(position) - planetRadiusKm_;
-        position += orientation * move * (speedKmPerS(altitudeKm) * kNudgeS);
-        // Never below the ground: back up along the vertical to kMinAltitudeKm.
-        const double r = glm::length(position);
-        if (r < planetRadiusKm_ + kMinAltitudeKm)
-            position *= (planetRadiusKm_ + kMinAltitudeKm) / r;
+        if (move != glm::dvec3(0.0))
+            position = moved(position, orientation, move * kNudgeS);
     }
-    scene::Camera moved = camera;
-    moved.positionKm = position;
-    moved.forward = orientation * kForward;
-    moved.up = orientation * kUp;
-    return moved;
+    return posed(camera, position, orientation);
+}
+
+scene::Camera Navigation::apply(const scene::Camera& camera, const GamepadMotion& motion)
+{
+    glm::dquat orientation = orientationOf(camera);
+    orientation = turned(orientation, kUp, -motion.turnRightDeg);
+    orientation = turned(orientation, kRight, motion.turnUpDeg);
+    orientation = turned(orientation, kForward, motion.rollRightDeg);
+    speedPerS_ = std::clamp(speedPerS_ * motion.speedFactor, kMinSpeedPerS, kMaxSpeedPerS);
+    glm::dvec3 position = camera.positionKm;
+    if (motion.moveS != glm::dvec3(0.0))
+        position = moved(position, orientation, motion.moveS);
+    return posed(camera, position, orientation);
+}
+
+glm::dvec3 Navigation::moved(const glm::dvec3& position, const glm::dquat& orientation, const glm::dvec3& ownMoveS) const
+{
+    const double altitudeKm = glm::length(position) - planetRadiusKm_;
+    glm::dvec3 to = position + orientation * ownMoveS * speedKmPerS(altitudeKm);
+    // Never below the ground: back up along the vertical to kMinAltitudeKm.
+    const double r = glm::length(to);
+    if (r < planetRadiusKm_ + kMinAltitudeKm)
+        to *= (planetRadiusKm_ + kMinAltitudeKm) / r;
+    return to;
 }
 
 } // namespace aurorawall::app

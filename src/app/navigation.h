@@ -13,8 +13,11 @@
 //       nudge moves at most 0.8 of the altitude and can never pass through the planet).
 // A drag with the left button looks the same way, kDragDegPerPx per pixel (the view follows the
 // pointer). The orientation is a unit quaternion in double; the camera never goes below kMinAltitudeKm.
+#include "app/gamepad.h"
 #include "cluster/frame_message.h"
 #include "scene/scene.h"
+
+#include <glm/gtc/quaternion.hpp>
 
 #include <vector>
 
@@ -34,6 +37,9 @@ public:
     // The camera after `events`, oldest first; unknown types and keys change nothing. The speed
     // along the view (speedKmPerS) is kept.
     scene::Camera apply(const scene::Camera& camera, const std::vector<cluster::InputEvent>& events);
+    // The camera after one frame's gamepad motion (app/gamepad.h): turned, then moved at the speed
+    // of its altitude; the speed factor multiplied, within its bounds.
+    scene::Camera apply(const scene::Camera& camera, const GamepadMotion& motion);
 
     // Translation speed, km/s, at `altitudeKm`: speedPerS() x max(altitude, 10 m).
     double speedKmPerS(double altitudeKm) const;
@@ -41,6 +47,10 @@ public:
     double speedPerS() const { return speedPerS_; }
 
 private:
+    // `position` moved by ownMoveS seconds at the speed of its altitude along the camera's own axes
+    // (right, forward, up), at least kMinAltitudeKm above the sphere.
+    glm::dvec3 moved(const glm::dvec3& position, const glm::dquat& orientation, const glm::dvec3& ownMoveS) const;
+
     double planetRadiusKm_;
     double speedPerS_ = 1.0;
 };

@@ -86,6 +86,10 @@ RenderOptions parseRenderOptions(int argc, char** argv)
          "at the end of the run (or on quit) the master writes the camera of every frame to FILE (.toml): a "
          "scene deriving from --scene whose [[camera.key]] path, one key per frame, replays that camera at "
          "every recorded animation time")
+        ("console", po::bool_switch(&o.console),
+         "the master opens a console window (480 px wide, the wall's aspect) showing the whole wall, "
+         "downsampled, each frame, with the HUD (H); input there steers like any window. Needs --backend glfw; "
+         "every rank then sends its screens to the master every frame")
         ("quiet", po::bool_switch(&o.quiet), "print only the summary, not a line per frame")
         ("verbose", po::bool_switch(&o.verbose), "also print the per-frame work of the components (curtain map build)");
     o.helpText = cli.help();
@@ -134,6 +138,8 @@ RenderOptions parseRenderOptions(int argc, char** argv)
         check(o.balance != Balance::On, "--cost-map needs the static split: --balance off (or no --balance)");
         o.balance = Balance::Off;
     }
+    check(!o.console || o.backend == gl::Backend::Glfw,
+          "--console needs --backend glfw (the console is a window next to the wall's windows)");
     check(!o.outDir.empty(), "--out must not be empty");
     check(o.balanceBands >= 1 && o.balanceBands <= 256, "--balance-bands must be in [1, 256]");
     return o;

@@ -38,6 +38,7 @@ struct RenderOptions {
     std::string movieDir;                // --movie: every frame's wall as OUT/frame-NNNNNN.png; empty: none
     bool movieExr = false;               // --movie-exr: also frame-NNNNNN.exr
     std::string recordPath;              // --record-path: the master writes the flown camera as a scene (.toml); empty: none
+    bool console = false;                // --console: the master's preview window of the whole wall
     bool quiet = false;
     bool verbose = false;
     bool help = false;

@@ -83,7 +83,16 @@ void openGraphics(const cluster::MpiWorld& world, WallSession& s)
 {
     const gl::Backend backend = s.options.backend;
     const std::vector<int> myScreens = s.wall.screensOfRank(world.rank());
-    s.context = gl::createContext(backend, windowsFor(s.wall, myScreens));
+    std::vector<gl::WindowSpec> windows = windowsFor(s.wall, myScreens);
+    const bool console = s.options.console && world.isMaster();
+    if (console) {
+        gl::WindowSpec spec;
+        spec.title = "aurorawall console";
+        spec.widthPx = kConsoleWidthPx;
+        spec.heightPx = consoleHeightPx(s.wall.canvasSizePx.x, s.wall.canvasSizePx.y);
+        windows.push_back(spec);
+    }
+    s.context = gl::createContext(backend, windows);
     s.renderer = std::make_unique<render::TileRenderer>(s.scene, s.shaderDir);
     if (backend == gl::Backend::Glfw)
         s.presenter = std::make_unique<render::WindowPresenter>(s.shaderDir, s.toneMap);
@@ -96,6 +105,15 @@ void openGraphics(const cluster::MpiWorld& world, WallSession& s)
         screen.target = std::make_unique<gl::FloatTarget>(physical.widthPx, physical.heightPx);
         screen.triangle = std::make_unique<gl::FullScreenTriangle>();
         s.screens.push_back(std::move(screen));
+    }
+    if (console) {
+        s.console = std::make_unique<ConsoleView>();
+        s.console->window = static_cast<int>(myScreens.size());
+        s.context->makeCurrent(s.console->window);
+        const gl::WindowSpec& spec = windows.back();
+        s.console->image = std::make_unique<gl::Texture>(gl::Texture::create2D(
+            spec.widthPx, spec.heightPx, gl::TexelFormat::RGBA32F, gl::Filter::Nearest, gl::Wrap::Clamp));
+        s.console->triangle = std::make_unique<gl::FullScreenTriangle>();
     }
     s.context->makeCurrent(0);
 }

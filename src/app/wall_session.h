@@ -2,6 +2,7 @@
 // What a rank sets up once before the frame loop of `aurorawall render`: the configuration
 // (identical on every rank), its GL context and windows, the raymarcher compiled for the scene, the
 // float targets of its screens, and the bands every frame is drawn in.
+#include "app/console_view.h"
 #include "app/control/control_server.h"
 #include "app/render_options.h"
 #include "app/screen_target.h"
@@ -33,6 +34,7 @@ struct WallSession {
     std::unique_ptr<render::TileRenderer> renderer;
     std::unique_ptr<render::WindowPresenter> presenter; // windows only
     std::vector<ScreenTarget> screens;                   // this rank's, in wall order
+    std::unique_ptr<ConsoleView> console;                // master with --console only
     // The bands of every frame: with load balancing each screen cut into --balance-bands bands,
     // otherwise one band per screen, always drawn by the screen's own rank (the static split).
     std::vector<cluster::Band> bands;

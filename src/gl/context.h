@@ -38,6 +38,17 @@ struct InputEvent {
     double dx = 0.0, dy = 0.0; // x to the right, y down
 };
 
+// A gamepad's state in GLFW's standard gamepad layout (GLFWgamepadstate, the SDL game controller
+// mapping): sticks' axes in [-1, 1] with +y down, triggers' axes -1 released to +1 fully pressed;
+// buttons 1 while held.
+struct GamepadState {
+    enum Axis { LeftX, LeftY, RightX, RightY, LeftTrigger, RightTrigger, AxisCount };
+    enum Button { A, B, X, Y, LeftBumper, RightBumper, Back, Start, Guide, LeftThumb, RightThumb,
+                  DpadUp, DpadRight, DpadDown, DpadLeft, ButtonCount };
+    float axes[AxisCount] = {0.0f, 0.0f, 0.0f, 0.0f, -1.0f, -1.0f};
+    unsigned char buttons[ButtonCount] = {};
+};
+
 // One window of the GLFW backend, in screen pixels.
 struct WindowSpec {
     std::string title;
@@ -68,6 +79,8 @@ public:
     // call, oldest first (consecutive drags merged into one), at most `maxEvents`: later ones are
     // dropped. Headless: none.
     virtual std::vector<InputEvent> takeInputEvents(std::size_t /*maxEvents*/) { return {}; }
+    // The first connected gamepad's state now, or false if there is none (headless: never).
+    virtual bool gamepad(GamepadState& /*state*/) const { return false; }
 
     // GL_RENDERER and GL_VERSION of the current context, for logs (e.g. "llvmpipe (LLVM 15.0.6, 256 bits)").
     std::string rendererName() const;

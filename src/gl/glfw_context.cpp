@@ -7,12 +7,20 @@
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
+#include <algorithm>
 #include <cstdint>
+#include <iterator>
 #include <stdexcept>
 #include <string>
 
 namespace aurorawall::gl {
 namespace {
+
+static_assert(GamepadState::AxisCount == GLFW_GAMEPAD_AXIS_LAST + 1 &&
+                  GamepadState::ButtonCount == GLFW_GAMEPAD_BUTTON_LAST + 1 &&
+                  GamepadState::RightTrigger == GLFW_GAMEPAD_AXIS_RIGHT_TRIGGER &&
+                  GamepadState::DpadLeft == GLFW_GAMEPAD_BUTTON_DPAD_LEFT,
+              "GamepadState has GLFW's gamepad layout");
 
 std::string lastGlfwError;
 
@@ -134,6 +142,19 @@ public:
         if (events.size() > maxEvents)
             events.resize(maxEvents);
         return events;
+    }
+
+    bool gamepad(GamepadState& state) const override
+    {
+        for (int joystick = GLFW_JOYSTICK_1; joystick <= GLFW_JOYSTICK_LAST; ++joystick) {
+            GLFWgamepadstate glfw;
+            if (!glfwJoystickIsGamepad(joystick) || !glfwGetGamepadState(joystick, &glfw))
+                continue;
+            std::copy(std::begin(glfw.axes), std::end(glfw.axes), state.axes);
+            std::copy(std::begin(glfw.buttons), std::end(glfw.buttons), state.buttons);
+            return true;
+        }
+        return false;
     }
 
 private:

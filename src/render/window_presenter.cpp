@@ -1,5 +1,7 @@
 #include "render/window_presenter.h"
 
+#include "render/hud_font.h"
+
 namespace aurorawall::render {
 
 namespace {
@@ -21,11 +23,28 @@ WindowPresenter::WindowPresenter(const std::string& shaderDir, const io::ToneMap
     program_.set("uCurve", io::toneCurveCode(toneMap.curve));
 }
 
-void WindowPresenter::present(gl::Context& context, int window, const gl::FloatTarget& tile,
-                              const gl::FullScreenTriangle& triangle)
+void WindowPresenter::setHud(const std::vector<std::string>& lines)
+{
+    if (lines == hudLines_)
+        return;
+    hudLines_ = lines;
+    hud_.reset();
+    if (lines.empty())
+        return;
+    const HudMask mask = rasterizeHud(lines);
+    hud_ = gl::Texture::create2D(mask.width, mask.height, gl::TexelFormat::R32F, gl::Filter::Nearest, gl::Wrap::Clamp);
+    hud_->upload(mask.coverage);
+}
+
+void WindowPresenter::present(gl::Context& context, int window, const gl::Texture& image,
+                              const gl::FullScreenTriangle& triangle, bool withHud)
 {
     context.bindWindowFramebuffer(window);
-    program_.bindTexture("uTile", 0, tile.texture().id());
+    program_.bindTexture("uTile", 0, image.id());
+    const bool hud = withHud && hud_.has_value();
+    if (hud)
+        program_.bindTexture("uHud", 1, hud_->id());
+    program_.set("uHudScale", hud ? (image.height() >= kLargeHudHeightPx ? 2 : 1) : 0);
     program_.use();
     triangle.draw();
 }

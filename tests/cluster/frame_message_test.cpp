@@ -25,6 +25,7 @@ FrameMessage sampleFrame()
     m.state.quit = 1;
     m.assignment = {0, 3, 3, 1, 2, 0, 1};
     m.events = {{1, 65, 12.5, -3.0}, {2, 0, 639.5, 359.5}};
+    m.hud = {"FPS 9.5  T 120.00 S", "", std::string(kHudColumns, '#')};
     return m;
 }
 
@@ -52,6 +53,7 @@ TEST(FrameMessage, RoundTripKeepsEveryField)
         EXPECT_EQ(got.events[i].x, sent.events[i].x);
         EXPECT_EQ(got.events[i].y, sent.events[i].y);
     }
+    EXPECT_EQ(got.hud, sent.hud);
 }
 
 // Every frame's message has one size for a given band count, however many events it carries, so
@@ -66,6 +68,11 @@ TEST(FrameMessage, SizeDependsOnlyOnTheBandCount)
     m.events.assign(kMaxInputEvents, InputEvent{7, 8, 9.0, 10.0});
     EXPECT_EQ(packFrameMessage(m, bands).size(), frameMessageBytes(bands));
     EXPECT_EQ(unpackFrameMessage(packFrameMessage(m, bands), bands).events.size(), kMaxInputEvents);
+    m.hud.assign(kHudLines, std::string(kHudColumns, 'W'));
+    EXPECT_EQ(packFrameMessage(m, bands).size(), frameMessageBytes(bands));
+    EXPECT_EQ(unpackFrameMessage(packFrameMessage(m, bands), bands).hud, m.hud);
+    m.hud.clear();
+    EXPECT_TRUE(unpackFrameMessage(packFrameMessage(m, bands), bands).hud.empty());
     EXPECT_GT(frameMessageBytes(bands + 1), frameMessageBytes(bands));
 }
 
@@ -76,6 +83,11 @@ TEST(FrameMessage, RefusesWhatDoesNotFit)
     EXPECT_THROW(packFrameMessage(m, bands + 1), std::invalid_argument);
     m.events.assign(kMaxInputEvents + 1, InputEvent{});
     EXPECT_THROW(packFrameMessage(m, bands), std::invalid_argument);
+    m = sampleFrame();
+    m.hud.assign(kHudLines + 1, "");
+    EXPECT_THROW(packFrameMessage(m, bands), std::invalid_argument);
+    m.hud = {std::string(kHudColumns + 1, 'X')};
+    EXPECT_THROW(packFrameMessage(m, bands), std::invalid_argument);
 
     const std::vector<char> bytes = packFrameMessage(sampleFrame(), bands);
     EXPECT_THROW(unpackFrameMessage(bytes, bands + 1), std::runtime_error); // size of another wall
@@ -84,6 +96,9 @@ TEST(FrameMessage, RefusesWhatDoesNotFit)
     std::vector<char> badCount = bytes;
     badCount[sizeof(FrameState) + sizeof(std::int32_t)] = static_cast<char>(kMaxInputEvents + 1); // event count
     EXPECT_THROW(unpackFrameMessage(badCount, bands), std::runtime_error);
+    std::vector<char> badHud = bytes;
+    badHud[sizeof(FrameState) + 2 * sizeof(std::int32_t)] = static_cast<char>(kHudLines + 1); // HUD line count
+    EXPECT_THROW(unpackFrameMessage(badHud, bands), std::runtime_error);
 }
 
 TEST(RankMessage, RoundTripOfSeveralRanks)

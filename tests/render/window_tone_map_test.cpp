@@ -72,7 +72,7 @@ TEST(WindowToneMap, WindowPixelsAreTheCpuToneMap)
         toneMap.curve = curve;
         toneMap.exposure = 3.0;
         render::WindowPresenter presenter(std::string(AURORAWALL_SOURCE_DIR) + "/shaders", toneMap);
-        presenter.present(*context, 0, tile, triangle);
+        presenter.present(*context, 0, tile.texture(), triangle);
         std::vector<std::uint8_t> pixels(4 * kWidth * kHeight);
         gl::glReadBuffer(GL_BACK);
         gl::glPixelStorei(GL_PACK_ALIGNMENT, 1);
