@@ -25,7 +25,7 @@ TEST(WallFile, EveryShippedWallIsTomlAndLoads)
         EXPECT_GE(wall.rankCount, 1);
         ++walls;
     }
-    EXPECT_EQ(walls, 12);
+    EXPECT_EQ(walls, 13);
 }
 
 TEST(WallFile, UafPowerwall)
