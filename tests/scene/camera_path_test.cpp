@@ -255,6 +255,9 @@ TEST(CameraPath, TheBenchmarkPathIsTheStraightBenchmarkFlight)
         EXPECT_LT(glm::length(s.cameraBack - k.cameraBack), 1e-12) << "frame " << frame;
         EXPECT_LT(glm::length(s.cameraUp - k.cameraUp), 1e-12) << "frame " << frame;
         EXPECT_LT(glm::length(s.cameraRight - k.cameraRight), 1e-12) << "frame " << frame;
+        // Both keys look the same way: the spline keeps that orientation bit for bit in between.
+        EXPECT_EQ(keyed.camera.path.orientationAt(k.timeS), keyed.camera.path.keys()[0].orientation)
+            << "frame " << frame;
     }
     EXPECT_LT(largest, 1e-9); // km, over 764.5 km of flight
 }
