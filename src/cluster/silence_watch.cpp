@@ -6,9 +6,6 @@ namespace aurorawall::cluster {
 
 namespace {
 
-// How many of the slowest frame a main thread may go without progress before it counts as hung.
-constexpr double kFramesBeforeHung = 4.0;
-
 bool inFrameLoop(RankPhase phase)
 {
     return phase == RankPhase::Broadcast || phase == RankPhase::Draw || phase == RankPhase::Gather;

@@ -27,6 +27,9 @@
 
 namespace aurorawall::cluster {
 
+// How many of the slowest frame a main thread may go without progress before it counts as hung.
+constexpr double kFramesBeforeHung = 4.0;
+
 class SilenceWatch {
 public:
     // Ranks 0 .. rankCount-1, all heard at `startS` in set-up; rank 0 (the watcher itself) is never

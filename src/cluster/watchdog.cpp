@@ -155,10 +155,11 @@ void Watchdog::watchRanks()
         const std::vector<SilenceWatch::Hung> hung = watch.hungRanks(master);
         if (!hung.empty()) {
             std::fprintf(stderr,
-                         "aurorawall render: hung: %s, more than %.1f s = max(--rank-timeout %g s, 4 x max(the "
+                         "aurorawall render: hung: %s, more than %.1f s = max(--rank-timeout %g s, %g x max(the "
                          "slowest frame %.2f s, the master's own work this frame %.2f s)); the master was waiting in "
                          "%s; ending the job (exit status %d)\n",
-                         describeHung(hung).c_str(), watch.stallLimitS(master), timeoutS_, master.slowestFrameS,
+                         describeHung(hung).c_str(), watch.stallLimitS(master), timeoutS_, kFramesBeforeHung,
+                         master.slowestFrameS,
                          master.busyThisFrameS, masterPhase.c_str(), kRankSilentExitStatus);
             std::fflush(stderr);
             MPI_Abort(MPI_COMM_WORLD, kRankSilentExitStatus);
