@@ -77,7 +77,8 @@ RenderOptions parseRenderOptions(int argc, char** argv)
          "the wall and write PNG files as this user)")
         ("rank-timeout", po::value(&o.rankTimeoutS)->default_value(o.rankTimeoutS),
          "seconds without a heartbeat from a rank (sent by a thread of its own, so a slow frame is not "
-         "silence) after which the master names it and ends the job with exit status 3 (0.1 to 1e6)")
+         "silence), or without progress of its main thread outside waits for other ranks (and longer than 4 "
+         "frames), after which the master names it and ends the job with exit status 3 (0.1 to 1e6)")
         ("movie", po::value(&o.movieDir),
          "the master writes every frame's wall into this folder: frame-000000.png, ... and frames.csv "
          "(frame number, animation time); every rank sends its screens every frame")

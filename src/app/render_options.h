@@ -34,7 +34,7 @@ struct RenderOptions {
     cluster::BandMeasure balanceBy = cluster::BandMeasure::CpuTime; // what the balancer equalizes
     int controlPort = -1;                // --control-port; -1: no remote control, 0: a free port
     std::string controlBind = "127.0.0.1"; // --control-bind
-    double rankTimeoutS = 10.0;          // --rank-timeout: a rank silent this long ends the job (exit status 3)
+    double rankTimeoutS = 10.0;          // --rank-timeout: a rank silent or hung this long ends the job (status 3)
     std::string movieDir;                // --movie: every frame's wall as OUT/frame-NNNNNN.png; empty: none
     bool movieExr = false;               // --movie-exr: also frame-NNNNNN.exr
     std::string recordPath;              // --record-path: the master writes the flown camera as a scene (.toml); empty: none

@@ -45,7 +45,10 @@ void MpiWorld::setPhase(RankPhase phase, std::uint64_t frame) const
 int MpiWorld::agreedStatus(int myStatus, const std::string& myError, const std::string& prefix) const
 {
     int agreed = 0;
-    MPI_Allreduce(&myStatus, &agreed, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
+    {
+        const WaitingForRanks waiting(watchdog_.get());
+        MPI_Allreduce(&myStatus, &agreed, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
+    }
     if (agreed == 0)
         return 0;
     std::vector<char> mine(myError.begin(), myError.end());
@@ -74,6 +77,7 @@ int MpiWorld::agreedStatus(int myStatus, const std::string& myError, const std::
 
 void MpiWorld::broadcast(std::vector<char>& bytes) const
 {
+    const WaitingForRanks waiting(watchdog_.get());
     MPI_Bcast(bytes.data(), static_cast<int>(bytes.size()), MPI_BYTE, 0, MPI_COMM_WORLD);
 }
 
@@ -81,12 +85,14 @@ std::vector<char> MpiWorld::gather(const std::vector<char>& mine) const
 {
     const int size = static_cast<int>(mine.size());
     std::vector<char> all(rank_ == 0 ? mine.size() * static_cast<size_t>(size_) : 0);
+    const WaitingForRanks waiting(watchdog_.get());
     MPI_Gather(mine.data(), size, MPI_BYTE, all.data(), size, MPI_BYTE, 0, MPI_COMM_WORLD);
     return all;
 }
 
 void MpiWorld::exchange(const std::vector<Message>& outgoing, const std::vector<Message>& incoming) const
 {
+    const WaitingForRanks waiting(watchdog_.get());
     std::vector<MPI_Request> requests;
     for (const Message& m : incoming) {
         requests.emplace_back();
@@ -101,10 +107,15 @@ void MpiWorld::exchange(const std::vector<Message>& outgoing, const std::vector<
     MPI_Waitall(static_cast<int>(requests.size()), requests.data(), MPI_STATUSES_IGNORE);
 }
 
-void MpiWorld::swapBarrier() const { MPI_Barrier(MPI_COMM_WORLD); }
+void MpiWorld::swapBarrier() const
+{
+    const WaitingForRanks waiting(watchdog_.get());
+    MPI_Barrier(MPI_COMM_WORLD);
+}
 
 std::vector<char> MpiWorld::gatherBytes(const std::vector<char>& mine, std::vector<int>& sizesOut) const
 {
+    const WaitingForRanks waiting(watchdog_.get());
     const int mySize = static_cast<int>(mine.size());
     sizesOut.assign(rank_ == 0 ? static_cast<size_t>(size_) : 0, 0);
     MPI_Gather(&mySize, 1, MPI_INT, sizesOut.data(), 1, MPI_INT, 0, MPI_COMM_WORLD);

@@ -1,7 +1,8 @@
 #pragma once
 // The MPI calls of aurorawall, in one place: agreement on set-up errors, the frame's broadcast and
 // gather, the swap barrier, the band exchange and the gathering of output. Messages travel as bytes
-// (every rank runs the same binary). The watchdog (cluster/watchdog.h) ends the job if a rank falls silent.
+// (every rank runs the same binary). The watchdog (cluster/watchdog.h) ends the job if a rank falls
+// silent or hangs; every call here that waits for other ranks tells it so (WaitingForRanks).
 #include "cluster/rank_phase.h"
 #include "cluster/watchdog.h"
 

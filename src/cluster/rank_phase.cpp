@@ -1,5 +1,7 @@
 #include "cluster/rank_phase.h"
 
+#include <algorithm>
+
 namespace aurorawall::cluster {
 
 std::string describePhase(RankPhase phase, std::uint64_t frame)
@@ -14,6 +16,47 @@ std::string describePhase(RankPhase phase, std::uint64_t frame)
     case RankPhase::Finished: return "finished";
     }
     return "an unknown phase";
+}
+
+} // namespace aurorawall::cluster
+
+namespace aurorawall::cluster {
+
+MainThreadProgress::MainThreadProgress(double startS) : progressS_(startS) {}
+
+void MainThreadProgress::phaseChanged(RankPhase phase, std::uint64_t frame, double nowS)
+{
+    if (!waiting_)
+        busyBeforeS_ += nowS - progressS_;
+    if (phase == RankPhase::Draw) {
+        if (frameStartS_ >= 0.0)
+            slowestFrameS_ = std::max(slowestFrameS_, nowS - frameStartS_);
+        frameStartS_ = nowS;
+        busyBeforeS_ = 0.0;
+    }
+    phase_ = phase;
+    frame_ = frame;
+    progressS_ = nowS;
+}
+
+void MainThreadProgress::waitBegins(double nowS)
+{
+    if (!waiting_)
+        busyBeforeS_ += nowS - progressS_;
+    waiting_ = true;
+    progressS_ = nowS;
+}
+
+void MainThreadProgress::waitEnds(double nowS)
+{
+    waiting_ = false;
+    progressS_ = nowS;
+}
+
+MainThreadProgress::Snapshot MainThreadProgress::at(double nowS) const
+{
+    const double stalled = waiting_ ? 0.0 : nowS - progressS_;
+    return {phase_, frame_, waiting_, stalled, slowestFrameS_, busyBeforeS_ + stalled};
 }
 
 } // namespace aurorawall::cluster

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <string>
 
 namespace aurorawall::cluster {
@@ -12,6 +13,7 @@ namespace aurorawall::cluster {
 namespace {
 
 constexpr int kHeartbeatTag = 1;
+constexpr int kHeartbeatValues = 4;
 
 double secondsNow()
 {
@@ -31,12 +33,32 @@ std::string describeSilent(const std::vector<SilenceWatch::Silent>& silent)
     return text;
 }
 
+// "rank 2 (drawing frame 3, its main thread without progress for 4.1 s)", joined by "; ".
+std::string describeHung(const std::vector<SilenceWatch::Hung>& hung)
+{
+    std::string text;
+    for (const SilenceWatch::Hung& h : hung) {
+        char stalled[32];
+        std::snprintf(stalled, sizeof stalled, "%.1f", h.beat.stalledS);
+        text += (text.empty() ? "" : "; ") + std::string("rank ") + std::to_string(h.rank) + " (" +
+                describePhase(h.beat.phase, h.beat.frame) + ", its main thread without progress for " + stalled +
+                " s)";
+    }
+    return text;
+}
+
 } // namespace
 
-Watchdog::Watchdog(MPI_Comm comm, double timeoutS) : comm_(comm), timeoutS_(timeoutS)
+Watchdog::Watchdog(MPI_Comm comm, double timeoutS) : comm_(comm), timeoutS_(timeoutS), progress_(secondsNow())
 {
     MPI_Comm_rank(comm_, &rank_);
     MPI_Comm_size(comm_, &size_);
+    unsigned long long hangFrame = 0;
+    if (const char* hang = std::getenv("AURORAWALL_TEST_HANG_MAIN_THREAD");
+        hang && std::sscanf(hang, "%d:%llu", &hangRank_, &hangFrame) == 2)
+        hangFrame_ = hangFrame;
+    else
+        hangRank_ = -1;
     if (size_ == 1)
         return;
     thread_ = std::thread([this] { rank_ == 0 ? watchRanks() : sendHeartbeats(); });
@@ -51,8 +73,30 @@ Watchdog::~Watchdog()
 
 void Watchdog::setPhase(RankPhase phase, std::uint64_t frame)
 {
-    frame_ = frame;
-    phase_ = static_cast<std::int64_t>(phase);
+    {
+        const std::lock_guard<std::mutex> lock(mutex_);
+        progress_.phaseChanged(phase, frame, secondsNow());
+    }
+    while (rank_ == hangRank_ && phase == RankPhase::Draw && frame == hangFrame_)
+        std::this_thread::sleep_for(std::chrono::hours(1));
+}
+
+void Watchdog::waitBegins()
+{
+    const std::lock_guard<std::mutex> lock(mutex_);
+    progress_.waitBegins(secondsNow());
+}
+
+void Watchdog::waitEnds()
+{
+    const std::lock_guard<std::mutex> lock(mutex_);
+    progress_.waitEnds(secondsNow());
+}
+
+MainThreadProgress::Snapshot Watchdog::progress()
+{
+    const std::lock_guard<std::mutex> lock(mutex_);
+    return progress_.at(secondsNow());
 }
 
 void Watchdog::sendHeartbeats()
@@ -64,9 +108,12 @@ void Watchdog::sendHeartbeats()
         const bool last = stop_;
         if (last || std::chrono::steady_clock::now() >= next) {
             // A small message goes eagerly: MPI_Send returns without waiting for the master to receive it.
-            std::int64_t beat[2] = {last ? static_cast<std::int64_t>(RankPhase::Finished) : phase_.load(),
-                                    static_cast<std::int64_t>(frame_.load())};
-            MPI_Send(beat, 2, MPI_INT64_T, 0, kHeartbeatTag, comm_);
+            // Phase, frame, waiting for other ranks (0 or 1), microseconds without progress.
+            const MainThreadProgress::Snapshot p = progress();
+            std::int64_t beat[kHeartbeatValues] = {
+                static_cast<std::int64_t>(last ? RankPhase::Finished : p.phase), static_cast<std::int64_t>(p.frame),
+                p.waiting ? 1 : 0, static_cast<std::int64_t>(p.stalledS * 1e6)};
+            MPI_Send(beat, kHeartbeatValues, MPI_INT64_T, 0, kHeartbeatTag, comm_);
             next = std::chrono::steady_clock::now() +
                    std::chrono::duration_cast<std::chrono::steady_clock::duration>(period);
         }
@@ -79,27 +126,41 @@ void Watchdog::sendHeartbeats()
 void Watchdog::watchRanks()
 {
     SilenceWatch watch(size_, timeoutS_, secondsNow());
-    std::int64_t beat[2] = {0, 0};
+    std::int64_t beat[kHeartbeatValues] = {};
     MPI_Request request;
-    MPI_Irecv(beat, 2, MPI_INT64_T, MPI_ANY_SOURCE, kHeartbeatTag, comm_, &request);
+    MPI_Irecv(beat, kHeartbeatValues, MPI_INT64_T, MPI_ANY_SOURCE, kHeartbeatTag, comm_, &request);
     while (!stop_) {
         int arrived = 0;
         MPI_Status status;
         MPI_Test(&request, &arrived, &status);
         if (arrived) {
-            watch.heard(status.MPI_SOURCE, static_cast<RankPhase>(beat[0]), static_cast<std::uint64_t>(beat[1]),
+            watch.heard(status.MPI_SOURCE,
+                        {static_cast<RankPhase>(beat[0]), static_cast<std::uint64_t>(beat[1]), beat[2] != 0,
+                         static_cast<double>(beat[3]) * 1e-6},
                         secondsNow());
-            MPI_Irecv(beat, 2, MPI_INT64_T, MPI_ANY_SOURCE, kHeartbeatTag, comm_, &request);
+            MPI_Irecv(beat, kHeartbeatValues, MPI_INT64_T, MPI_ANY_SOURCE, kHeartbeatTag, comm_, &request);
             continue;
         }
+        const MainThreadProgress::Snapshot master = progress();
+        const std::string masterPhase = describePhase(master.phase, master.frame);
         const std::vector<SilenceWatch::Silent> silent = watch.silentRanks(secondsNow());
         if (!silent.empty()) {
             std::fprintf(stderr,
                          "aurorawall render: no heartbeat for more than --rank-timeout %g s from %s; the master "
                          "was in %s; ending the job (exit status %d)\n",
-                         timeoutS_, describeSilent(silent).c_str(),
-                         describePhase(static_cast<RankPhase>(phase_.load()), frame_.load()).c_str(),
-                         kRankSilentExitStatus);
+                         timeoutS_, describeSilent(silent).c_str(), masterPhase.c_str(), kRankSilentExitStatus);
+            std::fflush(stderr);
+            MPI_Abort(MPI_COMM_WORLD, kRankSilentExitStatus);
+        }
+        const std::vector<SilenceWatch::Hung> hung = watch.hungRanks(master);
+        if (!hung.empty()) {
+            std::fprintf(stderr,
+                         "aurorawall render: hung: %s, more than %.1f s = max(--rank-timeout %g s, %g x max(the "
+                         "slowest frame %.2f s, the master's own work this frame %.2f s)); the master was waiting in "
+                         "%s; ending the job (exit status %d)\n",
+                         describeHung(hung).c_str(), watch.stallLimitS(master), timeoutS_, kFramesBeforeHung,
+                         master.slowestFrameS,
+                         master.busyThisFrameS, masterPhase.c_str(), kRankSilentExitStatus);
             std::fflush(stderr);
             MPI_Abort(MPI_COMM_WORLD, kRankSilentExitStatus);
         }
@@ -107,6 +168,18 @@ void Watchdog::watchRanks()
     }
     MPI_Cancel(&request);
     MPI_Wait(&request, MPI_STATUS_IGNORE);
+}
+
+WaitingForRanks::WaitingForRanks(Watchdog* watchdog) : watchdog_(watchdog)
+{
+    if (watchdog_)
+        watchdog_->waitBegins();
+}
+
+WaitingForRanks::~WaitingForRanks()
+{
+    if (watchdog_)
+        watchdog_->waitEnds();
 }
 
 } // namespace aurorawall::cluster

@@ -1,27 +1,34 @@
 #pragma once
-// Never hang on a rank that stopped answering. Every rank but the master runs a thread that sends the
-// master a heartbeat (its phase and frame, cluster/rank_phase.h) every timeout/5 seconds (at most
-// every second, at least every 50 ms); the master runs a thread that receives them and, when a rank
-// has been silent for longer than the timeout (cluster/silence_watch.h), prints one line naming the
-// rank, what it was last doing and where the master waits, and ends the whole job with
+// Never hang on a rank that stopped answering or whose main thread is stuck. Every rank but the
+// master runs a thread that sends the master a heartbeat (its phase and frame, and how long its main
+// thread has gone without progress, cluster/rank_phase.h) every timeout/5 seconds (at most every
+// second, at least every 50 ms); the master runs a thread that receives them and, when a rank has
+// been silent for longer than the timeout, or is hung by the rule of cluster/silence_watch.h (its
+// main thread without progress, outside any wait for other ranks, for longer than both the timeout
+// and 4 times the slowest frame, while the master waits), prints one line naming the rank, what it
+// was last doing and where the master waits, and ends the whole job with
 // MPI_Abort(kRankSilentExitStatus).
 //
 // A thread of its own measures the silence of the process, not the frame time: a rank busy in a
-// long draw, or starved of CPU on an oversubscribed machine, still sends its heartbeats. What it
-// cannot see is a process that is alive but whose main thread is stuck (a hung driver call): its
-// heartbeat thread keeps answering. A rank that dies ends the job through Open MPI itself. The
-// master is not watched (the other ranks wait for it in the frame's broadcast).
+// long draw, or starved of CPU on an oversubscribed machine, still sends its heartbeats, and the
+// hung-rank rule allows for frames that all slow down. A rank that dies ends the job through Open MPI
+// itself. The master is not watched (the other ranks wait for it in the frame's broadcast).
+//
+// Test hook: the environment variable AURORAWALL_TEST_HANG_MAIN_THREAD=RANK:FRAME makes rank RANK's
+// main thread sleep for ever when it starts drawing frame FRAME, as a driver call that never returns
+// would (its heartbeat thread keeps beating). It is read once, when the watchdog starts.
 #include "cluster/rank_phase.h"
 
 #include <mpi.h>
 
 #include <atomic>
 #include <cstdint>
+#include <mutex>
 #include <thread>
 
 namespace aurorawall::cluster {
 
-// The exit status of a job ended because a rank fell silent.
+// The exit status of a job ended because a rank fell silent or hung.
 constexpr int kRankSilentExitStatus = 3;
 
 class Watchdog {
@@ -35,21 +42,40 @@ public:
     Watchdog& operator=(const Watchdog&) = delete;
 
     // What the main thread is doing now; the next heartbeat carries it (on the master: named in the
-    // line printed when a rank falls silent).
+    // line printed when a rank falls silent or hangs). A change of phase is progress.
     void setPhase(RankPhase phase, std::uint64_t frame);
+    // The main thread enters and leaves a wait for other ranks (see WaitingForRanks).
+    void waitBegins();
+    void waitEnds();
 
 private:
     void sendHeartbeats();
     void watchRanks();
+    MainThreadProgress::Snapshot progress();
 
     MPI_Comm comm_;
     int rank_ = 0;
     int size_ = 1;
     double timeoutS_;
-    std::atomic<std::int64_t> phase_{static_cast<std::int64_t>(RankPhase::SetUp)};
-    std::atomic<std::uint64_t> frame_{0};
+    int hangRank_ = -1; // the test hook's rank and frame
+    std::uint64_t hangFrame_ = 0;
+    std::mutex mutex_; // guards progress_, marked by the main thread and read by the watchdog's
+    MainThreadProgress progress_;
     std::atomic<bool> stop_{false};
     std::thread thread_;
+};
+
+// While it lives, the main thread waits for other ranks (a broadcast, gather, exchange or barrier),
+// which the hung-rank rule does not count as being stuck. `watchdog` may be null (no watchdog).
+class WaitingForRanks {
+public:
+    explicit WaitingForRanks(Watchdog* watchdog);
+    ~WaitingForRanks();
+    WaitingForRanks(const WaitingForRanks&) = delete;
+    WaitingForRanks& operator=(const WaitingForRanks&) = delete;
+
+private:
+    Watchdog* watchdog_;
 };
 
 } // namespace aurorawall::cluster

@@ -6,6 +6,39 @@
 
 namespace aurorawall::scene {
 
+namespace {
+
+// The logarithm of a unit quaternion q = (cos(a/2), sin(a/2) n): the vector (a/2) n, a in [0, 2 pi].
+// atan2 keeps it accurate for small angles, where acos of the real part loses half the digits.
+glm::dvec3 logOf(const glm::dquat& q)
+{
+    const glm::dvec3 v(q.x, q.y, q.z);
+    const double sinHalf = glm::length(v);
+    if (sinHalf == 0.0)
+        return glm::dvec3(0.0);
+    return v * (std::atan2(sinHalf, q.w) / sinHalf);
+}
+
+// The inverse of logOf: exp(v) = (cos |v|, sin |v| v / |v|), a unit quaternion.
+glm::dquat expOf(const glm::dvec3& v)
+{
+    const double half = glm::length(v);
+    if (half == 0.0)
+        return {1.0, 0.0, 0.0, 0.0};
+    const glm::dvec3 u = v * (std::sin(half) / half);
+    return {std::cos(half), u.x, u.y, u.z};
+}
+
+// Slerp (Shoemake 1985) as a exp(s log(a* b)): from a (s = 0, exactly) to b (s = 1) at a constant
+// angular rate. b is taken as given, not negated to the short arc: SQUAD's inner blends must join
+// their own quaternions for the spline to stay continuous.
+glm::dquat slerp(const glm::dquat& a, const glm::dquat& b, double s)
+{
+    return a * expOf(s * logOf(glm::conjugate(a) * b));
+}
+
+} // namespace
+
 glm::dquat orientationOf(const CameraFrame& frame)
 {
     const glm::dvec3 right = glm::cross(frame.forward, frame.up);
@@ -37,6 +70,35 @@ CameraPath::CameraPath(std::vector<CameraKey> keys) : keys_(std::move(keys))
         const CameraKey& a = keys_[i == 0 ? 0 : i - 1];
         const CameraKey& b = keys_[i + 1 == n ? i : i + 1];
         tangentsKmPerS_[i] = (b.positionKm - a.positionKm) / (b.timeS - a.timeS);
+    }
+    // Orientations: q(t) = q_i exp(w t) near key i has dq/dt = q_i w, w the angular velocity in the
+    // camera's frame over 2 (logOf's half angles). Segment i turns at the constant rate
+    // L_i / h_i under slerp, L_i = log(q_i* q_{i+1}), h_i = t_{i+1} - t_i. The key's rate W_i is
+    // (L_{i-1} + L_i) / (h_{i-1} + h_i) inside, the same time weighting as the positions' centred
+    // difference, and the end segment's own rate at the first and the last key (clamped ends: there
+    // SQUAD is slerp's start or end).
+    std::vector<glm::dvec3> chords(n - 1), rates(n);
+    for (std::size_t i = 0; i + 1 < n; ++i)
+        chords[i] = logOf(glm::conjugate(keys_[i].orientation) * keys_[i + 1].orientation);
+    for (std::size_t i = 0; i < n; ++i) {
+        const std::size_t a = i == 0 ? 0 : i - 1, b = i + 1 == n ? i : i + 1;
+        glm::dvec3 turn(0.0); // from key a to key b, in key i's frame
+        for (std::size_t k = a; k < b; ++k)
+            turn += chords[k];
+        rates[i] = turn / (keys_[b].timeS - keys_[a].timeS);
+    }
+    // SQUAD(s) = slerp(slerp(q_i, q_{i+1}, s), slerp(A_i, B_{i+1}, s), 2 s (1 - s)) has the rates
+    // q_i* dq/ds = L_i + 2 log(q_i* A_i) at s = 0 and q_{i+1}* dq/ds = L_i - 2 log(q_{i+1}* B_{i+1})
+    // at s = 1. Setting both to h_i W gives A_i = q_i exp((h_i W_i - L_i) / 2) and
+    // B_{i+1} = q_{i+1} exp((L_i - h_i W_{i+1}) / 2): dq/dt is the same on both sides of every key.
+    // With equal spacing both are Shoemake's q_i exp(-(log(q_i* q_{i+1}) + log(q_i* q_{i-1})) / 4),
+    // which with uneven spacing would leave a jump in angular velocity of order (h_i - h_{i-1}) / h.
+    leaving_.resize(n);
+    arriving_.resize(n);
+    for (std::size_t i = 0; i + 1 < n; ++i) {
+        const double h = keys_[i + 1].timeS - keys_[i].timeS;
+        leaving_[i] = keys_[i].orientation * expOf(0.5 * (h * rates[i] - chords[i]));
+        arriving_[i + 1] = keys_[i + 1].orientation * expOf(0.5 * (chords[i] - h * rates[i + 1]));
     }
 }
 
@@ -73,16 +135,9 @@ glm::dquat CameraPath::orientationAt(double timeS) const
         return keys_.back().orientation;
     double s = 0.0;
     const std::size_t i = segment(timeS, s);
-    const glm::dquat& a = keys_[i].orientation;
-    const glm::dquat& b = keys_[i + 1].orientation; // dot(a, b) >= 0: the short arc
-    // Slerp (Shoemake 1985): sin((1-s) theta)/sin theta a + sin(s theta)/sin theta b; nearly equal
-    // keys (theta below 1e-6 rad) use the normalised linear blend, which it equals to O(theta^2).
-    const double cosTheta = std::min(1.0, glm::dot(a, b));
-    const double theta = std::acos(cosTheta);
-    if (theta < 1e-6)
-        return glm::normalize((1.0 - s) * a + s * b);
-    const double sinTheta = std::sin(theta);
-    return (std::sin((1.0 - s) * theta) / sinTheta) * a + (std::sin(s * theta) / sinTheta) * b;
+    const glm::dquat along = slerp(keys_[i].orientation, keys_[i + 1].orientation, s);
+    const glm::dquat inner = slerp(leaving_[i], arriving_[i + 1], s);
+    return slerp(along, inner, 2.0 * s * (1.0 - s));
 }
 
 } // namespace aurorawall::scene

@@ -3,10 +3,13 @@
 // double. Positions follow a cubic Hermite spline whose tangents are finite differences of the
 // neighbouring keys (one-sided at the ends), so the position and the velocity are continuous (C1)
 // and keys on a straight line at constant speed give that line exactly. Orientations are unit
-// quaternions interpolated by slerp between consecutive keys, each key's quaternion first made to
-// lie in the same hemisphere as the previous one (non-negative dot product), so the camera always
-// turns the short way and never flips. Before the first key and after the last the camera holds
-// still. The path is a function of animation time alone: it plays the same at any frame rate.
+// quaternions joined by a SQUAD spline (Shoemake 1987) whose control points are set from
+// time-weighted tangents, so the orientation and the angular velocity are continuous (C1) at every
+// key, for uneven key times too (camera_path.cpp gives the construction). Each key's quaternion is
+// first made to lie in the same hemisphere as the previous one (non-negative dot product), so the
+// camera turns the short way between keys and never flips. Before the first key and after the last
+// the camera holds still. The path is a function of animation time alone: it plays the same at any
+// frame rate.
 #include <glm/glm.hpp>
 #include <glm/gtc/quaternion.hpp>
 
@@ -48,6 +51,9 @@ private:
 
     std::vector<CameraKey> keys_;
     std::vector<glm::dvec3> tangentsKmPerS_; // dp/dt at each key
+    // SQUAD's inner control points: leaving[i] starts segment i, arriving[i] ends segment i - 1.
+    std::vector<glm::dquat> leaving_;
+    std::vector<glm::dquat> arriving_;
 };
 
 } // namespace aurorawall::scene

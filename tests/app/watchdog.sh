@@ -1,8 +1,10 @@
 #!/bin/bash
 # Never hang: a rank stopped with SIGSTOP is named by the master within --rank-timeout (+ 5 s) and the
-# job exits 3; a rank killed with SIGKILL ends the job (through Open MPI) within a few seconds; a
-# 4-rank wall on 2 cores at --rank-timeout 2 raises no false alarm. Movies: 3 frames give 3 PNGs,
-# 3 EXRs and frames.csv with each frame's exact time, and the last frame equals wall.png.
+# job exits 3; a rank whose main thread hangs while its heartbeat thread runs (the test hook
+# AURORAWALL_TEST_HANG_MAIN_THREAD) likewise; a rank killed with SIGKILL ends the job (through Open
+# MPI) within a few seconds; a 4-rank wall on 2 cores at --rank-timeout 2 raises no false alarm.
+# Movies: 3 frames give 3 PNGs, 3 EXRs and frames.csv with each frame's exact time, and the last
+# frame equals wall.png.
 source "$(dirname "$0")/lib.sh"
 wall3="$WALLS/desktop-3x1.toml"
 timeout_s=3
@@ -27,7 +29,7 @@ rank_pid() {
     echo "$pid"
 }
 
-# wait_end NAME LIMIT_S: waits for the job to end, at most LIMIT_S seconds; sets status and took.
+# wait_end NAME LIMIT_S [EVENT]: waits for the job to end, at most LIMIT_S seconds; sets status and took.
 wait_end() {
     local start; start=$(now)
     for _ in $(seq $(( $2 * 10 ))); do kill -0 $job 2>/dev/null || break; sleep 0.1; done
@@ -36,7 +38,17 @@ wait_end() {
     fi
     status=0; wait $job || status=$?
     took=$(elapsed "$start")
-    note "$1: the job exited $status ${took} s after the signal"
+    note "$1: the job exited $status ${took} s after ${3:-the signal}"
+}
+
+# wait_frame NAME FRAME: waits until the master has printed FRAME's line.
+wait_frame() {
+    for _ in $(seq 600); do
+        grep -q "^frame $2 " "$WORK/$1.log" && return
+        kill -0 $job 2>/dev/null || { cat "$WORK/$1.log" "$WORK/$1.err"; fail "$1: the job ended early"; }
+        sleep 0.1
+    done
+    fail "$1: no frame $2"
 }
 
 note "SIGSTOP rank 2 at --rank-timeout $timeout_s"
@@ -52,6 +64,20 @@ grep -q "rank 1 (" "$WORK/stop.err" && fail "stop: rank 1 was named too"
 for _ in $(seq 50); do kill -0 "$victim" 2>/dev/null || break; sleep 0.1; done
 kill -0 "$victim" 2>/dev/null && { kill -KILL "$victim"; fail "stop: the stopped rank's process is left behind"; }
 
+note "rank 2's main thread hangs drawing frame 3, --rank-timeout $timeout_s"
+AURORAWALL_TEST_HANG_MAIN_THREAD=2:3 start_long_run hang
+victim=$(rank_pid hang 2)
+wait_frame hang 2 # the gather of frame 2 is printed just before every rank starts frame 3
+wait_end hang $(( timeout_s + 5 )) "the hang"
+cat "$WORK/hang.err" >&2
+[ "$status" -eq 3 ] || fail "hang: exit status $status, expected 3"
+grep -q "hung: rank 2 (drawing frame 3, its main thread without progress for " "$WORK/hang.err" ||
+    fail "hang: stderr does not name rank 2 drawing frame 3"
+grep -q "rank 1 (" "$WORK/hang.err" && fail "hang: rank 1 was named too"
+grep -q "no heartbeat" "$WORK/hang.err" && fail "hang: taken for a silent rank"
+for _ in $(seq 50); do kill -0 "$victim" 2>/dev/null || break; sleep 0.1; done
+kill -0 "$victim" 2>/dev/null && { kill -KILL "$victim"; fail "hang: the hung rank's process is left behind"; }
+
 note "SIGKILL rank 1"
 start_long_run kill
 victim=$(rank_pid kill 1)
@@ -62,7 +88,7 @@ wait_end kill 10
 note "4 ranks on 2 cores, --rank-timeout 2: no false alarm"
 aw_mpirun 4 render --wall "$DATA/tiny-2x2.toml" --scene "$SCENE" --frames 40 --rank-timeout 2 --quiet \
     --out "$WORK/slow" > "$WORK/slow.log" 2>&1 || { cat "$WORK/slow.log"; fail "slow: the run failed"; }
-grep -q "heartbeat" "$WORK/slow.log" && fail "slow: a false alarm"
+grep -q "heartbeat\|hung" "$WORK/slow.log" && fail "slow: a false alarm"
 
 note "movie: 3 frames"
 # The test scene's curtains drift along themselves, so the camera flies (20 km/s) to make frames differ.

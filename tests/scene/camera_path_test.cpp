@@ -1,5 +1,6 @@
-// Keyed camera paths: C1 positions, orientations without flips, exact at the keys, held outside
-// them, independent of the frame step; the benchmark flight as a path; errors naming file:line:key.
+// Keyed camera paths: C1 positions and orientations (against slerp's and Shoemake's even-spacing
+// SQUAD's kinks), orientations without flips, exact at the keys, held outside them, independent of
+// the frame step; the benchmark flight as a path; errors naming file:line:key.
 #include "cluster/master_clock.h"
 #include "common/input_error.h"
 #include "components/registry.h"
@@ -9,8 +10,12 @@
 
 #include <gtest/gtest.h>
 
+#define GLM_ENABLE_EXPERIMENTAL // glm::squad and glm::intermediate, Shoemake's SQUAD as glm writes it
+#include <glm/gtx/quaternion.hpp>
+
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <string>
 
 using namespace aurorawall;
@@ -51,6 +56,42 @@ std::vector<CameraKey> curvedKeys()
     return keys;
 }
 
+// The angular velocity (rad/s, planet frame) at t from one side: w = 2 vec(dq/dt q*), with dq/dt
+// the second-order one-sided difference of step `step` (negative: from before t).
+glm::dvec3 angularVelocity(const std::function<glm::dquat(double)>& q, double t, double step)
+{
+    const glm::dquat rate = (-3.0 * q(t) + 4.0 * q(t + step) - q(t + 2.0 * step)) * (1.0 / (2.0 * step));
+    const glm::dquat w = rate * glm::conjugate(q(t));
+    return 2.0 * glm::dvec3(w.x, w.y, w.z);
+}
+
+// Slerp between consecutive keys (already in one hemisphere), which turns at a constant rate within
+// each segment and so changes its angular velocity abruptly at every key.
+glm::dquat piecewiseSlerp(const std::vector<CameraKey>& keys, double t)
+{
+    std::size_t i = 0;
+    while (i + 2 < keys.size() && t >= keys[i + 1].timeS)
+        ++i;
+    const double s = std::clamp((t - keys[i].timeS) / (keys[i + 1].timeS - keys[i].timeS), 0.0, 1.0);
+    return glm::slerp(keys[i].orientation, keys[i + 1].orientation, s);
+}
+
+// Shoemake's SQUAD (1987) by glm, with his control points s_i = q_i exp(-(log(q_i* q_{i+1}) +
+// log(q_i* q_{i-1})) / 4), which assume evenly spaced keys; s = q at the end keys.
+glm::dquat shoemakeSquad(const std::vector<CameraKey>& keys, double t)
+{
+    std::size_t i = 0;
+    while (i + 2 < keys.size() && t >= keys[i + 1].timeS)
+        ++i;
+    const auto control = [&](std::size_t k) {
+        return k == 0 || k + 1 == keys.size()
+                   ? keys[k].orientation
+                   : glm::intermediate(keys[k - 1].orientation, keys[k].orientation, keys[k + 1].orientation);
+    };
+    const double s = (t - keys[i].timeS) / (keys[i + 1].timeS - keys[i].timeS);
+    return glm::squad(keys[i].orientation, keys[i + 1].orientation, control(i), control(i + 1), s);
+}
+
 using aurorawall::test::loadError;
 
 } // namespace
@@ -65,6 +106,7 @@ TEST(CameraPath, ExactAtTheKeys)
         const CameraFrame got = scene::frameOf(path.orientationAt(keys[i].timeS));
         EXPECT_NEAR(glm::length(got.forward - want.forward), 0.0, 1e-14) << "key " << i;
         EXPECT_NEAR(glm::length(got.up - want.up), 0.0, 1e-14) << "key " << i;
+        EXPECT_EQ(path.orientationAt(keys[i].timeS), path.keys()[i].orientation) << "key " << i;
     }
 }
 
@@ -94,25 +136,124 @@ TEST(CameraPath, PositionAndVelocityAreContinuousAtTheKeys)
     }
 }
 
+TEST(CameraPath, AngularVelocityIsContinuousAtTheKeys)
+{
+    const CameraPath path(curvedKeys()); // uneven segments: 4, 1.5, 6.5 and 1 s
+    const std::vector<CameraKey>& keys = path.keys();
+    const auto squad = [&](double t) { return path.orientationAt(t); };
+    const auto slerped = [&](double t) { return piecewiseSlerp(keys, t); };
+    // The one-sided differences are off the derivative by |third derivative| eps^2 / 3: measured
+    // jumps of 6.9e-7, 6.9e-9 and 6.1e-11 rad/s at steps of 1e-3, 1e-4 and 1e-5 s at key 1 (1.6e-6,
+    // 1.6e-8, 1.9e-10 at key 3), falling as eps^2, so the spline itself does not jump. Slerp between
+    // the same keys jumps by 0.44 to 0.89 rad/s.
+    const double eps = 1e-4, tolerance = 1e-7;
+    for (std::size_t i = 1; i + 1 < keys.size(); ++i) {
+        const double t = keys[i].timeS;
+        const glm::dvec3 before = angularVelocity(squad, t, -eps), after = angularVelocity(squad, t, eps);
+        EXPECT_LT(glm::length(after - before), tolerance) << "key " << i;
+        EXPECT_GT(glm::length(after), 0.2) << "key " << i << ": the camera turns there";
+        const double slerpJump = glm::length(angularVelocity(slerped, t, eps) - angularVelocity(slerped, t, -eps));
+        EXPECT_GT(slerpJump, 0.4) << "key " << i << ": the measure sees slerp's kink";
+    }
+}
+
+// Keys at `times` turning by uneven steps (50, 80, 40, 90 deg), so that no key's Shoemake control
+// point is the key itself (glm::exp gives the zero quaternion for a zero vector).
+std::vector<CameraKey> unevenTurns(const std::vector<double>& times)
+{
+    const double degrees[] = {0.0, 50.0, 130.0, 170.0, 260.0};
+    std::vector<CameraKey> keys;
+    for (std::size_t i = 0; i < times.size(); ++i)
+        keys.push_back({times[i], glm::dvec3(0.0), scene::orientationOf(turned(degrees[i] * M_PI / 180.0))});
+    return keys;
+}
+
+TEST(CameraPath, EvenlySpacedKeysGiveShoemakesSquad)
+{
+    const CameraPath path(unevenTurns({0.0, 2.0, 4.0, 6.0, 8.0}));
+    double largest = 0.0;
+    for (double t = 0.0; t < 8.0; t += 1e-2)
+        largest = std::max(largest, angleBetween(path.orientationAt(t), shoemakeSquad(path.keys(), t)));
+    // glm's slerp takes the angle by acos, which resolves small angles only to about
+    // sqrt(2 x 1.1e-16) = 1.5e-8 rad per blend (measured: 6.0e-8 rad at most); control points
+    // different from Shoemake's would differ by the size of the turns (about 1e-2 rad and more).
+    EXPECT_LT(largest, 1e-6);
+}
+
+TEST(CameraPath, ShoemakesControlPointsKinkAtUnevenKeys)
+{
+    // The control for the time weighting: on keys at uneven times, SQUAD with Shoemake's control
+    // points jumps in angular velocity at the keys, this path does not.
+    const CameraPath path(unevenTurns({0.0, 4.0, 5.5, 12.0, 13.0}));
+    const std::vector<CameraKey>& keys = path.keys();
+    const auto shoemake = [&](double t) { return shoemakeSquad(keys, t); };
+    const auto squad = [&](double t) { return path.orientationAt(t); };
+    // Measured: Shoemake's jumps 0.47, 0.54 and 0.96 rad/s, this path's 1.1e-8 to 2.6e-8 rad/s (the
+    // differences' truncation at 1e-4 s, as in AngularVelocityIsContinuousAtTheKeys).
+    for (std::size_t i = 1; i + 1 < keys.size(); ++i) {
+        const double t = keys[i].timeS;
+        const double jump = glm::length(angularVelocity(shoemake, t, 1e-4) - angularVelocity(shoemake, t, -1e-4));
+        const double ours = glm::length(angularVelocity(squad, t, 1e-4) - angularVelocity(squad, t, -1e-4));
+        EXPECT_GT(jump, 0.4) << "key " << i;
+        EXPECT_LT(ours, 1e-7) << "key " << i;
+    }
+}
+
+TEST(CameraPath, OrientationsStayUnitQuaternions)
+{
+    const CameraPath path(curvedKeys());
+    double worst = 0.0;
+    for (double t = -1.0; t < 14.0; t += 1e-3)
+        worst = std::max(worst, std::abs(glm::length(path.orientationAt(t)) - 1.0));
+    EXPECT_LT(worst, 4.0 * 2.2e-16); // measured 4.4e-16: a few roundings of the three slerps
+}
+
 TEST(CameraPath, NoOrientationFlipsEvenForKeysOfOppositeSign)
 {
     std::vector<CameraKey> keys = curvedKeys();
     for (std::size_t i = 1; i < keys.size(); i += 2)
         keys[i].orientation = -keys[i].orientation; // the same rotations, quaternions of the other sign
     const CameraPath path(keys);
-    // Slerp turns at a constant rate within a segment: the angle between samples dt apart is at most
-    // the key step (60 deg) x dt / the shortest segment (1 s). The long way round (300 deg) would be
-    // five times more.
-    const double dt = 1e-3, keyStep = M_PI / 3.0, shortest = 1.0;
+    // Samples dt apart stay in one hemisphere (no jump to -q) and turn by at most twice the fastest
+    // key step, 60 deg in the 1 s segment, times dt: the spline's fastest turn is 1.24 times that
+    // (measured); the long way round (300 deg) would be five times.
+    const double dt = 1e-3, fastest = M_PI / 3.0;
     double largest = 0.0;
     glm::dquat last = path.orientationAt(-1.0);
     for (double t = -1.0 + dt; t < 14.0; t += dt) {
         const glm::dquat q = path.orientationAt(t);
+        ASSERT_GT(glm::dot(last, q), 0.0) << "at " << t << " s";
         largest = std::max(largest, angleBetween(last, q));
         last = q;
     }
-    EXPECT_LE(largest, keyStep * dt / shortest * (1.0 + 1e-6));
-    EXPECT_GT(largest, 0.5 * keyStep * dt / shortest); // the measure sees the fastest segment
+    EXPECT_LE(largest, 2.0 * fastest * dt);
+    EXPECT_GT(largest, fastest * dt); // the measure sees the fastest segment
+}
+
+TEST(CameraPath, TurnsOfAlmostHalfAWayRoundGoTheShortWay)
+{
+    // Keys 179 deg apart about the planet's z axis at uneven times: the camera turns 358 deg one way
+    // (never back), where the long way round for either step (181 deg the other way) would reverse it.
+    const glm::dvec3 z(0.0, 0.0, 1.0);
+    const double step = 179.0 * M_PI / 180.0;
+    for (const double sign : {1.0, -1.0}) {
+        const CameraPath path({{0.0, glm::dvec3(0.0), glm::angleAxis(0.0, z)},
+                               {1.0, glm::dvec3(0.0), sign * glm::angleAxis(step, z)},
+                               {3.5, glm::dvec3(0.0), glm::angleAxis(2.0 * step, z)}});
+        const double dt = 1e-3;
+        double turned = 0.0;
+        glm::dquat last = path.orientationAt(0.0);
+        for (double t = dt; t < 3.5 + dt / 2; t += dt) {
+            const glm::dquat q = path.orientationAt(t);
+            ASSERT_GT(glm::dot(last, q), 0.0) << "at " << t << " s";
+            const glm::dquat turn = glm::conjugate(last) * q; // about z only: all keys share the axis
+            ASSERT_GT(turn.z * turn.w, 0.0) << "at " << t << " s: the camera turns back";
+            turned += angleBetween(last, q);
+            last = q;
+        }
+        EXPECT_NEAR(turned, 2.0 * step, 1e-9);
+        EXPECT_EQ(path.orientationAt(3.5), path.keys().back().orientation);
+    }
 }
 
 TEST(CameraPath, HoldsStillBeforeTheFirstKeyAndAfterTheLast)
@@ -176,6 +317,9 @@ TEST(CameraPath, TheBenchmarkPathIsTheStraightBenchmarkFlight)
         EXPECT_LT(glm::length(s.cameraBack - k.cameraBack), 1e-12) << "frame " << frame;
         EXPECT_LT(glm::length(s.cameraUp - k.cameraUp), 1e-12) << "frame " << frame;
         EXPECT_LT(glm::length(s.cameraRight - k.cameraRight), 1e-12) << "frame " << frame;
+        // Both keys look the same way: the spline keeps that orientation bit for bit in between.
+        EXPECT_EQ(keyed.camera.path.orientationAt(k.timeS), keyed.camera.path.keys()[0].orientation)
+            << "frame " << frame;
     }
     EXPECT_LT(largest, 1e-9); // km, over 764.5 km of flight
 }

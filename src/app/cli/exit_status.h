@@ -4,7 +4,8 @@
 //   1  runtime failure: the command line was accepted but the run failed (a file that cannot be read
 //      or written or whose contents are malformed, no GL context, a shader that does not compile)
 //   2  usage error: the command line itself is wrong (common/input_error.h, UsageError)
-//   3  (render) a rank fell silent for longer than --rank-timeout: the master ends the job
+//   3  (render) a rank fell silent for longer than --rank-timeout, or its main thread hung (no
+//      progress for longer than the timeout and 4 frames): the master ends the job
 //      (cluster::kRankSilentExitStatus, cluster/watchdog.h)
 #include <exception>
 #include <functional>
