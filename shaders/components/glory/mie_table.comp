@@ -29,7 +29,10 @@ layout(std430, binding = 0) readonly buffer Nodes { Node nodes[]; };
 // times (2n+1)/(n(n+1)), the factor of S1 and S2. Pass 1 first keeps Dₙ(mx) in the x component.
 layout(std430, binding = 1) buffer Coefficients { vec4 coefficients[]; };
 layout(std430, binding = 2) buffer Efficiencies { float scatteringEfficiencies[]; }; // per node
-layout(std430, binding = 3) readonly buffer Cosines { float cosines[]; };             // μ = cos θ per angle
+// Per angle μ = cos θ as σ(1 − s), σ = ±1 the nearer end and s = 1 − σμ ≥ 0 from the caller in double:
+// μ itself rounded to float near ±1 would move the angle (by 0.002° at 0.1° from the antisolar point,
+// where the glory's rings are).
+layout(std430, binding = 3) readonly buffer Cosines { vec2 cosines[]; };
 layout(std430, binding = 4) buffer Sums { float s11Sums[]; }; // [(uFirstChunk + chunk) · uAngleCount + angle]
 
 uniform int uFirstNode; // the current wavelength's first node
@@ -93,7 +96,7 @@ void coefficientsOfNode(int j)
 // exceed it).
 void s11OfAngle(int angle, int chunk)
 {
-    float mu = cosines[angle];
+    float sigma = cosines[angle].x, s = cosines[angle].y;
     float total = 0.0;
     for (int j = chunk * uChunkNodes; j < min(uNodeCount, (chunk + 1) * uChunkNodes); ++j) {
         Node node = nodes[uFirstNode + j];
@@ -102,11 +105,12 @@ void s11OfAngle(int angle, int chunk)
         vec2 s1 = vec2(0.0), s2 = vec2(0.0);
         float piPrevious = 0.0, pi = 1.0; // π₀, π₁
         for (int n = 1; n <= node.terms; ++n) {
-            float tau = float(n) * mu * pi - float(n + 1) * piPrevious;
+            float muPi = sigma * (pi - s * pi); // μ πₙ
+            float tau = float(n) * muPi - float(n + 1) * piPrevious;
             vec4 c = coefficients[j * uTermStride + n - 1];
             s1 += c.xy * pi + c.zw * tau;
             s2 += c.xy * tau + c.zw * pi;
-            float piNext = (float(2 * n + 1) * mu * pi - float(n + 1) * piPrevious) / float(n);
+            float piNext = (float(2 * n + 1) * muPi - float(n + 1) * piPrevious) / float(n);
             piPrevious = pi;
             pi = piNext;
         }

@@ -107,9 +107,14 @@ PhaseTable phaseTableOnGpu(const mie::DropSizeDistribution& drops, const GloryTa
         for (const Node& n : rows.back().nodes)
             termStride = std::max(termStride, int(n.terms));
     }
-    std::vector<float> cosines(size_t(angleCount), 0.0f);
-    for (int a = 0; a < angleCount; ++a)
-        cosines[size_t(a)] = float(-std::cos(spec.angles.angle(a))); // cos θ, θ = π − γ
+    // cos θ = −cos γ (θ = π − γ) as σ(1 − s) (mie_table.comp): s = 2 sin²(γ/2) toward the antisolar
+    // point, 2 cos²(γ/2) toward the light.
+    std::vector<glm::vec2> cosines;
+    for (int a = 0; a < angleCount; ++a) {
+        const double gamma = spec.angles.angle(a);
+        cosines.push_back(gamma <= 0.5 * kPi ? glm::vec2(-1.0f, float(2.0 * std::pow(std::sin(0.5 * gamma), 2)))
+                                              : glm::vec2(1.0f, float(2.0 * std::pow(std::cos(0.5 * gamma), 2))));
+    }
 
     const gl::ShaderModule module = gl::readShaderModule(shaderDir + "/components/glory/mie_table.comp");
     gl::Program coefficients = pass(module, 1);
@@ -118,7 +123,7 @@ PhaseTable phaseTableOnGpu(const mie::DropSizeDistribution& drops, const GloryTa
         storageBuffer(GLsizeiptr(nodes.size() * sizeof(Node)), nodes.data(), 0),
         storageBuffer(GLsizeiptr(maxNodes) * termStride * GLsizeiptr(4 * sizeof(float)), nullptr, 1),
         storageBuffer(GLsizeiptr(nodes.size() * sizeof(float)), nullptr, 2),
-        storageBuffer(GLsizeiptr(cosines.size() * sizeof(float)), cosines.data(), 3),
+        storageBuffer(GLsizeiptr(cosines.size() * sizeof(glm::vec2)), cosines.data(), 3),
         storageBuffer(GLsizeiptr(chunks) * angleCount * GLsizeiptr(sizeof(float)), nullptr, 4)};
     for (gl::Program* p : {&coefficients, &sums}) {
         p->set("uTermStride", termStride);
