@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <stdexcept>
 
 namespace aurorawall::glory {
 
@@ -116,12 +117,22 @@ PhaseTable phaseTableOnGpu(const mie::DropSizeDistribution& drops, const GloryTa
                                               : glm::vec2(1.0f, float(2.0 * std::pow(std::cos(0.5 * gamma), 2))));
     }
 
+    // One wavelength's coefficients in one storage block: GL 4.5 guarantees 16 MiB (the default table
+    // needs 13 MB); larger drops or finer steps may not fit.
+    const GLsizeiptr coefficientBytes = GLsizeiptr(maxNodes) * termStride * GLsizeiptr(4 * sizeof(float));
+    GLint largestBlock = 0;
+    glGetIntegerv(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &largestBlock);
+    if (coefficientBytes > GLsizeiptr(largestBlock))
+        throw std::runtime_error("glory phase table on the GPU: " + std::to_string(coefficientBytes >> 20) +
+                                 " MiB of Mie coefficients per wavelength exceed the GL's largest storage block (" +
+                                 std::to_string(largestBlock >> 20) + " MiB)");
+
     const gl::ShaderModule module = gl::readShaderModule(shaderDir + "/components/glory/mie_table.comp");
     gl::Program coefficients = pass(module, 1);
     gl::Program sums = pass(module, 2);
     const GLuint buffers[5] = {
         storageBuffer(GLsizeiptr(nodes.size() * sizeof(Node)), nodes.data(), 0),
-        storageBuffer(GLsizeiptr(maxNodes) * termStride * GLsizeiptr(4 * sizeof(float)), nullptr, 1),
+        storageBuffer(coefficientBytes, nullptr, 1),
         storageBuffer(GLsizeiptr(nodes.size() * sizeof(float)), nullptr, 2),
         storageBuffer(GLsizeiptr(cosines.size() * sizeof(glm::vec2)), cosines.data(), 3),
         storageBuffer(GLsizeiptr(chunks) * angleCount * GLsizeiptr(sizeof(float)), nullptr, 4)};

@@ -11,8 +11,9 @@
 namespace aurorawall::glory {
 
 // Needs a current OpenGL 4.5 context; reads components/glory/mie_table.comp under shaderDir (throws
-// InputError naming it if missing). mieSeries counts the Mie series summed, as phaseTable() does;
-// spec.threads is not used.
+// InputError naming it if missing). Throws std::runtime_error when one wavelength's Mie coefficients
+// (nodes × terms × 16 bytes) exceed GL_MAX_SHADER_STORAGE_BLOCK_SIZE. mieSeries counts the Mie series
+// summed, as phaseTable() does; spec.threads is not used.
 PhaseTable phaseTableOnGpu(const mie::DropSizeDistribution& drops, const GloryTableSpec& spec,
                            const std::string& shaderDir);
 
