@@ -3,6 +3,7 @@
 #include "app/accuracy_scene.h"
 #include "app/cli/command_line.h"
 #include "app/cli/exit_status.h"
+#include "app/glory_accuracy.h"
 #include "atmosphere/accuracy_report.h"
 
 #include <cstdio>
@@ -23,6 +24,7 @@ const std::vector<std::string> kSceneOptions = {"wall", "size", "pixels", "frame
 const char* kUsage =
     "Usage: aurorawall accuracy --airmass | --sky [options]\n"
     "       aurorawall accuracy --scene FILE [--wall FILE] [--size WxH] [--pixels N] [--frame K] [--feature-costs]\n"
+    "       aurorawall accuracy --glory FILE [--wall FILE] [--size WxH] [--runs N]\n"
     "Error against cost of the approximations (docs/ACCURACY.md), on one headless EGL context in one\n"
     "process (no mpirun).\n"
     "--airmass: every airmass method over the sweep's rays; --sky: the single-scattering sky with 1, 2, 4 and\n"
@@ -36,6 +38,11 @@ const char* kUsage =
     "planet_texture and sky are removed (the CPU reference does not model them). --feature-costs: instead,\n"
     "the frame time of each\n"
     "feature toggled alone, the full scene (the paper's table 2).\n"
+    "--glory: error against cost of the glory's knobs on a scene that lists it: the table's resolution (glory\n"
+    "angles, wavelengths, size-parameter step) against the error of its colour per angle and the time to build\n"
+    "it, compared with the finer table of the CPU reference; then the colour per pixel (the colour table, or 1\n"
+    "to 32 wavelengths per pixel spaced evenly or importance sampled) against the error of the image and the\n"
+    "time per frame, compared with the GPU render from the reference's table.\n"
     "Exit status: 0 success, 1 runtime failure (a file, no GL context, a shader), 2 usage error.\n";
 
 // "WxH" with positive W and H.
@@ -63,6 +70,7 @@ int runAccuracyCommand(int argc, char** argv, std::ostream& out, std::ostream& e
             ("airmass", po::bool_switch(&airmass), "the airmass methods")
             ("sky", po::bool_switch(&sky), "the several-lights sky")
             ("scene", po::value(&scene.sceneFile), "the aurora's quality knobs on this scene file")
+            ("glory", po::value(&scene.sceneFile), "the glory's quality knobs on this scene file")
             ("repeat", po::value(&shader.airmassRepeat)->default_value(shader.airmassRepeat),
              "--airmass: airmass evaluations per shader invocation")
             ("copies", po::value(&shader.copies),
@@ -89,11 +97,14 @@ int runAccuracyCommand(int argc, char** argv, std::ostream& out, std::ostream& e
             out << cli.help();
             return;
         }
-        const bool sceneRun = cli.given("scene");
+        const bool gloryRun = cli.given("glory");
+        if (gloryRun && cli.given("scene"))
+            throw cli.usageError("--glory cannot be combined with --scene");
+        const bool sceneRun = cli.given("scene") || gloryRun;
         if (sceneRun && (airmass || sky))
             throw cli.usageError("--scene cannot be combined with --airmass or --sky");
         if (!sceneRun && !airmass && !sky)
-            throw cli.usageError("choose --airmass, --sky or --scene FILE");
+            throw cli.usageError("choose --airmass, --sky, --scene FILE or --glory FILE");
         for (const std::string& option : sceneRun ? kShaderOptions : kSceneOptions)
             if (cli.given(option))
                 throw cli.usageError("--" + option + " applies to " +
@@ -101,14 +112,17 @@ int runAccuracyCommand(int argc, char** argv, std::ostream& out, std::ostream& e
 
         if (sceneRun) {
             if (scene.sceneFile.empty())
-                throw cli.usageError("--scene needs a file name");
+                throw cli.usageError(std::string(gloryRun ? "--glory" : "--scene") + " needs a file name");
             if (!parseSize(size, scene.sizePx))
                 throw cli.usageError("--size must be WxH with positive whole W and H (got '" + size + "')");
             if (scene.frame < 0 || scene.frame > 100000000)
                 throw cli.usageError("--frame must be a whole number in [0, 1e8] (got " + std::to_string(scene.frame) + ")");
             if (scene.pixels < 1 || scene.runs < 1 || scene.threads < 1 || !(scene.referenceStepKm > 0.0))
                 throw cli.usageError("--pixels, --runs, --threads and --reference-step-km must be positive");
-            runSceneAccuracy(scene, out);
+            if (gloryRun)
+                runGloryAccuracy(scene, out);
+            else
+                runSceneAccuracy(scene, out);
             return;
         }
         if (shader.airmassRepeat < 1 || shader.viewSteps < 1 || shader.lightSteps < 1 ||

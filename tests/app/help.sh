@@ -77,7 +77,10 @@ STDIN="$WORK/bad-rays.csv" expect 1 "^aurorawall airmass: line 2: " airmass
 # tables
 expect 0 "--energy-kev" tables --help
 expect 2 "^aurorawall tables: unrecognised option '--bogus'" tables deposition --energy-kev 5 --bogus
-expect 2 "^aurorawall tables: unknown table 'ozone' \(allowed: deposition\)" tables ozone --energy-kev 5
+expect 2 "^aurorawall tables: unknown table 'ozone' \(allowed: deposition, glory\)" tables ozone --energy-kev 5
+expect 2 "^aurorawall tables: glory takes --scene FILE and nothing else" tables glory --energy-kev 5
+expect 2 "^aurorawall tables: deposition takes --energy-kev E" tables deposition
+expect 1 "^aurorawall tables: .*no-such-scene.toml" tables glory --scene "$WORK/no-such-scene.toml"
 rc=0
 "$AW" tables deposition --energy-kev 5 >/dev/full 2>"$WORK/err" || rc=$?
 [ $rc = 1 ] && [ "$(grep -c '' "$WORK/err")" = 1 ] && grep -q "^aurorawall tables: " "$WORK/err" ||
@@ -87,7 +90,9 @@ echo "ok   1  aurorawall tables deposition --energy-kev 5 >/dev/full: $(cat "$WO
 # accuracy: one parser for --airmass, --sky and --scene.
 expect 0 "--scene" accuracy --help
 expect 2 "^aurorawall accuracy: unrecognised option '--bogus'" accuracy --bogus
-expect 2 "^aurorawall accuracy: choose --airmass, --sky or --scene FILE" accuracy
+expect 2 "^aurorawall accuracy: choose --airmass, --sky, --scene FILE or --glory FILE" accuracy
+expect 2 "^aurorawall accuracy: --glory cannot be combined with --scene" accuracy --glory "$SCENE" --scene "$SCENE"
+expect 1 "^aurorawall accuracy: .*does not list glory" accuracy --glory "$SCENE"
 expect 2 "^aurorawall accuracy: --repeat applies to --airmass and --sky only" accuracy --scene "$SCENE" --repeat 4
 expect 1 "^aurorawall accuracy: .*nonexistent-scene\.toml" accuracy --scene "$WORK/nonexistent-scene.toml"
 

@@ -20,7 +20,7 @@ glory::GloryTableSpec smallSpec()
 {
     glory::GloryTableSpec spec;
     spec.angles.gloryCount = 64;
-    spec.angles.wideCount = 32;
+    spec.angles.middleCount = 32;
     spec.wavelengthCount = 5;
     spec.threads = 2;
     return spec;

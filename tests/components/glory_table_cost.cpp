@@ -73,7 +73,7 @@ int main(int argc, char** argv)
     std::printf("renderer: %s\n", context->rendererName().c_str());
     glory::GloryTableSpec small;
     small.angles.gloryCount = 101;
-    small.angles.wideCount = 40;
+    small.angles.middleCount = 40;
     small.wavelengthCount = 11;
     small.threads = 2;
     compare("small table", small, shaders);

@@ -28,7 +28,8 @@ GloryTableSpec ringSpec(int wavelengths)
     GloryTableSpec spec;
     spec.angles.glorySpanRad = 10.0 * kDegree;
     spec.angles.gloryCount = 201;
-    spec.angles.wideCount = 16;
+    spec.angles.middleCount = 16;
+    spec.angles.forwardCount = 16;
     spec.wavelengthCount = wavelengths;
     spec.firstNm = 400.0;
     spec.lastNm = 700.0;
@@ -143,7 +144,8 @@ TEST(GloryTable, SingleDropIsTheMiePhaseFunction)
 {
     GloryTableSpec spec = ringSpec(2);
     spec.angles.glorySpanRad = 30.0 * kDegree;
-    spec.angles.wideCount = 3000;
+    spec.angles.middleCount = 3000;
+    spec.angles.forwardCount = 600;
     const PhaseTable table = phaseTable(mie::DropSizeDistribution::singleSize(3.0), spec);
     for (int w = 0; w < 2; ++w) {
         const double nm = table.wavelengthsNm[size_t(w)];

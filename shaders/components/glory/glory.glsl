@@ -8,7 +8,8 @@ uniform float uDeckOpticalThickness;
 uniform float uDeckAsymmetry;
 uniform vec3 uGloryLightDirection; // unit, planet frame, toward the light
 uniform vec3 uGloryLightRgb;       // its illuminance above the atmosphere per linear-sRGB primary (lux)
-uniform vec4 uGloryAngleGrid;      // the table's angles: span, pi - span, samples in the span, samples above
+uniform vec3 uGloryAngleSpans;     // the table's angle segments (radians): the glory, the middle, the forward peak
+uniform vec3 uGloryAngleCounts;    // and their samples
 uniform int uGlorySampling;        // 0: the colour table; 1, 2: wavelengths per pixel (uniform, importance)
 uniform int uGloryWavelengthsPerPixel;
 uniform sampler2D uGloryColour;    // linear sRGB per angle: the light's E P / 4 pi over all wavelengths
@@ -42,8 +43,8 @@ float gloryPixelJitter(vec3 d)
 // The glory's light per unit geometric factor at gamma from the antisolar point (linear sRGB).
 vec3 gloryColour(float gamma, vec3 direction)
 {
-    float samples = uGloryAngleGrid.z + uGloryAngleGrid.w;
-    float u = (gloryAngleIndex(gamma, uGloryAngleGrid.x, uGloryAngleGrid.y, uGloryAngleGrid.z, uGloryAngleGrid.w) + 0.5) / samples;
+    float samples = uGloryAngleCounts.x + uGloryAngleCounts.y + uGloryAngleCounts.z;
+    float u = (gloryAngleIndex(gamma, uGloryAngleSpans, uGloryAngleCounts) + 0.5) / samples;
     if (uGlorySampling == 0)
         return texture(uGloryColour, vec2(u, 0.5)).rgb;
     float jitter = gloryPixelJitter(direction);

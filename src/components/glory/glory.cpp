@@ -50,10 +50,10 @@ std::string tableKey(const Settings& s)
     const optics::GloryTableSpec& t = s.table;
     char text[512];
     std::snprintf(text, sizeof text,
-                  "glory phase table v1; drops %a um variance %a; angles %a rad x %d + %d; wavelengths %d from %a "
+                  "glory phase table v2; drops %a um variance %a; angles %a rad x %d + %d + %a rad x %d; wavelengths %d from %a "
                   "to %a nm; size parameter step %a; disc radius %a rad; executable %s",
                   s.effectiveRadiusUm, s.effectiveVariance, t.angles.glorySpanRad, t.angles.gloryCount,
-                  t.angles.wideCount, t.wavelengthCount, t.firstNm, t.lastNm, t.sizeParameterStep,
+                  t.angles.middleCount, t.angles.forwardSpanRad, t.angles.forwardCount, t.wavelengthCount, t.firstNm, t.lastNm, t.sizeParameterStep,
                   s.light.discRadiusRad(), io::executableDigest().c_str());
     return text;
 }
@@ -147,8 +147,9 @@ public:
         program.set("uDeckAsymmetry", float(asymmetry_));
         program.set("uGloryLightDirection", glm::vec3(s_.lightDirection));
         program.set("uGloryLightRgb", glm::vec3(lightRgb_));
-        program.set("uGloryAngleGrid", glm::vec4(float(g.glorySpanRad), float(kPi - g.glorySpanRad), float(g.gloryCount),
-                                                 float(g.wideCount)));
+        program.set("uGloryAngleSpans", glm::vec3(float(g.glorySpanRad), float(kPi - g.glorySpanRad - g.forwardSpanRad),
+                                                  float(g.forwardSpanRad)));
+        program.set("uGloryAngleCounts", glm::vec3(float(g.gloryCount), float(g.middleCount), float(g.forwardCount)));
         program.set("uGlorySampling", static_cast<int>(s_.sampling));
         program.set("uGloryWavelengthsPerPixel", s_.wavelengthsPerPixel);
     }
@@ -281,7 +282,12 @@ public:
         optics::GloryTableSpec& table = s.table;
         table.angles.glorySpanRad = t.number("glory_span_deg", 1.0, 90.0, table.angles.glorySpanRad * 180.0 / kPi) * kPi / 180.0;
         table.angles.gloryCount = t.integer("glory_angles", 16, 8001, table.angles.gloryCount);
-        table.angles.wideCount = t.integer("wide_angles", 16, 4000, table.angles.wideCount);
+        table.angles.middleCount = t.integer("middle_angles", 16, 4000, table.angles.middleCount);
+        table.angles.forwardSpanRad =
+            t.number("forward_span_deg", 1.0, 90.0, table.angles.forwardSpanRad * 180.0 / kPi) * kPi / 180.0;
+        table.angles.forwardCount = t.integer("forward_angles", 16, 8000, table.angles.forwardCount);
+        if (table.angles.glorySpanRad + table.angles.forwardSpanRad > 0.9 * kPi)
+            t.fail("forward_span_deg", "glory_span_deg + forward_span_deg must leave at least 18 degrees between them");
         table.wavelengthCount = t.integer("table_wavelengths", 2, 401, table.wavelengthCount);
         table.sizeParameterStep = t.number("size_parameter_step", 0.005, 2.0, table.sizeParameterStep);
         s.sampling = static_cast<WavelengthSampling>(
@@ -324,7 +330,8 @@ optics::GloryTableSpec referenceTableSpec(const optics::GloryTableSpec& spec)
 {
     optics::GloryTableSpec fine = spec;
     fine.angles.gloryCount = 2 * spec.angles.gloryCount - 1;
-    fine.angles.wideCount = 2 * spec.angles.wideCount;
+    fine.angles.middleCount = 2 * spec.angles.middleCount;
+    fine.angles.forwardCount = 2 * spec.angles.forwardCount;
     fine.wavelengthCount = 81;
     fine.firstNm = optics::kCieFirstNm;
     fine.lastNm = optics::kCieLastNm;

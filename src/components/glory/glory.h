@@ -47,7 +47,7 @@ struct GloryTables {
 };
 GloryTables gloryTables(const Settings& settings);
 
-// The reference's finer table: twice the angles, every 5 nm from 380 to 780 nm, half the
+// The reference's finer table: twice the angles in each segment, every 5 nm from 380 to 780 nm, half the
 // size-parameter step.
 aurorawall::glory::GloryTableSpec referenceTableSpec(const aurorawall::glory::GloryTableSpec& spec);
 

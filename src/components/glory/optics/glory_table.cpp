@@ -115,14 +115,18 @@ long long phaseRow(const mie::DropSizeDistribution& drops, double wavelengthNm, 
 
 double AngleGrid::angle(int i) const
 {
+    const double middleSpan = kPi - glorySpanRad - forwardSpanRad;
     if (i < gloryCount)
         return glorySpanRad * i / (gloryCount - 1);
-    return glorySpanRad + (kPi - glorySpanRad) * (i - gloryCount + 1) / wideCount;
+    if (i < gloryCount + middleCount)
+        return glorySpanRad + middleSpan * (i - gloryCount + 1) / middleCount;
+    return glorySpanRad + middleSpan + forwardSpanRad * (i - gloryCount - middleCount + 1) / forwardCount;
 }
 
 double AngleGrid::index(double gammaRad) const
 {
-    return shared::gloryAngleIndex(gammaRad, glorySpanRad, kPi - glorySpanRad, gloryCount, wideCount);
+    return shared::gloryAngleIndex(gammaRad, {glorySpanRad, kPi - glorySpanRad - forwardSpanRad, forwardSpanRad},
+                                   {gloryCount, middleCount, forwardCount});
 }
 
 double PhaseTable::interpolate(int wavelength, double gammaRad) const

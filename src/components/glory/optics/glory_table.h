@@ -12,14 +12,19 @@
 
 namespace aurorawall::glory {
 
-// Angles γ from the antisolar point (γ = π − the scattering angle), in radians: gloryCount samples
-// evenly from 0 to glorySpanRad (where the rings are), then wideCount samples evenly above it up to π.
+// Angles γ from the antisolar point (γ = π − the scattering angle), in radians, in three even
+// segments: gloryCount samples from 0 to glorySpanRad (the rings), middleCount samples above it up to
+// π − forwardSpanRad (the cloudbow near 40°, the side scattering), and forwardCount samples over the
+// last forwardSpanRad up to π (the forward diffraction peak around the light: about 1° wide for 10 µm
+// drops).
 struct AngleGrid {
-    double glorySpanRad = 0.3490658503988659; // 20°
-    int gloryCount = 401;                      // 0.05° apart
-    int wideCount = 160;                       // 1° apart
+    double glorySpanRad = 0.3490658503988659;   // 20°
+    int gloryCount = 401;                        // 0.05° apart
+    int middleCount = 150;                       // 1° apart
+    double forwardSpanRad = 0.17453292519943295; // 10°
+    int forwardCount = 100;                      // 0.1° apart
 
-    int size() const { return gloryCount + wideCount; }
+    int size() const { return gloryCount + middleCount + forwardCount; }
     double angle(int i) const;
     // The continuous sample index of γ (the inverse of angle(), linear between samples), in
     // [0, size() − 1]; the shader's lookup (shaders/components/glory/glory_angle.glsl) is the same map.
