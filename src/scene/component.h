@@ -111,7 +111,7 @@ public:
     virtual std::string shaderShadeCall() const { return {}; }
     // Position of the shading step along the ray, front to back (lower first). The layers are
     // concentric shells: 10 lower atmosphere, 20 its sky light, 30 airglow, 40 aurora,
-    // 60 ground, 61 ground lights, 70 stars behind everything.
+    // 58 a cloud deck, 60 ground, 61 ground lights, 70 stars behind everything.
     virtual int compositingOrder() const { return 0; }
 
     // The GPU part (needs a current GL context): precomputes its tables.
