@@ -7,6 +7,8 @@
 #include "components/glory/optics/glory_table.h"
 #include "components/glory/optics/light_source.h"
 #include "components/glory/optics/water.h"
+#include "components/registry.h"
+#include "scene/scene.h"
 
 #include <boost/math/quadrature/gauss_kronrod.hpp>
 #include <gtest/gtest.h>
@@ -262,4 +264,71 @@ TEST(GloryRings, TheSunsDiscHidesTheGloryOfLargeDrops)
     EXPECT_LT(withDisc.firstRingContrast, 0.03);
     EXPECT_GT(pointSun.firstRingContrast, 0.15);
     EXPECT_GT(ringsOf(20.0, 0.0025, 0.533).firstRingContrast, 0.06);
+}
+
+namespace {
+
+// Writes a scene file into the test's temporary folder and returns its path.
+std::string sceneFile(const std::string& name, const std::string& text)
+{
+    const std::string path = ::testing::TempDir() + name;
+    FILE* f = std::fopen(path.c_str(), "w");
+    std::fputs(text.c_str(), f);
+    std::fclose(f);
+    return path;
+}
+
+std::string loadError(const std::string& path)
+{
+    try {
+        components::loadScene(path);
+    } catch (const std::exception& e) {
+        return e.what();
+    }
+    return "";
+}
+
+const std::string kDeck = "[scene]\nname = \"deck\"\ncomponents = [\"planet\", \"atmosphere\", \"glory\"]\n"
+                          "[camera]\nlatitude_deg = 60.0\nlongitude_deg = 10.0\naltitude_km = 3.0\n"
+                          "heading_deg = 0.0\nelevation_deg = -10.0\n";
+const std::string kLight = "[glory.light]\nsite_latitude_deg = 60.0\nsite_longitude_deg = 10.0\n"
+                           "elevation_deg = 20.0\nazimuth_deg = 180.0\n";
+
+} // namespace
+
+// A scene derived from one with a glory changes its drops and keeps its light.
+TEST(GlorySettings, DerivedSceneKeepsItsBasesLight)
+{
+    const std::string base = std::string(AURORAWALL_SOURCE_DIR) + "/config/scenes/glory-flight.toml";
+    const std::string derived =
+        sceneFile("derived-glory.toml", "[scene]\nbase = \"" + base + "\"\n[glory]\neffective_radius_um = 5.0\n");
+    const scene::Scene a = components::loadScene(base), b = components::loadScene(derived);
+    const auto& sa = a.settings<components::glory::Settings>();
+    const auto& sb = b.settings<components::glory::Settings>();
+    EXPECT_EQ(sb.effectiveRadiusUm, 5.0);
+    EXPECT_EQ(sb.lightDirection, sa.lightDirection);
+    EXPECT_GT(glm::length(sa.lightDirection - glm::dvec3(0.0, 0.0, 1.0)), 0.1);
+}
+
+// Bad glory tables: one error naming the file, the line and the key.
+TEST(GlorySettings, BadInputNamesFileLineAndKey)
+{
+    struct Case {
+        std::string name, text, expected;
+    };
+    const std::vector<Case> cases = {
+        {"no-light.toml", kDeck + "[glory]\ndeck_top_km = 1.0\n", "no-light.toml:10: glory.light: missing"},
+        {"deck-in-ground.toml", kDeck + "[glory]\ndeck_top_km = 1.0\ndeck_thickness_km = 2.0\n" + kLight,
+         "deck-in-ground.toml:12: glory.deck_thickness_km: the deck's base"},
+        {"deck-in-space.toml", kDeck + "[glory]\ndeck_top_km = 80.0\n" + kLight, "glory.deck_top_km: must be"},
+        {"nan-radius.toml", kDeck + "[glory]\neffective_radius_um = nan\n" + kLight,
+         "nan-radius.toml:11: glory.effective_radius_um: must be a finite number"},
+        {"moon-key-on-sun.toml", kDeck + "[glory]\n" + kLight + "albedo = 0.1\n", "unknown key 'glory.light.albedo'"},
+        {"bad-sampling.toml", kDeck + "[glory]\nwavelength_sampling = \"random\"\n" + kLight,
+         "bad-sampling.toml:11: glory.wavelength_sampling: must be one of"},
+    };
+    for (const Case& c : cases) {
+        const std::string message = loadError(sceneFile(c.name, c.text));
+        EXPECT_NE(message.find(c.expected), std::string::npos) << c.name << ": " << message;
+    }
 }

@@ -259,6 +259,7 @@ void readLight(const config::TableReader& t, Settings& s)
         s.light.moonGeometricAlbedo = t.numberAbove("albedo", 0.0, 1.0, s.light.moonGeometricAlbedo);
         s.light.moonPhaseAngleDeg = t.number("phase_angle_deg", 0.0, 180.0, s.light.moonPhaseAngleDeg);
     }
+    s.lightGiven = true;
     s.lightDirection = scene::directionInSky(t.number("site_latitude_deg", -90, 90), t.number("site_longitude_deg", -360, 360),
                                              t.number("elevation_deg", -90, 90), t.number("azimuth_deg", -360, 360));
     t.rejectUnknownKeys();
@@ -293,9 +294,10 @@ public:
         s.sampling = static_cast<WavelengthSampling>(
             t.choice("wavelength_sampling", {"colour-table", "uniform", "importance"}, int(s.sampling)));
         s.wavelengthsPerPixel = t.integer("wavelengths_per_pixel", 1, 256, s.wavelengthsPerPixel);
-        if (!t.has("light"))
+        if (t.has("light"))
+            readLight(t.table("light"), s);
+        else if (!s.lightGiven)
             t.fail("light", "missing: the [glory.light] table (body, site_latitude_deg, site_longitude_deg, elevation_deg, azimuth_deg)");
-        readLight(t.table("light"), s);
         t.rejectUnknownKeys();
     }
     std::vector<std::string> shaderModules() const override

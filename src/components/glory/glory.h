@@ -30,6 +30,7 @@ struct Settings : scene::SettingsOf<Settings> {
     // The light: the Sun or the Moon, from this direction (planet frame, toward the light).
     aurorawall::glory::LightSource light;
     glm::dvec3 lightDirection{0.0, 0.0, 1.0};
+    bool lightGiven = false; // a scene (or its base) gave [glory.light]
     // The tables and the per-pixel colour.
     aurorawall::glory::GloryTableSpec table;
     WavelengthSampling sampling = WavelengthSampling::ColourTable;
