@@ -313,7 +313,7 @@ Result runAccuracy(std::vector<std::string> words)
 TEST(AccuracyCommand, OneParserForTheThreeKinds)
 {
     const std::vector<std::pair<std::vector<std::string>, std::string>> usage = {
-        {{}, "choose --airmass, --sky or --scene FILE"},
+        {{}, "choose --airmass, --sky, --scene FILE or --glory FILE"},
         {{"--scene", "s.toml", "--airmass"}, "--scene cannot be combined"},
         {{"--scene", "s.toml", "--repeat", "4"}, "--repeat applies to --airmass and --sky only"},
         {{"--sky", "--size", "10x10"}, "--size applies to --scene only"},
