@@ -20,6 +20,8 @@ namespace po = boost::program_options;
 const std::vector<std::string> kShaderOptions = {"repeat", "copies", "view-steps", "light-steps"};
 const std::vector<std::string> kSceneOptions = {"wall", "size", "pixels", "frame", "runs",
                                                 "threads", "reference-step-km", "feature-costs"};
+// The --scene options that --glory does not take (it compares every pixel with a GPU render).
+const std::vector<std::string> kAuroraOnlyOptions = {"pixels", "threads", "reference-step-km", "feature-costs"};
 
 const char* kUsage =
     "Usage: aurorawall accuracy --airmass | --sky [options]\n"
@@ -102,13 +104,17 @@ int runAccuracyCommand(int argc, char** argv, std::ostream& out, std::ostream& e
             throw cli.usageError("--glory cannot be combined with --scene");
         const bool sceneRun = cli.given("scene") || gloryRun;
         if (sceneRun && (airmass || sky))
-            throw cli.usageError("--scene cannot be combined with --airmass or --sky");
+            throw cli.usageError(std::string(gloryRun ? "--glory" : "--scene") + " cannot be combined with --airmass or --sky");
         if (!sceneRun && !airmass && !sky)
             throw cli.usageError("choose --airmass, --sky, --scene FILE or --glory FILE");
         for (const std::string& option : sceneRun ? kShaderOptions : kSceneOptions)
             if (cli.given(option))
                 throw cli.usageError("--" + option + " applies to " +
                                      (sceneRun ? "--airmass and --sky" : "--scene") + " only");
+        if (gloryRun)
+            for (const std::string& option : kAuroraOnlyOptions)
+                if (cli.given(option))
+                    throw cli.usageError("--" + option + " applies to --scene only");
 
         if (sceneRun) {
             if (scene.sceneFile.empty())

@@ -320,6 +320,9 @@ TEST(AccuracyCommand, OneParserForTheThreeKinds)
         {{"--scene", "s.toml", "--size", "10by10"}, "--size"},
         {{"--airmass", "--repeat", "0"}, "--repeat"},
         {{"--bogus"}, "unrecognised option '--bogus'"},
+        {{"--glory", "s.toml", "--scene", "s.toml"}, "--glory cannot be combined with --scene"},
+        {{"--glory", "s.toml", "--pixels", "9"}, "--pixels applies to --scene only"},
+        {{"--glory", "s.toml", "--airmass"}, "--glory cannot be combined with --airmass"},
     };
     for (const auto& [words, expected] : usage) {
         const Result r = runAccuracy(words);
