@@ -3,6 +3,7 @@
 #include "app/control/command.h"
 #include "app/control/geographic_camera.h"
 #include "app/control/remote_control.h"
+#include "cluster/master_clock.h"
 
 #include <gtest/gtest.h>
 
@@ -25,6 +26,27 @@ TEST(Preset, NameOrPathGivesTheScenesCamera)
     EXPECT_EQ(byPath.forward, byName.forward);
     // benchmark-view flies along its view at 25.484 km/s; the preset keeps its speed.
     EXPECT_EQ(presetCamera("benchmark-view", AW_SCENES_DIR).speedKmPerS, 25.484);
+}
+
+TEST(Preset, AKeyedPathIsFollowedAtTheWallsTime)
+{
+    // benchmark-path.toml: from the benchmark view at 180 s straight along its direction at
+    // 25.484 km/s until 210 s. The wall at 200 s shows the camera 20 s along that line, and follows it.
+    cluster::ClockSettings settings;
+    settings.frames = 0;
+    settings.startTimeS = 200.0;
+    settings.timeStepS = 0.5;
+    cluster::MasterClock clock(settings, scene::Camera{}, 1.0);
+    clock.next(false);
+    const scene::Camera preset = presetCamera("benchmark-path", AW_SCENES_DIR);
+    ASSERT_FALSE(preset.path.empty());
+    clock.setCamera(preset);
+    const glm::dvec3 start = glm::dvec3(-0.467287, -0.223999, 0.868115) * 6371.0;
+    const glm::dvec3 direction = glm::normalize(glm::dvec3(-0.083353, 0.912453, 0.400601));
+    // 1e-6 km: the path's interpolation of ~6500 km positions, and the second key's 17 digits.
+    EXPECT_NEAR(glm::length(clock.camera().positionKm - (start + direction * (20.0 * 25.484))), 0.0, 1e-6);
+    clock.next(false);
+    EXPECT_NEAR(glm::length(clock.camera().positionKm - (start + direction * (20.5 * 25.484))), 0.0, 1e-6);
 }
 
 TEST(Preset, RefusalsNameThePresetOnOneLine)
