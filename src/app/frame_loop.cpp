@@ -13,6 +13,7 @@
 #include "cluster/master_clock.h"
 #include "cluster/rank_message.h"
 #include "common/clock.h"
+#include "common/data_dir.h"
 #include "io/png.h"
 
 #include <cstdio>
@@ -155,6 +156,9 @@ cluster::FrameStats runFrames(WallSession& session, const cluster::MpiWorld& wor
     cluster::FrameStats stats(pixelsPerFrame(session.wall));
     bool stopRequested = false;
     control::WallStatus wallStatus;
+    const control::WallFacts wallFacts{session.scene.planetRadiusKm,
+                                       (session.options.dataDir.empty() ? dataDirectory() : session.options.dataDir) +
+                                           "/config/scenes"};
     std::vector<control::ScreenshotRequest> screenshots;
     std::optional<MovieWriter> movie;
     if (world.isMaster() && !session.options.movieDir.empty())
@@ -184,9 +188,13 @@ cluster::FrameStats runFrames(WallSession& session, const cluster::MpiWorld& wor
             flyByGamepad(*session.context, *clock, navigation, gamepadBefore, stats.records().empty() ? 0.0 : lastFrameS);
             if (session.control) {
                 const control::FrameRequests requests =
-                    control::serveCommands(*session.control, *clock, wallStatus, session.scene.planetRadiusKm);
+                    control::serveCommands(*session.control, *clock, wallStatus, wallFacts);
                 stopRequested = stopRequested || requests.quit;
                 screenshots = requests.screenshots;
+                if (requests.orbit == control::OrbitRequest::Start)
+                    navigation.orbit(requests.pivotKm);
+                else if (requests.orbit == control::OrbitRequest::Stop)
+                    navigation.stopOrbit();
             }
             cluster::FrameState state = clock->next(stopRequested);
             state.gatherWall = !screenshots.empty() || movie.has_value() || session.console != nullptr;

@@ -13,12 +13,25 @@
 //       nudge moves at most 0.8 of the altitude and can never pass through the planet).
 // A drag with the left button looks the same way, kDragDegPerPx per pixel (the view follows the
 // pointer). The orientation is a unit quaternion in double; the camera never goes below kMinAltitudeKm.
+//
+// O toggles orbiting (control/orbit.h). It starts about the pivot orbitPivot() finds (where the view
+// axis meets the ground, or as far along it as the planet's centre is) and holds the camera's flight
+// speed at 0. While orbiting, the camera looks at the pivot:
+//   arrows: carry the camera kTurnDeg about the pivot, right/left about the pivot's zenith and
+//       up/down over the pivot about the camera's right (past the zenith without a flip);
+//   a drag turns the scene about the pivot with the pointer, kDragDegPerPx per pixel (drag right:
+//       the camera goes left; drag down: it rises);
+//   W/S: toward/away from the pivot by kNudgeS seconds at speedPerS x max(distance, 10 m), never
+//       closer than kMinOrbitDistanceKm, never below kMinAltitudeKm; Q/E roll about the view, +/- as in
+//       flight; the other keys do nothing. A turn that would take the camera below kMinAltitudeKm is
+//       not made.
 #include "app/gamepad.h"
 #include "cluster/frame_message.h"
 #include "scene/scene.h"
 
 #include <glm/gtc/quaternion.hpp>
 
+#include <optional>
 #include <vector>
 
 namespace aurorawall::app {
@@ -31,6 +44,7 @@ public:
     static constexpr double kTurnDeg = 2.0;
     static constexpr double kDragDegPerPx = 0.2;
     static constexpr double kMinSpeedPerS = 1.0 / 1024.0, kMaxSpeedPerS = 8.0;
+    static constexpr double kMinOrbitDistanceKm = 0.001; // 1 m
 
     explicit Navigation(double planetRadiusKm) : planetRadiusKm_(planetRadiusKm) {}
 
@@ -46,13 +60,27 @@ public:
     // The factor of the altitude per second; 1 at start.
     double speedPerS() const { return speedPerS_; }
 
+    // Orbits pivotKm from now on (the caller aims the camera at it: control::aimedAt).
+    void orbit(const glm::dvec3& pivotKm) { pivot_ = pivotKm; }
+    // Free flight again.
+    void stopOrbit() { pivot_.reset(); }
+    const std::optional<glm::dvec3>& pivot() const { return pivot_; }
+
 private:
+    // One event of free flight.
+    scene::Camera flown(const scene::Camera& camera, const cluster::InputEvent& event);
+    // One event while orbiting.
+    scene::Camera orbited(const scene::Camera& camera, const cluster::InputEvent& event);
+    // The camera (orbiting) moved along its view by `towardS` seconds at the speed of its distance.
+    scene::Camera closer(const scene::Camera& camera, double towardS) const;
+
     // `position` moved by ownMoveS seconds at the speed of its altitude along the camera's own axes
     // (right, forward, up), at least kMinAltitudeKm above the sphere.
     glm::dvec3 moved(const glm::dvec3& position, const glm::dquat& orientation, const glm::dvec3& ownMoveS) const;
 
     double planetRadiusKm_;
     double speedPerS_ = 1.0;
+    std::optional<glm::dvec3> pivot_; // set while orbiting
 };
 
 } // namespace aurorawall::app

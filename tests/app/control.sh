@@ -1,6 +1,6 @@
 #!/bin/bash
 # Remote control: a 2-rank headless wall with --control-port 0 --frames 0 answers status, pause,
-# time, goto, screenshot and quit through launch/wall-control; a garbage line, an out-of-range value,
+# time, goto, preset, orbit, screenshot and quit through launch/wall-control; a garbage line, an out-of-range value,
 # a second client at once and a client that leaves mid-line get their answers (or none) and the
 # wall keeps rendering; the screenshots differ after goto; the job exits 0 soon after quit; and
 # every rank drew every frame at the master's frame and time (--stats).
@@ -38,11 +38,27 @@ ask ' time_s=120 fps=[0-9.e+-]+ paused ' status
 ask '^ok goto lat_deg=65 lon_deg=25 alt_km=200$' "goto 65 25 200"
 ask ' time_s=120 .* lat_deg=65\.000000 lon_deg=25\.000000 alt_km=200\.000000 ' status
 ask '^ok screenshot .*/after\.png$' "screenshot $WORK/after.png"
-ask "^error unknown command 'xyzzy'" "xyzzy 1 2 3"
+# A preset moves the camera to its scene's (ground-65n: 65 N 20 E, 300 m up), by name or by file;
+# an unknown one is refused and the camera stays.
+ask '^ok preset ground-65n lat_deg=65\.000000 lon_deg=20\.000000 alt_km=0\.300000$' "preset ground-65n"
+ask ' time_s=120 .* lat_deg=65\.000000 lon_deg=20\.000000 alt_km=0\.300000 heading_deg=(0|360)\.000000 pitch_deg=30\.000000$' status
+ask '^error preset nowhere: no such preset in .* \(presets: .*low-orbit.*\)$' "preset nowhere"
+ask '^ok preset .*/low-orbit\.toml lat_deg=58\.000000 lon_deg=20\.000000 alt_km=400\.000000$' \
+    "preset $SRC_DIR/config/scenes/low-orbit.toml"
+ask ' lat_deg=58\.000000 lon_deg=20\.000000 alt_km=400\.000000 ' status
+# Orbiting a point on the ground 2 degrees north of the camera: the camera stays, turns to look at it
+# (the heading north, the pitch down), at the chord's distance; orbit off keeps the pose.
+ask '^ok orbit lat_deg=60 lon_deg=20 alt_km=0 distance_km=[0-9.]+$' "orbit 60 20 0"
+ask ' lat_deg=58\.000000 lon_deg=20\.000000 alt_km=400\.000000 heading_deg=(0|360)\.000000 pitch_deg=-[0-9.]+$' status
+orbit_pitch=$("${client[@]}" --port "$port" status | sed -n 's/.* pitch_deg=//p')
+ask '^ok orbit off$' "orbit off"
+ask '^error orbit: the altitude must be in \[0, 1e6\] km$' "orbit 60 20 -5"
+ask "^error unknown command 'xyzzy' \(commands: .* preset orbit " "xyzzy 1 2 3"
 ask '^error speed: the factor must be in \[0\.1, 1000\]$' "speed 5000"
 ask '^error step: the clock is playing \(pause first\)$' play step
 ask '^error screenshot .*: the file name must end in \.png$' "screenshot $WORK/x.jpg"
 ask '^ok paused' pause
+ask '^ok goto lat_deg=65 lon_deg=25 alt_km=200$' "goto 65 25 200"
 
 # One client sends half a line and leaves; another holds a connection open while a third asks.
 exec 3<>"/dev/tcp/127.0.0.1/$port"
@@ -55,6 +71,16 @@ read -r -t 30 held <&4 || fail "no answer on the held connection"
 echo "held connection -> $held"
 [[ "$held" =~ ^ok\ frame= ]] || fail "held connection answered '$held'"
 exec 4>&-
+
+# The pitch toward the orbited point: 400 km above 58 N looking at the ground at 60 N 20 E, from the
+# triangle of the planet's centre, the camera and the point (central angle 2 degrees).
+awk -v p="$orbit_pitch" 'BEGIN {
+    pi = atan2(0, -1); R = 6371; r = R + 400; g = 2 * pi / 180
+    x = R * cos(g) - r; y = R * sin(g) # the point in the camera'"'"'s vertical plane: up, north
+    expected = atan2(x, y) * 180 / pi
+    printf "orbit pitch %.6f deg, expected %.6f\n", p, expected
+    if (p - expected > 1e-5 || expected - p > 1e-5) { print "FAIL: orbit pitch" > "/dev/stderr"; exit 1 }
+}' || { kill $job; fail "the orbit did not aim at the point"; }
 
 [ -s "$WORK/before.png" ] && [ -s "$WORK/after.png" ] || fail "a screenshot is missing"
 cmp -s "$WORK/before.png" "$WORK/after.png" && fail "the screenshots before and after goto are the same"

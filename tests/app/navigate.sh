@@ -2,7 +2,8 @@
 # Navigation from the windows, under Xvfb: a 2-rank glfw wall (the tiny 2x2 wall, two screens per
 # rank) with --control-port; key presses typed with xdotool into a window of the SECOND rank (an
 # operator at rank 1's screen) reach the master and fly the camera: Right turns the heading, R climbs,
-# a drag upwards with the left button raises the view, as `status` shows, and the screenshot changes. Exits 77 (skipped) without xvfb-run or xdotool.
+# a drag upwards with the left button raises the view, O Right Right Right O orbits the point ahead at
+# the same altitude and pitch, as `status` shows, and the screenshot changes. Exits 77 (skipped) without xvfb-run or xdotool.
 source "$(dirname "$0")/lib.sh"
 client=(python3 "$SRC_DIR/launch/wall-control")
 
@@ -56,6 +57,18 @@ sleep 1
 after=$(ask status)
 echo "drag:   $after"
 ask "screenshot $WORK/after.png" >/dev/null
+
+# O, three Right and O: the camera orbits the point ahead of it about that point's zenith, an axis
+# through the planet's centre, so its altitude and pitch stay while it moves across the ground.
+xdotool key --delay 50 o Right Right Right o
+for _ in $(seq 200); do
+    orbited=$(ask status)
+    [ "$(field lon_deg "$orbited")" != "$(field lon_deg "$after")" ] && break
+    sleep 0.1
+done
+sleep 1
+orbited=$(ask status)
+echo "orbit:  $orbited"
 ask quit >/dev/null
 for _ in $(seq 300); do kill -0 $job 2>/dev/null || break; sleep 0.1; done
 kill -0 $job 2>/dev/null && { kill $job; fail "still running 30 s after quit"; }
@@ -76,6 +89,17 @@ awk -v h0="$(field heading_deg "$before")" -v h1="$(field heading_deg "$keyed")"
         if (turn < 6.0 || turn > 8.0) bad("the heading turned by " turn " degrees, expected about 6.9")
         if (a1 / a0 < 1.3 || a1 / a0 > 1.7) bad("the altitude went from " a0 " to " a1 " km, expected x1.5")
         if (p2 - p1 < 2.5 || p2 - p1 > 3.5) bad("the drag raised the pitch by " p2 - p1 " degrees, expected about 3")
+    }'
+awk -v a0="$(field alt_km "$after")" -v a1="$(field alt_km "$orbited")" \
+    -v p0="$(field pitch_deg "$after")" -v p1="$(field pitch_deg "$orbited")" \
+    -v l0="$(field lon_deg "$after")" -v l1="$(field lon_deg "$orbited")" -v t0="$(field lat_deg "$after")" \
+    -v t1="$(field lat_deg "$orbited")" '
+    function bad(msg) { print "FAIL: " msg > "/dev/stderr"; exit 1 }
+    function abs(x) { return x < 0 ? -x : x }
+    BEGIN {
+        printf "orbit: altitude %+.6f km, pitch %+.6f deg, moved %.3f deg lat %.3f deg lon\n", a1 - a0, p1 - p0, t1 - t0, l1 - l0
+        if (abs(a1 - a0) > 2e-6 || abs(p1 - p0) > 2e-6) bad("the orbit changed the altitude or the pitch")
+        if (abs(t1 - t0) + abs(l1 - l0) < 0.01) bad("the orbit did not move the camera")
     }'
 cmp -s "$WORK/before.png" "$WORK/after.png" && fail "the screenshots before and after the keys are the same"
 echo "PASS navigate"

@@ -43,6 +43,20 @@ TEST(Command, BoundsAreInclusive)
     EXPECT_NO_THROW(parseCommand("time 1e15"));
 }
 
+TEST(Command, PresetAndOrbit)
+{
+    const Command preset = parseCommand("preset  ground-65n \r");
+    EXPECT_EQ(preset.kind, CommandKind::Preset);
+    EXPECT_EQ(preset.path, "ground-65n");
+    EXPECT_EQ(parseCommand("preset /tmp/my view.toml").path, "/tmp/my view.toml");
+    const Command orbit = parseCommand("orbit 65 -20.5 0");
+    EXPECT_EQ(orbit.kind, CommandKind::Orbit);
+    EXPECT_EQ(orbit.values[0], 65.0);
+    EXPECT_EQ(orbit.values[1], -20.5);
+    EXPECT_EQ(orbit.values[2], 0.0);
+    EXPECT_EQ(parseCommand("orbit off").kind, CommandKind::OrbitOff);
+}
+
 TEST(Command, ScreenshotTakesTheRestOfTheLineAsItsPath)
 {
     const Command shot = parseCommand("screenshot  /tmp/my wall.png \r");
@@ -77,6 +91,13 @@ TEST(Command, RefusedLinesSayWhy)
         {"look 0 91", "pitch"},
         {"look 400 0", "heading"},
         {"screenshot", "missing the path"},
+        {"preset", "preset: missing the name"},
+        {"orbit", "3 arguments expected, got 0"},
+        {"orbit on", "3 arguments expected, got 1"},
+        {"orbit 91 0 0", "orbit: the latitude"},
+        {"orbit 0 400 0", "orbit: the longitude"},
+        {"orbit 0 0 -1", "orbit: the altitude must be in [0, 1e6] km"},
+        {"bogus", "preset"}, // the list of commands
         {"screenshot wall.jpg", "must end in .png"},
         {"screenshot .png", "must end in .png"},
     };

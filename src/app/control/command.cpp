@@ -26,6 +26,8 @@ const Grammar kGrammar[] = {
     {"time", CommandKind::Time, 1, false, "time SECONDS"},
     {"goto", CommandKind::Goto, 3, false, "goto LAT_DEG LON_DEG ALT_KM"},
     {"look", CommandKind::Look, 2, false, "look HEADING_DEG PITCH_DEG"},
+    {"preset", CommandKind::Preset, 0, true, "preset NAME"},
+    {"orbit", CommandKind::Orbit, 3, false, "orbit LAT_DEG LON_DEG ALT_KM | orbit off"},
     {"screenshot", CommandKind::Screenshot, 0, true, "screenshot PATH.png"},
     {"quit", CommandKind::Quit, 0, false, "quit"},
 };
@@ -73,13 +75,20 @@ Command parseCommand(const std::string& line)
     Command c;
     c.kind = g.kind;
     const size_t arguments = words.size() - 1;
+    if (c.kind == CommandKind::Orbit && arguments == 1 && words[1] == "off") {
+        c.kind = CommandKind::OrbitOff;
+        return c;
+    }
     if (g.path) {
         // The path is the rest of the line, blanks at its ends removed (a name may hold spaces).
         const size_t start = line.find_first_not_of(" \t", line.find(g.word) + std::string(g.word).size());
         const size_t last = line.find_last_not_of(" \t\r");
         if (arguments == 0 || start == std::string::npos)
-            throw CommandError(std::string(g.word) + ": missing the path (usage: " + g.usage + ")");
+            throw CommandError(std::string(g.word) + ": missing the " + (c.kind == CommandKind::Preset ? "name" : "path") +
+                           " (usage: " + g.usage + ")");
         c.path = line.substr(start, last + 1 - start);
+        if (c.kind == CommandKind::Preset)
+            return c;
         checkRange(c.path.size() > 4 && c.path.compare(c.path.size() - 4, 4, ".png") == 0,
                    std::string(g.word) + " " + c.path + ": the file name must end in .png");
         return c;
@@ -102,6 +111,11 @@ Command parseCommand(const std::string& line)
         checkRange(std::abs(v[0]) <= 90, "goto: the latitude must be in [-90, 90] degrees");
         checkRange(std::abs(v[1]) <= 360, "goto: the longitude must be in [-360, 360] degrees");
         checkRange(v[2] >= kMinAltitudeKm && v[2] <= kMaxAltitudeKm, "goto: the altitude must be in [0.001, 1e6] km");
+        break;
+    case CommandKind::Orbit:
+        checkRange(std::abs(v[0]) <= 90, "orbit: the latitude must be in [-90, 90] degrees");
+        checkRange(std::abs(v[1]) <= 360, "orbit: the longitude must be in [-360, 360] degrees");
+        checkRange(v[2] >= kMinPivotAltitudeKm && v[2] <= kMaxAltitudeKm, "orbit: the altitude must be in [0, 1e6] km");
         break;
     case CommandKind::Look:
         checkRange(std::abs(v[0]) <= 360, "look: the heading must be in [-360, 360] degrees");

@@ -6,7 +6,7 @@
 
 namespace aurorawall::control {
 
-enum class CommandKind { Status, Pause, Play, Speed, Step, Time, Goto, Look, Screenshot, Quit };
+enum class CommandKind { Status, Pause, Play, Speed, Step, Time, Goto, Look, Preset, Orbit, OrbitOff, Screenshot, Quit };
 
 // The accepted bounds of the arguments.
 constexpr double kMinSpeed = 0.1;    // animation seconds per frame step, relative to --dt (or to real time)
@@ -14,13 +14,15 @@ constexpr double kMaxSpeed = 1000.0;
 constexpr double kMaxTimeS = 1e15;   // |animation time|, as --start-time
 constexpr double kMinAltitudeKm = 0.001; // goto: above the ground
 constexpr double kMaxAltitudeKm = 1e6;
+constexpr double kMinPivotAltitudeKm = 0.0; // orbit: the point may lie on the ground
 
 struct Command {
     CommandKind kind = CommandKind::Status;
     // speed: the factor; time: seconds; goto: latitude (deg), longitude (deg), altitude (km);
-    // look: heading (deg clockwise from north), pitch (deg above the horizontal).
+    // look: heading (deg clockwise from north), pitch (deg above the horizontal);
+    // orbit: the point's latitude (deg), longitude (deg), altitude (km).
     double values[3] = {0.0, 0.0, 0.0};
-    std::string path; // screenshot: the PNG to write
+    std::string path; // screenshot: the PNG to write; preset: the preset's name or scene file
 };
 
 // A line that is not a command; what() is the reason, one line, without the "error " of the answer.

@@ -2,7 +2,10 @@
 
 #include "app/control/command.h"
 #include "app/control/geographic_camera.h"
+#include "app/control/orbit.h"
+#include "components/registry.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 
@@ -17,10 +20,32 @@ std::string format(const char* pattern, double a, double b = 0.0, double c = 0.0
     return text;
 }
 
+// The names of the presets in `presetDir`, blank-separated, sorted.
+std::string presetNames(const std::string& presetDir)
+{
+    std::vector<std::string> names;
+    std::error_code error;
+    for (const auto& entry : std::filesystem::directory_iterator(presetDir, error))
+        if (entry.path().extension() == ".toml")
+            names.push_back(entry.path().stem().string());
+    std::sort(names.begin(), names.end());
+    std::string text;
+    for (const std::string& n : names)
+        text += (text.empty() ? "" : " ") + n;
+    return text;
+}
+
+std::string oneLine(std::string text)
+{
+    std::replace(text.begin(), text.end(), '\n', ' ');
+    return text;
+}
+
 // Carries out one command; returns its answer ("" for a screenshot, answered once written).
 std::string carryOut(const Command& command, std::uint64_t client, cluster::MasterClock& clock,
-                     const WallStatus& status, double planetRadiusKm, FrameRequests& requests)
+                     const WallStatus& status, const WallFacts& wall, FrameRequests& requests)
 {
+    const double planetRadiusKm = wall.planetRadiusKm;
     const double* v = command.values;
     switch (command.kind) {
     case CommandKind::Status:
@@ -49,6 +74,7 @@ std::string carryOut(const Command& command, std::uint64_t client, cluster::Mast
         pose.longitudeDeg = v[1];
         pose.altitudeKm = v[2];
         clock.setCamera(cameraAt(pose, planetRadiusKm, now.speedKmPerS));
+        requests.orbit = OrbitRequest::Stop;
         return format("ok goto lat_deg=%.9g lon_deg=%.9g alt_km=%.9g", v[0], v[1], v[2]);
     }
     case CommandKind::Look: {
@@ -57,8 +83,31 @@ std::string carryOut(const Command& command, std::uint64_t client, cluster::Mast
         pose.headingDeg = v[0];
         pose.pitchDeg = v[1];
         clock.setCamera(cameraAt(pose, planetRadiusKm, now.speedKmPerS));
+        requests.orbit = OrbitRequest::Stop;
         return format("ok look heading_deg=%.9g pitch_deg=%.9g", v[0], v[1]);
     }
+    case CommandKind::Preset: {
+        clock.setCamera(presetCamera(command.path, wall.presetDir));
+        requests.orbit = OrbitRequest::Stop;
+        const GeographicPose p = poseOf(clock.camera(), planetRadiusKm);
+        return "ok preset " + command.path +
+               format(" lat_deg=%.6f lon_deg=%.6f alt_km=%.6f", p.latitudeDeg, p.longitudeDeg, p.altitudeKm);
+    }
+    case CommandKind::Orbit: {
+        const glm::dvec3 pivot = scene::planetPoint(v[0], v[1], planetRadiusKm + v[2]);
+        const scene::Camera now = clock.camera();
+        const double distanceKm = glm::length(pivot - now.positionKm);
+        if (distanceKm < 1e-3)
+            throw CommandError("orbit: the camera is at that point (less than 1 m away)");
+        clock.setCamera(aimedAt(now, pivot));
+        requests.orbit = OrbitRequest::Start;
+        requests.pivotKm = pivot;
+        return format("ok orbit lat_deg=%.9g lon_deg=%.9g alt_km=%.9g", v[0], v[1], v[2]) +
+               format(" distance_km=%.6f", distanceKm);
+    }
+    case CommandKind::OrbitOff:
+        requests.orbit = OrbitRequest::Stop;
+        return "ok orbit off";
     case CommandKind::Screenshot: {
         const std::filesystem::path parent = std::filesystem::path(command.path).parent_path();
         std::error_code error;
@@ -76,6 +125,25 @@ std::string carryOut(const Command& command, std::uint64_t client, cluster::Mast
 
 } // namespace
 
+scene::Camera presetCamera(const std::string& name, const std::string& presetDir)
+{
+    const bool file = name.size() > 5 && name.compare(name.size() - 5, 5, ".toml") == 0;
+    if (!file && name.find('/') != std::string::npos)
+        throw CommandError("preset " + name + ": a preset is a name (" + presetNames(presetDir) +
+                           ") or a scene file ending in .toml");
+    const std::string path = file ? name : presetDir + "/" + name + ".toml";
+    std::error_code error;
+    if (!std::filesystem::is_regular_file(path, error))
+        throw CommandError("preset " + name + ": " +
+                           (file ? path + " is not a readable file"
+                                 : "no such preset in " + presetDir + " (presets: " + presetNames(presetDir) + ")"));
+    try {
+        return components::loadScene(path).camera;
+    } catch (const std::exception& e) {
+        throw CommandError("preset " + name + ": " + oneLine(e.what()));
+    }
+}
+
 std::string statusLine(const cluster::MasterClock& clock, const WallStatus& status, double planetRadiusKm)
 {
     const GeographicPose p = poseOf(clock.camera(), planetRadiusKm);
@@ -86,7 +154,7 @@ std::string statusLine(const cluster::MasterClock& clock, const WallStatus& stat
 }
 
 FrameRequests serveCommands(ControlServer& server, cluster::MasterClock& clock, const WallStatus& status,
-                            double planetRadiusKm)
+                            const WallFacts& wall)
 {
     FrameRequests requests;
     for (const ControlLine& line : server.poll(kCommandsPerFrame)) {
@@ -94,7 +162,7 @@ FrameRequests serveCommands(ControlServer& server, cluster::MasterClock& clock, 
         try {
             if (requests.quit)
                 throw CommandError("the wall is quitting");
-            answer = carryOut(parseCommand(line.text), line.client, clock, status, planetRadiusKm, requests);
+            answer = carryOut(parseCommand(line.text), line.client, clock, status, wall, requests);
         } catch (const CommandError& e) {
             answer = std::string("error ") + e.what();
         }

@@ -26,16 +26,37 @@ struct ScreenshotRequest {
     std::string path;
 };
 
+// What the wall's commands need to know of it.
+struct WallFacts {
+    double planetRadiusKm = 6371.0;
+    std::string presetDir; // where `preset NAME` finds NAME.toml: config/scenes under the data directory
+};
+
+// The orbit the commands leave the navigation in (app/navigation.h).
+enum class OrbitRequest {
+    Keep,  // as it is
+    Stop,  // free flight: `orbit off`, or the camera put elsewhere by goto, look or preset
+    Start, // orbit FrameRequests::pivotKm (the camera already looks at it)
+};
+
 // What the commands ask of the frame loop beyond the clock.
 struct FrameRequests {
     bool quit = false;
     std::vector<ScreenshotRequest> screenshots;
+    OrbitRequest orbit = OrbitRequest::Keep;
+    glm::dvec3 pivotKm{0.0};
 };
 
 // Polls the server once, carries out up to kCommandsPerFrame commands and answers each (but the
 // screenshots, answered once written). A malformed or unknown line is answered "error REASON".
 FrameRequests serveCommands(ControlServer& server, cluster::MasterClock& clock, const WallStatus& status,
-                            double planetRadiusKm);
+                            const WallFacts& wall);
+
+// The camera of the preset `name`: of presetDir/NAME.toml, or of the scene file `name` if it ends in
+// .toml (the camera that scene renders with: its [camera], or its base scene's). A keyed camera path
+// comes with it, so the camera follows the preset's flight at the wall's animation time. Throws
+// CommandError "preset NAME: REASON" for an unknown preset or a file that is no scene.
+scene::Camera presetCamera(const std::string& name, const std::string& presetDir);
 
 // The answer to `status`: the last frame drawn, and the time and camera the wall shows (those a command
 // has just set, if no frame has shown them yet).
