@@ -7,11 +7,7 @@
 source "$(dirname "$0")/lib.sh"
 client=(python3 "$SRC_DIR/launch/wall-control")
 
-if [ "${1:-}" != --inside-x ]; then
-    if [ -z "${XVFB_RUN:-}" ] || ! [ -x "$XVFB_RUN" ]; then echo "SKIP: xvfb-run is not installed"; exit 77; fi
-    if ! command -v xdotool >/dev/null; then echo "SKIP: xdotool is not installed"; exit 77; fi
-    exec "$XVFB_RUN" -a -s "-screen 0 1280x1024x24 -noreset" bash "$0" --inside-x
-fi
+run_under_xvfb "1280x1024x24 -noreset" "$@"
 
 aw_mpirun 1 render --wall "$DATA/hud-1x1.toml" --scene "$SCENE" --backend glfw --frames 0 --control-port 0 \
     --quiet > "$WORK/log" 2>&1 &

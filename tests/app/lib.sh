@@ -47,3 +47,14 @@ control_port() {
     [ -n "$port" ] || { cat "$log" >&2; kill "$job"; fail "no 'control: listening on 127.0.0.1:PORT' line"; }
     echo "$port"
 }
+
+# For the scripts that type into GLFW windows: unless the script was called with --inside-x, runs it
+# again (exec) inside a new Xvfb whose first screen is SCREEN ("WxHxDEPTH" and more Xvfb options),
+# with --inside-x; exits 77 (skipped) without xvfb-run or xdotool. Usage: run_under_xvfb SCREEN "$@".
+run_under_xvfb() {
+    local screen="$1"; shift
+    [ "${1:-}" = --inside-x ] && return 0
+    if [ -z "${XVFB_RUN:-}" ] || ! [ -x "$XVFB_RUN" ]; then echo "SKIP: xvfb-run is not installed"; exit 77; fi
+    if ! command -v xdotool >/dev/null; then echo "SKIP: xdotool is not installed"; exit 77; fi
+    exec "$XVFB_RUN" -a -s "-screen 0 $screen" bash "$0" --inside-x
+}

@@ -7,11 +7,7 @@
 source "$(dirname "$0")/lib.sh"
 client=(python3 "$SRC_DIR/launch/wall-control")
 
-if [ "${1:-}" != --inside-x ]; then
-    if [ -z "${XVFB_RUN:-}" ] || ! [ -x "$XVFB_RUN" ]; then echo "SKIP: xvfb-run is not installed"; exit 77; fi
-    if ! command -v xdotool >/dev/null; then echo "SKIP: xdotool is not installed"; exit 77; fi
-    exec "$XVFB_RUN" -a -s "-screen 0 640x480x24" bash "$0" --inside-x
-fi
+run_under_xvfb "640x480x24" "$@"
 
 wall="$WORK/tiny-2-ranks.toml"
 { cat "$DATA/tiny-2x2.toml"; printf '\n[ranks]\nscreens_per_rank = 2\n'; } > "$wall"
