@@ -14,6 +14,7 @@
 #include "cluster/rank_message.h"
 #include "common/clock.h"
 #include "io/png.h"
+#include "wall/tile_rays.h"
 
 #include <cstdio>
 #include <optional>
@@ -30,6 +31,7 @@ cluster::ClockSettings clockSettings(const WallSession& s)
     c.startTimeS = s.options.startTimeGiven ? s.options.startTimeS : s.scene.startTimeS;
     c.timeStepS = s.options.timeStepS >= 0 ? s.options.timeStepS : s.scene.timeStepS;
     c.realTime = s.options.realTime;
+    c.wallTanHalfFov = wall::tanHalfVerticalFieldOfView(s.wall);
     return c;
 }
 
@@ -162,7 +164,8 @@ cluster::FrameStats runFrames(WallSession& session, const cluster::MpiWorld& wor
     std::optional<PathRecorder> recorder;
     if (world.isMaster() && !session.options.recordPath.empty()) {
         const cluster::ClockSettings c = clockSettings(session);
-        recorder.emplace(session.options.recordPath, session.options.sceneFile, c.startTimeS, c.timeStepS);
+        recorder.emplace(session.options.recordPath, session.options.sceneFile, c.startTimeS, c.timeStepS,
+                         c.wallTanHalfFov);
     }
     std::vector<char> message(cluster::frameMessageBytes(bandCount));
     auto waitStart = SteadyClock::now(); // from this rank's previous report to this frame's message

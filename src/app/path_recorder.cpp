@@ -1,6 +1,7 @@
 #include "app/path_recorder.h"
 
 #include "io/atomic_file.h"
+#include "scene/camera_path.h"
 
 #include <cstdio>
 #include <filesystem>
@@ -55,8 +56,10 @@ std::string basePath(const std::string& file, const std::string& baseScene)
 
 } // namespace
 
-PathRecorder::PathRecorder(std::string file, std::string baseScene, double startTimeS, double timeStepS)
-    : file_(std::move(file)), baseScene_(std::move(baseScene)), startTimeS_(startTimeS), timeStepS_(timeStepS)
+PathRecorder::PathRecorder(std::string file, std::string baseScene, double startTimeS, double timeStepS,
+                           double wallTanHalfFov)
+    : file_(std::move(file)), baseScene_(std::move(baseScene)), startTimeS_(startTimeS), timeStepS_(timeStepS),
+      wallTanHalfFov_(wallTanHalfFov)
 {
 }
 
@@ -64,7 +67,7 @@ void PathRecorder::add(const cluster::FrameState& state)
 {
     while (!cameras_.empty() && !(cameras_.back().timeS < state.timeS))
         cameras_.pop_back();
-    cameras_.push_back({state.timeS, state.cameraPositionKm, -state.cameraBack, state.cameraUp});
+    cameras_.push_back({state.timeS, state.cameraPositionKm, -state.cameraBack, state.cameraUp, state.zoom});
 }
 
 std::string PathRecorder::text() const
@@ -83,12 +86,15 @@ std::string PathRecorder::text() const
             << "up = " << vector3(c.up) << "\n";
     }
     if (cameras_.size() > 1) {
-        for (const RecordedCamera& c : cameras_)
+        for (const RecordedCamera& c : cameras_) {
             out << "\n[[camera.key]]\n"
                 << "time_s = " << number(c.timeS) << "\n"
                 << "position_km = " << vector3(c.positionKm) << "\n"
                 << "direction = " << vector3(c.forward) << "\n"
                 << "up = " << vector3(c.up) << "\n";
+            if (c.zoom != 1.0)
+                out << "field_of_view_deg = " << number(scene::fieldOfViewForZoom(c.zoom, wallTanHalfFov_)) << "\n";
+        }
     }
     return out.str();
 }

@@ -3,7 +3,9 @@
 // them as a scene that derives from the played one ([scene] base) and flies that camera as a keyed
 // path, one [[camera.key]] per frame. Numbers are printed with 17 significant digits, which gives
 // back every double exactly, so the recorded file plays the same camera at every recorded time
-// (scene::CameraPath is exact at its keys; between keys it interpolates).
+// (scene::CameraPath is exact at its keys; between keys it interpolates). A frame zoomed by its
+// path (FrameState::zoom != 1) gets field_of_view_deg, chosen so that it reads back as that zoom
+// exactly (scene::fieldOfViewForZoom); a single recorded camera ([camera], no keys) has no zoom.
 #include "cluster/frame_state.h"
 
 #include <glm/glm.hpp>
@@ -18,13 +20,16 @@ struct RecordedCamera {
     glm::dvec3 positionKm{0.0};  // planet frame, km
     glm::dvec3 forward{0.0, 1.0, 0.0};
     glm::dvec3 up{0.0, 0.0, 1.0};
+    double zoom = 1.0;           // the frame's zoom (cluster::wallToPlanet)
 };
 
 class PathRecorder {
 public:
     // file: where the scene goes; baseScene: the played scene file; startTimeS and timeStepS: the
-    // clock's, written into [scene] so that the file replays without --start-time or --dt.
-    PathRecorder(std::string file, std::string baseScene, double startTimeS, double timeStepS);
+    // clock's, written into [scene] so that the file replays without --start-time or --dt;
+    // wallTanHalfFov: the clock's, which turns zooms into fields of view.
+    PathRecorder(std::string file, std::string baseScene, double startTimeS, double timeStepS,
+                 double wallTanHalfFov = 1.0);
 
     // The camera of a frame. Keys need increasing times: a frame at the last key's time (paused)
     // replaces that key, and a frame at an earlier time (the clock set back) drops the keys from
@@ -45,6 +50,7 @@ private:
     std::string baseScene_;
     double startTimeS_;
     double timeStepS_;
+    double wallTanHalfFov_;
     std::vector<RecordedCamera> cameras_;
 };
 

@@ -10,6 +10,12 @@
 // camera turns the short way between keys and never flips. Before the first key and after the last
 // the camera holds still. The path is a function of animation time alone: it plays the same at any
 // frame rate.
+//
+// A key may set a vertical field of view; the wall shows it as a zoom z = tan(W/2) / tan(F/2) about
+// its eye, W the wall's own vertical field of view (wall/tile_rays.h), F the key's; a key without
+// one has z = 1. Between keys ln z follows the positions' cubic Hermite spline (tangents from the
+// same finite differences), so the zoom is C1, geometric (constant ln-rate between keys of evenly
+// spaced ln z) and never <= 0.
 #include <glm/glm.hpp>
 #include <glm/gtc/quaternion.hpp>
 
@@ -31,7 +37,16 @@ struct CameraKey {
     double timeS = 0.0;           // animation time, s
     glm::dvec3 positionKm{0.0};   // planet frame, km
     glm::dquat orientation{1.0, 0.0, 0.0, 0.0};
+    double fieldOfViewDeg = 0.0;  // vertical, in (0, 180); 0: the wall's own (zoom 1)
 };
+
+// The zoom that shows a vertical field of view fieldOfViewDeg on a wall whose own vertical field of
+// view W has tan(W/2) = wallTanHalfFov: tan(W/2) / tan(F/2); 1 for fieldOfViewDeg = 0 (the wall's).
+double zoomOf(double fieldOfViewDeg, double wallTanHalfFov);
+// The inverse: the field of view (deg) that zoomOf turns into exactly `zoom` where one exists (the
+// double nearest the closed form 2 atan(tan(W/2) / z), moved by at most a few ulps until it
+// round-trips); 0 for a zoom of 1.
+double fieldOfViewForZoom(double zoom, double wallTanHalfFov);
 
 class CameraPath {
 public:
@@ -44,6 +59,9 @@ public:
 
     glm::dvec3 positionAt(double timeS) const;
     glm::dquat orientationAt(double timeS) const;
+    // The zoom at timeS on a wall whose vertical field of view W has tan(W/2) = wallTanHalfFov; exactly
+    // each key's zoomOf at its time.
+    double zoomAt(double timeS, double wallTanHalfFov) const;
 
 private:
     // The index i of the segment [key i, key i+1] holding timeS, and its fraction s in [0, 1).
