@@ -164,8 +164,7 @@ cluster::FrameStats runFrames(WallSession& session, const cluster::MpiWorld& wor
     std::optional<PathRecorder> recorder;
     if (world.isMaster() && !session.options.recordPath.empty()) {
         const cluster::ClockSettings c = clockSettings(session);
-        recorder.emplace(session.options.recordPath, session.options.sceneFile, c.startTimeS, c.timeStepS,
-                         c.wallTanHalfFov);
+        recorder.emplace(session.options.recordPath, session.options.sceneFile, c.startTimeS, c.timeStepS);
     }
     std::vector<char> message(cluster::frameMessageBytes(bandCount));
     auto waitStart = SteadyClock::now(); // from this rank's previous report to this frame's message

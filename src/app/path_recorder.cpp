@@ -1,7 +1,6 @@
 #include "app/path_recorder.h"
 
 #include "io/atomic_file.h"
-#include "scene/camera_path.h"
 
 #include <cstdio>
 #include <filesystem>
@@ -56,10 +55,8 @@ std::string basePath(const std::string& file, const std::string& baseScene)
 
 } // namespace
 
-PathRecorder::PathRecorder(std::string file, std::string baseScene, double startTimeS, double timeStepS,
-                           double wallTanHalfFov)
-    : file_(std::move(file)), baseScene_(std::move(baseScene)), startTimeS_(startTimeS), timeStepS_(timeStepS),
-      wallTanHalfFov_(wallTanHalfFov)
+PathRecorder::PathRecorder(std::string file, std::string baseScene, double startTimeS, double timeStepS)
+    : file_(std::move(file)), baseScene_(std::move(baseScene)), startTimeS_(startTimeS), timeStepS_(timeStepS)
 {
 }
 
@@ -93,7 +90,7 @@ std::string PathRecorder::text() const
                 << "direction = " << vector3(c.forward) << "\n"
                 << "up = " << vector3(c.up) << "\n";
             if (c.zoom != 1.0)
-                out << "field_of_view_deg = " << number(scene::fieldOfViewForZoom(c.zoom, wallTanHalfFov_)) << "\n";
+                out << "zoom = " << number(c.zoom) << "\n";
         }
     }
     return out.str();

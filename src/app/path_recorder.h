@@ -4,8 +4,8 @@
 // path, one [[camera.key]] per frame. Numbers are printed with 17 significant digits, which gives
 // back every double exactly, so the recorded file plays the same camera at every recorded time
 // (scene::CameraPath is exact at its keys; between keys it interpolates). A frame zoomed by its
-// path (FrameState::zoom != 1) gets field_of_view_deg, chosen so that it reads back as that zoom
-// exactly (scene::fieldOfViewForZoom); a single recorded camera ([camera], no keys) has no zoom.
+// path (FrameState::zoom != 1) gets its zoom as a key's `zoom` (a field of view would not read back
+// as the same double); a single recorded camera ([camera], no keys) has no zoom.
 #include "cluster/frame_state.h"
 
 #include <glm/glm.hpp>
@@ -26,10 +26,8 @@ struct RecordedCamera {
 class PathRecorder {
 public:
     // file: where the scene goes; baseScene: the played scene file; startTimeS and timeStepS: the
-    // clock's, written into [scene] so that the file replays without --start-time or --dt;
-    // wallTanHalfFov: the clock's, which turns zooms into fields of view.
-    PathRecorder(std::string file, std::string baseScene, double startTimeS, double timeStepS,
-                 double wallTanHalfFov = 1.0);
+    // clock's, written into [scene] so that the file replays without --start-time or --dt.
+    PathRecorder(std::string file, std::string baseScene, double startTimeS, double timeStepS);
 
     // The camera of a frame. Keys need increasing times: a frame at the last key's time (paused)
     // replaces that key, and a frame at an earlier time (the clock set back) drops the keys from
@@ -50,7 +48,6 @@ private:
     std::string baseScene_;
     double startTimeS_;
     double timeStepS_;
-    double wallTanHalfFov_;
     std::vector<RecordedCamera> cameras_;
 };
 

@@ -55,30 +55,12 @@ Hermite hermite(double s)
 
 double zoomOf(double fieldOfViewDeg, double wallTanHalfFov)
 {
-    if (fieldOfViewDeg == 0.0)
-        return 1.0;
     return wallTanHalfFov / std::tan(0.5 * fieldOfViewDeg * kDegree);
 }
 
-double fieldOfViewForZoom(double zoom, double wallTanHalfFov)
+double zoomOf(const CameraKey& key, double wallTanHalfFov)
 {
-    if (zoom == 1.0)
-        return 0.0;
-    double best = 2.0 * std::atan(wallTanHalfFov / zoom) / kDegree;
-    double bestError = std::abs(zoomOf(best, wallTanHalfFov) - zoom);
-    // tan's rounding may leave the closed form a few ulps off: try the neighbouring doubles.
-    for (double direction : {-1.0, 1.0}) {
-        double f = best;
-        for (int step = 0; step < 8 && bestError > 0.0; ++step) {
-            f = std::nextafter(f, direction * 360.0);
-            const double error = std::abs(zoomOf(f, wallTanHalfFov) - zoom);
-            if (error < bestError) {
-                best = f;
-                bestError = error;
-            }
-        }
-    }
-    return best;
+    return key.fieldOfViewDeg > 0.0 ? zoomOf(key.fieldOfViewDeg, wallTanHalfFov) : key.zoom;
 }
 
 glm::dquat orientationOf(const CameraFrame& frame)
@@ -169,7 +151,7 @@ glm::dvec3 CameraPath::positionAt(double timeS) const
 
 double CameraPath::zoomAt(double timeS, double wallTanHalfFov) const
 {
-    const auto zoom = [&](std::size_t k) { return zoomOf(keys_[k].fieldOfViewDeg, wallTanHalfFov); };
+    const auto zoom = [&](std::size_t k) { return zoomOf(keys_[k], wallTanHalfFov); };
     if (timeS <= keys_.front().timeS)
         return zoom(0);
     if (timeS >= keys_.back().timeS)

@@ -12,8 +12,9 @@
 // frame rate.
 //
 // A key may set a vertical field of view; the wall shows it as a zoom z = tan(W/2) / tan(F/2) about
-// its eye, W the wall's own vertical field of view (wall/tile_rays.h), F the key's; a key without
-// one has z = 1. Between keys ln z follows the positions' cubic Hermite spline (tangents from the
+// its eye, W the wall's own vertical field of view (wall/tile_rays.h), F the key's. A key may give
+// the zoom itself instead (what `render --record-path` writes: it reads back exactly); a key with
+// neither has z = 1. Between keys ln z follows the positions' cubic Hermite spline (tangents from the
 // same finite differences), so the zoom is C1, geometric (constant ln-rate between keys of evenly
 // spaced ln z) and never <= 0.
 #include <glm/glm.hpp>
@@ -37,16 +38,15 @@ struct CameraKey {
     double timeS = 0.0;           // animation time, s
     glm::dvec3 positionKm{0.0};   // planet frame, km
     glm::dquat orientation{1.0, 0.0, 0.0, 0.0};
-    double fieldOfViewDeg = 0.0;  // vertical, in (0, 180); 0: the wall's own (zoom 1)
+    double fieldOfViewDeg = 0.0;  // vertical, in (0, 180); 0: none, the zoom below instead
+    double zoom = 1.0;            // > 0, relative to the wall's own view; used without a field of view
 };
 
 // The zoom that shows a vertical field of view fieldOfViewDeg on a wall whose own vertical field of
-// view W has tan(W/2) = wallTanHalfFov: tan(W/2) / tan(F/2); 1 for fieldOfViewDeg = 0 (the wall's).
+// view W has tan(W/2) = wallTanHalfFov: tan(W/2) / tan(F/2).
 double zoomOf(double fieldOfViewDeg, double wallTanHalfFov);
-// The inverse: the field of view (deg) that zoomOf turns into exactly `zoom` where one exists (the
-// double nearest the closed form 2 atan(tan(W/2) / z), moved by at most a few ulps until it
-// round-trips); 0 for a zoom of 1.
-double fieldOfViewForZoom(double zoom, double wallTanHalfFov);
+// A key's zoom: zoomOf its field of view if it gives one, else its zoom.
+double zoomOf(const CameraKey& key, double wallTanHalfFov);
 
 class CameraPath {
 public:
@@ -60,7 +60,7 @@ public:
     glm::dvec3 positionAt(double timeS) const;
     glm::dquat orientationAt(double timeS) const;
     // The zoom at timeS on a wall whose vertical field of view W has tan(W/2) = wallTanHalfFov; exactly
-    // each key's zoomOf at its time.
+    // each key's zoomOf at its time, held before the first key and after the last.
     double zoomAt(double timeS, double wallTanHalfFov) const;
 
 private:
