@@ -43,6 +43,7 @@ SceneView sceneView(const scene::Scene& scene, const std::string& wallFile, glm:
     cluster::ClockSettings clock;
     clock.startTimeS = scene.startTimeS;
     clock.timeStepS = scene.timeStepS;
+    clock.wallTanHalfFov = wall::tanHalfVerticalFieldOfView(view.wall);
     cluster::MasterClock master(clock, scene.camera, scene.exposure);
     for (long long k = 0; k <= frame; ++k)
         view.frame = master.next(false);
@@ -56,8 +57,7 @@ glm::dvec3 pixelDirection(const SceneView& view, int x, int y)
     const wall::TileRays& r = view.rays;
     const glm::dvec2 canvas = glm::dvec2(r.pixelOffset) + glm::dvec2(x + 0.5, y + 0.5);
     const glm::dvec3 wallDir = r.originDir + canvas.x * r.stepRight + canvas.y * r.stepDown;
-    const glm::dmat3 wallToPlanet(view.frame.cameraRight, view.frame.cameraUp, view.frame.cameraBack);
-    return glm::normalize(wallToPlanet * wallDir);
+    return glm::normalize(cluster::wallToPlanet(view.frame) * wallDir);
 }
 
 TimedRender renderView(const scene::Scene& scene, const SceneView& view, const std::string& shaderDir, int runs)

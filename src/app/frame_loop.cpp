@@ -15,6 +15,7 @@
 #include "common/clock.h"
 #include "common/data_dir.h"
 #include "io/png.h"
+#include "wall/tile_rays.h"
 
 #include <cstdio>
 #include <optional>
@@ -31,6 +32,7 @@ cluster::ClockSettings clockSettings(const WallSession& s)
     c.startTimeS = s.options.startTimeGiven ? s.options.startTimeS : s.scene.startTimeS;
     c.timeStepS = s.options.timeStepS >= 0 ? s.options.timeStepS : s.scene.timeStepS;
     c.realTime = s.options.realTime;
+    c.wallTanHalfFov = wall::tanHalfVerticalFieldOfView(s.wall);
     return c;
 }
 

@@ -64,7 +64,7 @@ void PathRecorder::add(const cluster::FrameState& state)
 {
     while (!cameras_.empty() && !(cameras_.back().timeS < state.timeS))
         cameras_.pop_back();
-    cameras_.push_back({state.timeS, state.cameraPositionKm, -state.cameraBack, state.cameraUp});
+    cameras_.push_back({state.timeS, state.cameraPositionKm, -state.cameraBack, state.cameraUp, state.zoom});
 }
 
 std::string PathRecorder::text() const
@@ -83,12 +83,15 @@ std::string PathRecorder::text() const
             << "up = " << vector3(c.up) << "\n";
     }
     if (cameras_.size() > 1) {
-        for (const RecordedCamera& c : cameras_)
+        for (const RecordedCamera& c : cameras_) {
             out << "\n[[camera.key]]\n"
                 << "time_s = " << number(c.timeS) << "\n"
                 << "position_km = " << vector3(c.positionKm) << "\n"
                 << "direction = " << vector3(c.forward) << "\n"
                 << "up = " << vector3(c.up) << "\n";
+            if (c.zoom != 1.0)
+                out << "zoom = " << number(c.zoom) << "\n";
+        }
     }
     return out.str();
 }

@@ -3,7 +3,9 @@
 // them as a scene that derives from the played one ([scene] base) and flies that camera as a keyed
 // path, one [[camera.key]] per frame. Numbers are printed with 17 significant digits, which gives
 // back every double exactly, so the recorded file plays the same camera at every recorded time
-// (scene::CameraPath is exact at its keys; between keys it interpolates).
+// (scene::CameraPath is exact at its keys; between keys it interpolates). A frame zoomed by its
+// path (FrameState::zoom != 1) gets its zoom as a key's `zoom` (a field of view would not read back
+// as the same double); a single recorded camera ([camera], no keys) has no zoom.
 #include "cluster/frame_state.h"
 
 #include <glm/glm.hpp>
@@ -18,6 +20,7 @@ struct RecordedCamera {
     glm::dvec3 positionKm{0.0};  // planet frame, km
     glm::dvec3 forward{0.0, 1.0, 0.0};
     glm::dvec3 up{0.0, 0.0, 1.0};
+    double zoom = 1.0;           // the frame's zoom (cluster::wallToPlanet)
 };
 
 class PathRecorder {

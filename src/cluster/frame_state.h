@@ -15,11 +15,20 @@ struct FrameState {
     glm::dvec3 cameraRight{1.0, 0.0, 0.0};
     glm::dvec3 cameraUp{0.0, 1.0, 0.0};
     glm::dvec3 cameraBack{0.0, 0.0, 1.0}; // the camera looks along -back
+    double zoom = 1.0;                    // > 0: the wall's rays scaled about the eye (wallToPlanet)
     double exposure = 1.0;
     std::int32_t quit = 0;                // 1: this state is not rendered; every rank leaves the loop
     std::int32_t gatherWall = 0;          // 1: after drawing, every rank sends its screens to the master,
                                           // which assembles the wall (a screenshot or a movie frame)
 };
 static_assert(std::is_trivially_copyable_v<FrameState>, "FrameState is broadcast as bytes");
+
+// The wall frame (x right, y up, z toward the viewer, from the eye) in the planet frame: the camera's
+// axes, with x and y divided by the zoom z, so that the ray through the wall point p becomes
+// (p.x / z, p.y / z, p.z) on every screen alike (a zoom of 2 shows the centre half of the view).
+inline glm::dmat3 wallToPlanet(const FrameState& s)
+{
+    return glm::dmat3(s.cameraRight / s.zoom, s.cameraUp / s.zoom, s.cameraBack);
+}
 
 } // namespace aurorawall::cluster

@@ -35,6 +35,7 @@ FrameState MasterClock::next(bool stopRequested)
     s.cameraBack = -c.forward;
     s.cameraUp = c.up;
     s.cameraRight = glm::cross(c.forward, c.up);
+    s.zoom = camera_.path.empty() ? 1.0 : camera_.path.zoomAt(timeS, settings_.wallTanHalfFov);
     s.exposure = exposure_;
     s.quit = stopRequested || (settings_.frames > 0 && frame_ >= settings_.frames);
     ++frame_;

@@ -16,6 +16,8 @@ struct ClockSettings {
     double startTimeS = 0.0;
     double timeStepS = 1.0 / 30.0; // animation time per frame (fixed step: reproducible)
     bool realTime = false;         // animation time follows the wall clock instead
+    double wallTanHalfFov = 1.0;   // tan(W/2), W the wall's vertical field of view: a path key's field of
+                                   // view becomes the frame's zoom relative to it (scene/camera_path.h)
 };
 
 class MasterClock {
@@ -23,6 +25,7 @@ public:
     MasterClock(const ClockSettings& settings, const scene::Camera& camera, double exposure);
 
     // The state of the next frame; quit is set once the frame count is reached or `stopRequested`.
+    // Its zoom is the keyed path's at its time, 1 (the wall's own view) for a camera without a path.
     // Playing, the animation time advances by speed x timeStepS per frame (or speed x the wall-clock
     // time elapsed with realTime); paused it stands still but for the steps asked for.
     FrameState next(bool stopRequested);

@@ -25,8 +25,11 @@ TileRenderer::TileRenderer(const scene::Scene& scene, const std::string& shaderD
 
 void TileRenderer::setFrame(const cluster::FrameState& frame)
 {
-    // Wall frame (x right, y up, z toward the viewer) -> camera axes in the planet frame.
-    wallToPlanet_ = glm::dmat3(frame.cameraRight, frame.cameraUp, frame.cameraBack);
+    // Wall frame (x right, y up, z toward the viewer) -> camera axes in the planet frame; the flat
+    // wall's rays with the frame's zoom, the dome master's without (its field of view is its own).
+    wallToPlanet_ = cluster::wallToPlanet(frame);
+    domeToPlanet_ = glm::dmat3(frame.cameraRight, frame.cameraUp, frame.cameraBack);
+    zoom_ = frame.zoom;
     program_.set("uCameraPositionKm", glm::vec3(frame.cameraPositionKm));
     for (const auto& c : components_)
         c->setFrame(program_, frame);
@@ -54,15 +57,17 @@ void TileRenderer::renderTile(const wall::TileRays& rays, gl::FloatTarget& targe
     program_.set("uPixelOffset", glm::vec2(rays.pixelOffset)); // integers: exact in float below 2^24
     program_.set("uTileHeight", target.height());
     // Angular size of one pixel at the canvas origin (dome: at the image centre), for drawing point-like stars.
-    const double pixelAngle = rays.dome ? rays.domeRadiansPerPx : glm::length(rays.stepRight) / glm::length(rays.originDir);
+    const glm::dvec3 zoomed(1.0 / zoom_, 1.0 / zoom_, 1.0); // the zoom's scaling in the wall frame
+    const double pixelAngle = rays.dome ? rays.domeRadiansPerPx
+                                        : glm::length(zoomed * rays.stepRight) / glm::length(zoomed * rays.originDir);
     program_.set("uPixelAngle", static_cast<float>(pixelAngle));
     program_.set("uDome", rays.dome ? 1 : 0);
     program_.set("uDomeCentre", glm::vec2(rays.domeCentrePx)); // whole or half pixels: exact in float
     program_.set("uDomeRadius", static_cast<float>(rays.domeRadiusPx));
     program_.set("uDomeRadiansPerPixel", static_cast<float>(rays.domeRadiansPerPx));
-    program_.set("uDomeAxis", glm::vec3(wallToPlanet_ * rays.domeAxis));
-    program_.set("uDomeRight", glm::vec3(wallToPlanet_ * rays.domeRight));
-    program_.set("uDomeDown", glm::vec3(wallToPlanet_ * rays.domeDown));
+    program_.set("uDomeAxis", glm::vec3(domeToPlanet_ * rays.domeAxis));
+    program_.set("uDomeRight", glm::vec3(domeToPlanet_ * rays.domeRight));
+    program_.set("uDomeDown", glm::vec3(domeToPlanet_ * rays.domeDown));
     // Texture bindings belong to the current context: bind every time.
     for (const auto& c : components_)
         c->bind(program_);

@@ -28,7 +28,8 @@ public:
 
     // Renders the tile whose pixel rays are `rays` into `target` (its size is the tile's size),
     // drawing with `triangle` (vertex arrays belong to one context). The ray vectors are rotated
-    // from the wall frame into the planet frame in double precision.
+    // from the wall frame into the planet frame in double precision, the flat wall's with the frame's
+    // zoom (cluster::wallToPlanet), the dome master's without.
     void renderTile(const wall::TileRays& rays, gl::FloatTarget& target, const gl::FullScreenTriangle& triangle);
 
     // One line per table precomputed at start-up for the scene's components; empty when none is needed.
@@ -41,7 +42,9 @@ public:
 private:
     const scene::Scene& scene_;
     gl::Program program_;
-    glm::dmat3 wallToPlanet_{1.0};
+    glm::dmat3 wallToPlanet_{1.0}; // with the frame's zoom (cluster::wallToPlanet)
+    glm::dmat3 domeToPlanet_{1.0}; // the camera's axes alone
+    double zoom_ = 1.0;
     std::vector<std::unique_ptr<scene::ComponentRenderer>> components_;
     std::vector<std::string> precomputationLog_;
 };

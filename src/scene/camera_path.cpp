@@ -1,5 +1,7 @@
 #include "scene/camera_path.h"
 
+#include "common/constants.h"
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -37,7 +39,29 @@ glm::dquat slerp(const glm::dquat& a, const glm::dquat& b, double s)
     return a * expOf(s * logOf(glm::conjugate(a) * b));
 }
 
+// The cubic Hermite basis (e.g. Kochanek & Bartels 1984) at s in [0, 1] of a segment of length h:
+// f(s) = h00 f0 + h10 h m0 + h01 f1 + h11 h m1 for values f and time derivatives m at its ends.
+struct Hermite {
+    double h00, h10, h01, h11;
+};
+
+Hermite hermite(double s)
+{
+    const double s2 = s * s, s3 = s2 * s;
+    return {2 * s3 - 3 * s2 + 1, s3 - 2 * s2 + s, -2 * s3 + 3 * s2, s3 - s2};
+}
+
 } // namespace
+
+double zoomOf(double fieldOfViewDeg, double wallTanHalfFov)
+{
+    return wallTanHalfFov / std::tan(0.5 * fieldOfViewDeg * kDegree);
+}
+
+double zoomOf(const CameraKey& key, double wallTanHalfFov)
+{
+    return key.fieldOfViewDeg > 0.0 ? zoomOf(key.fieldOfViewDeg, wallTanHalfFov) : key.zoom;
+}
 
 glm::dquat orientationOf(const CameraFrame& frame)
 {
@@ -120,11 +144,32 @@ glm::dvec3 CameraPath::positionAt(double timeS) const
     double s = 0.0;
     const std::size_t i = segment(timeS, s);
     const double h = keys_[i + 1].timeS - keys_[i].timeS;
-    // Cubic Hermite basis (e.g. Kochanek & Bartels 1984): p(s) = h00 p0 + h10 h m0 + h01 p1 + h11 h m1.
-    const double s2 = s * s, s3 = s2 * s;
-    const double h00 = 2 * s3 - 3 * s2 + 1, h10 = s3 - 2 * s2 + s, h01 = -2 * s3 + 3 * s2, h11 = s3 - s2;
-    return h00 * keys_[i].positionKm + h10 * h * tangentsKmPerS_[i] + h01 * keys_[i + 1].positionKm +
-           h11 * h * tangentsKmPerS_[i + 1];
+    const Hermite b = hermite(s);
+    return b.h00 * keys_[i].positionKm + b.h10 * h * tangentsKmPerS_[i] + b.h01 * keys_[i + 1].positionKm +
+           b.h11 * h * tangentsKmPerS_[i + 1];
+}
+
+double CameraPath::zoomAt(double timeS, double wallTanHalfFov) const
+{
+    const auto zoom = [&](std::size_t k) { return zoomOf(keys_[k], wallTanHalfFov); };
+    if (timeS <= keys_.front().timeS)
+        return zoom(0);
+    if (timeS >= keys_.back().timeS)
+        return zoom(keys_.size() - 1);
+    double s = 0.0;
+    const std::size_t i = segment(timeS, s);
+    if (s == 0.0) // exactly the key's zoom, not exp(ln z) rounded
+        return zoom(i);
+    // ln z with the positions' tangents: the centred difference inside, one-sided at the ends.
+    const std::size_t n = keys_.size();
+    const auto tangent = [&](std::size_t k) {
+        const std::size_t a = k == 0 ? 0 : k - 1, b = k + 1 == n ? k : k + 1;
+        return (std::log(zoom(b)) - std::log(zoom(a))) / (keys_[b].timeS - keys_[a].timeS);
+    };
+    const double h = keys_[i + 1].timeS - keys_[i].timeS;
+    const Hermite b = hermite(s);
+    return std::exp(b.h00 * std::log(zoom(i)) + b.h10 * h * tangent(i) + b.h01 * std::log(zoom(i + 1)) +
+                    b.h11 * h * tangent(i + 1));
 }
 
 glm::dquat CameraPath::orientationAt(double timeS) const

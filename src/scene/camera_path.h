@@ -10,6 +10,13 @@
 // camera turns the short way between keys and never flips. Before the first key and after the last
 // the camera holds still. The path is a function of animation time alone: it plays the same at any
 // frame rate.
+//
+// A key may set a vertical field of view; the wall shows it as a zoom z = tan(W/2) / tan(F/2) about
+// its eye, W the wall's own vertical field of view (wall/tile_rays.h), F the key's. A key may give
+// the zoom itself instead (what `render --record-path` writes: it reads back exactly); a key with
+// neither has z = 1. Between keys ln z follows the positions' cubic Hermite spline (tangents from the
+// same finite differences), so the zoom is C1, geometric (constant ln-rate between keys of evenly
+// spaced ln z) and never <= 0.
 #include <glm/glm.hpp>
 #include <glm/gtc/quaternion.hpp>
 
@@ -31,7 +38,15 @@ struct CameraKey {
     double timeS = 0.0;           // animation time, s
     glm::dvec3 positionKm{0.0};   // planet frame, km
     glm::dquat orientation{1.0, 0.0, 0.0, 0.0};
+    double fieldOfViewDeg = 0.0;  // vertical, in (0, 180); 0: none, the zoom below instead
+    double zoom = 1.0;            // > 0, relative to the wall's own view; used without a field of view
 };
+
+// The zoom that shows a vertical field of view fieldOfViewDeg on a wall whose own vertical field of
+// view W has tan(W/2) = wallTanHalfFov: tan(W/2) / tan(F/2).
+double zoomOf(double fieldOfViewDeg, double wallTanHalfFov);
+// A key's zoom: zoomOf its field of view if it gives one, else its zoom.
+double zoomOf(const CameraKey& key, double wallTanHalfFov);
 
 class CameraPath {
 public:
@@ -44,6 +59,9 @@ public:
 
     glm::dvec3 positionAt(double timeS) const;
     glm::dquat orientationAt(double timeS) const;
+    // The zoom at timeS on a wall whose vertical field of view W has tan(W/2) = wallTanHalfFov; exactly
+    // each key's zoomOf at its time, held before the first key and after the last.
+    double zoomAt(double timeS, double wallTanHalfFov) const;
 
 private:
     // The index i of the segment [key i, key i+1] holding timeS, and its fraction s in [0, 1).

@@ -54,7 +54,8 @@ glm::dvec3 readPoint(const TableReader& t, const std::string& prefix, double pla
 
 // One [[camera.key]]: its time, a position and one orientation: heading_deg/pitch_deg, a look-at
 // point (look_at_km, or look_at_latitude_deg/look_at_longitude_deg/look_at_altitude_km), or explicit
-// direction/up vectors; roll_deg (clockwise as seen from behind) turns the first two about the view.
+// direction/up vectors; roll_deg (clockwise as seen from behind) turns the first two about the view;
+// field_of_view_deg or zoom (optional) zooms the wall (camera_path.h).
 CameraKey readCameraKey(const TableReader& k, double planetRadiusKm)
 {
     CameraKey key;
@@ -107,6 +108,18 @@ CameraKey readCameraKey(const TableReader& k, double planetRadiusKm)
         frame.up = std::cos(roll) * frame.up + std::sin(roll) * right;
     }
     key.orientation = orientationOf(frame);
+    if (k.has("field_of_view_deg") && k.has("zoom"))
+        k.fail("zoom", "give field_of_view_deg or zoom, not both");
+    key.zoom = k.numberAbove("zoom", 0.0, 1e6, 1.0);
+    if (k.has("field_of_view_deg")) {
+        // A pinhole's vertical field of view lies strictly between 0 and 180 degrees.
+        key.fieldOfViewDeg = k.number("field_of_view_deg", -1e9, 1e9);
+        if (!(key.fieldOfViewDeg > 0.0 && key.fieldOfViewDeg < 180.0)) {
+            std::ostringstream got;
+            got << key.fieldOfViewDeg;
+            k.fail("field_of_view_deg", "must be in (0, 180) degrees, exclusive (got " + got.str() + ")");
+        }
+    }
     k.rejectUnknownKeys();
     return key;
 }

@@ -17,7 +17,7 @@
 namespace aurorawall::scene {
 
 // The camera: position in planet coordinates (km, double) and an orthonormal frame. The field
-// of view is not here: the wall's physical screens and eye position set it.
+// of view is not here: the wall's physical screens and eye position set it (a keyed path may zoom it).
 struct Camera {
     glm::dvec3 positionKm{0.0};
     glm::dvec3 forward{0.0, 1.0, 0.0};

@@ -3,6 +3,7 @@
 #include "common/constants.h"
 #include "common/glsl.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -61,6 +62,16 @@ TileRays tileRays(const Wall& wall, int screenIndex, glm::ivec2 regionOffsetPx)
         setDome(rays, wall);
     }
     return rays;
+}
+
+double tanHalfVerticalFieldOfView(const Wall& wall)
+{
+    double bottom = wall.screens.front().lowerLeftMm.y, top = bottom;
+    for (const Screen& s : wall.screens) {
+        bottom = std::min(bottom, s.lowerLeftMm.y);
+        top = std::max(top, s.lowerLeftMm.y + s.heightMm);
+    }
+    return 0.5 * (top - bottom) / wall.eyeMm.z;
 }
 
 glm::dvec3 domeDirection(const TileRays& rays, glm::dvec2 canvasPx)

@@ -44,6 +44,13 @@ struct TileRays {
 // regionOffsetPx inside the screen.
 TileRays tileRays(const Wall& wall, int screenIndex, glm::ivec2 regionOffsetPx = {0, 0});
 
+// tan(W/2) of the wall's own vertical field of view W at its eye: half the height of the screens'
+// bounding box (bezels included) over the eye's distance from the wall plane, so W is the angle the
+// wall spans seen from in front of its centre. A camera path's field of view zooms the flat wall's
+// rays relative to it (scene/camera_path.h, cluster::wallToPlanet); a dome master keeps its own
+// field of view and ignores the zoom.
+double tanHalfVerticalFieldOfView(const Wall& wall);
+
 // Unit direction (wall frame) of the dome master's pixel at continuous canvas coordinate canvasPx,
 // in double; the zero vector outside the image circle.
 glm::dvec3 domeDirection(const TileRays& rays, glm::dvec2 canvasPx);
