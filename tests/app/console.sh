@@ -21,7 +21,6 @@ aw_mpirun 2 render --wall "$wall" --scene "$SCENE" --backend glfw --console --ex
 job=$!
 port=$(control_port "$WORK/log" "$job")
 ask() { "${client[@]}" --port "$port" "$@" || { kill $job; fail "'$*' was not answered ok"; }; }
-field() { sed -n "s/.* $1=\([^ ]*\).*/\1/p" <<<"$2"; }
 
 window=$(xdotool search --name '^aurorawall console$' | head -n 1)
 [ -n "$window" ] || { kill $job; fail "no window 'aurorawall console'"; }
@@ -43,13 +42,7 @@ PY
 before=$(ask status)
 xdotool windowfocus --sync "$window"
 xdotool key --delay 50 h Right Right
-for _ in $(seq 100); do
-    after=$(ask status)
-    [ "$(field heading_deg "$after")" != "$(field heading_deg "$before")" ] && break
-    sleep 0.1
-done
-sleep 1
-after=$(ask status)
+after=$(status_once_changed heading_deg "$before")
 grab hud
 shown=$(python3 "$HERE/ppm_diff.py" "$WORK/plain.ppm" "$WORK/hud.ppm")
 plainWhite=$(python3 "$HERE/ppm_diff.py" "$WORK/hud.ppm" "$WORK/plain.ppm" | awk '{ print $NF }')

@@ -58,3 +58,18 @@ run_under_xvfb() {
     if ! command -v xdotool >/dev/null; then echo "SKIP: xdotool is not installed"; exit 77; fi
     exec "$XVFB_RUN" -a -s "-screen 0 $screen" bash "$0" --inside-x
 }
+
+# For the scripts that steer a wall over its control port (they define `ask`, which sends one command
+# and fails unless answered ok): a field of a `status` answer, and the wall's status once the field
+# NAME differs from its value in the earlier answer BEFORE (polled for up to 20 s), plus one second
+# for the rest of the input to arrive. Usage: field NAME ANSWER; status_once_changed NAME BEFORE.
+field() { sed -n "s/.* $1=\([^ ]*\).*/\1/p" <<<"$2"; }
+status_once_changed() {
+    local name="$1" before="$2"
+    for _ in $(seq 200); do
+        [ "$(field "$name" "$(ask status)")" != "$(field "$name" "$before")" ] && break
+        sleep 0.1
+    done
+    sleep 1
+    ask status
+}

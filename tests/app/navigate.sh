@@ -18,7 +18,6 @@ port=$(control_port "$WORK/log" "$job")
 
 ask() { "${client[@]}" --port "$port" "$@" || { kill $job; fail "'$*' was not answered ok"; }; }
 # field NAME LINE: the value of NAME=... in a status line.
-field() { sed -n "s/.* $1=\([^ ]*\).*/\1/p" <<<"$2"; }
 
 ask pause >/dev/null
 before=$(ask status)
@@ -44,26 +43,14 @@ echo "keys:   $keyed"
 
 # A drag 15 px up inside the 32x18 window: the view follows the pointer, 0.2 degrees a pixel.
 xdotool mousemove --window "$window" 16 17 mousedown 1 mousemove --window "$window" 16 2 mouseup 1
-for _ in $(seq 200); do
-    after=$(ask status)
-    [ "$(field pitch_deg "$after")" != "$(field pitch_deg "$keyed")" ] && break
-    sleep 0.1
-done
-sleep 1
-after=$(ask status)
+after=$(status_once_changed pitch_deg "$keyed")
 echo "drag:   $after"
 ask "screenshot $WORK/after.png" >/dev/null
 
 # O, three Right and O: the camera orbits the point ahead of it about that point's zenith, an axis
 # through the planet's centre, so its altitude and pitch stay while it moves across the ground.
 xdotool key --delay 50 o Right Right Right o
-for _ in $(seq 200); do
-    orbited=$(ask status)
-    [ "$(field lon_deg "$orbited")" != "$(field lon_deg "$after")" ] && break
-    sleep 0.1
-done
-sleep 1
-orbited=$(ask status)
+orbited=$(status_once_changed lon_deg "$after")
 echo "orbit:  $orbited"
 ask quit >/dev/null
 for _ in $(seq 300); do kill -0 $job 2>/dev/null || break; sleep 0.1; done
