@@ -1,5 +1,5 @@
 #pragma once
-// `aurorawall plasma verify [--case NAME] [--wp-dt X] [--wc-dt X]`: the particle-in-cell plasma's
+// `aurorawall plasma verify [--case NAME] [--device cpu|gpu] [--wp-dt X] [--wc-dt X]`: the particle-in-cell plasma's
 // verification cases as CSV (docs/PLASMA.md).
 #include <iosfwd>
 

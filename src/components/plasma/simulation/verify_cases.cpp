@@ -63,6 +63,14 @@ double fittedSlope(const std::vector<double>& t, const std::vector<double>& y)
     return sty / stt;
 }
 
+void requireLeapfrogStable(double wpDt)
+{
+    if (!(wpDt > 0.0 && wpDt < 2.0))
+        throw std::domain_error("omega_p dt must be in (0, 2): the leapfrog is unstable from 2 on");
+}
+
+} // namespace
+
 // The frequency ωΔt of a leapfrog mode: a sampled cosine s_n obeys s_{n+1} + s_{n−1} = 2 cos(ωΔt) s_n
 // exactly, so cos(ωΔt) by least squares over the samples.
 double sampledCosineFrequency(const std::vector<double>& s)
@@ -74,14 +82,6 @@ double sampledCosineFrequency(const std::vector<double>& s)
     }
     return std::acos(numerator / denominator);
 }
-
-void requireLeapfrogStable(double wpDt)
-{
-    if (!(wpDt > 0.0 && wpDt < 2.0))
-        throw std::domain_error("omega_p dt must be in (0, 2): the leapfrog is unstable from 2 on");
-}
-
-} // namespace
 
 double VerifyRow::relativeError() const
 {

@@ -19,6 +19,10 @@ struct VerifyRow {
     double relativeError() const;
 };
 
+// The frequency ωΔt of a leapfrog mode from its samples s_n: a sampled cosine obeys
+// s_{n+1} + s_{n−1} = 2 cos(ωΔt) s_n exactly, so cos(ωΔt) by least squares over the samples.
+double sampledCosineFrequency(const std::vector<double>& s);
+
 // Cold plasma oscillation: frequency against sin(ωΔt/2) = ω_pΔt/2 (0 < ω_pΔt < 2).
 std::vector<VerifyRow> verifyLangmuir(double plasmaFrequencyTimesDt);
 // The same on a 2D grid, the wave along the diagonal of a square box.

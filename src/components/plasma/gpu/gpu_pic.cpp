@@ -1,0 +1,165 @@
+#include "components/plasma/gpu/gpu_pic.h"
+
+#include "components/plasma/simulation/plasma_parameters.h"
+#include "gl/functions.h"
+#include "gl/shader_program.h"
+
+#include <glm/vec4.hpp>
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
+namespace aurorawall::plasma {
+namespace {
+
+using namespace gl; // the GL function pointers (gl/functions.h)
+
+constexpr int kWorkGroupSize = 64; // local_size_x of pic_step.comp
+constexpr double kChargeOverMass = -kElementaryCharge / kElectronMass; // C/kg
+enum Buffer { Positions, Velocities, ChargeQuanta, Potential, NodeField };
+
+GLuint storageBuffer(std::size_t bytes, const void* data, GLuint binding)
+{
+    GLuint buffer = 0;
+    glCreateBuffers(1, &buffer);
+    glNamedBufferStorage(buffer, GLsizeiptr(std::max<std::size_t>(bytes, 16)), data, GL_DYNAMIC_STORAGE_BIT);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding, buffer);
+    return buffer;
+}
+
+std::vector<glm::vec4> packed(const std::vector<glm::dvec3>& values)
+{
+    std::vector<glm::vec4> out;
+    out.reserve(values.size());
+    for (const glm::dvec3& v : values)
+        out.emplace_back(glm::vec3(v), 0.0f);
+    return out;
+}
+
+std::vector<glm::dvec3> readVectors(GLuint buffer, std::size_t count)
+{
+    std::vector<glm::vec4> values(count);
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    glGetNamedBufferSubData(buffer, 0, GLsizeiptr(count * sizeof(glm::vec4)), values.data());
+    std::vector<glm::dvec3> out;
+    out.reserve(count);
+    for (const glm::vec4& v : values)
+        out.emplace_back(glm::dvec3(glm::vec3(v)));
+    return out;
+}
+
+GLuint groups(std::size_t invocations) { return GLuint((invocations + kWorkGroupSize - 1) / kWorkGroupSize); }
+
+} // namespace
+
+int depositQuantumBits(std::size_t particleCount, int dimension)
+{
+    constexpr long long kLimit = (1LL << 31) - 1;
+    for (int bits = 20; bits >= 8; --bits)
+        if ((long long)particleCount * ((1LL << bits) + (1LL << dimension)) <= kLimit)
+            return bits;
+    throw std::invalid_argument("plasma on the GPU: " + std::to_string(particleCount) +
+                                " particles could overflow the fixed-point deposit's 32-bit node sums even at "
+                                "2^-8 of a particle (at most 8134407 particles)");
+}
+
+struct GpuPic::Programs {
+    gl::Program deposit, field, push;
+};
+
+GpuPic::GpuPic(const PeriodicGrid& grid, const Particles& electrons, glm::dvec3 magneticField, double dt,
+               const std::string& shaderDir, glm::dvec3 externalField)
+    : grid_(grid), poisson_(grid), particleCount_(electrons.position.size()), weight_(electrons.weight),
+      quantumBits_(depositQuantumBits(electrons.position.size(), grid.dimension)), dt_(dt),
+      zeroQuanta_(grid.nodeCount(), 0)
+{
+    if (!(dt > 0.0) || electrons.position.size() != electrons.velocity.size())
+        throw std::invalid_argument("GpuPic: needs dt > 0 and a velocity per particle");
+    std::vector<gl::ShaderModule> modules;
+    for (const char* name : {"cloud_in_cell.glsl", "electric_field.glsl", "boris_push.glsl", "pic_step.comp"})
+        modules.push_back(gl::readShaderModule(shaderDir + "/components/plasma/" + name));
+    const auto program = [&](int pass) {
+        return gl::Program::compute(
+            {{"PLASMA_DIMENSION " + std::to_string(grid.dimension), "PLASMA_PASS " + std::to_string(pass)}, modules});
+    };
+    programs_ = std::make_unique<Programs>(Programs{program(1), program(2), program(3)});
+    const glm::vec3 cells(grid.cells[0], grid.cells[1], grid.cells[2]);
+    const glm::vec3 spacing(grid.spacing[0], grid.spacing[1], grid.spacing[2]);
+    for (gl::Program* p : {&programs_->deposit, &programs_->field, &programs_->push}) {
+        p->set("uCells", cells);
+        p->set("uSpacing", spacing);
+        p->set("uCount", int(p == &programs_->field ? grid.nodeCount() : particleCount_));
+    }
+    programs_->deposit.set("uQuantumBits", quantumBits_);
+    programs_->push.set("uExternalField", glm::vec3(externalField));
+    programs_->push.set("uMagneticField", glm::vec3(magneticField));
+    programs_->push.set("uChargeOverMass", float(kChargeOverMass));
+
+    const std::vector<glm::vec4> x = packed(electrons.position), v = packed(electrons.velocity);
+    buffers_[Positions] = storageBuffer(x.size() * sizeof(glm::vec4), x.data(), Positions);
+    buffers_[Velocities] = storageBuffer(v.size() * sizeof(glm::vec4), v.data(), Velocities);
+    buffers_[ChargeQuanta] = storageBuffer(grid.nodeCount() * sizeof(std::int32_t), nullptr, ChargeQuanta);
+    buffers_[Potential] = storageBuffer(grid.nodeCount() * sizeof(float), nullptr, Potential);
+    buffers_[NodeField] = storageBuffer(grid.nodeCount() * sizeof(glm::vec4), nullptr, NodeField);
+    solveFields();
+    push(-0.5 * dt_, false);
+}
+
+GpuPic::~GpuPic()
+{
+    glDeleteBuffers(5, buffers_);
+}
+
+void GpuPic::push(double dt, bool movePositions)
+{
+    for (GLuint b = 0; b < 5; ++b)
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, b, buffers_[b]);
+    programs_->push.set("uDt", float(dt));
+    programs_->push.set("uMovePositions", movePositions ? 1 : 0);
+    programs_->push.use();
+    glDispatchCompute(groups(particleCount_), 1, 1);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+}
+
+void GpuPic::solveFields()
+{
+    const std::size_t nodes = grid_.nodeCount();
+    for (GLuint b = 0; b < 5; ++b)
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, b, buffers_[b]);
+    glNamedBufferSubData(buffers_[ChargeQuanta], 0, GLsizeiptr(nodes * sizeof(std::int32_t)), zeroQuanta_.data());
+    programs_->deposit.use();
+    glDispatchCompute(groups(particleCount_), 1, 1);
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    std::vector<std::int32_t> quanta(nodes);
+    glGetNamedBufferSubData(buffers_[ChargeQuanta], 0, GLsizeiptr(nodes * sizeof(std::int32_t)), quanta.data());
+
+    // ρ_i = (q/ΔV) 2^-bits (S_i − ΣS/N): the background subtracted exactly, as N·S_i − ΣS in integers
+    // (ΣS = particles · 2^bits; |N·S_i| < 2^31 · 2^27 fits 64 bits), then scaled once.
+    const long long total = (long long)particleCount_ << quantumBits_;
+    const double scale = -kElementaryCharge * weight_ / grid_.cellVolume() / double(1LL << quantumBits_) / double(nodes);
+    chargeDensity_.resize(nodes);
+    for (std::size_t i = 0; i < nodes; ++i)
+        chargeDensity_[i] = double((long long)nodes * quanta[i] - total) * scale;
+
+    const std::vector<double> potential = poisson_.solve(chargeDensity_);
+    const std::vector<float> potentialFloat(potential.begin(), potential.end());
+    glNamedBufferSubData(buffers_[Potential], 0, GLsizeiptr(nodes * sizeof(float)), potentialFloat.data());
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    programs_->field.use();
+    glDispatchCompute(groups(nodes), 1, 1);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+}
+
+void GpuPic::step()
+{
+    push(dt_, true);
+    ++steps_;
+    solveFields();
+}
+
+std::vector<glm::dvec3> GpuPic::positions() const { return readVectors(buffers_[Positions], particleCount_); }
+std::vector<glm::dvec3> GpuPic::velocities() const { return readVectors(buffers_[Velocities], particleCount_); }
+std::vector<glm::dvec3> GpuPic::nodeField() const { return readVectors(buffers_[NodeField], grid_.nodeCount()); }
+
+} // namespace aurorawall::plasma

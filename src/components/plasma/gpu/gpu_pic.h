@@ -1,0 +1,74 @@
+#pragma once
+// The electrostatic particle-in-cell step of ElectrostaticPic on the GPU (GLSL compute shaders,
+// shaders/components/plasma/pic_step.comp, in float), deterministic: the same particles give the
+// same bits in every run and every context. Needs a current GL 4.5 context.
+//
+// Each step: gather and push on the GPU; the deposit on the GPU in fixed point (integer atomics);
+// the node sums read back, the ion background subtracted in integers (Σρ = 0 exactly) and the
+// potential solved by FFT in double on the CPU (FftPoissonSolver); the potential uploaded as float
+// and E = −∇φ at the nodes on the GPU. One read-back and one upload per step.
+#include "components/plasma/simulation/fft_poisson_solver.h"
+#include "components/plasma/simulation/particles.h"
+#include "components/plasma/simulation/periodic_grid.h"
+
+#include <glm/vec3.hpp>
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace aurorawall::plasma {
+
+// The fixed-point deposit's resolution: a particle's CIC weights are multiples of 2^-bits and add to
+// exactly 1. The largest possible node sum (every particle on one node) must fit a 32-bit signed
+// integer: count · (2^bits + 2^dimension) < 2^31 (the last corner's share can dip below 0 by up to
+// half a quantum per other corner). bits: the largest such value, at most 20 (float weights carry 24
+// bits); std::invalid_argument if even 8 bits would overflow (more than 8.1 million particles).
+int depositQuantumBits(std::size_t particleCount, int dimension);
+
+class GpuPic {
+public:
+    // As ElectrostaticPic: electrons at time 0, velocities taken back half a step in the initial
+    // field. externalField (V/m) is a uniform field added to the particles' own; magneticField (T),
+    // dt (s). shaderDir holds components/plasma/. A particle weight of 0 makes test particles (no
+    // charge: the self-consistent field stays 0).
+    GpuPic(const PeriodicGrid& grid, const Particles& electrons, glm::dvec3 magneticField, double dt,
+           const std::string& shaderDir, glm::dvec3 externalField = glm::dvec3(0.0));
+    ~GpuPic();
+    GpuPic(const GpuPic&) = delete;
+    GpuPic& operator=(const GpuPic&) = delete;
+
+    // Advances from step n to n + 1.
+    void step();
+
+    long stepCount() const { return steps_; }
+    const PeriodicGrid& grid() const { return grid_; }
+    int quantumBits() const { return quantumBits_; }
+    // The charge density (C/m³) at the nodes of the current step, from the fixed-point sums.
+    const std::vector<double>& chargeDensity() const { return chargeDensity_; }
+    // Read back from the GPU: positions (m), velocities (m/s, half a step behind), the field at the
+    // nodes (V/m), all of the current step.
+    std::vector<glm::dvec3> positions() const;
+    std::vector<glm::dvec3> velocities() const;
+    std::vector<glm::dvec3> nodeField() const;
+
+private:
+    struct Programs;
+    void solveFields();
+    void push(double dt, bool movePositions);
+
+    PeriodicGrid grid_;
+    FftPoissonSolver poisson_;
+    std::size_t particleCount_;
+    double weight_;
+    int quantumBits_;
+    double dt_;
+    long steps_ = 0;
+    std::unique_ptr<Programs> programs_;
+    unsigned buffers_[5] = {};
+    std::vector<std::int32_t> zeroQuanta_;
+    std::vector<double> chargeDensity_;
+};
+
+} // namespace aurorawall::plasma
