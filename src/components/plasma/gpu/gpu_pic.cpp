@@ -7,6 +7,7 @@
 #include <glm/vec4.hpp>
 
 #include <algorithm>
+#include <chrono>
 #include <stdexcept>
 #include <string>
 
@@ -61,7 +62,9 @@ int depositQuantumBits(std::size_t particleCount, int dimension)
             return bits;
     throw std::invalid_argument("plasma on the GPU: " + std::to_string(particleCount) +
                                 " particles could overflow the fixed-point deposit's 32-bit node sums even at "
-                                "2^-8 of a particle (at most 8134407 particles)");
+                                "2^-8 of a particle (at most " +
+                                std::to_string(kLimit / ((1LL << 8) + (1LL << dimension))) + " particles in " +
+                                std::to_string(dimension) + "D)");
 }
 
 struct GpuPic::Programs {
@@ -111,10 +114,15 @@ GpuPic::~GpuPic()
     glDeleteBuffers(5, buffers_);
 }
 
-void GpuPic::push(double dt, bool movePositions)
+void GpuPic::bindBuffers() const
 {
     for (GLuint b = 0; b < 5; ++b)
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, b, buffers_[b]);
+}
+
+void GpuPic::push(double dt, bool movePositions)
+{
+    bindBuffers();
     programs_->push.set("uDt", float(dt));
     programs_->push.set("uMovePositions", movePositions ? 1 : 0);
     programs_->push.use();
@@ -122,33 +130,47 @@ void GpuPic::push(double dt, bool movePositions)
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 }
 
-void GpuPic::solveFields()
+void GpuPic::deposit()
 {
-    const std::size_t nodes = grid_.nodeCount();
-    for (GLuint b = 0; b < 5; ++b)
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, b, buffers_[b]);
-    glNamedBufferSubData(buffers_[ChargeQuanta], 0, GLsizeiptr(nodes * sizeof(std::int32_t)), zeroQuanta_.data());
+    bindBuffers();
+    glNamedBufferSubData(buffers_[ChargeQuanta], 0, GLsizeiptr(zeroQuanta_.size() * sizeof(std::int32_t)),
+                         zeroQuanta_.data());
     programs_->deposit.use();
     glDispatchCompute(groups(particleCount_), 1, 1);
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+}
+
+void GpuPic::solvePotential()
+{
+    const std::size_t nodes = grid_.nodeCount();
     std::vector<std::int32_t> quanta(nodes);
     glGetNamedBufferSubData(buffers_[ChargeQuanta], 0, GLsizeiptr(nodes * sizeof(std::int32_t)), quanta.data());
-
     // ρ_i = (q/ΔV) 2^-bits (S_i − ΣS/N): the background subtracted exactly, as N·S_i − ΣS in integers
-    // (ΣS = particles · 2^bits; |N·S_i| < 2^31 · 2^27 fits 64 bits), then scaled once.
+    // (ΣS = particles · 2^bits; |N·S_i| < 2^31 · N fits 64 bits), then scaled once.
     const long long total = (long long)particleCount_ << quantumBits_;
     const double scale = -kElementaryCharge * weight_ / grid_.cellVolume() / double(1LL << quantumBits_) / double(nodes);
     chargeDensity_.resize(nodes);
     for (std::size_t i = 0; i < nodes; ++i)
         chargeDensity_[i] = double((long long)nodes * quanta[i] - total) * scale;
-
     const std::vector<double> potential = poisson_.solve(chargeDensity_);
     const std::vector<float> potentialFloat(potential.begin(), potential.end());
     glNamedBufferSubData(buffers_[Potential], 0, GLsizeiptr(nodes * sizeof(float)), potentialFloat.data());
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+}
+
+void GpuPic::computeNodeField()
+{
+    bindBuffers();
     programs_->field.use();
-    glDispatchCompute(groups(nodes), 1, 1);
+    glDispatchCompute(groups(grid_.nodeCount()), 1, 1);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+}
+
+void GpuPic::solveFields()
+{
+    deposit();
+    solvePotential();
+    computeNodeField();
 }
 
 void GpuPic::step()
@@ -156,6 +178,31 @@ void GpuPic::step()
     push(dt_, true);
     ++steps_;
     solveFields();
+}
+
+StepTimes GpuPic::timedStep()
+{
+    using Clock = std::chrono::steady_clock;
+    const auto since = [](Clock::time_point start) {
+        glFinish();
+        return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+    };
+    glFinish();
+    StepTimes t;
+    Clock::time_point start = Clock::now();
+    push(dt_, true);
+    t.pushMs = since(start);
+    ++steps_;
+    start = Clock::now();
+    deposit();
+    t.depositMs = since(start);
+    start = Clock::now();
+    solvePotential();
+    t.solveMs = since(start);
+    start = Clock::now();
+    computeNodeField();
+    t.fieldMs = since(start);
+    return t;
 }
 
 std::vector<glm::dvec3> GpuPic::positions() const { return readVectors(buffers_[Positions], particleCount_); }

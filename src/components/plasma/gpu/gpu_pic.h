@@ -27,6 +27,14 @@ namespace aurorawall::plasma {
 // bits); std::invalid_argument if even 8 bits would overflow (more than 8.1 million particles).
 int depositQuantumBits(std::size_t particleCount, int dimension);
 
+// The wall-clock time (ms) of each phase of one step, each waited for with glFinish.
+struct StepTimes {
+    double pushMs = 0.0;    // gather and Boris push, all particles
+    double depositMs = 0.0; // fixed-point CIC deposit, all particles
+    double solveMs = 0.0;   // read-back of the node sums, FFT Poisson in double, upload of φ
+    double fieldMs = 0.0;   // E = −∇φ at the nodes
+};
+
 class GpuPic {
 public:
     // As ElectrostaticPic: electrons at time 0, velocities taken back half a step in the initial
@@ -41,6 +49,8 @@ public:
 
     // Advances from step n to n + 1.
     void step();
+    // The same step, timed phase by phase (slower: it waits for the GPU after each).
+    StepTimes timedStep();
 
     long stepCount() const { return steps_; }
     const PeriodicGrid& grid() const { return grid_; }
@@ -55,8 +65,12 @@ public:
 
 private:
     struct Programs;
-    void solveFields();
+    void bindBuffers() const;
     void push(double dt, bool movePositions);
+    void deposit();
+    void solvePotential();
+    void computeNodeField();
+    void solveFields();
 
     PeriodicGrid grid_;
     FftPoissonSolver poisson_;
