@@ -124,4 +124,8 @@ expect 2 "^aurorawall plasma: .*--wp-dt" plasma verify --wp-dt fast
 expect 0 "--dx-lambda-d" plasma --help
 expect 2 "^aurorawall plasma: --dx-lambda-d must be a finite number > 0" plasma verify --case heating --dx-lambda-d 0
 expect 2 "^aurorawall plasma: .*--dx-lambda-d" plasma verify --case heating --dx-lambda-d wide
+expect 0 "--device" plasma --help
+expect 2 "^aurorawall plasma: --device: unknown value 'tpu' \(allowed: cpu, gpu\)" plasma verify --device tpu
+expect 2 "^aurorawall plasma: --device gpu runs only the cases langmuir, langmuir-2d, boris and exb" \
+    plasma verify --device gpu --case landau
 echo "PASS help"
