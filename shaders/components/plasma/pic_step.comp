@@ -53,7 +53,8 @@ void main()
     vec3 field = vec3(0.0);
     for (int d = 0; d < PLASMA_DIMENSION; ++d) {
         ivec3 axis = ivec3(d == 0 ? 1 : 0, d == 1 ? 1 : 0, d == 2 ? 1 : 0);
-        field[d] = centralDifferenceField(potential[nodeIndex(node - axis)], potential[nodeIndex(node + axis)], uSpacing[d]);
+        field[d] = centralDifferenceField(potential[nodeIndex(node - axis)], potential[nodeIndex(node + axis)],
+                                          uSpacing[d]);
     }
     nodeField[id] = vec4(field, 0.0);
 #else

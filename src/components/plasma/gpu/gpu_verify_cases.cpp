@@ -111,7 +111,8 @@ std::vector<VerifyRow> verifyBorisOnGpu(double wcDt, const std::string& shaderDi
     const double speed = glm::length(v[0]);
     double angle = 0.0, speedChange = 0.0;
     for (std::size_t n = 1; n < v.size(); ++n) {
-        angle += std::abs(std::atan2(v[n - 1].x * v[n].y - v[n - 1].y * v[n].x, v[n - 1].x * v[n].x + v[n - 1].y * v[n].y));
+        const glm::dvec3 a = v[n - 1], b = v[n];
+        angle += std::abs(std::atan2(a.x * b.y - a.y * b.x, a.x * b.x + a.y * b.y));
         speedChange = std::max(speedChange, std::abs(glm::length(v[n]) - speed) / speed);
     }
     return {setting("wc_dt", wcDt), setting("steps", double(steps)),
