@@ -1,6 +1,6 @@
 # Wraps the plasma's shared kernels (shaders/components/plasma) in a GLSL 4.50 compute shader that
 # calls each of them, and compiles it with glslangValidator: the text the C++ tests run in double
-# must also be valid GLSL.
+# must also be valid GLSL. Then the GPU step (pic_step.comp) for every dimension and pass.
 file(MAKE_DIRECTORY ${WORK_DIR})
 set(kernels "")
 foreach(module cloud_in_cell electric_field boris_push)
@@ -20,4 +20,17 @@ execute_process(COMMAND ${VALIDATOR} ${file} RESULT_VARIABLE result OUTPUT_VARIA
 if(NOT result EQUAL 0)
   message(FATAL_ERROR "shaders/components/plasma does not compile as GLSL:\n${output}")
 endif()
+# The GPU step itself, with the kernels before it as the program assembles them: every dimension and pass.
+file(READ ${SHADER_DIR}/pic_step.comp step)
+foreach(dimension 1 2 3)
+  foreach(pass 1 2 3)
+    set(file ${WORK_DIR}/pic_step_${dimension}_${pass}.comp)
+    file(WRITE ${file} "#version 450 core\n#define real float\n#define PLASMA_DIMENSION ${dimension}\n"
+         "#define PLASMA_PASS ${pass}\n${kernels}\n${step}")
+    execute_process(COMMAND ${VALIDATOR} ${file} RESULT_VARIABLE result OUTPUT_VARIABLE output ERROR_VARIABLE output)
+    if(NOT result EQUAL 0)
+      message(FATAL_ERROR "pic_step.comp (dimension ${dimension}, pass ${pass}) does not compile as GLSL:\n${output}")
+    endif()
+  endforeach()
+endforeach()
 message(STATUS "shaders/components/plasma: compiles as a GLSL 4.50 compute shader")
