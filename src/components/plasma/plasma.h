@@ -23,7 +23,7 @@ struct Settings : scene::SettingsOf<Settings> {
     int seedMode = 8;                // vortices along the strip
     double seedAmplitudeKm = 0.02;   // the strip's initial sinusoidal displacement across
     int frames = 16;
-    double timeBetweenFramesS = 2e-4;
+    double timeBetweenFramesS = 1.4e-4;
 };
 
 const scene::Component& component();
