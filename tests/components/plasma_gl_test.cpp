@@ -55,8 +55,9 @@ TEST(PlasmaOnTheGpu, AgreesWithTheReference)
     other.seedMode += 1;
     const fluid::FluxFrames otherFrames =
         components::plasma::simulateSheetFrames(components::plasma::sheetFramesSpec(other));
-    const app::RelativeError wrong = app::relativeError(
-        values, app::referencePixels(render::ReferenceModel(s, view.frame.timeS, &otherFrames), view, pixels, 2), floor);
+    const render::ReferenceModel otherModel(s, view.frame.timeS, &otherFrames);
+    const app::RelativeError wrong =
+        app::relativeError(values, app::referencePixels(otherModel, view, pixels, 2), floor);
     std::printf("plasma: GPU (finest) vs CPU reference at the %zu brightest pixels: rms %.3g, max %.3g; "
                 "against other frames: rms %.3g\n",
                 e.pixels, e.rms, e.max, wrong.rms);

@@ -104,7 +104,8 @@ TEST(FragmentShader, GloryOnlyWhereListed)
 TEST(FragmentShader, PlasmaOnlyWhereListed)
 {
     const std::string dir = std::string(AURORAWALL_SOURCE_DIR) + "/config/scenes/";
-    const gl::ShaderSource curls = render::fragmentShaderSource(components::loadScene(dir + "plasma-curls.toml"), kShaders);
+    const gl::ShaderSource curls =
+        render::fragmentShaderSource(components::loadScene(dir + "plasma-curls.toml"), kShaders);
     EXPECT_TRUE(contains(curls.defines, "HAS_PLASMA"));
     EXPECT_FALSE(contains(curls.defines, "HAS_FLUID_DETAIL"));
     for (const char* file : {"quiet-arc.toml", "substorm.toml", "airglow-limb.toml", "lunar-glory.toml"}) {

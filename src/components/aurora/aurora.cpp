@@ -149,7 +149,8 @@ public:
         std::optional<fluid_detail::DetailShape> shape;
         double stripWidthKm = 0.0;
         if (scene.has("fluid_detail")) {
-            const fluid::CurtainDetailSpec spec = fluid_detail::curtainDetailSpec(scene.settings<fluid_detail::Settings>());
+            const fluid::CurtainDetailSpec spec =
+                fluid_detail::curtainDetailSpec(scene.settings<fluid_detail::Settings>());
             shape = fluid_detail::detailShape(spec, *context.fluidFrames);
             stripWidthKm = spec.stripWidthKm;
         }
