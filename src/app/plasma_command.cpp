@@ -23,7 +23,7 @@ namespace po = boost::program_options;
 enum class Action { Verify };
 const cli::Choices<Action> kActions = {{"verify", Action::Verify}};
 
-enum class Case { All, Langmuir, Langmuir2D, Boris, ExB, TwoStream, Energy, Heating, Landau };
+enum class Case { All, Langmuir, Langmuir2D, Boris, ExB, TwoStream, Energy, Heating, Landau, Diocotron };
 const cli::Choices<Case> kCases = {{"all", Case::All},
                                    {"langmuir", Case::Langmuir},
                                    {"langmuir-2d", Case::Langmuir2D},
@@ -32,7 +32,11 @@ const cli::Choices<Case> kCases = {{"all", Case::All},
                                    {"two-stream", Case::TwoStream},
                                    {"energy", Case::Energy},
                                    {"heating", Case::Heating},
-                                   {"landau", Case::Landau}};
+                                   {"landau", Case::Landau},
+                                   {"diocotron", Case::Diocotron}};
+
+// The diocotron case's ω_cΔt (ω_pΔt = 0.1 ω_cΔt there).
+constexpr double kDiocotronWcDt = 5.0;
 
 enum class Device { Cpu, Gpu };
 const cli::Choices<Device> kDevices = {{"cpu", Device::Cpu}, {"gpu", Device::Gpu}};
@@ -138,6 +142,7 @@ int runPlasmaCommand(int argc, char** argv, std::ostream& out, std::ostream& err
             for (const double spacing : heatingSpacings)
                 printRows(out, "heating", plasma::verifyHeating(wpDt, spacing));
         if (runs(Case::Landau)) printRows(out, "landau", plasma::verifyLandau(wpDt));
+        if (runs(Case::Diocotron)) printRows(out, "diocotron", plasma::verifyDiocotron(kDiocotronWcDt));
     });
 }
 

@@ -21,10 +21,11 @@ struct ReferenceSettings {
 
 class ReferenceModel {
 public:
-    // The scene at animation time timeS. detail: the fluid frames when the scene lists
-    // fluid_detail (fluid::simulateCurtainDetail of its spec, or others on the same strip), else
-    // null. Throws scene::NotInReference (a std::invalid_argument) naming a listed component the
-    // reference does not model, and std::invalid_argument for fluid_detail without frames.
+    // The scene at animation time timeS. detail: the curtain detail frames when the scene lists
+    // fluid_detail (fluid::simulateCurtainDetail of its spec, or others on the same strip) or plasma
+    // (components::plasma::simulateSheetFrames of its spec), else null. Throws scene::NotInReference
+    // (a std::invalid_argument) naming a listed component the reference does not model, and
+    // std::invalid_argument for fluid_detail or plasma without frames.
     ReferenceModel(const scene::Scene& scene, double timeS, const fluid::FluxFrames* detail,
                    ReferenceSettings settings = {});
 

@@ -69,7 +69,7 @@ using FindRenderer = std::function<ComponentRenderer*(const std::string& name)>;
 struct ReferenceContext {
     double timeS = 0.0;                         // animation time
     double stepKm = 0.05;                       // fine fixed step for emission integrals
-    const fluid::FluxFrames* fluidFrames = nullptr; // the fluid_detail frames, when listed
+    const fluid::FluxFrames* fluidFrames = nullptr; // the fluid_detail or plasma frames, when listed
 };
 
 // A component's part of shadeRay in double precision: the same model as its shader, evaluated

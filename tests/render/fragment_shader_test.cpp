@@ -97,3 +97,22 @@ TEST(FragmentShader, GloryOnlyWhereListed)
         }
     }
 }
+
+// The plasma adds no module of its own: its frames reach the aurora's curtain profile under
+// HAS_PLASMA, which only a scene listing it defines (and its renderer, the simulation, is made only
+// for listed components); such a scene does not list fluid_detail.
+TEST(FragmentShader, PlasmaOnlyWhereListed)
+{
+    const std::string dir = std::string(AURORAWALL_SOURCE_DIR) + "/config/scenes/";
+    const gl::ShaderSource curls =
+        render::fragmentShaderSource(components::loadScene(dir + "plasma-curls.toml"), kShaders);
+    EXPECT_TRUE(contains(curls.defines, "HAS_PLASMA"));
+    EXPECT_FALSE(contains(curls.defines, "HAS_FLUID_DETAIL"));
+    for (const char* file : {"quiet-arc.toml", "substorm.toml", "airglow-limb.toml", "lunar-glory.toml"}) {
+        const scene::Scene s = components::loadScene(dir + file);
+        const gl::ShaderSource source = render::fragmentShaderSource(s, kShaders);
+        EXPECT_FALSE(contains(source.defines, "HAS_PLASMA")) << file;
+        for (const gl::ShaderModule& m : source.modules)
+            EXPECT_EQ(m.file.find("components/plasma"), std::string::npos) << file << ": " << m.file;
+    }
+}

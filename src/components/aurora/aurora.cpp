@@ -5,6 +5,8 @@
 #include "components/aurora/curtain_field.h"
 #include "components/atmosphere/atmosphere.h"
 #include "components/fluid_detail/curtain_detail.h"
+#include "components/plasma/plasma.h"
+#include "components/plasma/plasma_detail.h"
 #include "gl/shader_program.h"
 #include "scene/scene.h"
 
@@ -14,8 +16,8 @@ namespace {
 
 class Renderer : public scene::ComponentRenderer {
 public:
-    Renderer(const Settings& s, double planetRadiusKm, const fluid_detail::CurtainDetail* detail)
-        : s_(s), tables_(s), model_(s, planetRadiusKm, detail ? &detail->shape() : nullptr), field_(model_)
+    Renderer(const Settings& s, double planetRadiusKm, const fluid_detail::DetailShape* detail)
+        : s_(s), tables_(s), model_(s, planetRadiusKm, detail), field_(model_)
     {
     }
     std::string precomputationLog() const override { return tables_.summary(); }
@@ -129,19 +131,36 @@ public:
     std::unique_ptr<scene::ComponentRenderer> makeRenderer(const scene::Scene& scene,
                                                            const scene::FindRenderer& find) const override
     {
-        const auto* detail = dynamic_cast<const fluid_detail::CurtainDetail*>(find("fluid_detail"));
+        // The curtain detail comes from plasma or fluid_detail (a scene lists at most one of them).
+        const fluid_detail::DetailShape* detail = nullptr;
+        if (const auto* fluid = dynamic_cast<const fluid_detail::CurtainDetail*>(find("fluid_detail")))
+            detail = &fluid->shape();
+        if (const auto* electrons = dynamic_cast<const plasma::PlasmaDetail*>(find("plasma")))
+            detail = &electrons->shape();
         return std::make_unique<Renderer>(scene.settings<Settings>(), scene.planetRadiusKm, detail);
     }
     std::unique_ptr<scene::ReferenceShader> makeReference(const scene::Scene& scene,
                                                           const scene::ReferenceContext& context) const override
     {
-        if (scene.has("fluid_detail") != (context.fluidFrames != nullptr))
-            throw std::invalid_argument("the reference needs the fluid frames exactly when the scene lists fluid_detail");
-        const fluid::CurtainDetailSpec spec =
-            context.fluidFrames ? fluid_detail::curtainDetailSpec(scene.settings<fluid_detail::Settings>())
-                                : fluid::CurtainDetailSpec{};
+        const bool detailed = scene.has("fluid_detail") || scene.has("plasma");
+        if (detailed != (context.fluidFrames != nullptr))
+            throw std::invalid_argument(
+                "the reference needs the detail frames exactly when the scene lists fluid_detail or plasma");
+        std::optional<fluid_detail::DetailShape> shape;
+        double stripWidthKm = 0.0;
+        if (scene.has("fluid_detail")) {
+            const fluid::CurtainDetailSpec spec =
+                fluid_detail::curtainDetailSpec(scene.settings<fluid_detail::Settings>());
+            shape = fluid_detail::detailShape(spec, *context.fluidFrames);
+            stripWidthKm = spec.stripWidthKm;
+        }
+        if (scene.has("plasma")) {
+            const plasma::SheetFramesSpec spec = plasma::sheetFramesSpec(scene.settings<plasma::Settings>());
+            shape = plasma::sheetDetailShape(spec, *context.fluidFrames);
+            stripWidthKm = spec.sheet.widthM * 1e-3;
+        }
         return std::make_unique<AuroraReference>(scene.settings<Settings>(), scene.planetRadiusKm, context.timeS,
-                                                 context.stepKm, context.fluidFrames, spec);
+                                                 context.stepKm, context.fluidFrames, shape, stripWidthKm);
     }
 };
 

@@ -20,12 +20,11 @@ namespace {
 namespace aurorawall::components::aurora {
 
 AuroraReference::AuroraReference(const Settings& aurora, double planetRadiusKm, double timeS, double stepKm,
-                                 const fluid::FluxFrames* frames, const fluid::CurtainDetailSpec& spec)
+                                 const fluid::FluxFrames* frames, std::optional<fluid_detail::DetailShape> shape,
+                                 double stripWidthKm)
     : aurora_(aurora), planetRadiusKm_(planetRadiusKm), stepKm_(stepKm), frames_(frames),
-      stripWidthKm_(spec.stripWidthKm)
+      stripWidthKm_(stripWidthKm), shape_(shape)
 {
-    if (frames)
-        shape_ = fluid_detail::detailShape(spec, *frames);
     model_.emplace(aurora, planetRadiusKm, shape_ ? &*shape_ : nullptr);
     for (CurtainNow& now : model_->at(timeS)) {
         Curtain c;

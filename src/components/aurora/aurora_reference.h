@@ -23,9 +23,11 @@ namespace aurorawall::components::aurora {
 
 class AuroraReference : public scene::ReferenceShader {
 public:
-    // frames: the fluid_detail frames when the scene lists it, else null.
+    // frames: the curtain detail frames (fluid_detail's or plasma's) when the scene lists one, else
+    // null; shape: their shape for the curtain model; stripWidthKm: their strip's width.
     AuroraReference(const Settings& aurora, double planetRadiusKm, double timeS, double stepKm,
-                    const fluid::FluxFrames* frames, const fluid::CurtainDetailSpec& spec);
+                    const fluid::FluxFrames* frames, std::optional<fluid_detail::DetailShape> shape,
+                    double stripWidthKm);
 
     f64::Ray shade(f64::Ray ray) const override;
 

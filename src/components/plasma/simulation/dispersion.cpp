@@ -69,4 +69,18 @@ std::complex<double> landauRoot(double kDebyeLength)
     return zeta * scale;
 }
 
+double diocotronGrowthRate(double ka, double kL)
+{
+    if (!(ka > 0.0) || !(2.0 * ka < kL) || !std::isfinite(kL))
+        throw std::domain_error("diocotron: needs k > 0 and a strip thinner than the box");
+    // g(0) and g(2a) with the exponentials of −kL only, finite for any width.
+    const double images = 1.0 - std::exp(-kL);
+    const double g0 = (2.0 - images) / images;
+    const double g2a = (std::exp(2.0 * ka - kL) + std::exp(-2.0 * ka)) / images;
+    const double fill = 2.0 * ka / kL;
+    const double shift = g0 - 2.0 * ka * (1.0 - fill);
+    const double square = g2a * g2a - shift * shift;
+    return square > 0.0 ? 0.5 * std::sqrt(square) : 0.0;
+}
+
 } // namespace aurorawall::plasma

@@ -30,4 +30,15 @@ std::complex<double> plasmaDispersionZ(std::complex<double> zeta);
 // Bohm–Gross frequency (Z' = −2(1 + ζ Z)). Im ω < 0 is the Landau damping rate of the field amplitude.
 std::complex<double> landauRoot(double kDebyeLength);
 
+// The diocotron growth rate γ/ω_D (ω_D = e n_b/(ε₀B)) of mode k of a uniform electron strip of
+// thickness 2a in the guiding-centre (E×B drift) limit ω_p ≪ ω_c, in a box periodic across with
+// width L and a uniform neutralising background over the whole box (mean density n_b·f, f = 2a/L).
+// The drift flow U(y) = E_y/B is piecewise linear with kinks of jump ω_D at the strip's edges, so
+// Rayleigh's edge-wave analysis (Drazin & Reid, Hydrodynamic Stability (2004), §23; Levy 1965) with
+// the periodic Green's function g(y) = cosh(k(|y| − L/2))/sinh(kL/2) of ψ'' − k²ψ gives
+//   γ/ω_D = ½ √( g(2a)² − (g(0) − 2ka(1 − f))² ),
+// 0 where the root is negative (stable). For L → ∞ this is Levy's ½ √(e^{−4ka} − (1 − 2ka)²), whose
+// maximum 0.2012 is at ka ≈ 0.40. std::domain_error unless 0 < 2a < L and k > 0.
+double diocotronGrowthRate(double kHalfThickness, double kWidth);
+
 } // namespace aurorawall::plasma

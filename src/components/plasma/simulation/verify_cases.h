@@ -46,4 +46,10 @@ std::vector<VerifyRow> verifyHeating(double plasmaFrequencyTimesDt, double dxOve
 // against the root of the kinetic dispersion relation.
 std::vector<VerifyRow> verifyLandau(double plasmaFrequencyTimesDt);
 
+// The diocotron instability of a cold electron strip (thickness 2a, mode 1 at ka = 0.4) in a strong
+// B on a 2D grid: the exponential growth rate of the mode's field energy, halved, against the
+// guiding-centre rate diocotronGrowthRate, in units of ω_D = ω_p²/ω_c. ω_cΔt > 0, ω_p/ω_c in (0, 1),
+// ω_pΔt < 2.
+std::vector<VerifyRow> verifyDiocotron(double cyclotronFrequencyTimesDt, double plasmaOverCyclotronFrequency = 0.1);
+
 } // namespace aurorawall::plasma

@@ -1,0 +1,147 @@
+#include "components/plasma/sheet_frames.h"
+
+#include "components/plasma/simulation/particle_mesh.h"
+#include "components/plasma/simulation/plasma_parameters.h"
+#include "io/table_cache.h"
+
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
+#include <stdexcept>
+
+namespace aurorawall::components::plasma {
+
+namespace pic = aurorawall::plasma;
+
+namespace {
+
+// Bump when the byte layout below changes.
+constexpr int kFormatVersion = 1;
+
+// Every field of the spec must be in the key: a new field changes the size and stops the build here.
+static_assert(sizeof(SheetFramesSpec) == 80, "add the new SheetFramesSpec field to sheetFramesCacheKey");
+
+// The density (m⁻³) at the cell centres: the CIC deposit of the electrons moved back by half a cell
+// (so node (i, j) stands for the point ((i + ½)Δx, (j + ½)Δy)), plus the background the deposit's
+// mean removal took away.
+std::vector<double> cellCentreDensity(const pic::PeriodicGrid& grid, const pic::Particles& electrons)
+{
+    pic::Particles shifted = electrons;
+    const glm::dvec3 box = grid.boxLength();
+    for (glm::dvec3& x : shifted.position)
+        for (int d = 0; d < 2; ++d) {
+            x[d] -= 0.5 * grid.spacing[d];
+            x[d] -= box[d] * std::floor(x[d] / box[d]);
+        }
+    std::vector<double> n = pic::depositChargeDensity(grid, shifted);
+    const double mean = electrons.weight * double(electrons.position.size()) / (box.x * box.y * box.z);
+    for (double& v : n)
+        v = mean - v / pic::kElementaryCharge;
+    return n;
+}
+
+// nx, ny, frames (int32), texelKmX, texelKmY (float32), then the flux (float32), native byte order.
+std::vector<char> bytesOf(const fluid::FluxFrames& f)
+{
+    const std::int32_t counts[3] = {f.nx, f.ny, f.frames};
+    const float texels[2] = {f.texelKmX, f.texelKmY};
+    std::vector<char> bytes(sizeof counts + sizeof texels + f.flux.size() * sizeof(float));
+    std::memcpy(bytes.data(), counts, sizeof counts);
+    std::memcpy(bytes.data() + sizeof counts, texels, sizeof texels);
+    std::memcpy(bytes.data() + sizeof counts + sizeof texels, f.flux.data(), f.flux.size() * sizeof(float));
+    return bytes;
+}
+
+fluid::FluxFrames framesOf(const std::vector<char>& bytes, const SheetFramesSpec& spec)
+{
+    std::int32_t counts[3];
+    float texels[2];
+    const std::size_t header = sizeof counts + sizeof texels;
+    const std::size_t cells = std::size_t(spec.sheet.cellsAlong) * spec.sheet.cellsAcross * spec.frames;
+    if (bytes.size() != header + cells * sizeof(float))
+        throw std::runtime_error("plasma cache: the frames do not have the spec's size");
+    std::memcpy(counts, bytes.data(), sizeof counts);
+    std::memcpy(texels, bytes.data() + sizeof counts, sizeof texels);
+    if (counts[0] != spec.sheet.cellsAlong || counts[1] != spec.sheet.cellsAcross || counts[2] != spec.frames)
+        throw std::runtime_error("plasma cache: the frames do not have the spec's size");
+    fluid::FluxFrames f;
+    f.nx = counts[0];
+    f.ny = counts[1];
+    f.frames = counts[2];
+    f.texelKmX = texels[0];
+    f.texelKmY = texels[1];
+    f.flux.resize(cells);
+    std::memcpy(f.flux.data(), bytes.data() + header, cells * sizeof(float));
+    return f;
+}
+
+} // namespace
+
+fluid::FluxFrames simulateSheetFrames(const SheetFramesSpec& spec)
+{
+    if (spec.frames < 2 || spec.stepsPerFrame < 1)
+        throw std::invalid_argument("plasma frames: needs at least 2 frames and 1 step per frame");
+    pic::ElectrostaticPic sim = pic::sheetSimulation(spec.sheet);
+    const pic::PeriodicGrid& grid = sim.grid();
+    fluid::FluxFrames f;
+    f.nx = grid.cells[0];
+    f.ny = grid.cells[1];
+    f.frames = spec.frames;
+    f.texelKmX = static_cast<float>(grid.spacing[0] * 1e-3);
+    f.texelKmY = static_cast<float>(grid.spacing[1] * 1e-3);
+    const double perKm = 1.0 / (spec.sheet.electronDensity * spec.sheet.thicknessM * 1e-3);
+    f.flux.reserve(grid.nodeCount() * spec.frames);
+    for (int k = 0; k < spec.frames; ++k) {
+        if (k > 0)
+            for (int n = 0; n < spec.stepsPerFrame; ++n)
+                sim.step();
+        for (double n : cellCentreDensity(grid, sim.electrons()))
+            f.flux.push_back(static_cast<float>(n * perKm));
+    }
+    return f;
+}
+
+fluid_detail::DetailShape sheetDetailShape(const SheetFramesSpec& spec, const fluid::FluxFrames& f)
+{
+    const double widthKm = spec.sheet.widthM * 1e-3;
+    double peak = 0.0, integral = 0.0, second = 0.0;
+    for (int iy = 0; iy < f.ny; ++iy) {
+        const double u = (iy + 0.5) * f.texelKmY - 0.5 * widthKm;
+        for (int ix = 0; ix < f.nx; ++ix) {
+            const double v = f.at(0, ix, iy);
+            peak = std::max(peak, v);
+            integral += v;
+            second += v * u * u;
+        }
+    }
+    fluid_detail::DetailShape d;
+    d.fluxWidthKm = std::sqrt(second / integral);
+    d.reachKm = fluid_detail::lateralReachKm(f, widthKm);
+    d.stripLengthKm = spec.sheet.lengthM * 1e-3;
+    d.peakScale = 1.0 / peak;
+    return d;
+}
+
+std::string sheetFramesCacheKey(const SheetFramesSpec& s)
+{
+    const pic::ElectronSheetSpec& e = s.sheet;
+    char text[768];
+    std::snprintf(text, sizeof text,
+                  "plasma sheet frames v%d; cells %d x %d; box %a x %a m; thickness %a m; density %a; B %a T; "
+                  "wc_dt %a; particles per cell per axis %d; seed mode %d displacement %a m; frames %d, %d steps "
+                  "each; executable %s",
+                  kFormatVersion, e.cellsAlong, e.cellsAcross, e.lengthM, e.widthM, e.thicknessM, e.electronDensity,
+                  e.magneticFieldT, e.cyclotronFrequencyTimesDt, e.particlesPerCellPerAxis, e.mode,
+                  e.seedDisplacementM, s.frames, s.stepsPerFrame, io::executableDigest().c_str());
+    return text;
+}
+
+CachedSheetFrames cachedSheetFrames(const SheetFramesSpec& spec, const std::string& cacheDirectory)
+{
+    io::CachedTable table = io::cachedTable(cacheDirectory, "plasma", sheetFramesCacheKey(spec),
+                                            [&] { return bytesOf(simulateSheetFrames(spec)); });
+    return {framesOf(table.bytes, spec), table.outcome};
+}
+
+} // namespace aurorawall::components::plasma
