@@ -116,7 +116,7 @@ expect 0 "--wp-dt" plasma --help
 expect 2 "^aurorawall plasma: unrecognised option '--bogus'" plasma verify --bogus
 expect 2 "^aurorawall plasma: missing the action \(allowed: verify\)" plasma
 expect 2 "^aurorawall plasma: unknown action 'run' \(allowed: verify\)" plasma run
-expect 2 "^aurorawall plasma: --case: unknown value 'ion-acoustic' \(allowed: all, langmuir, .*landau\)" \
+expect 2 "^aurorawall plasma: --case: unknown value 'ion-acoustic' \(allowed: all, langmuir, .*landau, diocotron\)" \
     plasma verify --case ion-acoustic
 expect 2 "^aurorawall plasma: --wp-dt must be in \(0, 2\): the leapfrog is unstable" plasma verify --wp-dt 2
 expect 2 "^aurorawall plasma: --wc-dt must be a finite number > 0" plasma verify --case boris --wc-dt 0
