@@ -18,8 +18,9 @@ constexpr int kFormatVersion = 1;
 // stops the build here until it is added to fluxFramesCacheKey.
 static_assert(sizeof(fluid::CurtainDetailSpec) == 104, "add the new CurtainDetailSpec field to fluxFramesCacheKey");
 
-// nx, ny, frames (int32), texelKmX, texelKmY (float32), then the flux (float32), native byte order.
-std::vector<char> bytesOf(const fluid::FluxFrames& f)
+} // namespace
+
+std::vector<char> fluxFramesBytes(const fluid::FluxFrames& f)
 {
     const std::int32_t counts[3] = {f.nx, f.ny, f.frames};
     const float texels[2] = {f.texelKmX, f.texelKmY};
@@ -30,18 +31,18 @@ std::vector<char> bytesOf(const fluid::FluxFrames& f)
     return bytes;
 }
 
-fluid::FluxFrames framesOf(const std::vector<char>& bytes, const fluid::CurtainDetailSpec& spec)
+fluid::FluxFrames fluxFramesFromBytes(const std::vector<char>& bytes, int nx, int ny, int frames, const std::string& what)
 {
     std::int32_t counts[3];
     float texels[2];
     const std::size_t header = sizeof counts + sizeof texels;
-    const std::size_t cells = std::size_t(spec.nx) * spec.ny * spec.frames;
+    const std::size_t cells = std::size_t(nx) * std::size_t(ny) * std::size_t(frames);
     if (bytes.size() != header + cells * sizeof(float))
-        throw std::runtime_error("fluid_detail cache: the frames do not have the spec's size");
+        throw std::runtime_error(what + " cache: the frames do not have the spec's size");
     std::memcpy(counts, bytes.data(), sizeof counts);
     std::memcpy(texels, bytes.data() + sizeof counts, sizeof texels);
-    if (counts[0] != spec.nx || counts[1] != spec.ny || counts[2] != spec.frames)
-        throw std::runtime_error("fluid_detail cache: the frames do not have the spec's size");
+    if (counts[0] != nx || counts[1] != ny || counts[2] != frames)
+        throw std::runtime_error(what + " cache: the frames do not have the spec's size");
     fluid::FluxFrames f;
     f.nx = counts[0];
     f.ny = counts[1];
@@ -52,8 +53,6 @@ fluid::FluxFrames framesOf(const std::vector<char>& bytes, const fluid::CurtainD
     std::memcpy(f.flux.data(), bytes.data() + header, cells * sizeof(float));
     return f;
 }
-
-} // namespace
 
 std::string fluxFramesCacheKey(const fluid::CurtainDetailSpec& s)
 {
@@ -72,8 +71,8 @@ std::string fluxFramesCacheKey(const fluid::CurtainDetailSpec& s)
 CachedFluxFrames cachedFluxFrames(const fluid::CurtainDetailSpec& spec, const std::string& cacheDirectory)
 {
     io::CachedTable table = io::cachedTable(cacheDirectory, "fluid_detail", fluxFramesCacheKey(spec),
-                                            [&] { return bytesOf(fluid::simulateCurtainDetail(spec)); });
-    return {framesOf(table.bytes, spec), table.outcome};
+                                            [&] { return fluxFramesBytes(fluid::simulateCurtainDetail(spec)); });
+    return {fluxFramesFromBytes(table.bytes, spec.nx, spec.ny, spec.frames, "fluid_detail"), table.outcome};
 }
 
 } // namespace aurorawall::components::fluid_detail

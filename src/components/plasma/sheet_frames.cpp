@@ -1,5 +1,7 @@
 #include "components/plasma/sheet_frames.h"
 
+#include "components/fluid_detail/cached_flux_frames.h"
+
 #include "components/plasma/simulation/particle_mesh.h"
 #include "components/plasma/simulation/plasma_parameters.h"
 #include "io/table_cache.h"
@@ -39,41 +41,6 @@ std::vector<double> cellCentreDensity(const pic::PeriodicGrid& grid, const pic::
     for (double& v : n)
         v = mean - v / pic::kElementaryCharge;
     return n;
-}
-
-// nx, ny, frames (int32), texelKmX, texelKmY (float32), then the flux (float32), native byte order.
-std::vector<char> bytesOf(const fluid::FluxFrames& f)
-{
-    const std::int32_t counts[3] = {f.nx, f.ny, f.frames};
-    const float texels[2] = {f.texelKmX, f.texelKmY};
-    std::vector<char> bytes(sizeof counts + sizeof texels + f.flux.size() * sizeof(float));
-    std::memcpy(bytes.data(), counts, sizeof counts);
-    std::memcpy(bytes.data() + sizeof counts, texels, sizeof texels);
-    std::memcpy(bytes.data() + sizeof counts + sizeof texels, f.flux.data(), f.flux.size() * sizeof(float));
-    return bytes;
-}
-
-fluid::FluxFrames framesOf(const std::vector<char>& bytes, const SheetFramesSpec& spec)
-{
-    std::int32_t counts[3];
-    float texels[2];
-    const std::size_t header = sizeof counts + sizeof texels;
-    const std::size_t cells = std::size_t(spec.sheet.cellsAlong) * spec.sheet.cellsAcross * spec.frames;
-    if (bytes.size() != header + cells * sizeof(float))
-        throw std::runtime_error("plasma cache: the frames do not have the spec's size");
-    std::memcpy(counts, bytes.data(), sizeof counts);
-    std::memcpy(texels, bytes.data() + sizeof counts, sizeof texels);
-    if (counts[0] != spec.sheet.cellsAlong || counts[1] != spec.sheet.cellsAcross || counts[2] != spec.frames)
-        throw std::runtime_error("plasma cache: the frames do not have the spec's size");
-    fluid::FluxFrames f;
-    f.nx = counts[0];
-    f.ny = counts[1];
-    f.frames = counts[2];
-    f.texelKmX = texels[0];
-    f.texelKmY = texels[1];
-    f.flux.resize(cells);
-    std::memcpy(f.flux.data(), bytes.data() + header, cells * sizeof(float));
-    return f;
 }
 
 } // namespace
@@ -140,8 +107,9 @@ std::string sheetFramesCacheKey(const SheetFramesSpec& s)
 CachedSheetFrames cachedSheetFrames(const SheetFramesSpec& spec, const std::string& cacheDirectory)
 {
     io::CachedTable table = io::cachedTable(cacheDirectory, "plasma", sheetFramesCacheKey(spec),
-                                            [&] { return bytesOf(simulateSheetFrames(spec)); });
-    return {framesOf(table.bytes, spec), table.outcome};
+                                            [&] { return fluid_detail::fluxFramesBytes(simulateSheetFrames(spec)); });
+    return {fluid_detail::fluxFramesFromBytes(table.bytes, spec.sheet.cellsAlong, spec.sheet.cellsAcross, spec.frames, "plasma"),
+            table.outcome};
 }
 
 } // namespace aurorawall::components::plasma
