@@ -6,6 +6,7 @@
 #include "io/table_cache.h"
 #include "scene/scene.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -30,18 +31,22 @@ BoxRenderer::BoxRenderer(const Settings& plasma, double planetRadiusKm)
     boxFrames_.upload(f.density);
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 
-    centreKm_ = scene::planetPoint(plasma.boxLatitudeDeg, plasma.boxLongitudeDeg, planetRadiusKm + plasma.boxAltitudeKm);
+    centreKm_ =
+        scene::planetPoint(plasma.boxLatitudeDeg, plasma.boxLongitudeDeg, planetRadiusKm + plasma.boxAltitudeKm);
     const scene::LocalFrame local = scene::localFrame(plasma.boxLatitudeDeg, plasma.boxLongitudeDeg);
     axes_ = glm::dmat3(local.east, local.north, local.up);
-    const glm::dvec3 green = aurorawall::aurora::lineLinearSrgbPerRayleigh(airglow::wavelengthNm(airglow::Line::Green5577),
-                                                                airglow::cieXyz(airglow::Line::Green5577));
+    const airglow::Line line = airglow::Line::Green5577;
+    const glm::dvec3 green =
+        aurorawall::aurora::lineLinearSrgbPerRayleigh(airglow::wavelengthNm(line), airglow::cieXyz(line));
     rgbPerDensityKm_ = glm::vec3(green * plasma.boxRayleighPerKm);
 
     float peak = 0.0f;
     for (float n : f.density)
         peak = std::max(peak, n);
     char text[300];
-    std::snprintf(text, sizeof text, "; plasma box: %d^3 cells, %d frames of %d steps, beams %.3g m/s, peak n/n0 %.2f, %s: %.0f ms",
+    std::snprintf(text, sizeof text,
+                  "; plasma box: %d^3 cells, %d frames of %d steps, beams %.3g m/s, peak n/n0 %.2f, "
+                  "%s: %.0f ms",
                   f.cells, f.frames, spec.stepsPerFrame, boxBeamSpeed(spec), peak, cached.outcome.c_str(), ms);
     boxSummary_ += text;
 }
@@ -56,8 +61,10 @@ void BoxRenderer::setFrame(gl::Program& program, const cluster::FrameState& fram
     }
     program.set("uPlasmaBoxCentreFromCamera", glm::vec3(centreKm_ - frame.cameraPositionKm));
     program.set("uPlasmaBoxAxes", glm::mat3(axes_));
-    program.set("uPlasmaBox", glm::vec4(static_cast<float>(settings_.boxSideKm), box_ ? 2.0f * settings_.boxCells : 0.0f,
-                                        static_cast<float>(position), box_ ? static_cast<float>(settings_.boxFrames) : 1.0f));
+    const float steps = box_ ? 2.0f * settings_.boxCells : 0.0f;
+    const float frames = box_ ? static_cast<float>(settings_.boxFrames) : 1.0f;
+    program.set("uPlasmaBox",
+                glm::vec4(static_cast<float>(settings_.boxSideKm), steps, static_cast<float>(position), frames));
     program.set("uPlasmaBoxCells", box_ ? settings_.boxCells : 1);
     program.set("uPlasmaBoxRgb", rgbPerDensityKm_);
 }

@@ -58,7 +58,8 @@ void readBox(const config::TableReader& t, Settings& p)
     const double steps = (p.boxFrames - 1) * std::round(p.boxTimeBetweenFramesS / p.boxTimeStepS);
     if (steps > 1e4)
         t.fail("box_time_between_frames_s",
-               "the frames need " + number(steps) + " time steps; at most 1e4 (raise box_time_step_s or lower box_frames)");
+               "the frames need " + number(steps) +
+                   " time steps; at most 1e4 (raise box_time_step_s or lower box_frames)");
     p.boxLatitudeDeg = t.number("box_latitude_deg", -90.0, 90.0, p.boxLatitudeDeg);
     p.boxLongitudeDeg = t.number("box_longitude_deg", -180.0, 360.0, p.boxLongitudeDeg);
     p.boxAltitudeKm = t.number("box_altitude_km", 80.0, 1000.0, p.boxAltitudeKm);
