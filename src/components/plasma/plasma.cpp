@@ -1,7 +1,7 @@
 #include "components/plasma/plasma.h"
 
 #include "common/input_error.h"
-#include "components/plasma/plasma_detail.h"
+#include "components/plasma/box_renderer.h"
 #include "components/plasma/simulation/plasma_parameters.h"
 #include "scene/scene.h"
 
@@ -19,9 +19,58 @@ std::string number(double value)
     return text;
 }
 
-// The aurora's curtain profile samples these frames (curtain_profile.glsl under HAS_PLASMA), and the
-// aurora's reference samples them in double: the component adds no shader module and no reference
-// step of its own.
+// The keys of kind = "box" (rejected with kind = "curls", where they would do nothing).
+const char* const kBoxKeys[] = {"box_cells", "box_side_km", "box_electron_density_m3", "box_magnetic_field_t",
+                                "box_time_step_s", "box_particles_per_cell_axis", "box_seed_mode",
+                                "box_seed_amplitude_km", "box_frames", "box_time_between_frames_s",
+                                "box_latitude_deg", "box_longitude_deg", "box_altitude_km", "box_play_s",
+                                "box_rayleigh_per_km"};
+
+void readBox(const config::TableReader& t, Settings& p)
+{
+    p.boxCells = t.integer("box_cells", 8, 64, p.boxCells);
+    if (p.boxCells % 2 != 0)
+        t.fail("box_cells", "must be even");
+    p.boxSideKm = t.number("box_side_km", 0.1, 100.0, p.boxSideKm);
+    p.boxElectronDensityM3 = t.numberAbove("box_electron_density_m3", 0.0, 1e14, p.boxElectronDensityM3);
+    p.boxMagneticFieldT = t.numberAbove("box_magnetic_field_t", 0.0, 1.0, p.boxMagneticFieldT);
+    p.boxTimeStepS = t.numberAbove("box_time_step_s", 0.0, 1.0, p.boxTimeStepS);
+    // The leapfrog is unstable from ω_pΔt = 2 on (Birdsall & Langdon 1991, §4-2).
+    const double wpDt = aurorawall::plasma::plasmaFrequency(p.boxElectronDensityM3) * p.boxTimeStepS;
+    if (!(wpDt < 2.0))
+        t.fail("box_time_step_s", "omega_p dt = " + number(wpDt) + " must be below 2 (the leapfrog is unstable)");
+    p.boxParticlesPerCellAxis = t.integer("box_particles_per_cell_axis", 1, 4, p.boxParticlesPerCellAxis);
+    const double particles = 2.0 * std::pow(double(p.boxCells) * p.boxParticlesPerCellAxis, 3.0);
+    if (particles > 4e6)
+        t.fail("box_particles_per_cell_axis", number(particles) + " electrons; at most 4e6");
+    p.boxSeedMode = t.integer("box_seed_mode", 1, p.boxCells / 4, p.boxSeedMode);
+    // k a < 1: the seed's displacement never reorders the electrons along z.
+    const double kPi = 3.14159265358979323846;
+    p.boxSeedAmplitudeKm =
+        t.number("box_seed_amplitude_km", 0.0, 0.99 * p.boxSideKm / (2.0 * kPi * p.boxSeedMode), p.boxSeedAmplitudeKm);
+    const double beamSpeed = boxBeamSpeed(boxFramesSpec(p));
+    if (beamSpeed > 0.3 * 299792458.0)
+        t.fail("box_seed_mode", "the beams' speed " + number(beamSpeed) +
+                                    " m/s exceeds 0.3 c, beyond this non-relativistic model (raise box_seed_mode "
+                                    "or lower box_side_km)");
+    p.boxFrames = t.integer("box_frames", 2, 256, p.boxFrames);
+    p.boxTimeBetweenFramesS = t.number("box_time_between_frames_s", p.boxTimeStepS, 1e3, p.boxTimeBetweenFramesS);
+    const double steps = (p.boxFrames - 1) * std::round(p.boxTimeBetweenFramesS / p.boxTimeStepS);
+    if (steps > 1e4)
+        t.fail("box_time_between_frames_s",
+               "the frames need " + number(steps) +
+                   " time steps; at most 1e4 (raise box_time_step_s or lower box_frames)");
+    p.boxLatitudeDeg = t.number("box_latitude_deg", -90.0, 90.0, p.boxLatitudeDeg);
+    p.boxLongitudeDeg = t.number("box_longitude_deg", -180.0, 360.0, p.boxLongitudeDeg);
+    p.boxAltitudeKm = t.number("box_altitude_km", 80.0, 1000.0, p.boxAltitudeKm);
+    if (p.boxAltitudeKm - 0.5 * p.boxSideKm < 75.0)
+        t.fail("box_altitude_km", "the box's bottom (box_altitude_km - box_side_km / 2) must be above 75 km");
+    p.boxPlayS = t.numberAbove("box_play_s", 0.0, 1e6, p.boxPlayS);
+    p.boxRayleighPerKm = t.number("box_rayleigh_per_km", 0.0, 1e6, p.boxRayleighPerKm);
+}
+
+// The aurora's curtain profile samples the strip's frames (curtain_profile.glsl under HAS_PLASMA), and
+// the aurora's reference samples them in double: the curls add no reference step of their own.
 class Plasma : public scene::ComponentWith<Settings> {
 public:
     std::vector<std::string> needs() const override { return {"aurora"}; }
@@ -64,16 +113,35 @@ public:
                                  p.particlesPerCellAxis;
         if (particles > 4e6)
             t.fail("particles_per_cell_axis", number(particles) + " electrons; at most 4e6");
+        p.kind = t.choice("kind", {"curls", "box"}, 0) == 0 ? Settings::Kind::Curls : Settings::Kind::Box;
+        if (p.kind == Settings::Kind::Box)
+            readBox(t, p);
+        else
+            for (const char* key : kBoxKeys)
+                if (t.has(key))
+                    t.fail(key, "is a key of kind = \"box\"");
     }
-    std::vector<std::string> shaderModules() const override { return {}; }
+    // The modules take no scene, so every plasma scene has the box's step; with kind = "curls" it
+    // marches nothing (uPlasmaBox.y = 0 steps). The box glows inside the aurora's shell: its emission,
+    // like the aurora's, is added unabsorbed behind the lower atmosphere, so the order among the two
+    // does not change the sum; 41 puts it after the aurora, before the cloud deck and the ground.
+    std::vector<std::string> shaderModules() const override
+    {
+        return {"components/plasma/plasma_box_density.glsl", "components/plasma/plasma_box_march.glsl",
+                "components/plasma/plasma_box.glsl"};
+    }
+    std::string shaderShadeCall() const override { return "shadePlasmaBox(ray)"; }
+    int compositingOrder() const override { return 41; }
     std::unique_ptr<scene::ComponentRenderer> makeRenderer(const scene::Scene& scene,
                                                            const scene::FindRenderer&) const override
     {
-        return std::make_unique<PlasmaDetail>(scene.settings<Settings>());
+        return std::make_unique<BoxRenderer>(scene.settings<Settings>(), scene.planetRadiusKm);
     }
-    std::unique_ptr<scene::ReferenceShader> makeReference(const scene::Scene&,
+    std::unique_ptr<scene::ReferenceShader> makeReference(const scene::Scene& scene,
                                                           const scene::ReferenceContext&) const override
     {
+        if (scene.settings<Settings>().kind == Settings::Kind::Box)
+            throw scene::NotInReference("the reference does not model the plasma box (kind = \"box\")");
         return nullptr;
     }
 };
@@ -102,6 +170,22 @@ SheetFramesSpec sheetFramesSpec(const Settings& p)
     s.sheet.seedDisplacementM = p.seedAmplitudeKm * 1e3;
     s.frames = p.frames;
     s.stepsPerFrame = static_cast<int>(std::round(p.timeBetweenFramesS / p.timeStepS));
+    return s;
+}
+
+BoxFramesSpec boxFramesSpec(const Settings& p)
+{
+    BoxFramesSpec s;
+    s.cells = p.boxCells;
+    s.sideM = p.boxSideKm * 1e3;
+    s.electronDensity = p.boxElectronDensityM3;
+    s.magneticFieldT = p.boxMagneticFieldT;
+    s.timeStepS = p.boxTimeStepS;
+    s.particlesPerCellAxis = p.boxParticlesPerCellAxis;
+    s.seedMode = p.boxSeedMode;
+    s.seedAmplitudeM = p.boxSeedAmplitudeKm * 1e3;
+    s.frames = p.boxFrames;
+    s.stepsPerFrame = static_cast<int>(std::round(p.boxTimeBetweenFramesS / p.boxTimeStepS));
     return s;
 }
 

@@ -4,6 +4,9 @@
 // (the curls of auroral arcs: Hallinan & Davis, Planet. Space Sci. 18, 1735 (1970)); simulated once at
 // start-up (sheet_frames.h), its electron density frames replace fluid_detail's in the aurora's
 // curtain profile. docs/PLASMA.md, "Driving the aurora".
+// With kind = "box" it also simulates a 3D box of plasma along the field lines (box_frames.h) and
+// raymarches its electron density as the green line's emission. docs/PLASMA.md, "The plasma box".
+#include "components/plasma/box_frames.h"
 #include "components/plasma/sheet_frames.h"
 #include "scene/component.h"
 
@@ -24,11 +27,34 @@ struct Settings : scene::SettingsOf<Settings> {
     double seedAmplitudeKm = 0.02;   // the strip's initial sinusoidal displacement across
     int frames = 16;
     double timeBetweenFramesS = 1.4e-4;
+
+    enum class Kind { Curls, Box };
+    Kind kind = Kind::Curls;
+    // kind = "box": the box's simulation (box_frames.h), place (its centre; z radial, x east, y north)
+    // and glow. The frames play over boxPlayS seconds of the clock, then again from the start.
+    int boxCells = 32;
+    double boxSideKm = 8.0;
+    double boxElectronDensityM3 = 1e7;
+    double boxMagneticFieldT = 5e-5;
+    double boxTimeStepS = 1.1e-6;
+    int boxParticlesPerCellAxis = 1;
+    int boxSeedMode = 4;
+    double boxSeedAmplitudeKm = 0.004;
+    int boxFrames = 24;
+    double boxTimeBetweenFramesS = 1.1e-5;
+    double boxLatitudeDeg = 66.7;
+    double boxLongitudeDeg = 22.0;
+    double boxAltitudeKm = 110.0;
+    double boxPlayS = 12.0;
+    double boxRayleighPerKm = 500.0; // the 557.7 nm column brightness per km of path at n = n₀
 };
 
 const scene::Component& component();
 
 // The simulation of a scene's [plasma] table (lengths to metres, steps between frames rounded).
 SheetFramesSpec sheetFramesSpec(const Settings& plasma);
+
+// The box's simulation (lengths to metres, steps between frames rounded).
+BoxFramesSpec boxFramesSpec(const Settings& plasma);
 
 } // namespace aurorawall::components::plasma

@@ -1,0 +1,132 @@
+#include "components/plasma/box_frames.h"
+
+#include "components/plasma/simulation/electrostatic_pic.h"
+#include "components/plasma/simulation/particle_mesh.h"
+#include "components/plasma/simulation/plasma_parameters.h"
+#include "io/table_cache.h"
+
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <stdexcept>
+
+namespace aurorawall::components::plasma {
+
+namespace pic = aurorawall::plasma;
+
+namespace {
+
+// Bump when the byte layout below changes.
+constexpr int kBoxFormatVersion = 1;
+constexpr double kPi = 3.14159265358979323846;
+
+// Every field of the spec must be in the key: a new field changes the size and stops the build here.
+static_assert(sizeof(BoxFramesSpec) == 64, "add the new BoxFramesSpec field to boxFramesCacheKey");
+
+double wavenumber(const BoxFramesSpec& s) { return 2.0 * kPi * s.seedMode / s.sideM; }
+
+// Two cold beams on the same lattice (perCellAxis³ electrons per cell each), displaced along z by
+// a sin(k z + φ(x, y)) with φ = π sin(2πx/L) sin(2πy/L), at +v₀ and −v₀ along z.
+pic::Particles twoBeams(const BoxFramesSpec& s)
+{
+    const int n = s.cells * s.particlesPerCellAxis;
+    const double spacing = s.sideM / n, k = wavenumber(s), v0 = boxBeamSpeed(s);
+    pic::Particles p;
+    p.weight = s.electronDensity * s.sideM * s.sideM * s.sideM / (2.0 * n * n * n);
+    p.position.reserve(2 * std::size_t(n) * n * n);
+    for (int beam = 0; beam < 2; ++beam)
+        for (int iz = 0; iz < n; ++iz)
+            for (int iy = 0; iy < n; ++iy)
+                for (int ix = 0; ix < n; ++ix) {
+                    const double x = (ix + 0.5) * spacing, y = (iy + 0.5) * spacing;
+                    const double phase = kPi * std::sin(2.0 * kPi * x / s.sideM) * std::sin(2.0 * kPi * y / s.sideM);
+                    double z = (iz + 0.5) * spacing;
+                    z += s.seedAmplitudeM * std::sin(k * z + phase);
+                    z -= s.sideM * std::floor(z / s.sideM);
+                    p.position.emplace_back(x, y, z);
+                    p.velocity.emplace_back(0.0, 0.0, beam == 0 ? v0 : -v0);
+                }
+    return p;
+}
+
+// n/n₀ at the cell centres: the CIC deposit of the electrons moved back by half a cell on every
+// axis, plus the mean the deposit removed.
+std::vector<double> relativeCellCentreDensity(const pic::PeriodicGrid& grid, const pic::Particles& electrons,
+                                              double meanDensity)
+{
+    pic::Particles shifted = electrons;
+    const glm::dvec3 box = grid.boxLength();
+    for (glm::dvec3& x : shifted.position)
+        for (int d = 0; d < 3; ++d) {
+            x[d] -= 0.5 * grid.spacing[d];
+            x[d] -= box[d] * std::floor(x[d] / box[d]);
+        }
+    std::vector<double> n = pic::depositChargeDensity(grid, shifted);
+    for (double& v : n)
+        v = 1.0 - v / (pic::kElementaryCharge * meanDensity);
+    return n;
+}
+
+std::vector<char> boxFramesBytes(const BoxFrames& f)
+{
+    std::vector<char> bytes(f.density.size() * sizeof(float));
+    std::memcpy(bytes.data(), f.density.data(), bytes.size());
+    return bytes;
+}
+
+} // namespace
+
+double boxBeamSpeed(const BoxFramesSpec& s)
+{
+    return std::sqrt(3.0 / 8.0) * pic::plasmaFrequency(s.electronDensity) / wavenumber(s);
+}
+
+BoxFrames simulateBoxFrames(const BoxFramesSpec& s)
+{
+    if (s.frames < 2 || s.stepsPerFrame < 1 || s.cells < 2)
+        throw std::invalid_argument("plasma box frames: needs 2 cells, 2 frames and 1 step per frame");
+    const double spacing = s.sideM / s.cells;
+    const pic::PeriodicGrid grid(3, {s.cells, s.cells, s.cells}, {spacing, spacing, spacing});
+    pic::ElectrostaticPic sim(grid, twoBeams(s), glm::dvec3(0.0, 0.0, s.magneticFieldT), s.timeStepS);
+    BoxFrames f;
+    f.cells = s.cells;
+    f.frames = s.frames;
+    f.density.reserve(grid.nodeCount() * s.frames);
+    for (int k = 0; k < s.frames; ++k) {
+        if (k > 0)
+            for (int n = 0; n < s.stepsPerFrame; ++n)
+                sim.step();
+        for (double n : relativeCellCentreDensity(grid, sim.electrons(), s.electronDensity))
+            f.density.push_back(static_cast<float>(n));
+    }
+    return f;
+}
+
+std::string boxFramesCacheKey(const BoxFramesSpec& s)
+{
+    char text[512];
+    std::snprintf(text, sizeof text,
+                  "plasma box frames v%d; cells %d; side %a m; density %a; B %a T; dt %a s; particles per cell "
+                  "per axis %d; seed mode %d amplitude %a m; frames %d, %d steps each; executable %s",
+                  kBoxFormatVersion, s.cells, s.sideM, s.electronDensity, s.magneticFieldT, s.timeStepS,
+                  s.particlesPerCellAxis, s.seedMode, s.seedAmplitudeM, s.frames, s.stepsPerFrame,
+                  io::executableDigest().c_str());
+    return text;
+}
+
+CachedBoxFrames cachedBoxFrames(const BoxFramesSpec& s, const std::string& cacheDirectory)
+{
+    io::CachedTable table = io::cachedTable(cacheDirectory, "plasma-box", boxFramesCacheKey(s),
+                                            [&] { return boxFramesBytes(simulateBoxFrames(s)); });
+    BoxFrames f;
+    f.cells = s.cells;
+    f.frames = s.frames;
+    f.density.resize(std::size_t(s.cells) * s.cells * s.cells * s.frames);
+    if (table.bytes.size() != f.density.size() * sizeof(float))
+        throw std::runtime_error("plasma box frames: the cached table has " + std::to_string(table.bytes.size()) +
+                                 " bytes, expected " + std::to_string(f.density.size() * sizeof(float)));
+    std::memcpy(f.density.data(), table.bytes.data(), table.bytes.size());
+    return {std::move(f), table.outcome};
+}
+
+} // namespace aurorawall::components::plasma

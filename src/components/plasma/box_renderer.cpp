@@ -1,0 +1,78 @@
+#include "components/plasma/box_renderer.h"
+
+#include "components/airglow/airglow.h"
+#include "components/aurora/physics/colour.h"
+#include "gl/shader_program.h"
+#include "io/table_cache.h"
+#include "scene/scene.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+
+namespace aurorawall::components::plasma {
+
+BoxRenderer::BoxRenderer(const Settings& plasma, double planetRadiusKm)
+    : PlasmaDetail(plasma), box_(plasma.kind == Settings::Kind::Box), settings_(plasma),
+      boxFrames_(gl::Texture::create3D(1, 1, 1, gl::TexelFormat::R32F, gl::Filter::Linear, gl::Wrap::Repeat))
+{
+    boxSummary_ = PlasmaDetail::precomputationLog();
+    if (!box_) {
+        boxFrames_.upload({0.0f});
+        return;
+    }
+    const auto start = std::chrono::steady_clock::now();
+    const BoxFramesSpec spec = boxFramesSpec(plasma);
+    const CachedBoxFrames cached = cachedBoxFrames(spec, io::defaultCacheDirectory());
+    const BoxFrames& f = cached.frames;
+    boxFrames_ = gl::Texture::create3D(f.cells, f.cells, f.cells * f.frames, gl::TexelFormat::R32F, gl::Filter::Linear,
+                                       gl::Wrap::Repeat);
+    boxFrames_.upload(f.density);
+    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+
+    centreKm_ =
+        scene::planetPoint(plasma.boxLatitudeDeg, plasma.boxLongitudeDeg, planetRadiusKm + plasma.boxAltitudeKm);
+    const scene::LocalFrame local = scene::localFrame(plasma.boxLatitudeDeg, plasma.boxLongitudeDeg);
+    axes_ = glm::dmat3(local.east, local.north, local.up);
+    const airglow::Line line = airglow::Line::Green5577;
+    const glm::dvec3 green =
+        aurorawall::aurora::lineLinearSrgbPerRayleigh(airglow::wavelengthNm(line), airglow::cieXyz(line));
+    rgbPerDensityKm_ = glm::vec3(green * plasma.boxRayleighPerKm);
+
+    float peak = 0.0f;
+    for (float n : f.density)
+        peak = std::max(peak, n);
+    char text[300];
+    std::snprintf(text, sizeof text,
+                  "; plasma box: %d^3 cells, %d frames of %d steps, beams %.3g m/s, peak n/n0 %.2f, "
+                  "%s: %.0f ms",
+                  f.cells, f.frames, spec.stepsPerFrame, boxBeamSpeed(spec), peak, cached.outcome.c_str(), ms);
+    boxSummary_ += text;
+}
+
+void BoxRenderer::setFrame(gl::Program& program, const cluster::FrameState& frame)
+{
+    PlasmaDetail::setFrame(program, frame);
+    double position = 0.0;
+    if (box_) {
+        const double cycle = frame.timeS / settings_.boxPlayS;
+        position = (cycle - std::floor(cycle)) * (settings_.boxFrames - 1);
+    }
+    program.set("uPlasmaBoxCentreFromCamera", glm::vec3(centreKm_ - frame.cameraPositionKm));
+    program.set("uPlasmaBoxAxes", glm::mat3(axes_));
+    const float steps = box_ ? 2.0f * settings_.boxCells : 0.0f;
+    const float frames = box_ ? static_cast<float>(settings_.boxFrames) : 1.0f;
+    program.set("uPlasmaBox",
+                glm::vec4(static_cast<float>(settings_.boxSideKm), steps, static_cast<float>(position), frames));
+    program.set("uPlasmaBoxCells", box_ ? settings_.boxCells : 1);
+    program.set("uPlasmaBoxRgb", rgbPerDensityKm_);
+}
+
+void BoxRenderer::bind(gl::Program& program) const
+{
+    PlasmaDetail::bind(program);
+    program.bindTexture("uPlasmaBoxFrames", 9, boxFrames_.id());
+}
+
+} // namespace aurorawall::components::plasma

@@ -1,0 +1,34 @@
+#pragma once
+// The plasma component's GPU part: the curtain detail (PlasmaDetail, which the aurora samples) and
+// the box's density frames for shaders/components/plasma/plasma_box*.glsl. With kind = "box" the
+// frames are n/n₀ on the box's cells, stacked along z frame after frame in one 3D texture (linear,
+// periodic across the field); with kind = "curls" a single zero texel and no steps, so the box's
+// step adds nothing.
+#include "components/plasma/plasma.h"
+#include "components/plasma/plasma_detail.h"
+
+#include <glm/glm.hpp>
+
+namespace aurorawall::components::plasma {
+
+class BoxRenderer : public PlasmaDetail {
+public:
+    BoxRenderer(const Settings& plasma, double planetRadiusKm);
+
+    std::string precomputationLog() const override { return boxSummary_; }
+    // The box's centre from the camera (double, then float), its frame position at this time.
+    void setFrame(gl::Program& program, const cluster::FrameState& frame) override;
+    // Texture unit 9: uPlasmaBoxFrames; and the curtain detail's.
+    void bind(gl::Program& program) const override;
+
+private:
+    bool box_;
+    Settings settings_;
+    glm::dvec3 centreKm_{0.0};  // planet frame
+    glm::dmat3 axes_{1.0};      // columns: east, north, up at the centre (z along the field)
+    glm::vec3 rgbPerDensityKm_{0.0f};
+    gl::Texture boxFrames_;
+    std::string boxSummary_;
+};
+
+} // namespace aurorawall::components::plasma
