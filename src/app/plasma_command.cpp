@@ -43,7 +43,8 @@ const cli::Choices<Device> kDevices = {{"cpu", Device::Cpu}, {"gpu", Device::Gpu
 
 const cli::Choices<plasma::GpuPicSolver> kSolvers = {{"fft-cpu", plasma::GpuPicSolver::FftCpu},
                                                       {"jacobi", plasma::GpuPicSolver::Jacobi},
-                                                      {"sor", plasma::GpuPicSolver::RedBlackSor}};
+                                                      {"sor", plasma::GpuPicSolver::RedBlackSor},
+                                                      {"multigrid", plasma::GpuPicSolver::Multigrid}};
 
 // The heating case's grid spacings in Debye lengths when --dx-lambda-d is not given.
 const std::vector<double> kHeatingSpacings = {0.5, 2.0, 8.0};
@@ -95,8 +96,8 @@ int runPlasmaCommand(int argc, char** argv, std::ostream& out, std::ostream& err
         plasma::GpuPicSolver solver = plasma::GpuPicSolver::FftCpu;
         cli.addChoice("solver", &solver, kSolvers,
                       "the Poisson solve of --device gpu: fft-cpu (exact, FFT in double on the CPU, default), "
-                      "jacobi (20 Jacobi sweeps on the GPU, does not converge) or sor (red-black SOR on the GPU "
-                      "to 1e-6)");
+                      "jacobi (20 Jacobi sweeps on the GPU, does not converge), sor (red-black SOR on the GPU "
+                      "to 1e-6) or multigrid (6 V-cycles on the GPU)");
         cli.add()("wp-dt", po::value<double>(&wpDt)->default_value(0.2, "0.2"),
                   "omega_p dt of langmuir, langmuir-2d, two-stream, energy, heating and landau, in (0, 2): the leapfrog is unstable "
                   "from 2 on")("wc-dt", po::value<double>(&wcDt)->default_value(1.0),

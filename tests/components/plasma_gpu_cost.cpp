@@ -8,7 +8,7 @@
 //
 // Solvers: on 64², 256² and 64³ (Δ = 1 m) a charge density of three Fourier modes plus uniform noise
 // of a tenth of their amplitude; the exact potential by FFT in double; each GPU solver from φ = 0 for
-// a number of sweeps, once (after one untimed sweep), waited for with glFinish: the relative L2 error of the potential (mean
+// a number of sweeps or V-cycles, once (after one untimed sweep), waited for with glFinish: the relative L2 error of the potential (mean
 // removed) and of the central-difference field against the exact one, the relative Poisson residual
 // of the float result (poissonResidual), and ms per solve (the FFT's: the median of three).
 #include "components/plasma/gpu/gpu_pic.h"
@@ -49,7 +49,10 @@ double millisecondsSince(Clock::time_point start)
 
 const char* solverName(GpuPicSolver solver)
 {
-    return solver == GpuPicSolver::FftCpu ? "fft-cpu" : solver == GpuPicSolver::Jacobi ? "jacobi" : "sor";
+    return solver == GpuPicSolver::FftCpu      ? "fft-cpu"
+           : solver == GpuPicSolver::Jacobi    ? "jacobi"
+           : solver == GpuPicSolver::Multigrid ? "multigrid"
+                                               : "sor";
 }
 
 void measureStep(int dimension, int cells, int perCell, int steps, GpuPicSolver solver)
@@ -157,7 +160,10 @@ void measureSolvers(int dimension, int cells, const std::vector<std::pair<GpuPoi
         const double ms = millisecondsSince(start);
         const std::vector<double> phi = gpu.potential();
         std::printf("%d%s,%s,%d,%.3e,%.2e,%.2e,%.3g\n", cells, name,
-                    method == GpuPoissonMethod::Jacobi ? "jacobi" : "sor", sweeps,
+                    method == GpuPoissonMethod::Jacobi        ? "jacobi"
+                    : method == GpuPoissonMethod::Multigrid ? "multigrid"
+                                                            : "sor",
+                    sweeps,
                     relativeL2(withoutMean(phi), exact), relativeL2(field(grid, phi), exactField),
                     poissonResidual(grid, rho, phi), ms);
     }
@@ -168,7 +174,8 @@ void measureSolvers(int dimension, int cells, const std::vector<std::pair<GpuPoi
 int main()
 {
     const auto context = gl::createContext(gl::Backend::Egl);
-    for (const GpuPicSolver solver : {GpuPicSolver::FftCpu, GpuPicSolver::Jacobi, GpuPicSolver::RedBlackSor}) {
+    for (const GpuPicSolver solver :
+         {GpuPicSolver::FftCpu, GpuPicSolver::Jacobi, GpuPicSolver::RedBlackSor, GpuPicSolver::Multigrid}) {
         measureStep(3, 64, 2, 5, solver);
         measureStep(2, 256, 1, 10, solver);
     }
@@ -177,10 +184,12 @@ int main()
     for (const int cells : {64, 256}) {
         const PeriodicGrid grid(2, {cells, cells, 1}, {1.0, 1.0, 1.0});
         measureSolvers(2, cells, {{M::Jacobi, 20}, {M::Jacobi, 200}, {M::RedBlackSor, 20},
-                                  {M::RedBlackSor, picSorSweeps(grid)}, {M::RedBlackSor, 2 * picSorSweeps(grid)}});
+                                  {M::RedBlackSor, picSorSweeps(grid)}, {M::RedBlackSor, 2 * picSorSweeps(grid)},
+                                  {M::Multigrid, 1}, {M::Multigrid, 3}, {M::Multigrid, kPicMultigridCycles}});
     }
     const PeriodicGrid grid3(3, {64, 64, 64}, {1.0, 1.0, 1.0});
     measureSolvers(3, 64, {{M::Jacobi, 20}, {M::Jacobi, 200}, {M::RedBlackSor, 20},
-                           {M::RedBlackSor, picSorSweeps(grid3)}, {M::RedBlackSor, 2 * picSorSweeps(grid3)}});
+                           {M::RedBlackSor, picSorSweeps(grid3)}, {M::RedBlackSor, 2 * picSorSweeps(grid3)},
+                           {M::Multigrid, 1}, {M::Multigrid, 3}, {M::Multigrid, kPicMultigridCycles}});
     return 0;
 }

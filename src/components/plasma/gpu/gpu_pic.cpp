@@ -94,8 +94,11 @@ GpuPic::GpuPic(const PeriodicGrid& grid, const Particles& electrons, glm::dvec3 
     };
     programs_ = std::make_unique<Programs>(Programs{program(1), program(2), program(3)});
     if (solver != GpuPicSolver::FftCpu)
-        gpuPoisson_ = std::make_unique<GpuPoisson>(
-            grid, solver == GpuPicSolver::Jacobi ? GpuPoissonMethod::Jacobi : GpuPoissonMethod::RedBlackSor, shaderDir);
+        gpuPoisson_ = std::make_unique<GpuPoisson>(grid,
+                                                   solver == GpuPicSolver::Jacobi        ? GpuPoissonMethod::Jacobi
+                                                   : solver == GpuPicSolver::Multigrid ? GpuPoissonMethod::Multigrid
+                                                                                        : GpuPoissonMethod::RedBlackSor,
+                                                   shaderDir);
     const glm::vec3 cells(grid.cells[0], grid.cells[1], grid.cells[2]);
     const glm::vec3 spacing(grid.spacing[0], grid.spacing[1], grid.spacing[2]);
     for (gl::Program* p : {&programs_->deposit, &programs_->field, &programs_->push}) {
@@ -174,7 +177,9 @@ void GpuPic::solvePotential()
 {
     if (gpuPoisson_) {
         gpuPoisson_->setChargeFromQuanta(buffers_[ChargeQuanta], particleCount_, weight_, quantumBits_);
-        gpuPoisson_->solve(solver_ == GpuPicSolver::Jacobi ? kPicJacobiSweeps : picSorSweeps(grid_));
+        gpuPoisson_->solve(solver_ == GpuPicSolver::Jacobi      ? kPicJacobiSweeps
+                           : solver_ == GpuPicSolver::Multigrid ? kPicMultigridCycles
+                                                                : picSorSweeps(grid_));
         return;
     }
     const std::vector<double> potential = poisson_.solve(chargeDensity());

@@ -32,10 +32,14 @@ int depositQuantumBits(std::size_t particleCount, int dimension);
 //     per step.
 //   Jacobi: kPicJacobiSweeps Jacobi sweeps on the GPU (GpuPoisson), from the previous step's φ.
 //   RedBlackSor: picSorSweeps(grid) red-black SOR sweeps on the GPU, from the previous step's φ.
+//   Multigrid: kPicMultigridCycles V-cycles on the GPU, from the previous step's φ (needs even cell
+//     counts, as RedBlackSor).
 // The GPU solvers take the source from the node sums on the GPU: nothing is read back.
-enum class GpuPicSolver { FftCpu, Jacobi, RedBlackSor };
+enum class GpuPicSolver { FftCpu, Jacobi, RedBlackSor, Multigrid };
 
 inline constexpr int kPicJacobiSweeps = 20;
+// From φ = 0 six V-cycles reach float round-off on 64² and 32³ (docs/PLASMA.md).
+inline constexpr int kPicMultigridCycles = 6;
 // The red-black SOR sweeps that shrink the slowest error by 10^-6 at the rate ω − 1 per sweep.
 int picSorSweeps(const PeriodicGrid& grid);
 

@@ -4,6 +4,7 @@
 #include "gl/functions.h"
 #include "gl/shader_program.h"
 
+#include <array>
 #include <cmath>
 #include <numeric>
 #include <stdexcept>
@@ -15,8 +16,31 @@ namespace {
 using namespace gl; // the GL function pointers (gl/functions.h)
 
 constexpr int kWorkGroupSize = 64; // local_size_x of poisson_sweep.comp
-enum Binding { QuantaBinding = 2, PotentialBinding = 3, SourceBinding = 5, PotentialOutBinding = 6 };
-enum Pass { SourcePass = 1, JacobiPass = 2, SorPass = 3 };
+enum Binding { QuantaBinding = 2, PotentialBinding = 3, SourceBinding = 5, PotentialOutBinding = 6, CoarseBinding = 7 };
+enum Pass { SourcePass = 1, JacobiPass = 2, SorPass = 3, ResidualPass = 4, RestrictionPass = 5, ProlongationPass = 6 };
+
+GLuint groupsFor(const PeriodicGrid& grid) { return GLuint((grid.nodeCount() + kWorkGroupSize - 1) / kWorkGroupSize); }
+
+// The next coarser grid (half the cells, twice the spacing), or none when some axis of the
+// dimension has an odd count or at most 4 cells.
+bool coarsens(const PeriodicGrid& grid)
+{
+    for (int d = 0; d < grid.dimension; ++d)
+        if (grid.cells[d] % 2 != 0 || grid.cells[d] <= 4)
+            return false;
+    return true;
+}
+
+PeriodicGrid coarser(const PeriodicGrid& grid)
+{
+    std::array<int, 3> cells = grid.cells;
+    std::array<double, 3> spacing = grid.spacing;
+    for (int d = 0; d < grid.dimension; ++d) {
+        cells[d] /= 2;
+        spacing[d] *= 2.0;
+    }
+    return PeriodicGrid(grid.dimension, cells, spacing);
+}
 
 GLuint floatBuffer(std::size_t count)
 {
@@ -52,24 +76,26 @@ double sorOverRelaxation(const PeriodicGrid& grid)
 }
 
 struct GpuPoisson::Programs {
-    gl::Program source, sweep;
+    gl::Program source, sweep, residual, restriction, prolongation;
 };
 
 GpuPoisson::GpuPoisson(const PeriodicGrid& grid, GpuPoissonMethod method, const std::string& shaderDir)
     : grid_(grid), method_(method), overRelaxation_(sorOverRelaxation(grid))
 {
-    if (method == GpuPoissonMethod::RedBlackSor)
+    if (method != GpuPoissonMethod::Jacobi)
         for (int d = 0; d < grid.dimension; ++d)
             if (grid.cells[d] % 2 != 0)
-                throw std::invalid_argument("red-black SOR needs an even number of cells along each axis (got " +
+                throw std::invalid_argument("red-black SOR and multigrid need an even number of cells along each axis (got " +
                                             std::to_string(grid.cells[d]) + ")");
     const gl::ShaderModule module = gl::readShaderModule(shaderDir + "/components/plasma/poisson_sweep.comp");
     const auto program = [&](int pass) {
         return gl::Program::compute(
             {{"PLASMA_DIMENSION " + std::to_string(grid.dimension), "POISSON_PASS " + std::to_string(pass)}, {module}});
     };
+    const bool multigrid = method == GpuPoissonMethod::Multigrid;
     programs_ = std::make_unique<Programs>(
-        Programs{program(SourcePass), program(method == GpuPoissonMethod::Jacobi ? JacobiPass : SorPass)});
+        Programs{program(SourcePass), program(method == GpuPoissonMethod::Jacobi ? JacobiPass : SorPass),
+                 program(ResidualPass), program(RestrictionPass), program(ProlongationPass)});
     for (gl::Program* p : {&programs_->source, &programs_->sweep}) {
         p->set("uCells", glm::vec3(grid.cells[0], grid.cells[1], grid.cells[2]));
         p->set("uSpacing", glm::vec3(grid.spacing[0], grid.spacing[1], grid.spacing[2]));
@@ -79,11 +105,84 @@ GpuPoisson::GpuPoisson(const PeriodicGrid& grid, GpuPoissonMethod method, const 
         programs_->sweep.set("uOverRelaxation", float(overRelaxation_));
     for (unsigned& buffer : buffers_)
         buffer = floatBuffer(grid.nodeCount());
+    levels_.push_back({grid, buffers_[0], buffers_[1], buffers_[2]});
+    while (multigrid && coarsens(levels_.back().grid)) {
+        const PeriodicGrid coarse = coarser(levels_.back().grid);
+        levels_.push_back({coarse, floatBuffer(coarse.nodeCount()), floatBuffer(coarse.nodeCount()),
+                           floatBuffer(coarse.nodeCount())});
+    }
+    if (levels_.size() > 1)
+        coarseZeros_.assign(levels_[1].grid.nodeCount(), 0.0f);
 }
 
 GpuPoisson::~GpuPoisson()
 {
     glDeleteBuffers(3, buffers_);
+    for (std::size_t l = 1; l < levels_.size(); ++l) {
+        const GLuint level[3] = {levels_[l].potential, levels_[l].source, levels_[l].residual};
+        glDeleteBuffers(3, level);
+    }
+}
+
+void GpuPoisson::setGrid(int level) const
+{
+    const PeriodicGrid& g = levels_[level].grid;
+    for (gl::Program* p : {&programs_->sweep, &programs_->residual, &programs_->restriction, &programs_->prolongation}) {
+        p->set("uCells", glm::vec3(g.cells[0], g.cells[1], g.cells[2]));
+        p->set("uSpacing", glm::vec3(g.spacing[0], g.spacing[1], g.spacing[2]));
+        p->set("uCount", int(g.nodeCount()));
+    }
+}
+
+void GpuPoisson::redBlackSweep(int level, float overRelaxation) const
+{
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, PotentialBinding, levels_[level].potential);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SourceBinding, levels_[level].source);
+    programs_->sweep.set("uOverRelaxation", overRelaxation);
+    programs_->sweep.use();
+    for (int colour = 0; colour < 2; ++colour) {
+        programs_->sweep.set("uColour", colour);
+        glDispatchCompute(groupsFor(levels_[level].grid), 1, 1);
+        glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    }
+}
+
+void GpuPoisson::vCycle(int level) const
+{
+    const Level& fine = levels_[level];
+    setGrid(level);
+    const bool coarsest = level + 1 == int(levels_.size());
+    for (int sweep = 0; sweep < (coarsest ? kCoarsestSweeps : kSmoothingSweeps); ++sweep)
+        redBlackSweep(level, 1.0f);
+    if (coarsest)
+        return;
+    const Level& coarse = levels_[level + 1];
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, PotentialBinding, fine.potential);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SourceBinding, fine.source);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, PotentialOutBinding, fine.residual);
+    programs_->residual.use();
+    glDispatchCompute(groupsFor(fine.grid), 1, 1);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+
+    setGrid(level + 1);
+    programs_->restriction.set("uOtherCells", glm::vec3(fine.grid.cells[0], fine.grid.cells[1], fine.grid.cells[2]));
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SourceBinding, coarse.source);
+    programs_->restriction.use();
+    glDispatchCompute(groupsFor(coarse.grid), 1, 1);
+    glNamedBufferSubData(coarse.potential, 0, GLsizeiptr(coarse.grid.nodeCount() * sizeof(float)), coarseZeros_.data());
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+    vCycle(level + 1);
+
+    setGrid(level);
+    programs_->prolongation.set("uOtherCells",
+                                glm::vec3(coarse.grid.cells[0], coarse.grid.cells[1], coarse.grid.cells[2]));
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, PotentialBinding, fine.potential);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, CoarseBinding, coarse.potential);
+    programs_->prolongation.use();
+    glDispatchCompute(groupsFor(fine.grid), 1, 1);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    for (int sweep = 0; sweep < kSmoothingSweeps; ++sweep)
+        redBlackSweep(level, 1.0f);
 }
 
 void GpuPoisson::setChargeDensity(const std::vector<double>& chargeDensity)
@@ -122,6 +221,11 @@ void GpuPoisson::solve(int sweeps)
 {
     const GLuint groups = GLuint((grid_.nodeCount() + kWorkGroupSize - 1) / kWorkGroupSize);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+    if (method_ == GpuPoissonMethod::Multigrid) {
+        for (int cycle = 0; cycle < sweeps; ++cycle)
+            vCycle(0);
+        return;
+    }
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SourceBinding, buffers_[1]);
     programs_->sweep.use();
     for (int sweep = 0; sweep < sweeps; ++sweep) {

@@ -13,7 +13,14 @@
 // ω = 2/(1 + √(1 − μ₁²)), the error shrinking by about ω − 1 per sweep (one red and one black
 // half-sweep). Needs an even number of cells along each axis of the dimension.
 //
-// Neither changes the mean of φ in exact arithmetic beyond what the source's rounding adds; the
+// Multigrid: geometric V-cycles, red-black Gauss–Seidel (ω = 1) smoothing, kSmoothingSweeps before and
+// after the correction, the residual restricted by full weighting to the grid with half the cells
+// along each axis of the dimension (twice the spacing), linear prolongation of the correction
+// (Trottenberg, Oosterlee & Schüller 2001, "Multigrid", ch. 2), down to a grid with an odd cell
+// count or 4 cells along some axis, solved there by kCoarsestSweeps Gauss–Seidel sweeps. Needs even
+// cell counts, as red-black SOR.
+//
+// None of them changes the mean of φ in exact arithmetic beyond what the source's rounding adds; the
 // field E = −∇φ does not see the mean.
 #include "components/plasma/simulation/periodic_grid.h"
 
@@ -23,7 +30,7 @@
 
 namespace aurorawall::plasma {
 
-enum class GpuPoissonMethod { Jacobi, RedBlackSor };
+enum class GpuPoissonMethod { Jacobi, RedBlackSor, Multigrid };
 
 // ω = 2/(1 + √(1 − μ₁²)) for the grid, μ₁ the largest Jacobi factor μ(k) over k ≠ 0.
 double sorOverRelaxation(const PeriodicGrid& grid);
@@ -45,21 +52,35 @@ public:
     void setChargeFromQuanta(unsigned quantaBuffer, std::size_t particles, double weight, int quantumBits);
     // φ = 0 everywhere.
     void clearPotential();
-    // `sweeps` sweeps from the current potential (Jacobi sweeps, or red-black SOR sweeps).
+    // `sweeps` sweeps from the current potential (Jacobi sweeps, red-black SOR sweeps or V-cycles).
     void solve(int sweeps);
+    // The multigrid's levels, the finest first (1 for the other methods).
+    int levelCount() const { return int(levels_.size()); }
 
     double overRelaxation() const { return overRelaxation_; }
     // The GL storage buffer of φ (float, V, one per node).
     unsigned potentialBuffer() const { return buffers_[0]; }
     std::vector<double> potential() const;
 
+    static constexpr int kSmoothingSweeps = 2;
+    static constexpr int kCoarsestSweeps = 10;
+
 private:
     struct Programs;
+    struct Level {
+        PeriodicGrid grid;
+        unsigned potential = 0, source = 0, residual = 0; // GL buffers; level 0: in buffers_
+    };
+    void setGrid(int level) const;
+    void redBlackSweep(int level, float overRelaxation) const;
+    void vCycle(int level) const;
     PeriodicGrid grid_;
     GpuPoissonMethod method_;
     double overRelaxation_;
     std::unique_ptr<Programs> programs_;
-    unsigned buffers_[3] = {}; // potential, source, Jacobi's second potential
+    unsigned buffers_[3] = {}; // potential, source, Jacobi's second potential or the residual
+    std::vector<Level> levels_;
+    std::vector<float> coarseZeros_; // to clear a coarse level's correction
 };
 
 } // namespace aurorawall::plasma
