@@ -20,7 +20,8 @@
 // count or 4 cells along some axis, solved there by kCoarsestSweeps Gauss–Seidel sweeps. Needs even
 // cell counts, as red-black SOR.
 //
-// None of them changes the mean of φ in exact arithmetic beyond what the source's rounding adds; the
+// None of them pins the mean of φ (Gauss–Seidel moves it, and on the coarse grids the restricted
+// source sums to zero only up to rounding, the mean of the correction drifting by that much): the
 // field E = −∇φ does not see the mean.
 #include "components/plasma/simulation/periodic_grid.h"
 
