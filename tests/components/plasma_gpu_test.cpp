@@ -367,11 +367,14 @@ TEST(PlasmaPoissonOnTheGpu, SolvesAreBitIdentical)
     EXPECT_TRUE(bitIdentical(first.second, second.second));
 }
 
-TEST(PlasmaPoissonOnTheGpu, RedBlackSorNeedsEvenCellCounts)
+TEST(PlasmaPoissonOnTheGpu, RedBlackSorAndMultigridNeedEvenCellCounts)
 {
     const auto context = gl::createContext(gl::Backend::Egl);
     EXPECT_THROW(GpuPoisson(PeriodicGrid(2, {33, 32, 1}, {1.0, 1.0, 1.0}), GpuPoissonMethod::RedBlackSor, kShaders),
                  std::invalid_argument);
+    EXPECT_THROW(GpuPoisson(PeriodicGrid(3, {8, 8, 5}, {1.0, 1.0, 1.0}), GpuPoissonMethod::Multigrid, kShaders),
+                 std::invalid_argument);
+    EXPECT_NO_THROW(GpuPoisson(PeriodicGrid(2, {33, 32, 1}, {1.0, 1.0, 1.0}), GpuPoissonMethod::Jacobi, kShaders));
 }
 
 // langmuir-2d on 32² with the step's multigrid (kPicMultigridCycles V-cycles per step from the
