@@ -41,6 +41,11 @@ constexpr double kDiocotronWcDt = 5.0;
 enum class Device { Cpu, Gpu };
 const cli::Choices<Device> kDevices = {{"cpu", Device::Cpu}, {"gpu", Device::Gpu}};
 
+const cli::Choices<plasma::GpuPicSolver> kSolvers = {{"fft-cpu", plasma::GpuPicSolver::FftCpu},
+                                                      {"jacobi", plasma::GpuPicSolver::Jacobi},
+                                                      {"sor", plasma::GpuPicSolver::RedBlackSor},
+                                                      {"multigrid", plasma::GpuPicSolver::Multigrid}};
+
 // The heating case's grid spacings in Debye lengths when --dx-lambda-d is not given.
 const std::vector<double> kHeatingSpacings = {0.5, 2.0, 8.0};
 
@@ -71,13 +76,14 @@ int runPlasmaCommand(int argc, char** argv, std::ostream& out, std::ostream& err
     return cli::runCommand("plasma", out, err, [&] {
         cli::CommandLine cli(
             "plasma",
-            "Usage: aurorawall plasma verify [--case NAME] [--device cpu|gpu] [--wp-dt X] [--wc-dt X]\n"
-            "                               [--dx-lambda-d X]\n"
+            "Usage: aurorawall plasma verify [--case NAME] [--device cpu|gpu] [--solver NAME] [--wp-dt X]\n"
+            "                               [--wc-dt X] [--dx-lambda-d X]\n"
             "Runs the electrostatic particle-in-cell plasma's verification cases and prints CSV\n"
             "case,parameter,measured,expected,rel_error; expected comes from theory (frequencies and rates in\n"
             "units of the plasma frequency omega_p); rows of a run's settings, and the heating rates (no closed\n"
             "form), leave expected and rel_error empty (docs/PLASMA.md). --device gpu runs langmuir, langmuir-2d,\n"
-            "boris and exb in GLSL compute shaders (float, headless EGL) instead of in double on the CPU.\n"
+            "boris and exb in GLSL compute shaders (float, headless EGL) instead of in double on the CPU;\n"
+            "--solver chooses their Poisson solve.\n"
             "Exit status: 0 success, 1 a run failed or output not written, 2 usage error.\n");
         std::string actionName;
         Case chosen = Case::All;
@@ -87,6 +93,11 @@ int runPlasmaCommand(int argc, char** argv, std::ostream& out, std::ostream& err
         cli.addChoice("case", &chosen, kCases, "the case to run (all: each in turn)");
         cli.addChoice("device", &device, kDevices,
                       "cpu: the simulation in double; gpu: in compute shaders (langmuir, langmuir-2d, boris, exb)");
+        plasma::GpuPicSolver solver = plasma::GpuPicSolver::FftCpu;
+        cli.addChoice("solver", &solver, kSolvers,
+                      "the Poisson solve of --device gpu: fft-cpu (exact, FFT in double on the CPU, default), "
+                      "jacobi (20 Jacobi sweeps on the GPU, does not converge), sor (red-black SOR on the GPU "
+                      "to 1e-6) or multigrid (6 V-cycles on the GPU)");
         cli.add()("wp-dt", po::value<double>(&wpDt)->default_value(0.2, "0.2"),
                   "omega_p dt of langmuir, langmuir-2d, two-stream, energy, heating and landau, in (0, 2): the leapfrog is unstable "
                   "from 2 on")("wc-dt", po::value<double>(&wcDt)->default_value(1.0),
@@ -119,14 +130,18 @@ int runPlasmaCommand(int argc, char** argv, std::ostream& out, std::ostream& err
         const Case gpuCases[] = {Case::All, Case::Langmuir, Case::Langmuir2D, Case::Boris, Case::ExB};
         if (onGpu && std::find(std::begin(gpuCases), std::end(gpuCases), chosen) == std::end(gpuCases))
             throw cli.usageError("--device gpu runs only the cases langmuir, langmuir-2d, boris and exb");
+        if (!onGpu && cli.given("solver"))
+            throw cli.usageError("--solver applies only to --device gpu");
 
         out << "case,parameter,measured,expected,rel_error\n";
         if (onGpu) {
             const auto context = gl::createContext(gl::Backend::Egl);
             const std::string shaderDir = dataDirectory() + "/shaders";
             const auto runs = [chosen](Case c) { return chosen == Case::All || chosen == c; };
-            if (runs(Case::Langmuir)) printRows(out, "langmuir", plasma::verifyLangmuirOnGpu(wpDt, shaderDir));
-            if (runs(Case::Langmuir2D)) printRows(out, "langmuir-2d", plasma::verifyLangmuir2DOnGpu(wpDt, shaderDir));
+            if (runs(Case::Langmuir))
+                printRows(out, "langmuir", plasma::verifyLangmuirOnGpu(wpDt, shaderDir, solver));
+            if (runs(Case::Langmuir2D))
+                printRows(out, "langmuir-2d", plasma::verifyLangmuir2DOnGpu(wpDt, shaderDir, 256, solver));
             if (runs(Case::Boris)) printRows(out, "boris", plasma::verifyBorisOnGpu(wcDt, shaderDir));
             if (runs(Case::ExB)) printRows(out, "exb", plasma::verifyExBOnGpu(wcDt, shaderDir));
             return;

@@ -128,4 +128,8 @@ expect 0 "--device" plasma --help
 expect 2 "^aurorawall plasma: --device: unknown value 'tpu' \(allowed: cpu, gpu\)" plasma verify --device tpu
 expect 2 "^aurorawall plasma: --device gpu runs only the cases langmuir, langmuir-2d, boris and exb" \
     plasma verify --device gpu --case landau
+expect 0 "--solver" plasma --help
+expect 2 "^aurorawall plasma: --solver: unknown value 'fft' \(allowed: fft-cpu, jacobi, sor, multigrid\)" \
+    plasma verify --device gpu --solver fft
+expect 2 "^aurorawall plasma: --solver applies only to --device gpu" plasma verify --case boris --solver sor
 echo "PASS help"

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -67,13 +68,18 @@ int depositQuantumBits(std::size_t particleCount, int dimension)
                                 std::to_string(dimension) + "D)");
 }
 
+int picSorSweeps(const PeriodicGrid& grid)
+{
+    return int(std::ceil(std::log(1e-6) / std::log(sorOverRelaxation(grid) - 1.0)));
+}
+
 struct GpuPic::Programs {
     gl::Program deposit, field, push;
 };
 
 GpuPic::GpuPic(const PeriodicGrid& grid, const Particles& electrons, glm::dvec3 magneticField, double dt,
-               const std::string& shaderDir, glm::dvec3 externalField)
-    : grid_(grid), poisson_(grid), particleCount_(electrons.position.size()), weight_(electrons.weight),
+               const std::string& shaderDir, glm::dvec3 externalField, GpuPicSolver solver)
+    : grid_(grid), solver_(solver), poisson_(grid), particleCount_(electrons.position.size()), weight_(electrons.weight),
       quantumBits_(depositQuantumBits(electrons.position.size(), grid.dimension)), dt_(dt),
       zeroQuanta_(grid.nodeCount(), 0)
 {
@@ -87,6 +93,12 @@ GpuPic::GpuPic(const PeriodicGrid& grid, const Particles& electrons, glm::dvec3 
             {{"PLASMA_DIMENSION " + std::to_string(grid.dimension), "PLASMA_PASS " + std::to_string(pass)}, modules});
     };
     programs_ = std::make_unique<Programs>(Programs{program(1), program(2), program(3)});
+    if (solver != GpuPicSolver::FftCpu)
+        gpuPoisson_ = std::make_unique<GpuPoisson>(grid,
+                                                   solver == GpuPicSolver::Jacobi        ? GpuPoissonMethod::Jacobi
+                                                   : solver == GpuPicSolver::Multigrid ? GpuPoissonMethod::Multigrid
+                                                                                        : GpuPoissonMethod::RedBlackSor,
+                                                   shaderDir);
     const glm::vec3 cells(grid.cells[0], grid.cells[1], grid.cells[2]);
     const glm::vec3 spacing(grid.spacing[0], grid.spacing[1], grid.spacing[2]);
     for (gl::Program* p : {&programs_->deposit, &programs_->field, &programs_->push}) {
@@ -118,6 +130,8 @@ void GpuPic::bindBuffers() const
 {
     for (GLuint b = 0; b < 5; ++b)
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, b, buffers_[b]);
+    if (gpuPoisson_)
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, Potential, gpuPoisson_->potentialBuffer());
 }
 
 void GpuPic::push(double dt, bool movePositions)
@@ -140,10 +154,13 @@ void GpuPic::deposit()
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
 }
 
-void GpuPic::solvePotential()
+const std::vector<double>& GpuPic::chargeDensity() const
 {
+    if (chargeDensityStep_ == steps_)
+        return chargeDensity_;
     const std::size_t nodes = grid_.nodeCount();
     std::vector<std::int32_t> quanta(nodes);
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
     glGetNamedBufferSubData(buffers_[ChargeQuanta], 0, GLsizeiptr(nodes * sizeof(std::int32_t)), quanta.data());
     // ρ_i = (q/ΔV) 2^-bits (S_i − ΣS/N): the background subtracted exactly, as N·S_i − ΣS in integers
     // (ΣS = particles · 2^bits; |N·S_i| < 2^31 · N fits 64 bits), then scaled once.
@@ -152,9 +169,23 @@ void GpuPic::solvePotential()
     chargeDensity_.resize(nodes);
     for (std::size_t i = 0; i < nodes; ++i)
         chargeDensity_[i] = double((long long)nodes * quanta[i] - total) * scale;
-    const std::vector<double> potential = poisson_.solve(chargeDensity_);
+    chargeDensityStep_ = steps_;
+    return chargeDensity_;
+}
+
+void GpuPic::solvePotential()
+{
+    if (gpuPoisson_) {
+        gpuPoisson_->setChargeFromQuanta(buffers_[ChargeQuanta], particleCount_, weight_, quantumBits_);
+        gpuPoisson_->solve(solver_ == GpuPicSolver::Jacobi      ? kPicJacobiSweeps
+                           : solver_ == GpuPicSolver::Multigrid ? kPicMultigridCycles
+                                                                : picSorSweeps(grid_));
+        return;
+    }
+    const std::vector<double> potential = poisson_.solve(chargeDensity());
     const std::vector<float> potentialFloat(potential.begin(), potential.end());
-    glNamedBufferSubData(buffers_[Potential], 0, GLsizeiptr(nodes * sizeof(float)), potentialFloat.data());
+    glNamedBufferSubData(buffers_[Potential], 0, GLsizeiptr(potentialFloat.size() * sizeof(float)),
+                         potentialFloat.data());
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 }
 

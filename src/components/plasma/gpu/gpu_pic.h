@@ -4,9 +4,8 @@
 // same bits in every run and every context. Needs a current GL 4.5 context.
 //
 // Each step: gather and push on the GPU; the deposit on the GPU in fixed point (integer atomics);
-// the node sums read back, the ion background subtracted in integers (Σρ = 0 exactly) and the
-// potential solved by FFT in double on the CPU (FftPoissonSolver); the potential uploaded as float
-// and E = −∇φ at the nodes on the GPU. One read-back and one upload per step.
+// the potential solved by the chosen GpuPicSolver (below); E = −∇φ at the nodes on the GPU.
+#include "components/plasma/gpu/gpu_poisson.h"
 #include "components/plasma/simulation/fft_poisson_solver.h"
 #include "components/plasma/simulation/particles.h"
 #include "components/plasma/simulation/periodic_grid.h"
@@ -27,11 +26,28 @@ namespace aurorawall::plasma {
 // bits); std::invalid_argument if even 8 bits would overflow (more than 8.1 million particles).
 int depositQuantumBits(std::size_t particleCount, int dimension);
 
+// The step's Poisson solve.
+//   FftCpu: the node sums read back, the ion background subtracted in integers (Σρ = 0 exactly), φ
+//     solved exactly by FFT in double on the CPU and uploaded as float: one read-back and one upload
+//     per step.
+//   Jacobi: kPicJacobiSweeps Jacobi sweeps on the GPU (GpuPoisson), from the previous step's φ.
+//   RedBlackSor: picSorSweeps(grid) red-black SOR sweeps on the GPU, from the previous step's φ.
+//   Multigrid: kPicMultigridCycles V-cycles on the GPU, from the previous step's φ (needs even cell
+//     counts, as RedBlackSor).
+// The GPU solvers take the source from the node sums on the GPU: nothing is read back.
+enum class GpuPicSolver { FftCpu, Jacobi, RedBlackSor, Multigrid };
+
+inline constexpr int kPicJacobiSweeps = 20;
+// From φ = 0 six V-cycles reach float round-off on 64² and 32³ (docs/PLASMA.md).
+inline constexpr int kPicMultigridCycles = 6;
+// The red-black SOR sweeps that shrink the slowest error by 10^-6 at the rate ω − 1 per sweep.
+int picSorSweeps(const PeriodicGrid& grid);
+
 // The wall-clock time (ms) of each phase of one step, each waited for with glFinish.
 struct StepTimes {
     double pushMs = 0.0;    // gather and Boris push, all particles
     double depositMs = 0.0; // fixed-point CIC deposit, all particles
-    double solveMs = 0.0;   // read-back of the node sums, FFT Poisson in double, upload of φ
+    double solveMs = 0.0;   // the Poisson solve (FftCpu: read-back, FFT in double, upload of φ)
     double fieldMs = 0.0;   // E = −∇φ at the nodes
 };
 
@@ -40,9 +56,11 @@ public:
     // As ElectrostaticPic: electrons at time 0, velocities taken back half a step in the initial
     // field. externalField (V/m) is a uniform field added to the particles' own; magneticField (T),
     // dt (s). shaderDir holds components/plasma/. A particle weight of 0 makes test particles (no
-    // charge: the self-consistent field stays 0).
+    // charge: the self-consistent field stays 0). std::invalid_argument for RedBlackSor on a grid
+    // with an odd cell count.
     GpuPic(const PeriodicGrid& grid, const Particles& electrons, glm::dvec3 magneticField, double dt,
-           const std::string& shaderDir, glm::dvec3 externalField = glm::dvec3(0.0));
+           const std::string& shaderDir, glm::dvec3 externalField = glm::dvec3(0.0),
+           GpuPicSolver solver = GpuPicSolver::FftCpu);
     ~GpuPic();
     GpuPic(const GpuPic&) = delete;
     GpuPic& operator=(const GpuPic&) = delete;
@@ -55,8 +73,10 @@ public:
     long stepCount() const { return steps_; }
     const PeriodicGrid& grid() const { return grid_; }
     int quantumBits() const { return quantumBits_; }
-    // The charge density (C/m³) at the nodes of the current step, from the fixed-point sums.
-    const std::vector<double>& chargeDensity() const { return chargeDensity_; }
+    GpuPicSolver solver() const { return solver_; }
+    // The charge density (C/m³) at the nodes of the current step, from the fixed-point sums (read
+    // back from the GPU once per step, when asked or for FftCpu).
+    const std::vector<double>& chargeDensity() const;
     // Read back from the GPU: positions (m), velocities (m/s, half a step behind), the field at the
     // nodes (V/m), all of the current step.
     std::vector<glm::dvec3> positions() const;
@@ -73,7 +93,9 @@ private:
     void solveFields();
 
     PeriodicGrid grid_;
+    GpuPicSolver solver_;
     FftPoissonSolver poisson_;
+    std::unique_ptr<GpuPoisson> gpuPoisson_; // for Jacobi and RedBlackSor
     std::size_t particleCount_;
     double weight_;
     int quantumBits_;
@@ -82,7 +104,8 @@ private:
     std::unique_ptr<Programs> programs_;
     unsigned buffers_[5] = {};
     std::vector<std::int32_t> zeroQuanta_;
-    std::vector<double> chargeDensity_;
+    mutable std::vector<double> chargeDensity_;
+    mutable long chargeDensityStep_ = -1; // the step chargeDensity_ belongs to
 };
 
 } // namespace aurorawall::plasma

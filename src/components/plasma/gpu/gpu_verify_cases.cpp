@@ -80,25 +80,27 @@ std::vector<glm::dvec3> testParticleVelocities(double wcDt, glm::dvec3 start, gl
 
 } // namespace
 
-std::vector<VerifyRow> verifyLangmuirOnGpu(double wpDt, const std::string& shaderDir)
+std::vector<VerifyRow> verifyLangmuirOnGpu(double wpDt, const std::string& shaderDir, GpuPicSolver solver)
 {
     requireLeapfrogStable(wpDt);
     constexpr int kCells = 1024, kParticles = 8 * kCells;
     const double dt = wpDt / plasmaFrequency(kDensity), length = 1.0;
     const PeriodicGrid grid(1, {kCells, 1, 1}, {length / kCells, 1.0, 1.0});
     GpuPic pic(grid, quietStart(grid, kParticles, kDensity, {1, 0.01 * length / kCells}, glm::dvec3(0.0)),
-               glm::dvec3(0.0), dt, shaderDir);
+               glm::dvec3(0.0), dt, shaderDir, glm::dvec3(0.0), solver);
     const double omega = modeFrequency(pic, wpDt);
     return {setting("wp_dt", wpDt), setting("cells", kCells), setting("particles", kParticles),
             setting("quantum_bits", pic.quantumBits()), {"omega_over_wp", omega, leapfrogPlasmaFrequency(wpDt)}};
 }
 
-std::vector<VerifyRow> verifyLangmuir2DOnGpu(double wpDt, const std::string& shaderDir, int cells)
+std::vector<VerifyRow> verifyLangmuir2DOnGpu(double wpDt, const std::string& shaderDir, int cells,
+                                             GpuPicSolver solver)
 {
     requireLeapfrogStable(wpDt);
     const double dt = wpDt / plasmaFrequency(kDensity), spacing = 1.0 / cells;
     const PeriodicGrid grid(2, {cells, cells, 1}, {spacing, spacing, 1.0});
-    GpuPic pic(grid, diagonalWaveLattice(grid, 1, kDensity, {1, 0.01 * spacing}), glm::dvec3(0.0), dt, shaderDir);
+    GpuPic pic(grid, diagonalWaveLattice(grid, 1, kDensity, {1, 0.01 * spacing}), glm::dvec3(0.0), dt, shaderDir,
+               glm::dvec3(0.0), solver);
     const double omega = modeFrequency(pic, wpDt);
     return {setting("wp_dt", wpDt), setting("cells_per_axis", cells), setting("particles", double(cells) * cells),
             setting("quantum_bits", pic.quantumBits()), {"omega_over_wp", omega, leapfrogPlasmaFrequency(wpDt)}};
