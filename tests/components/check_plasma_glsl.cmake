@@ -1,6 +1,7 @@
 # Wraps the plasma's shared kernels (shaders/components/plasma) in a GLSL 4.50 compute shader that
 # calls each of them, and compiles it with glslangValidator: the text the C++ tests run in double
-# must also be valid GLSL. Then the GPU step (pic_step.comp) for every dimension and pass.
+# must also be valid GLSL. Then the GPU step (pic_step.comp) and the Poisson sweeps
+# (poisson_sweep.comp) for every dimension and pass.
 file(MAKE_DIRECTORY ${WORK_DIR})
 set(kernels "")
 foreach(module cloud_in_cell electric_field boris_push)
@@ -30,6 +31,19 @@ foreach(dimension 1 2 3)
     execute_process(COMMAND ${VALIDATOR} ${file} RESULT_VARIABLE result OUTPUT_VARIABLE output ERROR_VARIABLE output)
     if(NOT result EQUAL 0)
       message(FATAL_ERROR "pic_step.comp (dimension ${dimension}, pass ${pass}) does not compile as GLSL:\n${output}")
+    endif()
+  endforeach()
+endforeach()
+# The Poisson sweeps on the GPU (poisson_sweep.comp, a module of its own): every dimension and pass.
+file(READ ${SHADER_DIR}/poisson_sweep.comp sweep)
+foreach(dimension 1 2 3)
+  foreach(pass 1 2 3 4 5 6)
+    set(file ${WORK_DIR}/poisson_sweep_${dimension}_${pass}.comp)
+    file(WRITE ${file} "#version 450 core\n#define real float\n#define PLASMA_DIMENSION ${dimension}\n"
+         "#define POISSON_PASS ${pass}\n${sweep}")
+    execute_process(COMMAND ${VALIDATOR} ${file} RESULT_VARIABLE result OUTPUT_VARIABLE output ERROR_VARIABLE output)
+    if(NOT result EQUAL 0)
+      message(FATAL_ERROR "poisson_sweep.comp (dimension ${dimension}, pass ${pass}) does not compile as GLSL:\n${output}")
     endif()
   endforeach()
 endforeach()
