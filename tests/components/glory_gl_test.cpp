@@ -113,3 +113,34 @@ TEST(GloryOnTheGpu, SunExactlyBehindAndInFront)
         }
     }
 }
+
+// The per-pixel wavelength sums estimate the colour table's integral: with 32 wavelengths a pixel,
+// evenly spaced or importance sampled, the image agrees with the colour table's (measured: uniform
+// rms 1.2e-3, max 5.4e-3; importance rms 4.3e-3, max 2.2e-2; held to rms 1e-2, max 5e-2). A weight or
+// pdf off by 10% would show as a bias of 10%.
+TEST(GloryOnTheGpu, WavelengthsPerPixelEstimateTheColourTable)
+{
+    const auto context = gl::createContext(gl::Backend::Egl);
+    scene::Scene s = gloryScene();
+    const Render table = renderScene(s, {64, 36});
+    std::vector<glm::dvec3> expected;
+    for (int y = 0; y < table.image.height; ++y)
+        for (int x = 0; x < table.image.width; ++x)
+            expected.push_back(app::pixelRadiance(table.image, x, y));
+    for (auto sampling : {components::glory::WavelengthSampling::Uniform, components::glory::WavelengthSampling::Importance}) {
+        auto& glory = s.settings<GlorySettings>();
+        glory.sampling = sampling;
+        glory.wavelengthsPerPixel = 32;
+        const Render summed = renderScene(s, {64, 36});
+        std::vector<glm::dvec3> values;
+        for (int y = 0; y < summed.image.height; ++y)
+            for (int x = 0; x < summed.image.width; ++x)
+                values.push_back(app::pixelRadiance(summed.image, x, y));
+        const app::RelativeError e = app::relativeError(values, expected, 1.0);
+        std::printf("32 wavelengths per pixel (%s) against the colour table: rms %.3g, max %.3g\n",
+                    sampling == components::glory::WavelengthSampling::Uniform ? "uniform" : "importance", e.rms, e.max);
+        EXPECT_GT(e.pixels, 2000u);
+        EXPECT_LT(e.rms, 1e-2);
+        EXPECT_LT(e.max, 5e-2);
+    }
+}

@@ -97,10 +97,11 @@ std::vector<float> wavelengthSamples(const optics::PhaseTable& table, const opti
         const double target = total * (i + 0.5) / kSampleTexels;
         while (w + 2 < count && cumulative[w + 1] < target)
             ++w;
-        // Within [nm[w], nm[w+1]] the density is linear: solve its quadratic cumulative for the wavelength.
+        // Within [nm[w], nm[w+1]] the density a + b s is linear: its cumulative a s + b s²/2 = need, solved
+        // in the form without cancellation, s = 2 need / (a + √(a² + 2 b need)) (also for b = 0).
         const double h = nm[w + 1] - nm[w], a = density[w], b = (density[w + 1] - density[w]) / h;
         const double need = target - cumulative[w];
-        const double s = std::abs(b) < 1e-300 * std::abs(a) ? need / a : (-a + std::sqrt(std::max(a * a + 2.0 * b * need, 0.0))) / b;
+        const double s = 2.0 * need / (a + std::sqrt(std::max(a * a + 2.0 * b * need, 0.0)));
         const double lambda = std::clamp(nm[w] + s, first, last);
         const double pdf = (a + b * (lambda - nm[w])) / total;
         const glm::dvec3 weight = optics::kLumensPerWatt * light.spectralIrradiance(lambda) *
