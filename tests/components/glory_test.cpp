@@ -8,6 +8,7 @@
 #include "components/glory/optics/light_source.h"
 #include "components/glory/optics/water.h"
 #include "components/registry.h"
+#include "scene/load_error.h"
 #include "scene/scene.h"
 
 #include <boost/math/quadrature/gauss_kronrod.hpp>
@@ -268,26 +269,6 @@ TEST(GloryRings, TheSunsDiscHidesTheGloryOfLargeDrops)
 
 namespace {
 
-// Writes a scene file into the test's temporary folder and returns its path.
-std::string sceneFile(const std::string& name, const std::string& text)
-{
-    const std::string path = ::testing::TempDir() + name;
-    FILE* f = std::fopen(path.c_str(), "w");
-    std::fputs(text.c_str(), f);
-    std::fclose(f);
-    return path;
-}
-
-std::string loadError(const std::string& path)
-{
-    try {
-        components::loadScene(path);
-    } catch (const std::exception& e) {
-        return e.what();
-    }
-    return "";
-}
-
 const std::string kDeck = "[scene]\nname = \"deck\"\ncomponents = [\"planet\", \"atmosphere\", \"glory\"]\n"
                           "[camera]\nlatitude_deg = 60.0\nlongitude_deg = 10.0\naltitude_km = 3.0\n"
                           "heading_deg = 0.0\nelevation_deg = -10.0\n";
@@ -301,7 +282,7 @@ TEST(GlorySettings, DerivedSceneKeepsItsBasesLight)
 {
     const std::string base = std::string(AURORAWALL_SOURCE_DIR) + "/config/scenes/glory-flight.toml";
     const std::string derived =
-        sceneFile("derived-glory.toml", "[scene]\nbase = \"" + base + "\"\n[glory]\neffective_radius_um = 5.0\n");
+        test::temporarySceneFile("derived-glory.toml", "[scene]\nbase = \"" + base + "\"\n[glory]\neffective_radius_um = 5.0\n");
     const scene::Scene a = components::loadScene(base), b = components::loadScene(derived);
     const auto& sa = a.settings<components::glory::Settings>();
     const auto& sb = b.settings<components::glory::Settings>();
@@ -328,7 +309,7 @@ TEST(GlorySettings, BadInputNamesFileLineAndKey)
          "bad-sampling.toml:11: glory.wavelength_sampling: must be one of"},
     };
     for (const Case& c : cases) {
-        const std::string message = loadError(sceneFile(c.name, c.text));
+        const std::string message = test::loadErrorOfText(c.name, c.text);
         EXPECT_NE(message.find(c.expected), std::string::npos) << c.name << ": " << message;
     }
 }

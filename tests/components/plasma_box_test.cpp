@@ -8,6 +8,8 @@
 #include "components/plasma/simulation/plasma_parameters.h"
 #include "components/registry.h"
 
+#include "scene/load_error.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -234,14 +236,7 @@ TEST(PlasmaBoxFrames, SeededModeGrowsAtTheTwoStreamRate)
 // The message of the input error loading `text` as a scene file throws ("" if none).
 std::string sceneError(const std::string& text)
 {
-    const std::string file = testing::TempDir() + "plasma_box_settings.toml";
-    std::ofstream(file) << text;
-    try {
-        components::loadScene(file);
-    } catch (const InputError& e) {
-        return e.what();
-    }
-    return "";
+    return test::loadErrorOfText("plasma_box_settings.toml", text);
 }
 
 const std::string kHead = "[scene]\nname = \"t\"\ncomponents = [\"planet\", \"aurora\", \"plasma\"]\n"

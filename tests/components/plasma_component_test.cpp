@@ -7,6 +7,8 @@
 #include "components/plasma/simulation/electron_sheet.h"
 #include "components/registry.h"
 
+#include "scene/load_error.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -39,14 +41,7 @@ components::plasma::SheetFramesSpec smallSceneStrip(int cellsAlong = 128)
 // The message of the input error loading `text` as a scene file throws ("" if none).
 std::string sceneError(const std::string& text)
 {
-    const std::string file = testing::TempDir() + "plasma_settings.toml";
-    std::ofstream(file) << text;
-    try {
-        components::loadScene(file);
-    } catch (const InputError& e) {
-        return e.what();
-    }
-    return "";
+    return test::loadErrorOfText("plasma_settings.toml", text);
 }
 
 const std::string kSceneHead = "[scene]\nname = \"t\"\ncomponents = [\"planet\", \"aurora\", \"plasma\"]\n"

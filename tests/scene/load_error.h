@@ -1,8 +1,12 @@
 #pragma once
-// The message of the InputError that loading the scene `file` throws ("" if none).
+// The message of the InputError that loading a scene throws ("" if none): from a file, or from a
+// text written into the test's temporary folder under a name.
 #include "common/input_error.h"
 #include "components/registry.h"
 
+#include <gtest/gtest.h>
+
+#include <fstream>
 #include <string>
 
 namespace aurorawall::test {
@@ -15,6 +19,19 @@ inline std::string loadError(const std::string& file)
         return e.what();
     }
     return "";
+}
+
+// Writes `text` as the scene file `name` in the test's temporary folder and returns its path.
+inline std::string temporarySceneFile(const std::string& name, const std::string& text)
+{
+    const std::string path = ::testing::TempDir() + name;
+    std::ofstream(path) << text;
+    return path;
+}
+
+inline std::string loadErrorOfText(const std::string& name, const std::string& text)
+{
+    return loadError(temporarySceneFile(name, text));
 }
 
 } // namespace aurorawall::test
