@@ -19,6 +19,7 @@
 #include "components/plasma/simulation/plasma_parameters.h"
 #include "gl/context.h"
 #include "gl/functions.h"
+#include "poisson_test_density.h"
 
 #include <algorithm>
 #include <chrono>
@@ -80,34 +81,6 @@ void measureStep(int dimension, int cells, int perCell, int steps, GpuPicSolver 
                 median(solve), median(field), median(push) + median(deposit) + median(solve) + median(field));
 }
 
-// Three modes and noise, C/m³ (any scale: the errors are relative).
-std::vector<double> testChargeDensity(const PeriodicGrid& grid)
-{
-    std::mt19937 random(7);
-    std::uniform_real_distribution<double> noise(-0.1, 0.1);
-    std::vector<double> rho(grid.nodeCount());
-    for (int k = 0; k < grid.cells[2]; ++k)
-        for (int j = 0; j < grid.cells[1]; ++j)
-            for (int i = 0; i < grid.cells[0]; ++i) {
-                const double x = 2.0 * M_PI * i / grid.cells[0], y = 2.0 * M_PI * j / grid.cells[1],
-                             z = 2.0 * M_PI * k / grid.cells[2];
-                rho[grid.index(i, j, k)] =
-                    kVacuumPermittivity * (std::cos(x) + 0.5 * std::sin(2 * x + 3 * y + z) + 0.25 * std::cos(5 * x + y - 2 * z) + noise(random));
-            }
-    return rho;
-}
-
-std::vector<double> withoutMean(std::vector<double> values)
-{
-    double mean = 0.0;
-    for (double v : values)
-        mean += v;
-    mean /= double(values.size());
-    for (double& v : values)
-        v -= mean;
-    return values;
-}
-
 double relativeL2(const std::vector<double>& approx, const std::vector<double>& exact)
 {
     double difference = 0.0, norm = 0.0;
@@ -137,7 +110,7 @@ std::vector<double> field(const PeriodicGrid& grid, const std::vector<double>& p
 void measureSolvers(int dimension, int cells, const std::vector<std::pair<GpuPoissonMethod, int>>& runs)
 {
     const PeriodicGrid grid(dimension, {cells, cells, cells}, {1.0, 1.0, 1.0});
-    const std::vector<double> rho = testChargeDensity(grid);
+    const std::vector<double> rho = test::modesAndNoise(grid);
     FftPoissonSolver fft(grid);
     std::vector<double> exact, fftMs;
     for (int n = 0; n < 3; ++n) {
@@ -164,7 +137,7 @@ void measureSolvers(int dimension, int cells, const std::vector<std::pair<GpuPoi
                     : method == GpuPoissonMethod::Multigrid ? "multigrid"
                                                             : "sor",
                     sweeps,
-                    relativeL2(withoutMean(phi), exact), relativeL2(field(grid, phi), exactField),
+                    test::relativePotentialError(phi, exact), relativeL2(field(grid, phi), exactField),
                     poissonResidual(grid, rho, phi), ms);
     }
 }
