@@ -21,30 +21,25 @@ execute_process(COMMAND ${VALIDATOR} ${file} RESULT_VARIABLE result OUTPUT_VARIA
 if(NOT result EQUAL 0)
   message(FATAL_ERROR "shaders/components/plasma does not compile as GLSL:\n${output}")
 endif()
-# The GPU step itself, with the kernels before it as the program assembles them: every dimension and pass.
+# A compute shader built from TEXT for every dimension and pass (PASS_DEFINE set to each of the
+# remaining arguments), compiled by glslangValidator.
+function(check_every_pass name text pass_define)
+  foreach(dimension 1 2 3)
+    foreach(pass ${ARGN})
+      set(file ${WORK_DIR}/${name}_${dimension}_${pass}.comp)
+      file(WRITE ${file} "#version 450 core\n#define real float\n#define PLASMA_DIMENSION ${dimension}\n"
+           "#define ${pass_define} ${pass}\n${text}")
+      execute_process(COMMAND ${VALIDATOR} ${file} RESULT_VARIABLE result OUTPUT_VARIABLE output ERROR_VARIABLE output)
+      if(NOT result EQUAL 0)
+        message(FATAL_ERROR "${name}.comp (dimension ${dimension}, pass ${pass}) does not compile as GLSL:\n${output}")
+      endif()
+    endforeach()
+  endforeach()
+endfunction()
+# The GPU step with the kernels before it, as the program assembles them; the Poisson sweeps (a
+# module of their own).
 file(READ ${SHADER_DIR}/pic_step.comp step)
-foreach(dimension 1 2 3)
-  foreach(pass 1 2 3)
-    set(file ${WORK_DIR}/pic_step_${dimension}_${pass}.comp)
-    file(WRITE ${file} "#version 450 core\n#define real float\n#define PLASMA_DIMENSION ${dimension}\n"
-         "#define PLASMA_PASS ${pass}\n${kernels}\n${step}")
-    execute_process(COMMAND ${VALIDATOR} ${file} RESULT_VARIABLE result OUTPUT_VARIABLE output ERROR_VARIABLE output)
-    if(NOT result EQUAL 0)
-      message(FATAL_ERROR "pic_step.comp (dimension ${dimension}, pass ${pass}) does not compile as GLSL:\n${output}")
-    endif()
-  endforeach()
-endforeach()
-# The Poisson sweeps on the GPU (poisson_sweep.comp, a module of its own): every dimension and pass.
+check_every_pass(pic_step "${kernels}\n${step}" PLASMA_PASS 1 2 3)
 file(READ ${SHADER_DIR}/poisson_sweep.comp sweep)
-foreach(dimension 1 2 3)
-  foreach(pass 1 2 3 4 5 6)
-    set(file ${WORK_DIR}/poisson_sweep_${dimension}_${pass}.comp)
-    file(WRITE ${file} "#version 450 core\n#define real float\n#define PLASMA_DIMENSION ${dimension}\n"
-         "#define POISSON_PASS ${pass}\n${sweep}")
-    execute_process(COMMAND ${VALIDATOR} ${file} RESULT_VARIABLE result OUTPUT_VARIABLE output ERROR_VARIABLE output)
-    if(NOT result EQUAL 0)
-      message(FATAL_ERROR "poisson_sweep.comp (dimension ${dimension}, pass ${pass}) does not compile as GLSL:\n${output}")
-    endif()
-  endforeach()
-endforeach()
+check_every_pass(poisson_sweep "${sweep}" POISSON_PASS 1 2 3 4 5 6)
 message(STATUS "shaders/components/plasma: compiles as a GLSL 4.50 compute shader")
