@@ -54,14 +54,7 @@ pic::Particles twoBeams(const BoxFramesSpec& s)
 std::vector<double> relativeCellCentreDensity(const pic::PeriodicGrid& grid, const pic::Particles& electrons,
                                               double meanDensity)
 {
-    pic::Particles shifted = electrons;
-    const glm::dvec3 box = grid.boxLength();
-    for (glm::dvec3& x : shifted.position)
-        for (int d = 0; d < 3; ++d) {
-            x[d] -= 0.5 * grid.spacing[d];
-            x[d] -= box[d] * std::floor(x[d] / box[d]);
-        }
-    std::vector<double> n = pic::depositChargeDensity(grid, shifted);
+    std::vector<double> n = pic::depositChargeDensityAtCellCentres(grid, electrons);
     for (double& v : n)
         v = 1.0 - v / (pic::kElementaryCharge * meanDensity);
     return n;

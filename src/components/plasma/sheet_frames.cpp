@@ -29,14 +29,8 @@ static_assert(sizeof(SheetFramesSpec) == 80, "add the new SheetFramesSpec field 
 // mean removal took away.
 std::vector<double> cellCentreDensity(const pic::PeriodicGrid& grid, const pic::Particles& electrons)
 {
-    pic::Particles shifted = electrons;
+    std::vector<double> n = pic::depositChargeDensityAtCellCentres(grid, electrons);
     const glm::dvec3 box = grid.boxLength();
-    for (glm::dvec3& x : shifted.position)
-        for (int d = 0; d < 2; ++d) {
-            x[d] -= 0.5 * grid.spacing[d];
-            x[d] -= box[d] * std::floor(x[d] / box[d]);
-        }
-    std::vector<double> n = pic::depositChargeDensity(grid, shifted);
     const double mean = electrons.weight * double(electrons.position.size()) / (box.x * box.y * box.z);
     for (double& v : n)
         v = mean - v / pic::kElementaryCharge;

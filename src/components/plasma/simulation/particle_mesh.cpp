@@ -55,6 +55,18 @@ std::vector<double> depositChargeDensity(const PeriodicGrid& grid, const Particl
     return density;
 }
 
+std::vector<double> depositChargeDensityAtCellCentres(const PeriodicGrid& grid, const Particles& electrons)
+{
+    Particles shifted = electrons;
+    const glm::dvec3 box = grid.boxLength();
+    for (glm::dvec3& x : shifted.position)
+        for (int d = 0; d < grid.dimension; ++d) {
+            x[d] -= 0.5 * grid.spacing[d];
+            x[d] -= box[d] * std::floor(x[d] / box[d]);
+        }
+    return depositChargeDensity(grid, shifted);
+}
+
 std::vector<glm::dvec3> nodeElectricField(const PeriodicGrid& grid, const std::vector<double>& potential)
 {
     std::vector<glm::dvec3> field(grid.nodeCount(), glm::dvec3(0.0));

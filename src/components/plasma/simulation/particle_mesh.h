@@ -18,6 +18,11 @@ namespace aurorawall::plasma {
 // particles give the same bits.
 std::vector<double> depositChargeDensity(const PeriodicGrid& grid, const Particles& electrons);
 
+// The same deposit at the cell centres: the electrons moved back by half a cell along every axis of
+// the grid's dimension before depositing, so node (i, j, k) stands for the point ((i + ½)Δx, …).
+// The electron density there is the mean density minus this over the elementary charge.
+std::vector<double> depositChargeDensityAtCellCentres(const PeriodicGrid& grid, const Particles& electrons);
+
 // E = −∇φ (V/m) at every node by central differences; zero along the axes beyond the grid's dimension.
 std::vector<glm::dvec3> nodeElectricField(const PeriodicGrid& grid, const std::vector<double>& potential);
 
