@@ -38,9 +38,10 @@ constexpr int kSampleTexels = 1024; // the per-pixel wavelength table over u in 
 // The light's illuminance per linear-sRGB primary (lux): the XYZ of its spectrum, 683 ∫ E cmf dλ.
 glm::dvec3 lightRgb(const optics::LightSource& light)
 {
+    const optics::LightSpectrum spectrum = light.spectrum();
     glm::dvec3 xyz(0.0);
     for (double nm = optics::kCieFirstNm; nm <= optics::kCieLastNm; nm += 1.0)
-        xyz += ((nm == optics::kCieFirstNm || nm == optics::kCieLastNm) ? 0.5 : 1.0) * light.spectralIrradiance(nm) *
+        xyz += ((nm == optics::kCieFirstNm || nm == optics::kCieLastNm) ? 0.5 : 1.0) * spectrum(nm) *
                optics::colourMatching(nm);
     return f64::desaturateIntoGamut(f64::xyzToLinearSrgb(xyz * optics::kLumensPerWatt));
 }
@@ -80,13 +81,14 @@ std::vector<float> floats(const std::vector<glm::dvec3>& v)
 // cumulative distribution, linear between the table's wavelengths).
 std::vector<float> wavelengthSamples(const optics::PhaseTable& table, const optics::LightSource& light, bool importance)
 {
+    const optics::LightSpectrum spectrum = light.spectrum();
     const std::vector<double>& nm = table.wavelengthsNm;
     const size_t count = nm.size();
     const double first = nm.front(), last = nm.back(), range = last - first;
     std::vector<double> density(count), cumulative(count, 0.0);
     for (size_t w = 0; w < count; ++w) {
         const glm::dvec3 cmf = optics::colourMatching(nm[w]);
-        density[w] = importance ? light.spectralIrradiance(nm[w]) * (cmf.x + cmf.y + cmf.z) : 1.0;
+        density[w] = importance ? spectrum(nm[w]) * (cmf.x + cmf.y + cmf.z) : 1.0;
         if (w > 0)
             cumulative[w] = cumulative[w - 1] + 0.5 * (density[w] + density[w - 1]) * (nm[w] - nm[w - 1]);
     }
@@ -104,7 +106,7 @@ std::vector<float> wavelengthSamples(const optics::PhaseTable& table, const opti
         const double s = 2.0 * need / (a + std::sqrt(std::max(a * a + 2.0 * b * need, 0.0)));
         const double lambda = std::clamp(nm[w] + s, first, last);
         const double pdf = (a + b * (lambda - nm[w])) / total;
-        const glm::dvec3 weight = optics::kLumensPerWatt * light.spectralIrradiance(lambda) *
+        const glm::dvec3 weight = optics::kLumensPerWatt * spectrum(lambda) *
                                   optics::colourMatching(lambda) / (4.0 * kPi * pdf);
         const double coordinate = ((lambda - first) / range * double(count - 1) + 0.5) / double(count);
         texels.insert(texels.end(), {float(coordinate), float(weight.x), float(weight.y), float(weight.z)});

@@ -214,13 +214,14 @@ PhaseTable smearedByDisc(const PhaseTable& table, double discRadiusRad)
 std::vector<glm::dvec3> gloryXyz(const PhaseTable& table, const LightSource& light)
 {
     const size_t count = table.wavelengthsNm.size();
+    const LightSpectrum spectrum = light.spectrum();
     std::vector<glm::dvec3> weight(count, glm::dvec3(0.0)); // 683 E(λ) cmf(λ) Δλ / 4π
     for (size_t w = 0; w < count; ++w) {
         const double step = count == 1 ? 1.0
                                        : (table.wavelengthsNm.back() - table.wavelengthsNm.front()) / double(count - 1) *
                                              ((w == 0 || w + 1 == count) ? 0.5 : 1.0);
         const double nm = table.wavelengthsNm[w];
-        weight[w] = kLumensPerWatt * light.spectralIrradiance(nm) * colourMatching(nm) * step / (4.0 * kPi);
+        weight[w] = kLumensPerWatt * spectrum(nm) * colourMatching(nm) * step / (4.0 * kPi);
     }
     std::vector<glm::dvec3> xyz(size_t(table.angles.size()), glm::dvec3(0.0));
     for (int a = 0; a < table.angles.size(); ++a)

@@ -29,16 +29,25 @@ double LightSource::illuminanceLux() const
     return sunIlluminanceLux * moonGeometricAlbedo * size * size * phase;
 }
 
-double LightSource::spectralIrradiance(double wavelengthNm) const
+LightSpectrum::LightSpectrum(const LightSource& light)
+    : illuminanceLux_(light.illuminanceLux()), temperatureK_(light.sunTemperatureK), luminousPerIrradiance_(0.0)
 {
-    double luminous = 0.0; // 683 ∫ B ȳ dλ of the unscaled black body, trapezoid every 1 nm
+    // 683 ∫ B ȳ dλ of the unscaled black body, trapezoid every 1 nm.
     for (double nm = kCieFirstNm; nm <= kCieLastNm; nm += 1.0) {
         const double weight = (nm == kCieFirstNm || nm == kCieLastNm) ? 0.5 : 1.0;
-        luminous += weight * planckRadiance(nm, sunTemperatureK) * colourMatching(nm).y;
+        luminousPerIrradiance_ += weight * planckRadiance(nm, temperatureK_) * colourMatching(nm).y;
     }
-    luminous *= kLumensPerWatt;
-    return illuminanceLux() * planckRadiance(wavelengthNm, sunTemperatureK) / luminous;
+    luminousPerIrradiance_ *= kLumensPerWatt;
 }
+
+double LightSpectrum::operator()(double wavelengthNm) const
+{
+    return illuminanceLux_ * planckRadiance(wavelengthNm, temperatureK_) / luminousPerIrradiance_;
+}
+
+LightSpectrum LightSource::spectrum() const { return LightSpectrum(*this); }
+
+double LightSource::spectralIrradiance(double wavelengthNm) const { return spectrum()(wavelengthNm); }
 
 double LightSource::discRadiusRad() const { return 0.5 * angularDiameterDeg * kPi / 180.0; }
 

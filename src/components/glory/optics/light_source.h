@@ -3,6 +3,8 @@
 // facing it above the atmosphere, and the angular size of its disc (which smears the glory's rings).
 namespace aurorawall::glory {
 
+class LightSpectrum;
+
 struct LightSource {
     enum class Body { Sun, Moon };
     Body body = Body::Sun;
@@ -22,8 +24,23 @@ struct LightSource {
     // Sun's, its slight reddening neglected), scaled so that 683 lm/W ∫ E ȳ dλ over 380–780 nm is
     // illuminanceLux() (the integral by the trapezoid rule every 1 nm over the CIE table).
     double spectralIrradiance(double wavelengthNm) const;
+    // The same as a function of wavelength whose normalising integral is computed once, for loops
+    // over many wavelengths.
+    LightSpectrum spectrum() const;
 
     double discRadiusRad() const;
+};
+
+// LightSource::spectralIrradiance with the luminous integral of the black body computed once.
+class LightSpectrum {
+public:
+    explicit LightSpectrum(const LightSource& light);
+    double operator()(double wavelengthNm) const; // W m⁻² nm⁻¹
+
+private:
+    double illuminanceLux_;
+    double temperatureK_;
+    double luminousPerIrradiance_; // 683 lm/W ∫ B ȳ dλ of the unscaled black body
 };
 
 // Planck's law, spectral radiance of a black body in W m⁻² sr⁻¹ m⁻¹ at λ (nm) and temperature T (K).
