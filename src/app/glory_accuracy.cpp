@@ -31,12 +31,7 @@ struct ColourTable {
     double seconds = 0.0;
     long long mieSeries = 0;
 
-    glm::dvec3 at(double gamma) const
-    {
-        const double position = grid.index(gamma);
-        const size_t i = std::min(static_cast<size_t>(position), rgb.size() - 2);
-        return glm::mix(rgb[i], rgb[i + 1], position - double(i));
-    }
+    glm::dvec3 at(double gamma) const { return optics::colourAtAngle(grid, rgb, gamma); }
 };
 
 ColourTable colourTable(const GlorySettings& s)

@@ -214,7 +214,7 @@ public:
         if (above) {
             const double mu = std::max(-glm::dot(up, ray.direction), 1e-6);
             const double gamma = f64::angleBetween(ray.direction, -s_.lightDirection);
-            deck += colour(gamma) * f64::singleScatteringFactor(mu0, mu, s_.opticalThickness);
+            deck += optics::colourAtAngle(grid_, colour_, gamma) * f64::singleScatteringFactor(mu0, mu, s_.opticalThickness);
         }
         ray.radiance += deck * lightTransmittance(p, altitude) * ray.transmittance;
         return ray;
@@ -225,12 +225,6 @@ private:
     {
         return f64::cloudDeckHit(ray.origin, ray.direction, radiusKm_, ray.altitude, s_.deckTopKm - s_.deckThicknessKm,
                                  s_.deckTopKm);
-    }
-    glm::dvec3 colour(double gamma) const
-    {
-        const double position = grid_.index(gamma);
-        const size_t i = std::min(static_cast<size_t>(position), colour_.size() - 2);
-        return glm::mix(colour_[i], colour_[i + 1], position - double(i));
     }
     glm::dvec3 lightTransmittance(glm::dvec3 p, double altitude) const
     {

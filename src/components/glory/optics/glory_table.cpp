@@ -137,6 +137,13 @@ double PhaseTable::interpolate(int wavelength, double gammaRad) const
     return (1.0 - f) * at(wavelength, i) + f * at(wavelength, i + 1);
 }
 
+glm::dvec3 colourAtAngle(const AngleGrid& grid, const std::vector<glm::dvec3>& colours, double gammaRad)
+{
+    const double position = grid.index(gammaRad);
+    const size_t i = std::min(static_cast<size_t>(position), colours.size() - 2);
+    return glm::mix(colours[i], colours[i + 1], position - double(i));
+}
+
 PhaseTable emptyPhaseTable(const GloryTableSpec& spec)
 {
     PhaseTable table;

@@ -79,4 +79,8 @@ std::vector<glm::dvec3> gloryXyz(const PhaseTable& table, const LightSource& lig
 // Linear sRGB of the XYZ table, gamut mapped as the aurora's colours (aurora/physics/colour.h).
 std::vector<glm::dvec3> gloryLinearSrgb(const std::vector<glm::dvec3>& xyz);
 
+// A colour table of `grid` (one colour per angle) linear between the grid's angles at γ (clamped
+// to [0, π]).
+glm::dvec3 colourAtAngle(const AngleGrid& grid, const std::vector<glm::dvec3>& colours, double gammaRad);
+
 } // namespace aurorawall::glory
