@@ -128,6 +128,7 @@ TEST(PlasmaShape, TscDepositsTheSplineAcrossTheBoundary)
 
 // No self-force with TSC: a lone particle's own field, deposited, solved and gathered with the same
 // weights, vanishes at the particle in 1D, 2D and 3D, anywhere in its cell.
+// Measured at most 2.2e-16 of the largest node field (20 positions per dimension); held to 1e-12 as CIC.
 TEST(PlasmaShape, TscHasNoSelfForce)
 {
     std::mt19937_64 rng(5);
