@@ -46,6 +46,9 @@ const cli::Choices<plasma::GpuPicSolver> kSolvers = {{"fft-cpu", plasma::GpuPicS
                                                       {"sor", plasma::GpuPicSolver::RedBlackSor},
                                                       {"multigrid", plasma::GpuPicSolver::Multigrid}};
 
+const cli::Choices<plasma::ParticleShape> kShapes = {{"cic", plasma::ParticleShape::CloudInCell},
+                                                      {"tsc", plasma::ParticleShape::TriangularShapedCloud}};
+
 // The heating case's grid spacings in Debye lengths when --dx-lambda-d is not given.
 const std::vector<double> kHeatingSpacings = {0.5, 2.0, 8.0};
 
@@ -77,7 +80,7 @@ int runPlasmaCommand(int argc, char** argv, std::ostream& out, std::ostream& err
         cli::CommandLine cli(
             "plasma",
             "Usage: aurorawall plasma verify [--case NAME] [--device cpu|gpu] [--solver NAME] [--wp-dt X]\n"
-            "                               [--wc-dt X] [--dx-lambda-d X]\n"
+            "                               [--wc-dt X] [--dx-lambda-d X] [--shape cic|tsc]\n"
             "Runs the electrostatic particle-in-cell plasma's verification cases and prints CSV\n"
             "case,parameter,measured,expected,rel_error; expected comes from theory (frequencies and rates in\n"
             "units of the plasma frequency omega_p); rows of a run's settings, and the heating rates (no closed\n"
@@ -105,6 +108,9 @@ int runPlasmaCommand(int argc, char** argv, std::ostream& out, std::ostream& err
         double dxOverDebye = 0.0;
         cli.add()("dx-lambda-d", po::value<double>(&dxOverDebye),
                   "the heating case's grid spacing in Debye lengths, > 0 (default: 0.5, 2 and 8 in turn)");
+        plasma::ParticleShape shape = plasma::ParticleShape::CloudInCell;
+        cli.addChoice("shape", &shape, kShapes,
+                      "the heating case's particle shape: cic (cloud-in-cell, default) or tsc (triangular-shaped cloud)");
         cli.addPositional("action", &actionName);
         if (!cli.parse(argc, argv)) {
             out << cli.help();
@@ -132,6 +138,8 @@ int runPlasmaCommand(int argc, char** argv, std::ostream& out, std::ostream& err
             throw cli.usageError("--device gpu runs only the cases langmuir, langmuir-2d, boris and exb");
         if (!onGpu && cli.given("solver"))
             throw cli.usageError("--solver applies only to --device gpu");
+        if (cli.given("shape") && chosen != Case::Heating)
+            throw cli.usageError("--shape applies only to --case heating");
 
         out << "case,parameter,measured,expected,rel_error\n";
         if (onGpu) {
@@ -155,7 +163,7 @@ int runPlasmaCommand(int argc, char** argv, std::ostream& out, std::ostream& err
         if (runs(Case::Energy)) printRows(out, "energy", plasma::verifyEnergy(wpDt));
         if (runs(Case::Heating))
             for (const double spacing : heatingSpacings)
-                printRows(out, "heating", plasma::verifyHeating(wpDt, spacing));
+                printRows(out, "heating", plasma::verifyHeating(wpDt, spacing, 1, shape));
         if (runs(Case::Landau)) printRows(out, "landau", plasma::verifyLandau(wpDt));
         if (runs(Case::Diocotron)) printRows(out, "diocotron", plasma::verifyDiocotron(kDiocotronWcDt));
     });

@@ -132,4 +132,7 @@ expect 0 "--solver" plasma --help
 expect 2 "^aurorawall plasma: --solver: unknown value 'fft' \(allowed: fft-cpu, jacobi, sor, multigrid\)" \
     plasma verify --device gpu --solver fft
 expect 2 "^aurorawall plasma: --solver applies only to --device gpu" plasma verify --case boris --solver sor
+expect 0 "--shape" plasma --help
+expect 2 "^aurorawall plasma: --shape: unknown value 'ngp' \(allowed: cic, tsc\)" plasma verify --case heating --shape ngp
+expect 2 "^aurorawall plasma: --shape applies only to --case heating" plasma verify --case landau --shape tsc
 echo "PASS help"

@@ -8,13 +8,18 @@ foreach(module cloud_in_cell electric_field boris_push)
   file(READ ${SHADER_DIR}/${module}.glsl text)
   string(APPEND kernels "${text}\n")
 endforeach()
+# The TSC weights, which the GPU step does not use, are checked here only.
+file(READ ${SHADER_DIR}/triangular_shaped_cloud.glsl shape)
 set(file ${WORK_DIR}/plasma_kernels.comp)
-file(WRITE ${file} "#version 450 core\n#define real float\nlayout(local_size_x = 64) in;\n${kernels}"
+file(WRITE ${file} "#version 450 core\n#define real float\nlayout(local_size_x = 64) in;\n${kernels}\n${shape}\n"
      "layout(std430, binding = 0) buffer Particles { vec4 state[]; };\n"
      "void main() {\n  uint p = gl_GlobalInvocationID.x;\n"
      "  vec3 f = cicCellFraction(state[p].xyz);\n"
      "  float rho = cicCornerChargeDensity(-1.0, 1.0, f, 3, 2);\n"
      "  vec3 e = cicCornerField(vec3(centralDifferenceField(rho, 1.0, 0.1)), f, 5, 3);\n"
+     "  vec3 o = tscNodeOffset(state[p].xyz);\n"
+     "  rho += tscNodeChargeDensity(-1.0, 1.0, o, 13, 3) + tscNearestNode(state[p].xyz).x;\n"
+     "  e += tscNodeField(vec3(rho), o, 7, 2);\n"
      "  vec3 v = borisVelocity(state[p].xyz, e, vec3(0.0, 0.0, 1.0), -1.0, 0.1);\n"
      "  state[p] = vec4(leapfrogPosition(state[p].xyz, v, 0.1, vec3(1.0)), cicCornerWeight(f, 1, 1));\n}\n")
 execute_process(COMMAND ${VALIDATOR} ${file} RESULT_VARIABLE result OUTPUT_VARIABLE output ERROR_VARIABLE output)

@@ -20,20 +20,22 @@ constexpr double kChargeOverMass = -kElementaryCharge / kElectronMass; // C/kg, 
 
 } // namespace
 
-ElectrostaticPic::ElectrostaticPic(const PeriodicGrid& grid, Particles electrons, glm::dvec3 magneticField, double dt)
-    : grid_(grid), poisson_(grid), electrons_(std::move(electrons)), magneticField_(magneticField), dt_(dt)
+ElectrostaticPic::ElectrostaticPic(const PeriodicGrid& grid, Particles electrons, glm::dvec3 magneticField, double dt,
+                                   ParticleShape shape)
+    : grid_(grid), poisson_(grid), electrons_(std::move(electrons)), magneticField_(magneticField), dt_(dt),
+      shape_(shape)
 {
     if (!(dt > 0.0) || electrons_.position.size() != electrons_.velocity.size())
         throw std::invalid_argument("ElectrostaticPic: needs dt > 0 and a velocity per particle");
     solveFields();
-    const std::vector<glm::dvec3> e = gatherField(grid_, nodeField_, electrons_.position);
+    const std::vector<glm::dvec3> e = gatherField(grid_, nodeField_, electrons_.position, shape_);
     for (std::size_t p = 0; p < e.size(); ++p)
         electrons_.velocity[p] = f64::borisVelocity(electrons_.velocity[p], e[p], magneticField_, kChargeOverMass, -0.5 * dt_);
 }
 
 void ElectrostaticPic::solveFields()
 {
-    chargeDensity_ = depositChargeDensity(grid_, electrons_);
+    chargeDensity_ = depositChargeDensity(grid_, electrons_, shape_);
     potential_ = poisson_.solve(chargeDensity_);
     nodeField_ = nodeElectricField(grid_, potential_);
 }
@@ -46,7 +48,7 @@ StepEnergies ElectrostaticPic::step()
 
     const double mass = kElectronMass * electrons_.weight;
     const glm::dvec3 box = grid_.boxLength();
-    const std::vector<glm::dvec3> e = gatherField(grid_, nodeField_, electrons_.position);
+    const std::vector<glm::dvec3> e = gatherField(grid_, nodeField_, electrons_.position, shape_);
     for (std::size_t p = 0; p < e.size(); ++p) {
         const glm::dvec3 before = electrons_.velocity[p];
         const glm::dvec3 after = f64::borisVelocity(before, e[p], magneticField_, kChargeOverMass, dt_);

@@ -13,6 +13,7 @@ namespace {
 namespace f64 {
 AURORAWALL_GLSL_PRECISION(double)
 #include "components/plasma/cloud_in_cell.glsl"
+#include "components/plasma/triangular_shaped_cloud.glsl"
 #include "components/plasma/electric_field.glsl"
 } // namespace f64
 
@@ -35,19 +36,57 @@ std::size_t cornerNode(const PeriodicGrid& grid, const Cell& cell, int corner)
                       cell.lower[2] + ((corner >> 2) & 1));
 }
 
+// The particle's nearest node and its offset from it along each axis (TSC).
+struct NearestNode {
+    int node[3];
+    glm::dvec3 offset;
+};
+
+NearestNode nearestNodeOf(const PeriodicGrid& grid, glm::dvec3 position)
+{
+    const glm::dvec3 g = position / glm::dvec3(grid.spacing[0], grid.spacing[1], grid.spacing[2]);
+    const glm::dvec3 nearest = f64::tscNearestNode(g);
+    return {{int(nearest.x), int(nearest.y), int(nearest.z)}, f64::tscNodeOffset(g)};
+}
+
+// The grid index of TSC node `node` around the nearest node; no step along the axes beyond the
+// grid's dimension.
+std::size_t tscNode(const PeriodicGrid& grid, const NearestNode& nearest, int node)
+{
+    int at[3] = {nearest.node[0], nearest.node[1], nearest.node[2]};
+    for (int d = 0; d < grid.dimension; ++d)
+        at[d] += f64::tscNodeStep(node, d);
+    return grid.index(at[0], at[1], at[2]);
+}
+
+int tscNodeCount(const PeriodicGrid& grid)
+{
+    return grid.dimension == 1 ? 3 : grid.dimension == 2 ? 9 : 27;
+}
+
 } // namespace
 
-std::vector<double> depositChargeDensity(const PeriodicGrid& grid, const Particles& electrons)
+std::vector<double> depositChargeDensity(const PeriodicGrid& grid, const Particles& electrons, ParticleShape shape)
 {
     std::vector<double> density(grid.nodeCount(), 0.0);
     const double charge = -kElementaryCharge * electrons.weight;
     const double volume = grid.cellVolume();
-    const int corners = 1 << grid.dimension;
-    for (const glm::dvec3& x : electrons.position) {
-        const Cell cell = cellOf(grid, x);
-        for (int corner = 0; corner < corners; ++corner)
-            density[cornerNode(grid, cell, corner)] +=
-                f64::cicCornerChargeDensity(charge, volume, cell.fraction, corner, grid.dimension);
+    if (shape == ParticleShape::CloudInCell) {
+        const int corners = 1 << grid.dimension;
+        for (const glm::dvec3& x : electrons.position) {
+            const Cell cell = cellOf(grid, x);
+            for (int corner = 0; corner < corners; ++corner)
+                density[cornerNode(grid, cell, corner)] +=
+                    f64::cicCornerChargeDensity(charge, volume, cell.fraction, corner, grid.dimension);
+        }
+    } else {
+        const int nodes = tscNodeCount(grid);
+        for (const glm::dvec3& x : electrons.position) {
+            const NearestNode nearest = nearestNodeOf(grid, x);
+            for (int node = 0; node < nodes; ++node)
+                density[tscNode(grid, nearest, node)] +=
+                    f64::tscNodeChargeDensity(charge, volume, nearest.offset, node, grid.dimension);
+        }
     }
     const double mean = std::accumulate(density.begin(), density.end(), 0.0) / double(density.size());
     for (double& rho : density)
@@ -84,15 +123,25 @@ std::vector<glm::dvec3> nodeElectricField(const PeriodicGrid& grid, const std::v
 }
 
 std::vector<glm::dvec3> gatherField(const PeriodicGrid& grid, const std::vector<glm::dvec3>& nodeField,
-                                    const std::vector<glm::dvec3>& positions)
+                                    const std::vector<glm::dvec3>& positions, ParticleShape shape)
 {
     std::vector<glm::dvec3> field(positions.size(), glm::dvec3(0.0));
-    const int corners = 1 << grid.dimension;
-    for (std::size_t p = 0; p < positions.size(); ++p) {
-        const Cell cell = cellOf(grid, positions[p]);
-        for (int corner = 0; corner < corners; ++corner)
-            field[p] += f64::cicCornerField(nodeField[cornerNode(grid, cell, corner)], cell.fraction, corner,
-                                            grid.dimension);
+    if (shape == ParticleShape::CloudInCell) {
+        const int corners = 1 << grid.dimension;
+        for (std::size_t p = 0; p < positions.size(); ++p) {
+            const Cell cell = cellOf(grid, positions[p]);
+            for (int corner = 0; corner < corners; ++corner)
+                field[p] += f64::cicCornerField(nodeField[cornerNode(grid, cell, corner)], cell.fraction, corner,
+                                                grid.dimension);
+        }
+    } else {
+        const int nodes = tscNodeCount(grid);
+        for (std::size_t p = 0; p < positions.size(); ++p) {
+            const NearestNode nearest = nearestNodeOf(grid, positions[p]);
+            for (int node = 0; node < nodes; ++node)
+                field[p] += f64::tscNodeField(nodeField[tscNode(grid, nearest, node)], nearest.offset, node,
+                                              grid.dimension);
+        }
     }
     return field;
 }

@@ -252,18 +252,23 @@ std::vector<VerifyRow> verifyEnergy(double wpDt)
             {"relative_energy_drift", (last - initial) / initial, 0.0}};
 }
 
-std::vector<VerifyRow> verifyHeating(double wpDt, double dxOverDebye, std::uint64_t seed)
+std::vector<VerifyRow> verifyHeating(double wpDt, double dxOverDebye, std::uint64_t seed, ParticleShape shape,
+                                     int particlesPerCell)
 {
     requireLeapfrogStable(wpDt);
     if (!(dxOverDebye > 0.0) || !std::isfinite(dxOverDebye))
         throw std::domain_error("dx/lambda_D must be a finite number > 0");
-    constexpr int kCells = 64, kParticles = 64 * kCells;
+    if (particlesPerCell < 1)
+        throw std::domain_error("particles per cell must be at least 1");
+    constexpr int kCells = 64;
+    const int particles = particlesPerCell * kCells;
     constexpr double kFitStart = 10.0, kFitEnd = 200.0; // 1/ω_p: after the start's field has formed
     const double wp = plasmaFrequency(kDensity), dt = wpDt / wp;
     const double thermalSpeed = 4.19e5; // m/s: 1 eV electrons
     const double lambdaD = debyeLength(thermalSpeed, kDensity);
     const PeriodicGrid grid(1, {kCells, 1, 1}, {dxOverDebye * lambdaD, 1.0, 1.0});
-    ElectrostaticPic pic(grid, randomStart(grid, kParticles, kDensity, thermalSpeed, seed), glm::dvec3(0.0), dt);
+    ElectrostaticPic pic(grid, randomStart(grid, particles, kDensity, thermalSpeed, seed), glm::dvec3(0.0), dt,
+                         shape);
     // kT_x/kT_0 = ⟨v_x²⟩/v_th² at each half step, against ω_p t.
     std::vector<double> t, temperature;
     const long steps = long(std::ceil(kFitEnd / wpDt));
@@ -275,10 +280,10 @@ std::vector<VerifyRow> verifyHeating(double wpDt, double dxOverDebye, std::uint6
         for (const glm::dvec3& v : pic.electrons().velocity)
             sum += v.x * v.x;
         t.push_back(time);
-        temperature.push_back(sum / (double(kParticles) * thermalSpeed * thermalSpeed));
+        temperature.push_back(sum / (double(particles) * thermalSpeed * thermalSpeed));
     }
     return {setting("wp_dt", wpDt), setting("dx_over_debye", dxOverDebye), setting("cells", kCells),
-            setting("particles", kParticles), setting("seed", double(seed)),
+            setting("particles", particles), setting("seed", double(seed)),
             {"heating_rate_over_wp", fittedSlope(t, temperature), std::nullopt}};
 }
 

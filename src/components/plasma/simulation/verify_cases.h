@@ -2,6 +2,8 @@
 // The verification cases of `aurorawall plasma verify`: each runs the simulation (or its push) in a
 // setting where theory gives the answer, and returns what it measured beside what the theory, or the
 // scheme's own exact dispersion, expects. Frequencies and rates are in units of ω_p.
+#include "components/plasma/simulation/particle_mesh.h"
+
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -37,11 +39,13 @@ std::vector<VerifyRow> verifyExB(double cyclotronFrequencyTimesDt);
 std::vector<VerifyRow> verifyTwoStream(double plasmaFrequencyTimesDt);
 // A thermal plasma (random start, Δx = λ_D) over a long run: the relative drift of the total energy.
 std::vector<VerifyRow> verifyEnergy(double plasmaFrequencyTimesDt);
-// Numerical heating of a thermal plasma (random start, `seed`) on a grid of spacing
-// dxOverDebyeLength · λ_D: the rate d(kT)/dt/(kT ω_p) of the temperature along x, from a least-squares
-// line through kT_x(t). No closed form: the grid's aliasing heats ever faster as Δx/λ_D grows past ~1
-// (Birdsall & Langdon 1991, ch. 12). dxOverDebyeLength > 0.
-std::vector<VerifyRow> verifyHeating(double plasmaFrequencyTimesDt, double dxOverDebyeLength, std::uint64_t seed = 1);
+// Numerical heating of a thermal plasma (random start, `seed`, particlesPerCell on 64 cells, the given
+// particle shape) on a grid of spacing dxOverDebyeLength · λ_D: the rate d(kT)/dt/(kT ω_p) of the
+// temperature along x, from a least-squares line through kT_x(t). No closed form: the grid's aliasing
+// heats ever faster as Δx/λ_D grows past ~1 (Birdsall & Langdon 1991, ch. 12). dxOverDebyeLength > 0,
+// particlesPerCell ≥ 1.
+std::vector<VerifyRow> verifyHeating(double plasmaFrequencyTimesDt, double dxOverDebyeLength, std::uint64_t seed = 1,
+                                     ParticleShape shape = ParticleShape::CloudInCell, int particlesPerCell = 64);
 // Landau damping of a Langmuir wave at k λ_D = 0.5 (quiet Maxwellian): frequency and damping rate
 // against the root of the kinetic dispersion relation.
 std::vector<VerifyRow> verifyLandau(double plasmaFrequencyTimesDt);
