@@ -221,10 +221,10 @@ TEST(PlasmaOnTheGpu, VerifyCasesAgreeWithTheory)
         ADD_FAILURE() << "no row " << name;
         return VerifyRow{};
     };
-    const VerifyRow langmuir = measured(verifyLangmuirOnGpu(kWpDt, kShaders), "omega_over_wp");
-    const VerifyRow langmuir2D = measured(verifyLangmuir2DOnGpu(kWpDt, kShaders, 64), "omega_over_wp");
-    const std::vector<VerifyRow> boris = verifyBorisOnGpu(1.0, kShaders);
-    const std::vector<VerifyRow> exb = verifyExBOnGpu(1.0, kShaders);
+    const VerifyRow langmuir = measured(verifyLangmuir(kWpDt, GpuPicDevice(kShaders)), "omega_over_wp");
+    const VerifyRow langmuir2D = measured(verifyLangmuir2D(kWpDt, 64, GpuPicDevice(kShaders)), "omega_over_wp");
+    const std::vector<VerifyRow> boris = verifyBoris(1.0, 1000, GpuPicDevice(kShaders));
+    const std::vector<VerifyRow> exb = verifyExB(1.0, GpuPicDevice(kShaders));
     std::printf("langmuir %.3g, langmuir-2d (64^2) %.3g, boris %.3g / %.3g, exb %.3g / %.3g\n",
                 langmuir.relativeError(), langmuir2D.relativeError(),
                 measured(boris, "rotation_per_step_rad").relativeError(),
@@ -355,7 +355,7 @@ TEST(PlasmaPoissonOnTheGpu, LangmuirWithConvergingSolversAgreesWithTheory)
 {
     const auto context = gl::createContext(gl::Backend::Egl);
     const auto omega = [](GpuPicSolver solver) {
-        for (const VerifyRow& row : verifyLangmuir2DOnGpu(kWpDt, kShaders, 32, solver))
+        for (const VerifyRow& row : verifyLangmuir2D(kWpDt, 32, GpuPicDevice(kShaders, solver)))
             if (row.parameter == "omega_over_wp")
                 return (row.measured - *row.expected) / *row.expected;
         ADD_FAILURE() << "no omega_over_wp";
