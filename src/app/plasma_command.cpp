@@ -141,7 +141,7 @@ int runPlasmaCommand(int argc, char** argv, std::ostream& out, std::ostream& err
             if (runs(Case::Heating))
                 for (const double spacing : heatingSpacings)
                     printRows(out, "heating", plasma::verifyHeating(wpDt, spacing, 1, on));
-            if (runs(Case::Landau)) printRows(out, "landau", plasma::verifyLandau(wpDt, on));
+            if (runs(Case::Landau)) printRows(out, "landau", plasma::verifyLandau(wpDt, 1 << 20, on));
             if (runs(Case::Diocotron))
                 printRows(out, "diocotron", plasma::verifyDiocotron(kDiocotronWcDt, 0.1, on));
         };

@@ -23,7 +23,7 @@ namespace aurorawall::plasma {
 // exactly 1. The largest possible node sum (every particle on one node) must fit a 32-bit signed
 // integer: count · (2^bits + 2^dimension) < 2^31 (the last corner's share can dip below 0 by up to
 // half a quantum per other corner). bits: the largest such value, at most 20 (float weights carry 24
-// bits); std::invalid_argument naming both counts if even 8 bits would overflow (more than 8323579
+// bits); std::invalid_argument naming both counts if even 8 bits would overflow (more than 8323580
 // particles in 1D, 8134407 in 3D).
 int depositQuantumBits(std::size_t particleCount, int dimension);
 

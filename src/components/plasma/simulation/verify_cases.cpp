@@ -361,11 +361,11 @@ std::vector<VerifyRow> verifyHeating(double wpDt, double dxOverDebye, std::uint6
                 device.settings(kParticles, 1), {{"heating_rate_over_wp", fittedSlope(t, temperature), std::nullopt}});
 }
 
-std::vector<VerifyRow> verifyLandau(double wpDt, const PicDevice& device)
+std::vector<VerifyRow> verifyLandau(double wpDt, int particles, const PicDevice& device)
 {
     requireLeapfrogStable(wpDt);
     constexpr double kLambda = 0.5; // k λ_D
-    constexpr int kCells = 64, kParticles = 1 << 20;
+    constexpr int kCells = 64;
     const double wp = plasmaFrequency(kDensity), dt = wpDt / wp;
     const double thermalSpeed = 4.19e5;
     const double lambdaD = debyeLength(thermalSpeed, kDensity);
@@ -374,7 +374,7 @@ std::vector<VerifyRow> verifyLandau(double wpDt, const PicDevice& device)
     // A 1% density perturbation: δn/n = k·amplitude.
     const Perturbation wave{1, 0.01 * length / (2.0 * kPi)};
     const std::unique_ptr<PicRun> run =
-        device.run(grid, quietMaxwellian(grid, kParticles, kDensity, wave, thermalSpeed), glm::dvec3(0.0), dt);
+        device.run(grid, quietMaxwellian(grid, particles, kDensity, wave, thermalSpeed), glm::dvec3(0.0), dt);
     // The standing wave's field mode s(t) ∝ exp(γt) cos(ωt + φ) from 6 to 20 /ω_p (before 6 the
     // free-streaming part, ∝ exp(−(k v_th t)²/2), is still above 1%; after 20 the wave nears the
     // particles' noise, a 1% wave being linear, a 5% one not quite): its zero crossings
@@ -408,8 +408,8 @@ std::vector<VerifyRow> verifyLandau(double wpDt, const PicDevice& device)
     const double halfPeriod = (crossingTime.back() - crossingTime.front()) / double(crossingTime.size() - 1);
     const std::complex<double> root = landauRoot(kLambda);
     return rows({setting("wp_dt", wpDt), setting("k_debye", kLambda), setting("cells", kCells),
-                 setting("particles", kParticles)},
-                device.settings(kParticles, 1),
+                 setting("particles", particles)},
+                device.settings(particles, 1),
                 {{"frequency_over_wp", kPi / halfPeriod, root.real()},
                  {"damping_rate_over_wp", fittedSlope(peakTime, logPeak), root.imag()}});
 }

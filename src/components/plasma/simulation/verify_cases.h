@@ -88,9 +88,10 @@ std::vector<VerifyRow> verifyEnergy(double plasmaFrequencyTimesDt, const PicDevi
 // (Birdsall & Langdon 1991, ch. 12). dxOverDebyeLength > 0.
 std::vector<VerifyRow> verifyHeating(double plasmaFrequencyTimesDt, double dxOverDebyeLength, std::uint64_t seed = 1,
                                      const PicDevice& device = cpuDevice());
-// Landau damping of a Langmuir wave at k λ_D = 0.5 (quiet Maxwellian): frequency and damping rate
-// against the root of the kinetic dispersion relation.
-std::vector<VerifyRow> verifyLandau(double plasmaFrequencyTimesDt, const PicDevice& device = cpuDevice());
+// Landau damping of a Langmuir wave at k λ_D = 0.5 (quiet Maxwellian of `particles`, a power of two,
+// on 64 cells): frequency and damping rate against the root of the kinetic dispersion relation.
+std::vector<VerifyRow> verifyLandau(double plasmaFrequencyTimesDt, int particles = 1 << 20,
+                                    const PicDevice& device = cpuDevice());
 
 // The diocotron instability of a cold electron strip (thickness 2a, mode 1 at ka = 0.4) in a strong
 // B on a 2D grid: the exponential growth rate of the mode's field energy, halved, against the
