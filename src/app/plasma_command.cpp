@@ -7,9 +7,7 @@
 #include "components/plasma/simulation/verify_cases.h"
 #include "gl/context.h"
 
-#include <algorithm>
 #include <cmath>
-#include <iterator>
 #include <cstdio>
 #include <ostream>
 #include <string>
@@ -23,10 +21,11 @@ namespace po = boost::program_options;
 enum class Action { Verify };
 const cli::Choices<Action> kActions = {{"verify", Action::Verify}};
 
-enum class Case { All, Langmuir, Langmuir2D, Boris, ExB, TwoStream, Energy, Heating, Landau, Diocotron };
+enum class Case { All, Langmuir, Langmuir2D, Langmuir3D, Boris, ExB, TwoStream, Energy, Heating, Landau, Diocotron };
 const cli::Choices<Case> kCases = {{"all", Case::All},
                                    {"langmuir", Case::Langmuir},
                                    {"langmuir-2d", Case::Langmuir2D},
+                                   {"langmuir-3d", Case::Langmuir3D},
                                    {"boris", Case::Boris},
                                    {"exb", Case::ExB},
                                    {"two-stream", Case::TwoStream},
@@ -84,9 +83,9 @@ int runPlasmaCommand(int argc, char** argv, std::ostream& out, std::ostream& err
             "Runs the electrostatic particle-in-cell plasma's verification cases and prints CSV\n"
             "case,parameter,measured,expected,rel_error; expected comes from theory (frequencies and rates in\n"
             "units of the plasma frequency omega_p); rows of a run's settings, and the heating rates (no closed\n"
-            "form), leave expected and rel_error empty (docs/PLASMA.md). --device gpu runs langmuir, langmuir-2d,\n"
-            "boris and exb in GLSL compute shaders (float, headless EGL) instead of in double on the CPU;\n"
-            "--solver chooses their Poisson solve.\n"
+            "form), leave expected and rel_error empty (docs/PLASMA.md). --device gpu runs every case in GLSL\n"
+            "compute shaders (float, headless EGL) instead of in double on the CPU, with the same settings,\n"
+            "analysis and theory; --solver chooses their Poisson solve.\n"
             "Exit status: 0 success, 1 a run failed or output not written, 2 usage error.\n");
         std::string actionName;
         Case chosen = Case::All;
@@ -95,14 +94,14 @@ int runPlasmaCommand(int argc, char** argv, std::ostream& out, std::ostream& err
         Device device = Device::Cpu;
         cli.addChoice("case", &chosen, kCases, "the case to run (all: each in turn)");
         cli.addChoice("device", &device, kDevices,
-                      "cpu: the simulation in double; gpu: in compute shaders (langmuir, langmuir-2d, boris, exb)");
+                      "cpu: the simulation in double; gpu: in compute shaders (float)");
         plasma::GpuPicSolver solver = plasma::GpuPicSolver::FftCpu;
         cli.addChoice("solver", &solver, kSolvers,
                       "the Poisson solve of --device gpu: fft-cpu (exact, FFT in double on the CPU, default), "
                       "jacobi (20 Jacobi sweeps on the GPU, does not converge), sor (red-black SOR on the GPU "
                       "to 1e-6) or multigrid (6 V-cycles on the GPU)");
         cli.add()("wp-dt", po::value<double>(&wpDt)->default_value(0.2, "0.2"),
-                  "omega_p dt of langmuir, langmuir-2d, two-stream, energy, heating and landau, in (0, 2): the leapfrog is unstable "
+                  "omega_p dt of langmuir, langmuir-2d, langmuir-3d, two-stream, energy, heating and landau, in (0, 2): the leapfrog is unstable "
                   "from 2 on")("wc-dt", po::value<double>(&wcDt)->default_value(1.0),
                               "omega_c dt of boris and exb, > 0 (the Boris push is stable for any)");
         double dxOverDebye = 0.0;
@@ -132,40 +131,36 @@ int runPlasmaCommand(int argc, char** argv, std::ostream& out, std::ostream& err
             heatingSpacings = {dxOverDebye};
         }
 
-        const bool onGpu = device == Device::Gpu;
-        const Case gpuCases[] = {Case::All, Case::Langmuir, Case::Langmuir2D, Case::Boris, Case::ExB};
-        if (onGpu && std::find(std::begin(gpuCases), std::end(gpuCases), chosen) == std::end(gpuCases))
-            throw cli.usageError("--device gpu runs only the cases langmuir, langmuir-2d, boris and exb");
-        if (!onGpu && cli.given("solver"))
+        if (device != Device::Gpu && cli.given("solver"))
             throw cli.usageError("--solver applies only to --device gpu");
         if (cli.given("shape") && chosen != Case::Heating)
             throw cli.usageError("--shape applies only to --case heating");
+        if (shape != plasma::ParticleShape::CloudInCell && device == Device::Gpu)
+            throw cli.usageError("--shape tsc runs only on --device cpu (the GPU step deposits by cloud-in-cell)");
 
-        out << "case,parameter,measured,expected,rel_error\n";
-        if (onGpu) {
-            const auto context = gl::createContext(gl::Backend::Egl);
-            const std::string shaderDir = dataDirectory() + "/shaders";
-            const auto runs = [chosen](Case c) { return chosen == Case::All || chosen == c; };
-            if (runs(Case::Langmuir))
-                printRows(out, "langmuir", plasma::verifyLangmuirOnGpu(wpDt, shaderDir, solver));
-            if (runs(Case::Langmuir2D))
-                printRows(out, "langmuir-2d", plasma::verifyLangmuir2DOnGpu(wpDt, shaderDir, 256, solver));
-            if (runs(Case::Boris)) printRows(out, "boris", plasma::verifyBorisOnGpu(wcDt, shaderDir));
-            if (runs(Case::ExB)) printRows(out, "exb", plasma::verifyExBOnGpu(wcDt, shaderDir));
-            return;
-        }
         const auto runs = [chosen](Case c) { return chosen == Case::All || chosen == c; };
-        if (runs(Case::Langmuir)) printRows(out, "langmuir", plasma::verifyLangmuir(wpDt));
-        if (runs(Case::Langmuir2D)) printRows(out, "langmuir-2d", plasma::verifyLangmuir2D(wpDt));
-        if (runs(Case::Boris)) printRows(out, "boris", plasma::verifyBoris(wcDt));
-        if (runs(Case::ExB)) printRows(out, "exb", plasma::verifyExB(wcDt));
-        if (runs(Case::TwoStream)) printRows(out, "two-stream", plasma::verifyTwoStream(wpDt));
-        if (runs(Case::Energy)) printRows(out, "energy", plasma::verifyEnergy(wpDt));
-        if (runs(Case::Heating))
-            for (const double spacing : heatingSpacings)
-                printRows(out, "heating", plasma::verifyHeating(wpDt, spacing, 1, shape));
-        if (runs(Case::Landau)) printRows(out, "landau", plasma::verifyLandau(wpDt));
-        if (runs(Case::Diocotron)) printRows(out, "diocotron", plasma::verifyDiocotron(kDiocotronWcDt));
+        const auto runCases = [&](const plasma::PicDevice& on) {
+            out << "case,parameter,measured,expected,rel_error\n";
+            if (runs(Case::Langmuir)) printRows(out, "langmuir", plasma::verifyLangmuir(wpDt, on));
+            if (runs(Case::Langmuir2D)) printRows(out, "langmuir-2d", plasma::verifyLangmuir2D(wpDt, 256, on));
+            if (runs(Case::Langmuir3D)) printRows(out, "langmuir-3d", plasma::verifyLangmuir3D(wpDt, 32, on));
+            if (runs(Case::Boris)) printRows(out, "boris", plasma::verifyBoris(wcDt, 1000, on));
+            if (runs(Case::ExB)) printRows(out, "exb", plasma::verifyExB(wcDt, on));
+            if (runs(Case::TwoStream)) printRows(out, "two-stream", plasma::verifyTwoStream(wpDt, on));
+            if (runs(Case::Energy)) printRows(out, "energy", plasma::verifyEnergy(wpDt, on));
+            if (runs(Case::Heating))
+                for (const double spacing : heatingSpacings)
+                    printRows(out, "heating", plasma::verifyHeating(wpDt, spacing, 1, on));
+            if (runs(Case::Landau)) printRows(out, "landau", plasma::verifyLandau(wpDt, 1 << 20, on));
+            if (runs(Case::Diocotron))
+                printRows(out, "diocotron", plasma::verifyDiocotron(kDiocotronWcDt, 0.1, on));
+        };
+        if (device == Device::Gpu) {
+            const auto context = gl::createContext(gl::Backend::Egl);
+            runCases(plasma::GpuPicDevice(dataDirectory() + "/shaders", solver));
+        } else {
+            runCases(plasma::cpuDevice(shape));
+        }
     });
 }
 

@@ -17,6 +17,8 @@
     X(PFNGLGETERRORPROC, glGetError)                                                \
     X(PFNGLGETSTRINGPROC, glGetString)                                              \
     X(PFNGLGETINTEGERVPROC, glGetIntegerv)                                          \
+    X(PFNGLGETINTEGER64VPROC, glGetInteger64v)                                      \
+    X(PFNGLGETINTEGERI_VPROC, glGetIntegeri_v)                                      \
     X(PFNGLENABLEPROC, glEnable)                                                    \
     X(PFNGLDISABLEPROC, glDisable)                                                  \
     X(PFNGLVIEWPORTPROC, glViewport)                                                \

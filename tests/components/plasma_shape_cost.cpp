@@ -56,7 +56,7 @@ double densityNoise(const PeriodicGrid& grid, const Particles& electrons, Partic
 
 double measuredHeatingRate(double dxOverDebye, std::uint64_t seed, ParticleShape shape, int perCell)
 {
-    for (const VerifyRow& row : verifyHeating(kWpDt, dxOverDebye, seed, shape, perCell))
+    for (const VerifyRow& row : verifyHeating(kWpDt, dxOverDebye, seed, cpuDevice(shape), perCell))
         if (row.parameter == "heating_rate_over_wp")
             return row.measured;
     return NAN;

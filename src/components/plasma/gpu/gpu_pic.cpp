@@ -1,5 +1,6 @@
 #include "components/plasma/gpu/gpu_pic.h"
 
+#include "components/plasma/gpu/gpu_limits.h"
 #include "components/plasma/simulation/plasma_parameters.h"
 #include "gl/functions.h"
 #include "gl/shader_program.h"
@@ -61,11 +62,9 @@ int depositQuantumBits(std::size_t particleCount, int dimension)
     for (int bits = 20; bits >= 8; --bits)
         if ((long long)particleCount * ((1LL << bits) + (1LL << dimension)) <= kLimit)
             return bits;
-    throw std::invalid_argument("plasma on the GPU: " + std::to_string(particleCount) +
-                                " particles could overflow the fixed-point deposit's 32-bit node sums even at "
-                                "2^-8 of a particle (at most " +
-                                std::to_string(kLimit / ((1LL << 8) + (1LL << dimension))) + " particles in " +
-                                std::to_string(dimension) + "D)");
+    throw std::invalid_argument(std::to_string(particleCount) + " particles exceed the fixed-point deposit's limit of " +
+                                std::to_string(kLimit / ((1LL << 8) + (1LL << dimension))) + " in " +
+                                std::to_string(dimension) + "D (32-bit node sums at 2^-8 of a particle)");
 }
 
 int picSorSweeps(const PeriodicGrid& grid)
@@ -77,9 +76,18 @@ struct GpuPic::Programs {
     gl::Program deposit, field, push;
 };
 
+const PeriodicGrid& GpuPic::fitted(const PeriodicGrid& grid, std::size_t particleCount)
+{
+    depositQuantumBits(particleCount, grid.dimension);
+    const GpuLimits limits = currentGpuLimits();
+    requireFitsGpu(limits, particleCount, "particles", kWorkGroupSize, sizeof(glm::vec4));
+    requireFitsGpu(limits, grid.nodeCount(), "grid nodes", kWorkGroupSize, sizeof(glm::vec4));
+    return grid;
+}
+
 GpuPic::GpuPic(const PeriodicGrid& grid, const Particles& electrons, glm::dvec3 magneticField, double dt,
                const std::string& shaderDir, glm::dvec3 externalField, GpuPicSolver solver)
-    : grid_(grid), solver_(solver), poisson_(grid), particleCount_(electrons.position.size()), weight_(electrons.weight),
+    : grid_(fitted(grid, electrons.position.size())), solver_(solver), poisson_(grid), particleCount_(electrons.position.size()), weight_(electrons.weight),
       quantumBits_(depositQuantumBits(electrons.position.size(), grid.dimension)), dt_(dt),
       zeroQuanta_(grid.nodeCount(), 0)
 {
@@ -239,5 +247,15 @@ StepTimes GpuPic::timedStep()
 std::vector<glm::dvec3> GpuPic::positions() const { return readVectors(buffers_[Positions], particleCount_); }
 std::vector<glm::dvec3> GpuPic::velocities() const { return readVectors(buffers_[Velocities], particleCount_); }
 std::vector<glm::dvec3> GpuPic::nodeField() const { return readVectors(buffers_[NodeField], grid_.nodeCount()); }
+
+std::vector<double> GpuPic::potential() const
+{
+    if (gpuPoisson_)
+        return gpuPoisson_->potential();
+    std::vector<float> values(grid_.nodeCount());
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    glGetNamedBufferSubData(buffers_[Potential], 0, GLsizeiptr(values.size() * sizeof(float)), values.data());
+    return {values.begin(), values.end()};
+}
 
 } // namespace aurorawall::plasma

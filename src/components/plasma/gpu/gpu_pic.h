@@ -23,7 +23,8 @@ namespace aurorawall::plasma {
 // exactly 1. The largest possible node sum (every particle on one node) must fit a 32-bit signed
 // integer: count · (2^bits + 2^dimension) < 2^31 (the last corner's share can dip below 0 by up to
 // half a quantum per other corner). bits: the largest such value, at most 20 (float weights carry 24
-// bits); std::invalid_argument if even 8 bits would overflow (more than 8.1 million particles).
+// bits); std::invalid_argument naming both counts if even 8 bits would overflow (more than 8323580
+// particles in 1D, 8134407 in 3D).
 int depositQuantumBits(std::size_t particleCount, int dimension);
 
 // The step's Poisson solve.
@@ -57,7 +58,10 @@ public:
     // field. externalField (V/m) is a uniform field added to the particles' own; magneticField (T),
     // dt (s). shaderDir holds components/plasma/. A particle weight of 0 makes test particles (no
     // charge: the self-consistent field stays 0). std::invalid_argument for RedBlackSor on a grid
-    // with an odd cell count.
+    // with an odd cell count. Before anything is made on the GPU: std::invalid_argument for more
+    // particles than the fixed-point deposit can sum (depositQuantumBits), std::length_error for more
+    // particles or grid nodes than one dispatch (GL_MAX_COMPUTE_WORK_GROUP_COUNT) or one storage
+    // block (GL_MAX_SHADER_STORAGE_BLOCK_SIZE) holds; each message names the limit and the numbers.
     GpuPic(const PeriodicGrid& grid, const Particles& electrons, glm::dvec3 magneticField, double dt,
            const std::string& shaderDir, glm::dvec3 externalField = glm::dvec3(0.0),
            GpuPicSolver solver = GpuPicSolver::FftCpu);
@@ -82,9 +86,13 @@ public:
     std::vector<glm::dvec3> positions() const;
     std::vector<glm::dvec3> velocities() const;
     std::vector<glm::dvec3> nodeField() const;
+    // The potential at the nodes (V) of the current step, read back from the GPU (float).
+    std::vector<double> potential() const;
 
 private:
     struct Programs;
+    // `grid`, once the grid and the particle count fit the deposit and the current context's limits.
+    static const PeriodicGrid& fitted(const PeriodicGrid& grid, std::size_t particleCount);
     void bindBuffers() const;
     void push(double dt, bool movePositions);
     void deposit();

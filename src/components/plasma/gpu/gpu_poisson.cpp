@@ -1,5 +1,6 @@
 #include "components/plasma/gpu/gpu_poisson.h"
 
+#include "components/plasma/gpu/gpu_limits.h"
 #include "components/plasma/simulation/plasma_parameters.h"
 #include "gl/functions.h"
 #include "gl/shader_program.h"
@@ -87,6 +88,7 @@ GpuPoisson::GpuPoisson(const PeriodicGrid& grid, GpuPoissonMethod method, const 
             if (grid.cells[d] % 2 != 0)
                 throw std::invalid_argument("red-black SOR and multigrid need an even number of cells along each axis (got " +
                                             std::to_string(grid.cells[d]) + ")");
+    requireFitsGpu(currentGpuLimits(), grid.nodeCount(), "grid nodes", kWorkGroupSize, sizeof(float));
     const gl::ShaderModule module = gl::readShaderModule(shaderDir + "/components/plasma/poisson_sweep.comp");
     const auto program = [&](int pass) {
         return gl::Program::compute(

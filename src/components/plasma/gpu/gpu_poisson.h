@@ -40,7 +40,9 @@ double jacobiFactor(const PeriodicGrid& grid, int kx, int ky, int kz);
 
 class GpuPoisson {
 public:
-    // shaderDir holds components/plasma/. std::invalid_argument for red-black SOR on an odd cell count.
+    // shaderDir holds components/plasma/. std::invalid_argument for red-black SOR on an odd cell count;
+    // std::length_error for more grid nodes than one dispatch or one storage block of the current
+    // context holds (gpu_limits.h).
     GpuPoisson(const PeriodicGrid& grid, GpuPoissonMethod method, const std::string& shaderDir);
     ~GpuPoisson();
     GpuPoisson(const GpuPoisson&) = delete;

@@ -1,24 +1,31 @@
 #pragma once
-// The verification cases of `aurorawall plasma verify --device gpu`: langmuir, langmuir-2d, boris and
-// exb run with GpuPic (float, compute shaders) in the settings of verify_cases.h and against the same
-// expected values from theory, with the step's Poisson solver `solver`. Need a current GL 4.5
-// context; shaderDir holds components/plasma/.
+// The device of `aurorawall plasma verify --device gpu`: every case of verify_cases.h runs its
+// electrons with GpuPic (float, compute shaders) and the step's Poisson solver `solver`, set up and
+// analysed as on the CPU. Needs a current GL 4.5 context while its runs live; shaderDir holds
+// components/plasma/.
 #include "components/plasma/gpu/gpu_pic.h"
 #include "components/plasma/simulation/verify_cases.h"
 
 #include <string>
-#include <vector>
 
 namespace aurorawall::plasma {
 
-std::vector<VerifyRow> verifyLangmuirOnGpu(double plasmaFrequencyTimesDt, const std::string& shaderDir,
-                                           GpuPicSolver solver = GpuPicSolver::FftCpu);
-std::vector<VerifyRow> verifyLangmuir2DOnGpu(double plasmaFrequencyTimesDt, const std::string& shaderDir,
-                                             int cellsPerAxis = 256, GpuPicSolver solver = GpuPicSolver::FftCpu);
-// One test particle (weight 0: no charge of its own, so the solver does not matter) in a uniform B,
-// or crossed uniform E and B.
-std::vector<VerifyRow> verifyBorisOnGpu(double cyclotronFrequencyTimesDt, const std::string& shaderDir,
-                                        long steps = 1000);
-std::vector<VerifyRow> verifyExBOnGpu(double cyclotronFrequencyTimesDt, const std::string& shaderDir);
+class GpuPicDevice : public PicDevice {
+public:
+    explicit GpuPicDevice(std::string shaderDir, GpuPicSolver solver = GpuPicSolver::FftCpu);
+
+    std::unique_ptr<PicRun> run(const PeriodicGrid& grid, const Particles& electrons, glm::dvec3 magneticField,
+                                double dt) const override;
+    // The electron as a GpuPic particle of weight 0 (no field of its own, so the solver does not
+    // matter); v_0 is its velocity after GpuPic's start, taken back half a step.
+    std::vector<glm::dvec3> testParticleVelocities(glm::dvec3 start, glm::dvec3 electricField, glm::dvec3 magneticField,
+                                                   double dt, long steps) const override;
+    // The fixed-point deposit's resolution (quantum_bits) of a run of that many particles.
+    std::vector<VerifyRow> settings(std::size_t particles, int dimension) const override;
+
+private:
+    std::string shaderDir_;
+    GpuPicSolver solver_;
+};
 
 } // namespace aurorawall::plasma

@@ -3,6 +3,7 @@
 #include "common/constants.h"
 
 #include <boost/math/special_functions/erf.hpp>
+#include <glm/common.hpp>
 
 #include <cmath>
 #include <random>
@@ -44,23 +45,27 @@ Particles quietStart(const PeriodicGrid& grid, int count, double electronDensity
 Particles diagonalWaveLattice(const PeriodicGrid& grid, int perCellPerAxis, double electronDensity,
                               Perturbation perturbation)
 {
-    if (grid.dimension != 2 || perCellPerAxis < 1)
-        throw std::invalid_argument("diagonalWaveLattice: needs a 2D grid and at least one particle per axis");
+    if (grid.dimension < 2 || perCellPerAxis < 1)
+        throw std::invalid_argument("diagonalWaveLattice: needs a 2D or 3D grid and at least one particle per axis");
+    const bool solid = grid.dimension == 3;
     const int nx = grid.cells[0] * perCellPerAxis, ny = grid.cells[1] * perCellPerAxis;
+    const int nz = solid ? grid.cells[2] * perCellPerAxis : 1;
     const glm::dvec3 box = grid.boxLength();
-    const glm::dvec3 diagonal(1.0 / std::sqrt(2.0), 1.0 / std::sqrt(2.0), 0.0);
+    const double component = 1.0 / std::sqrt(double(grid.dimension));
+    const glm::dvec3 diagonal(component, component, solid ? component : 0.0);
     Particles p;
-    p.weight = weightFor(grid, nx * ny, electronDensity);
-    for (int j = 0; j < ny; ++j)
-        for (int i = 0; i < nx; ++i) {
-            const glm::dvec3 x((i + 0.5) * box.x / nx, (j + 0.5) * box.y / ny, 0.5 * box.z);
-            const double phase = 2.0 * kPi * perturbation.mode * (x.x / box.x + x.y / box.y);
-            glm::dvec3 displaced = x + perturbation.amplitude * std::sin(phase) * diagonal;
-            displaced.x -= box.x * std::floor(displaced.x / box.x);
-            displaced.y -= box.y * std::floor(displaced.y / box.y);
-            p.position.push_back(displaced);
-            p.velocity.push_back(glm::dvec3(0.0));
-        }
+    p.weight = weightFor(grid, nx * ny * nz, electronDensity);
+    for (int k = 0; k < nz; ++k)
+        for (int j = 0; j < ny; ++j)
+            for (int i = 0; i < nx; ++i) {
+                const glm::dvec3 x((i + 0.5) * box.x / nx, (j + 0.5) * box.y / ny, (k + 0.5) * box.z / nz);
+                const double phase =
+                    2.0 * kPi * perturbation.mode * (x.x / box.x + x.y / box.y + (solid ? x.z / box.z : 0.0));
+                glm::dvec3 displaced = x + perturbation.amplitude * std::sin(phase) * diagonal;
+                displaced -= box * glm::floor(displaced / box);
+                p.position.push_back(displaced);
+                p.velocity.push_back(glm::dvec3(0.0));
+            }
     return p;
 }
 

@@ -21,10 +21,11 @@ struct Perturbation {
 Particles quietStart(const PeriodicGrid& grid, int count, double electronDensity, Perturbation perturbation,
                      glm::dvec3 drift);
 
-// A cold 2D lattice: perCellPerAxis² electrons per cell evenly spaced along x and y, then displaced
-// along the diagonal unit vector d = (1, 1)/√2 by amplitude · sin(k·x), k = 2π mode (1/L_x, 1/L_y):
-// a density wave δn/n = −|k| · amplitude · cos(k·x) to first order, travelling along d on a square
-// box. All at rest; z at the box's middle. For 2D runs.
+// A cold 2D or 3D lattice: perCellPerAxis^dimension electrons per cell evenly spaced along each
+// axis of the grid, then displaced along the diagonal unit vector d = (1, 1)/√2 (3D: (1, 1, 1)/√3) by
+// amplitude · sin(k·x), k = 2π mode (1/L_x, 1/L_y[, 1/L_z]): a density wave δn/n = −|k| · amplitude ·
+// cos(k·x) to first order, travelling along d on a square box (a cube). All at rest; in 2D z at the
+// box's middle.
 Particles diagonalWaveLattice(const PeriodicGrid& grid, int perCellPerAxis, double electronDensity,
                               Perturbation perturbation);
 
