@@ -1,8 +1,10 @@
 // The plasma box in the CPU reference (box_reference.h): the exact column on densities with a closed
 // form (uniform: n times the chord; linear: its mean times the chord, the clamp along z included),
-// the shader's march converging to it, the frame position in time, and the march's knob.
+// the shader's march converging to it, the frame position in time, the march's knob, and the strip's
+// frames the plasma gives the reference.
 #include "components/plasma/box_reference.h"
 #include "components/plasma/plasma.h"
+#include "components/plasma/sheet_frames.h"
 #include "components/registry.h"
 #include "scene/load_error.h"
 
@@ -164,6 +166,26 @@ TEST(PlasmaBoxReference, StepsPerCellIsReadAndChecked)
         const std::string error = test::loadErrorOfText("plasma_box_steps.toml", kHead + c.lines);
         EXPECT_NE(error.find(file + ":" + std::to_string(c.line) + ": plasma.box_steps_per_cell"), std::string::npos)
             << c.lines << " -> " << error;
+    }
+}
+
+// The frames the plasma gives the reference (Component::referenceFrames) are the strip's simulation,
+// bit for bit, with either kind.
+TEST(PlasmaBoxReference, ReferenceFramesAreTheStripsFrames)
+{
+    const std::string strip = "cells_along = 128\ncells_across = 32\nstrip_width_km = 8.0\nsheet_thickness_km = 1.0\n"
+                              "seed_mode = 4\nframes = 3\n";
+    for (const std::string& kind : {std::string(), std::string("kind = \"box\"\nbox_cells = 16\nbox_seed_mode = 2\n")}) {
+        const std::string file = testing::TempDir() + "plasma_reference_frames.toml";
+        std::ofstream(file) << kHead + strip + kind;
+        const scene::Scene scene = components::loadScene(file);
+        const auto frames = components::plasma::component().referenceFrames(scene);
+        ASSERT_TRUE(frames);
+        const fluid::FluxFrames expected = components::plasma::simulateSheetFrames(
+            components::plasma::sheetFramesSpec(scene.settings<components::plasma::Settings>()));
+        EXPECT_EQ(frames->nx, 128);
+        EXPECT_EQ(frames->frames, 3);
+        EXPECT_EQ(frames->flux, expected.flux);
     }
 }
 
