@@ -9,6 +9,7 @@
 #include "gl/functions.h"
 #include "components/aurora/aurora.h"
 #include "components/fluid_detail/curtain_detail.h"
+#include "components/plasma/plasma.h"
 #include "components/registry.h"
 #include "render/tile_renderer.h"
 #include "wall/wall_file.h"
@@ -27,6 +28,7 @@ namespace aurorawall::app {
 
 using AuroraSettings = components::aurora::Settings;
 using FluidSettings = components::fluid_detail::Settings;
+using PlasmaSettings = components::plasma::Settings;
 
 SceneView sceneView(const scene::Scene& scene, const std::string& wallFile, glm::ivec2 sizePx, long long frame)
 {
@@ -140,6 +142,8 @@ void applyFinestSettings(scene::Scene& s)
     s.settings<AuroraSettings>().tableAltitudeStepKm = 0.25;
     s.settings<AuroraSettings>().tableEnergyCount = 128;
     s.settings<AuroraSettings>().polylineSpacingKm = 1.0;
+    if (s.has("plasma"))
+        s.settings<PlasmaSettings>().boxStepsPerCell = 16;
 }
 
 scene::Scene withoutUnmodelled(scene::Scene scene)
@@ -194,6 +198,10 @@ std::vector<Variant> knobVariants()
                              return;
                          s.settings<FluidSettings>().cellsAlong = along;
                          s.settings<FluidSettings>().cellsAcross = along / 4;
+                     }});
+    for (int steps : {1, 2, 4, 8, 16})
+        v.push_back({"box_steps_per_cell", number(steps), [steps](scene::Scene& s) {
+                         s.settings<PlasmaSettings>().boxStepsPerCell = steps;
                      }});
     for (double spacing : {1.0, 2.0, 4.0})
         v.push_back({"polyline_spacing_km", number(spacing),
@@ -279,10 +287,10 @@ struct References {
 void computeReferences(References& r, const SceneView& view, const std::vector<glm::ivec2>& pixels, const SceneAccuracySettings& settings)
 {
     const auto start = std::chrono::steady_clock::now();
-    std::unique_ptr<fluid::FluxFrames> frames;
-    if (r.scene.has("fluid_detail"))
-        frames = std::make_unique<fluid::FluxFrames>(
-            fluid::simulateCurtainDetail(components::fluid_detail::curtainDetailSpec(r.scene.settings<FluidSettings>())));
+    std::shared_ptr<const fluid::FluxFrames> frames;
+    for (const scene::Component* c : r.scene.components())
+        if (!frames)
+            frames = c->referenceFrames(r.scene);
     render::ReferenceSettings reference;
     reference.stepKm = settings.referenceStepKm;
     const render::ReferenceModel model(r.scene, view.frame.timeS, frames.get(), reference);
@@ -301,6 +309,7 @@ void printKnobTable(const scene::Scene& base, const SceneView& view, const std::
     applyFinestSettings(fluid.scene);
     finestFluid(fluid.scene);
     const bool hasFluid = base.has("fluid_detail");
+    const bool hasBox = base.has("plasma") && base.settings<PlasmaSettings>().kind == PlasmaSettings::Kind::Box;
     common.gpu = renderView(common.scene, view, shaderDir, 0);
     if (hasFluid)
         fluid.gpu = renderView(fluid.scene, view, shaderDir, 0);
@@ -308,23 +317,32 @@ void printKnobTable(const scene::Scene& base, const SceneView& view, const std::
     computeReferences(common, view, sampled, settings);
     if (hasFluid)
         computeReferences(fluid, view, sampled, settings);
+    // The box's march alone: the scene's defaults with the finest march as the GPU reference.
+    References box{base, {}, common.cpu, common.cpuSeconds};
+    if (hasBox) {
+        box.scene.settings<PlasmaSettings>().boxStepsPerCell = 16;
+        box.gpu = renderView(box.scene, view, shaderDir, 0);
+    }
 
     const RelativeError gpuVsCpu = relativeError(imagePixels(common.gpu.image, sampled), common.cpu, floor);
-    char line[512];
+    char line[768];
     std::snprintf(line, sizeof line,
                   "noise floor: |linear RGB| >= %.3g cd/m^2 (one 8-bit step of the linear preview at exposure %g)\n"
                   "GPU reference: step 0.25 km, no skipping, footprint map 1024, tables 0.25 km x 128 energies, "
-                  "polylines 1 km; its error against the CPU reference at the %zu sampled pixels: rms %.3g, max %.3g\n"
-                  "CPU reference: double, midpoint rule %.3g km where a curtain is in reach; %.1f s on %d threads",
-                  floor, base.exposure, sampled.size(), gpuVsCpu.rms, gpuVsCpu.max, settings.referenceStepKm,
+                  "polylines 1 km%s; its error against the CPU reference at the %zu sampled pixels: rms %.3g, max %.3g\n"
+                  "CPU reference: double, midpoint rule %.3g km where a curtain is in reach%s; %.1f s on %d threads",
+                  floor, base.exposure, hasBox ? ", plasma box 16 steps per cell" : "", sampled.size(), gpuVsCpu.rms,
+                  gpuVsCpu.max, settings.referenceStepKm, hasBox ? ", the plasma box's column exact" : "",
                   common.cpuSeconds, settings.threads);
-    out << line << (hasFluid ? "; for fluid_cells both references use 1024x256 fluid cells" : "") << "\n";
+    out << line << (hasFluid ? "; for fluid_cells both references use 1024x256 fluid cells" : "")
+        << (hasBox ? "; for box_steps_per_cell the GPU reference is the scene's defaults with 16 steps per cell" : "")
+        << "\n";
     out << "knob                     value     rms_rel_gpu max_rel_gpu rms_rel_cpu max_rel_cpu ms_per_frame\n";
     for (const Variant& variant : knobVariants()) {
-        const bool fluidKnob = variant.knob == "fluid_cells";
-        if (fluidKnob && !hasFluid)
+        const bool fluidKnob = variant.knob == "fluid_cells", boxKnob = variant.knob == "box_steps_per_cell";
+        if ((fluidKnob && !hasFluid) || (boxKnob && !hasBox))
             continue;
-        const References& ref = fluidKnob ? fluid : common;
+        const References& ref = fluidKnob ? fluid : boxKnob ? box : common;
         scene::Scene s = base;
         variant.apply(s);
         const TimedRender render = renderView(s, view, shaderDir, settings.runs);

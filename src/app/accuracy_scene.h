@@ -63,7 +63,7 @@ std::vector<glm::dvec3> referencePixels(const render::ReferenceModel& model, con
 scene::Scene withoutUnmodelled(scene::Scene scene);
 
 // The GPU reference's settings: 0.25 km steps everywhere, no skipping, the
-// finest tables, footprint map and polylines of the knob ranges.
+// finest tables, footprint map and polylines of the knob ranges, 16 steps per cell in the plasma box.
 void applyFinestSettings(scene::Scene& scene);
 
 // Opens the headless EGL context of the accuracy runs and prints "renderer: NAME, GL VERSION".

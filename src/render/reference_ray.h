@@ -23,7 +23,8 @@ class ReferenceModel {
 public:
     // The scene at animation time timeS. detail: the curtain detail frames when the scene lists
     // fluid_detail (fluid::simulateCurtainDetail of its spec, or others on the same strip) or plasma
-    // (components::plasma::simulateSheetFrames of its spec), else null. Throws scene::NotInReference
+    // (components::plasma::simulateSheetFrames of its spec), else null: the listed component's
+    // Component::referenceFrames gives them. Throws scene::NotInReference
     // (a std::invalid_argument) naming a listed component the reference does not model, and
     // std::invalid_argument for fluid_detail or plasma without frames.
     ReferenceModel(const scene::Scene& scene, double timeS, const fluid::FluxFrames* detail,

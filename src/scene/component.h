@@ -119,6 +119,9 @@ public:
     // Its part of the CPU reference; null when it adds nothing by itself (e.g. data another
     // component uses). Throws NotInReference when the reference cannot model it.
     virtual std::unique_ptr<ReferenceShader> makeReference(const Scene& scene, const ReferenceContext& context) const = 0;
+    // The curtain detail frames it gives the reference (ReferenceContext::fluidFrames: the frames its
+    // renderer uploads, from the table cache); null for a component without any.
+    virtual std::shared_ptr<const fluid::FluxFrames> referenceFrames(const Scene&) const { return nullptr; }
 };
 
 // A component whose settings are S (S::kComponent is its name): the name and the defaults.

@@ -1,6 +1,8 @@
 #include "components/fluid_detail/fluid_detail.h"
 
+#include "components/fluid_detail/cached_flux_frames.h"
 #include "components/fluid_detail/curtain_detail.h"
+#include "io/table_cache.h"
 #include "scene/scene.h"
 
 namespace aurorawall::components::fluid_detail {
@@ -40,6 +42,11 @@ public:
                                                           const scene::ReferenceContext&) const override
     {
         return nullptr;
+    }
+    std::shared_ptr<const fluid::FluxFrames> referenceFrames(const scene::Scene& scene) const override
+    {
+        return std::make_shared<const fluid::FluxFrames>(
+            cachedFluxFrames(curtainDetailSpec(scene.settings<Settings>()), io::defaultCacheDirectory()).frames);
     }
 };
 

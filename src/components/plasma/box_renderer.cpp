@@ -61,7 +61,7 @@ void BoxRenderer::setFrame(gl::Program& program, const cluster::FrameState& fram
     }
     program.set("uPlasmaBoxCentreFromCamera", glm::vec3(centreKm_ - frame.cameraPositionKm));
     program.set("uPlasmaBoxAxes", glm::mat3(axes_));
-    const float steps = box_ ? 2.0f * settings_.boxCells : 0.0f;
+    const float steps = box_ ? static_cast<float>(settings_.boxStepsPerCell * settings_.boxCells) : 0.0f;
     const float frames = box_ ? static_cast<float>(settings_.boxFrames) : 1.0f;
     program.set("uPlasmaBox",
                 glm::vec4(static_cast<float>(settings_.boxSideKm), steps, static_cast<float>(position), frames));

@@ -1,8 +1,10 @@
 #include "components/plasma/plasma.h"
 
 #include "common/input_error.h"
+#include "components/plasma/box_reference.h"
 #include "components/plasma/box_renderer.h"
 #include "components/plasma/simulation/plasma_parameters.h"
+#include "io/table_cache.h"
 #include "scene/scene.h"
 
 #include <cmath>
@@ -24,7 +26,7 @@ const char* const kBoxKeys[] = {"box_cells", "box_side_km", "box_electron_densit
                                 "box_time_step_s", "box_particles_per_cell_axis", "box_seed_mode",
                                 "box_seed_amplitude_km", "box_frames", "box_time_between_frames_s",
                                 "box_latitude_deg", "box_longitude_deg", "box_altitude_km", "box_play_s",
-                                "box_rayleigh_per_km"};
+                                "box_rayleigh_per_km", "box_steps_per_cell"};
 
 void readBox(const config::TableReader& t, Settings& p)
 {
@@ -67,10 +69,12 @@ void readBox(const config::TableReader& t, Settings& p)
         t.fail("box_altitude_km", "the box's bottom (box_altitude_km - box_side_km / 2) must be above 75 km");
     p.boxPlayS = t.numberAbove("box_play_s", 0.0, 1e6, p.boxPlayS);
     p.boxRayleighPerKm = t.number("box_rayleigh_per_km", 0.0, 1e6, p.boxRayleighPerKm);
+    p.boxStepsPerCell = t.integer("box_steps_per_cell", 1, 64, p.boxStepsPerCell);
 }
 
 // The aurora's curtain profile samples the strip's frames (curtain_profile.glsl under HAS_PLASMA), and
-// the aurora's reference samples them in double: the curls add no reference step of their own.
+// the aurora's reference samples them in double (referenceFrames): the curls add no reference step of
+// their own; the box adds its emission (box_reference.h).
 class Plasma : public scene::ComponentWith<Settings> {
 public:
     std::vector<std::string> needs() const override { return {"aurora"}; }
@@ -137,12 +141,18 @@ public:
     {
         return std::make_unique<BoxRenderer>(scene.settings<Settings>(), scene.planetRadiusKm);
     }
+    // The box's emission (box_reference.h); with kind = "curls" nothing of its own.
     std::unique_ptr<scene::ReferenceShader> makeReference(const scene::Scene& scene,
-                                                          const scene::ReferenceContext&) const override
+                                                          const scene::ReferenceContext& context) const override
     {
         if (scene.settings<Settings>().kind == Settings::Kind::Box)
-            throw scene::NotInReference("the reference does not model the plasma box (kind = \"box\")");
+            return makeBoxReference(scene.settings<Settings>(), scene.planetRadiusKm, context.timeS);
         return nullptr;
+    }
+    std::shared_ptr<const fluid::FluxFrames> referenceFrames(const scene::Scene& scene) const override
+    {
+        return std::make_shared<const fluid::FluxFrames>(
+            cachedSheetFrames(sheetFramesSpec(scene.settings<Settings>()), io::defaultCacheDirectory()).frames);
     }
 };
 

@@ -47,6 +47,7 @@ struct Settings : scene::SettingsOf<Settings> {
     double boxAltitudeKm = 110.0;
     double boxPlayS = 12.0;
     double boxRayleighPerKm = 500.0; // the 557.7 nm column brightness per km of path at n = n₀
+    int boxStepsPerCell = 2;         // the march's midpoint steps per cell side along a ray's chord
 };
 
 const scene::Component& component();
