@@ -39,6 +39,19 @@ std::vector<std::uint16_t> rgbHalves(const std::vector<float>& rgb)
 
 } // namespace
 
+std::vector<std::uint16_t> receivedBandPixels(const std::vector<std::uint8_t>& bytes, const cluster::Band& band,
+                                              int bandIndex, int widthPx, int rank, int sender)
+{
+    try {
+        return io::decompressHalves(bytes, 3 * size_t(widthPx) * size_t(band.height), 3);
+    } catch (const std::runtime_error& e) {
+        throw std::runtime_error("rank " + std::to_string(rank) + ": band " + std::to_string(bandIndex) + " (screen " +
+                                 std::to_string(band.screen) + ", rows " + std::to_string(band.y0) + "-" +
+                                 std::to_string(band.y0 + band.height - 1) + ") from rank " + std::to_string(sender) +
+                                 ": " + e.what());
+    }
+}
+
 BandFrame::BandFrame(const wall::Wall& wall, std::vector<cluster::Band> bands, int rank, bool measureCosts)
     : wall_(wall), bands_(std::move(bands)), rank_(rank), measureCosts_(measureCosts)
 {
@@ -140,16 +153,9 @@ std::vector<cluster::BandCost> BandFrame::draw(render::TileRenderer& renderer, g
     report.exchangeMB = 1e-6 * static_cast<double>(bytes);
     for (size_t k = 0; k < arrivingBands.size(); ++k) {
         const cluster::Band& b = bands_[arrivingBands[k]];
-        const int width = wall_.screens[b.screen].widthPx;
-        std::vector<std::uint16_t> pixels;
-        try {
-            pixels = io::decompressHalves(incomingBytes[k], 3 * size_t(width) * size_t(b.height), 3);
-        } catch (const std::runtime_error& e) {
-            throw std::runtime_error("rank " + std::to_string(rank_) + ": band " + std::to_string(arrivingBands[k]) +
-                                     " (screen " + std::to_string(b.screen) + ", rows " + std::to_string(b.y0) + "-" +
-                                     std::to_string(b.y0 + b.height - 1) + ") from rank " +
-                                     std::to_string(assignment[arrivingBands[k]]) + ": " + e.what());
-        }
+        const std::vector<std::uint16_t> pixels =
+            receivedBandPixels(incomingBytes[k], b, static_cast<int>(arrivingBands[k]), wall_.screens[b.screen].widthPx,
+                               rank_, assignment[arrivingBands[k]]);
         ScreenTarget& own = screenTarget(screens, b.screen);
         context.makeCurrent(own.window);
         own.target->uploadRgbHalf(firstGlRow(b, wall_.screens[b.screen].heightPx), b.height, pixels);

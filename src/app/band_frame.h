@@ -27,6 +27,12 @@
 
 namespace aurorawall::app {
 
+// The halves of band `bandIndex` of a screen `widthPx` wide, decompressed from the bytes that rank
+// `sender` sent to rank `rank`. Throws std::runtime_error, one line naming the rank, the band
+// (screen, rows) and the sender, unless the bytes are that band's compressed halves.
+std::vector<std::uint16_t> receivedBandPixels(const std::vector<std::uint8_t>& bytes, const cluster::Band& band,
+                                              int bandIndex, int widthPx, int rank, int sender);
+
 class BandFrame {
 public:
     // measureCosts: report each drawn band's cost (the load balancer's input), read from the work
