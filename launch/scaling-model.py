@@ -150,8 +150,9 @@ def analyse(runs, cores, bandwidth_gb_s=1.25):
         else:
             m["comm"] = reference["mean"]["sync_min"] * tree_depth(run["ranks"]) / tree_depth(reference["ranks"])
             m["comm_source"] = f"{reference['ranks']}-rank x {tree_depth(run['ranks'])}/{tree_depth(reference['ranks'])}"
-        # Band pixels of the load balancer cross the network: the busiest rank's megabytes at the
-        # link bandwidth (this machine's shared memory would be far faster; a cluster's network is not).
+        # Band pixels of the load balancer cross the network: the busiest rank's megabytes (as sent:
+        # compressed, io/band_compression.h) at the link bandwidth (this machine's shared memory
+        # would be far faster; a cluster's network is not).
         m["exchange"] = m["exchange_mb_max"] / bandwidth_gb_s
         m["modelled_ms"] = m["work_cpu"] + m["comm"] + m["exchange"]
         m["fps_wall"] = 1e3 / m["frame_ms"]

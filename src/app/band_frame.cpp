@@ -2,8 +2,12 @@
 
 #include "common/clock.h"
 #include "gl/functions.h"
+#include "io/band_compression.h"
 #include "io/half_pixels.h"
 #include "wall/tile_rays.h"
+
+#include <stdexcept>
+#include <string>
 
 namespace aurorawall::app {
 
@@ -35,6 +39,19 @@ std::vector<std::uint16_t> rgbHalves(const std::vector<float>& rgb)
 
 } // namespace
 
+std::vector<std::uint16_t> receivedBandPixels(const std::vector<std::uint8_t>& bytes, const cluster::Band& band,
+                                              int bandIndex, int widthPx, int rank, int sender)
+{
+    try {
+        return io::decompressHalves(bytes, 3 * size_t(widthPx) * size_t(band.height), 3);
+    } catch (const std::runtime_error& e) {
+        throw std::runtime_error("rank " + std::to_string(rank) + ": band " + std::to_string(bandIndex) + " (screen " +
+                                 std::to_string(band.screen) + ", rows " + std::to_string(band.y0) + "-" +
+                                 std::to_string(band.y0 + band.height - 1) + ") from rank " + std::to_string(sender) +
+                                 ": " + e.what());
+    }
+}
+
 BandFrame::BandFrame(const wall::Wall& wall, std::vector<cluster::Band> bands, int rank, bool measureCosts)
     : wall_(wall), bands_(std::move(bands)), rank_(rank), measureCosts_(measureCosts)
 {
@@ -61,7 +78,7 @@ std::vector<cluster::BandCost> BandFrame::draw(render::TileRenderer& renderer, g
     // (the next run may draw into the same scratch target) as half floats.
     std::vector<cluster::BandCost> costs;
     std::vector<std::vector<std::uint16_t>> outgoingPixels;
-    std::vector<cluster::MpiWorld::Message> outgoing, incoming;
+    std::vector<int> outgoingBands;
     const auto start = SteadyClock::now();
     const double cpuStart = processCpuMilliseconds();
     for (size_t first = 0; first < bands_.size();) {
@@ -104,34 +121,41 @@ std::vector<cluster::BandCost> BandFrame::draw(render::TileRenderer& renderer, g
             for (size_t i = first; i < end; ++i) {
                 const cluster::Band& b = bands_[i];
                 outgoingPixels.push_back(rgbHalves(target.readbackRgb(firstGlRow(b, screen.heightPx), b.height)));
-                outgoing.push_back({b.owner, static_cast<int>(i), nullptr});
+                outgoingBands.push_back(static_cast<int>(i));
             }
         first = end;
     }
-    for (size_t k = 0; k < outgoing.size(); ++k)
-        outgoing[k].values = &outgoingPixels[k];
     report.renderMs = millisecondsSince(start);
     report.renderCpuMs = processCpuMilliseconds() - cpuStart;
 
-    // 2. Exchange: my screens' bands drawn elsewhere come in and go into their rows of my screens'
-    // targets, other screens' bands go out.
+    // 2. Exchange: other screens' bands go out compressed (io/band_compression.h, lossless), my
+    // screens' bands drawn elsewhere come in and go into their rows of my screens' targets.
     const auto exchangeStart = SteadyClock::now();
-    std::vector<std::pair<size_t, std::vector<std::uint16_t>>> arriving;
+    std::vector<std::vector<std::uint8_t>> outgoingBytes;
+    for (const auto& pixels : outgoingPixels)
+        outgoingBytes.push_back(io::compressHalves(pixels, 3));
+    std::vector<cluster::MpiWorld::Message> outgoing, incoming;
+    for (size_t k = 0; k < outgoingBands.size(); ++k)
+        outgoing.push_back({bands_[outgoingBands[k]].owner, outgoingBands[k], &outgoingBytes[k]});
+    std::vector<size_t> arrivingBands;
     for (size_t i = 0; i < bands_.size(); ++i)
         if (bands_[i].owner == rank_ && assignment[i] != rank_)
-            arriving.emplace_back(i, std::vector<std::uint16_t>(3 * size_t(wall_.screens[bands_[i].screen].widthPx) *
-                                                                 size_t(bands_[i].height)));
-    for (auto& [band, pixels] : arriving)
-        incoming.push_back({assignment[band], static_cast<int>(band), &pixels});
+            arrivingBands.push_back(i);
+    std::vector<std::vector<std::uint8_t>> incomingBytes(arrivingBands.size());
+    for (size_t k = 0; k < arrivingBands.size(); ++k)
+        incoming.push_back({assignment[arrivingBands[k]], static_cast<int>(arrivingBands[k]), &incomingBytes[k]});
     world.exchange(outgoing, incoming);
-    size_t words = 0;
+    size_t bytes = 0;
     for (const auto& m : outgoing)
-        words += m.values->size();
+        bytes += m.bytes->size();
     for (const auto& m : incoming)
-        words += m.values->size();
-    report.exchangeMB = 1e-6 * static_cast<double>(words * sizeof(std::uint16_t));
-    for (const auto& [band, pixels] : arriving) {
-        const cluster::Band& b = bands_[band];
+        bytes += m.bytes->size();
+    report.exchangeMB = 1e-6 * static_cast<double>(bytes);
+    for (size_t k = 0; k < arrivingBands.size(); ++k) {
+        const cluster::Band& b = bands_[arrivingBands[k]];
+        const std::vector<std::uint16_t> pixels =
+            receivedBandPixels(incomingBytes[k], b, static_cast<int>(arrivingBands[k]), wall_.screens[b.screen].widthPx,
+                               rank_, assignment[arrivingBands[k]]);
         ScreenTarget& own = screenTarget(screens, b.screen);
         context.makeCurrent(own.window);
         own.target->uploadRgbHalf(firstGlRow(b, wall_.screens[b.screen].heightPx), b.height, pixels);

@@ -3,8 +3,10 @@
 // and ends with every band of its own screens in their float targets.
 // - A band of one of its own screens is drawn straight into that screen's target: it never leaves the GPU.
 // - A band of another rank's screen is drawn into a scratch target of that screen's size, read back,
-//   rounded to half floats (io/half_pixels.h, 6 bytes a pixel) and sent to the screen's rank, which
-//   uploads it into its target's rows.
+//   rounded to half floats (io/half_pixels.h, 6 bytes a pixel), compressed losslessly
+//   (io/band_compression.h) and sent to the screen's rank, which decompresses it and uploads it into
+//   its target's rows; a block that does not decompress to the band's halves is an error naming
+//   the rank, the band and its sender.
 // Every band is drawn with its screen's rays over its own rows of a target of the screen's size (a
 // scissor keeps the other rows), so it gets the same floats whoever draws it; the output rounds every
 // screen to half floats, and a half rounds to itself, so the balanced wall equals the static one bit
@@ -25,6 +27,12 @@
 
 namespace aurorawall::app {
 
+// The halves of band `bandIndex` of a screen `widthPx` wide, decompressed from the bytes that rank
+// `sender` sent to rank `rank`. Throws std::runtime_error, one line naming the rank, the band
+// (screen, rows) and the sender, unless the bytes are that band's compressed halves.
+std::vector<std::uint16_t> receivedBandPixels(const std::vector<std::uint8_t>& bytes, const cluster::Band& band,
+                                              int bandIndex, int widthPx, int rank, int sender);
+
 class BandFrame {
 public:
     // measureCosts: report each drawn band's cost (the load balancer's input), read from the work
@@ -32,7 +40,8 @@ public:
     BandFrame(const wall::Wall& wall, std::vector<cluster::Band> bands, int rank, bool measureCosts);
 
     // Draws this rank's bands of `assignment` (band -> rank) and exchanges those drawn away from
-    // their screen; fills the report's render and exchange fields. Returns each drawn band's cost when
+    // their screen; fills the report's render and exchange fields (exchangeMB: the compressed bytes
+    // sent and received; exchangeMs includes compressing and decompressing). Returns each drawn band's cost when
     // measuring costs, else nothing. Needs window 0's context current and leaves it current.
     std::vector<cluster::BandCost> draw(render::TileRenderer& renderer, gl::Context& context,
                                         std::vector<ScreenTarget>& screens, const std::vector<std::int32_t>& assignment,

@@ -94,15 +94,19 @@ void MpiWorld::exchange(const std::vector<Message>& outgoing, const std::vector<
 {
     const WaitingForRanks waiting(watchdog_.get());
     std::vector<MPI_Request> requests;
-    for (const Message& m : incoming) {
-        requests.emplace_back();
-        MPI_Irecv(m.values->data(), static_cast<int>(m.values->size()), MPI_UINT16_T, m.rank, m.tag, MPI_COMM_WORLD,
-                  &requests.back());
-    }
     for (const Message& m : outgoing) {
         requests.emplace_back();
-        MPI_Isend(m.values->data(), static_cast<int>(m.values->size()), MPI_UINT16_T, m.rank, m.tag, MPI_COMM_WORLD,
+        MPI_Isend(m.bytes->data(), static_cast<int>(m.bytes->size()), MPI_BYTE, m.rank, m.tag, MPI_COMM_WORLD,
                   &requests.back());
+    }
+    for (const Message& m : incoming) {
+        MPI_Message message = MPI_MESSAGE_NULL;
+        MPI_Status status;
+        MPI_Mprobe(m.rank, m.tag, MPI_COMM_WORLD, &message, &status);
+        int size = 0;
+        MPI_Get_count(&status, MPI_BYTE, &size);
+        m.bytes->resize(static_cast<size_t>(size));
+        MPI_Mrecv(m.bytes->data(), size, MPI_BYTE, &message, MPI_STATUS_IGNORE);
     }
     MPI_Waitall(static_cast<int>(requests.size()), requests.data(), MPI_STATUSES_IGNORE);
 }

@@ -53,13 +53,13 @@ public:
     // gather and broadcast).
     void swapBarrier() const;
 
-    // Point-to-point messages of 16-bit words (band pixels as halves, io/half_pixels.h): every rank
-    // posts what it sends and what it expects (buffers sized by the caller) at once, so no order of
-    // sends can deadlock.
+    // Point-to-point messages of bytes (band pixels, compressed: io/band_compression.h): every rank
+    // posts all it sends at once, then takes each message it expects, whatever its length (an
+    // incoming buffer is resized to the message's), so no order of sends can deadlock.
     struct Message {
         int rank = 0; // destination (outgoing) or source (incoming)
         int tag = 0;
-        std::vector<std::uint16_t>* values = nullptr;
+        std::vector<std::uint8_t>* bytes = nullptr;
     };
     void exchange(const std::vector<Message>& outgoing, const std::vector<Message>& incoming) const;
 
