@@ -47,6 +47,10 @@ PlasmaDetail::PlasmaDetail(const Settings& plasma, const aurora::Settings& auror
     frames_ = gl::Texture::create3D(f.nx, f.ny, f.frames, gl::TexelFormat::R32F, gl::Filter::Linear, gl::Wrap::Repeat);
     frames_.upload(f.flux);
     shape_ = sheetDetailShape(spec_, f);
+    // The live strip's later steps are not known at start-up: the curtain reaches as far as the
+    // strip's box across (the shader samples nothing beyond it).
+    if (live_)
+        shape_.reachKm = 0.5 * spec_.sheet.widthM * 1e-3;
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     const double wc = pic::cyclotronFrequency(spec_.sheet.magneticFieldT);
     const double wp = pic::plasmaFrequency(spec_.sheet.electronDensity);
