@@ -1,7 +1,7 @@
 #include "components/plasma/box_renderer.h"
 
-#include "components/airglow/airglow.h"
 #include "common/data_dir.h"
+#include "components/airglow/airglow.h"
 #include "components/aurora/physics/colour.h"
 #include "gl/functions.h"
 #include "gl/shader_program.h"

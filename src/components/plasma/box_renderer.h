@@ -22,8 +22,6 @@ public:
     void setFrame(gl::Program& program, const cluster::FrameState& frame) override;
     // Texture unit 9: uPlasmaBoxFrames; and the curtain detail's.
     void bind(gl::Program& program) const override;
-    // The step the box's texture shows (device = "gpu" and kind = "box"; else -1).
-    long liveBoxStep() const { return liveBox_ ? liveBox_->step() : -1; }
 
 private:
     bool box_;

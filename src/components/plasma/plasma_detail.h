@@ -31,8 +31,6 @@ public:
     void bind(gl::Program& program) const override;
 
     const fluid_detail::DetailShape& shape() const { return shape_; }
-    // The step the texture shows (device = "gpu"; -1 for the CPU frames).
-    long liveStep() const { return live_ ? live_->step() : -1; }
 
 private:
     SheetFramesSpec spec_;
