@@ -17,6 +17,7 @@
 #include "io/png.h"
 #include "wall/tile_rays.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <optional>
 #include <stdexcept>
@@ -155,7 +156,12 @@ cluster::FrameStats runFrames(WallSession& session, const cluster::MpiWorld& wor
                       session.options.balanceBy);
     }
     BandFrame bands(session.wall, session.bands, world.rank(), session.balanced);
-    cluster::FrameStats stats(pixelsPerFrame(session.wall));
+    std::vector<std::string> componentNames;
+    for (const scene::Component* c : session.scene.components())
+        componentNames.push_back(c->name());
+    if (componentNames.size() > size_t(cluster::kMaxComponents))
+        throw std::logic_error("the stats have room for " + std::to_string(cluster::kMaxComponents) + " components");
+    cluster::FrameStats stats(pixelsPerFrame(session.wall), componentNames);
     bool stopRequested = false;
     control::WallStatus wallStatus;
     const control::WallFacts wallFacts{session.scene.planetRadiusKm,
@@ -228,6 +234,9 @@ cluster::FrameStats runFrames(WallSession& session, const cluster::MpiWorld& wor
         session.renderer->setFrame(frame.state);
         report.prepareMs = millisecondsSince(phase);
         report.prepareCpuMs = processCpuMilliseconds() - prepareCpuStart;
+        const std::vector<double>& componentMs = session.renderer->componentFrameMs();
+        std::copy_n(componentMs.begin(), std::min<size_t>(componentMs.size(), cluster::kMaxComponents),
+                    report.componentMs);
         mine.costs = bands.draw(*session.renderer, *session.context, session.screens, frame.assignment, world, report);
 
         // 3. Windows show the screens' targets and flip together: the swap barrier makes every rank

@@ -44,6 +44,14 @@ std::string FrameStats::frameLine(const FrameRecord& r) const
       << " Mpixel/s  render max " << r.maxRenderMs() << " ms mean " << r.meanRenderMs() << " ms  imbalance ";
     s.precision(2);
     s << r.imbalance();
+    s.precision(1);
+    for (size_t c = 0; c < componentNames_.size() && c < size_t(kMaxComponents); ++c) {
+        double ms = 0.0;
+        for (const RankReport& rank : r.ranks)
+            ms = std::max(ms, rank.componentMs[c]);
+        if (ms >= 0.05)
+            s << "  setFrame " << componentNames_[c] << " " << ms << " ms";
+    }
     return s.str();
 }
 
@@ -83,6 +91,9 @@ void FrameStats::write(const std::string& path) const
             out << ",frame_rank" << r << ",time_s_rank" << r << ",prepare_ms_rank" << r << ",prepare_cpu_ms_rank" << r
                 << ",render_ms_rank" << r
                 << ",render_cpu_ms_rank" << r << ",exchange_ms_rank" << r << ",exchange_mb_rank" << r << ",wait_ms_rank" << r << ",swap_ms_rank" << r << ",render_work_rank" << r;
+        for (size_t r = 0; r < ranks; ++r)
+            for (const std::string& name : componentNames_)
+                out << ",setframe_ms_" << name << "_rank" << r;
         out << "\n";
         for (const FrameRecord& f : records_) {
             out << f.frame << "," << f.timeS << "," << f.frameMs << "," << 1000.0 / f.frameMs << ","
@@ -92,6 +103,9 @@ void FrameStats::write(const std::string& path) const
                 out << "," << r.frame << "," << r.timeS << "," << r.prepareMs << "," << r.prepareCpuMs << "," << r.renderMs << ","
                     << r.renderCpuMs << "," << r.exchangeMs << "," << r.exchangeMB << "," << r.waitMs << "," << r.swapMs << ","
                     << r.renderWork;
+            for (const RankReport& r : f.ranks)
+                for (size_t c = 0; c < componentNames_.size() && c < size_t(kMaxComponents); ++c)
+                    out << "," << r.componentMs[c];
             out << "\n";
         }
     } else {
@@ -100,13 +114,18 @@ void FrameStats::write(const std::string& path) const
             const FrameRecord& f = records_[i];
             out << (i ? ",\n" : "\n") << "    {\"frame\": " << f.frame << ", \"time_s\": " << f.timeS
                 << ", \"frame_ms\": " << f.frameMs << ", \"imbalance\": " << f.imbalance() << ", \"ranks\": [";
-            for (size_t r = 0; r < f.ranks.size(); ++r)
+            for (size_t r = 0; r < f.ranks.size(); ++r) {
                 out << (r ? ", " : "") << "{\"frame\": " << f.ranks[r].frame << ", \"time_s\": " << f.ranks[r].timeS
                     << ", \"prepare_ms\": " << f.ranks[r].prepareMs << ", \"prepare_cpu_ms\": " << f.ranks[r].prepareCpuMs
                     << ", \"render_ms\": " << f.ranks[r].renderMs
                     << ", \"render_cpu_ms\": " << f.ranks[r].renderCpuMs << ", \"exchange_ms\": " << f.ranks[r].exchangeMs << ", \"exchange_mb\": " << f.ranks[r].exchangeMB
                     << ", \"wait_ms\": " << f.ranks[r].waitMs
-                    << ", \"swap_ms\": " << f.ranks[r].swapMs << ", \"render_work\": " << f.ranks[r].renderWork << "}";
+                    << ", \"swap_ms\": " << f.ranks[r].swapMs << ", \"render_work\": " << f.ranks[r].renderWork
+                    << ", \"component_ms\": {";
+                for (size_t c = 0; c < componentNames_.size() && c < size_t(kMaxComponents); ++c)
+                    out << (c ? ", " : "") << "\"" << componentNames_[c] << "\": " << f.ranks[r].componentMs[c];
+                out << "}}";
+            }
             out << "]}";
         }
         out << "\n  ]\n}\n";

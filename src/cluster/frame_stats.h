@@ -3,9 +3,13 @@
 // time, and what follows from them (frames/s, pixels/s, load imbalance = max/mean render time).
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace aurorawall::cluster {
+
+// Room in a RankReport for the setFrame time of every component a scene can list.
+inline constexpr int kMaxComponents = 16;
 
 // What each rank reports to the master after drawing a frame: the frame it drew (so the
 // master can show every rank drew the same one) and how long it took.
@@ -30,6 +34,9 @@ struct RankReport {
                               // gather and the broadcast), plus the swap barrier with windows
     double swapMs = 0.0;      // presenting and swapping its windows
     std::int32_t closeRequested = 0; // a window of this rank was closed
+    // Each listed component's setFrame (its per-frame work, GPU work it waits for included), wall
+    // time, ms, in the scene's component order: prepareMs split by component.
+    double componentMs[kMaxComponents] = {};
 };
 
 struct FrameRecord {
@@ -45,22 +52,30 @@ struct FrameRecord {
 
 class FrameStats {
 public:
-    explicit FrameStats(double pixelsPerFrame) : pixelsPerFrame_(pixelsPerFrame) {}
+    // componentNames: the scene's components in order, naming RankReport::componentMs.
+    explicit FrameStats(double pixelsPerFrame, std::vector<std::string> componentNames = {})
+        : pixelsPerFrame_(pixelsPerFrame), componentNames_(std::move(componentNames))
+    {
+    }
 
     void add(FrameRecord record) { records_.push_back(std::move(record)); }
     const std::vector<FrameRecord>& records() const { return records_; }
 
-    // "frame 3  t=0.100 s  41.2 ms  24.3 fps  22.4 Mpixel/s  imbalance 1.07"
+    // "frame 3  t=0.100 s  41.2 ms  24.3 fps  22.4 Mpixel/s  imbalance 1.07", then the setFrame of
+    // each component that took 0.05 ms or more on some rank (its largest over the ranks):
+    // "  setFrame plasma 12.3 ms".
     std::string frameLine(const FrameRecord& r) const;
     // Means over all frames but the first (which includes shader compilation and warm-up).
     std::string summary() const;
 
-    // CSV (one row per frame, one render_ms column per rank) or JSON, chosen by the extension
-    // (.csv or .json); written atomically.
+    // CSV (one row per frame, one render_ms column per rank, a setframe_ms_NAME column per component
+    // and rank) or JSON (each rank's "component_ms": {"NAME": ms, ...}), chosen by the extension (.csv
+    // or .json); written atomically.
     void write(const std::string& path) const;
 
 private:
     double pixelsPerFrame_;
+    std::vector<std::string> componentNames_;
     std::vector<FrameRecord> records_;
 };
 

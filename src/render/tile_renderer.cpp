@@ -2,6 +2,8 @@
 
 #include "render/fragment_shader.h"
 
+#include <chrono>
+
 namespace aurorawall::render {
 
 TileRenderer::TileRenderer(const scene::Scene& scene, const std::string& shaderDir)
@@ -31,8 +33,13 @@ void TileRenderer::setFrame(const cluster::FrameState& frame)
     domeToPlanet_ = glm::dmat3(frame.cameraRight, frame.cameraUp, frame.cameraBack);
     zoom_ = frame.zoom;
     program_.set("uCameraPositionKm", glm::vec3(frame.cameraPositionKm));
-    for (const auto& c : components_)
+    componentFrameMs_.clear();
+    for (const auto& c : components_) {
+        const auto start = std::chrono::steady_clock::now();
         c->setFrame(program_, frame);
+        componentFrameMs_.push_back(
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+    }
 }
 
 std::string TileRenderer::frameLog() const

@@ -36,6 +36,8 @@ public:
     const std::vector<std::string>& precomputationLog() const { return precomputationLog_; }
     // The components' GPU parts, in registry order.
     const std::vector<std::unique_ptr<scene::ComponentRenderer>>& components() const { return components_; }
+    // The last setFrame's wall time (ms) of each component's setFrame, in components() order.
+    const std::vector<double>& componentFrameMs() const { return componentFrameMs_; }
     // What the last setFrame computed per frame (e.g. the curtains' footprint map); may be empty.
     std::string frameLog() const;
 
@@ -46,6 +48,7 @@ private:
     glm::dmat3 domeToPlanet_{1.0}; // the camera's axes alone
     double zoom_ = 1.0;
     std::vector<std::unique_ptr<scene::ComponentRenderer>> components_;
+    std::vector<double> componentFrameMs_;
     std::vector<std::string> precomputationLog_;
 };
 

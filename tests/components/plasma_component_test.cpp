@@ -127,3 +127,35 @@ TEST(PlasmaComponent, SettingsErrorsNameFileLineAndKey)
     alone.erase(alone.find("[[aurora.curtain]]"));
     EXPECT_NE(sceneError(alone).find("'plasma' needs 'aurora'"), std::string::npos) << sceneError(alone);
 }
+
+// device: "cpu" (the default) or "gpu"; anything else names the file, line and key.
+TEST(PlasmaComponent, DeviceIsCpuOrGpu)
+{
+    EXPECT_EQ(sceneError(kSceneHead + "[plasma]\ndevice = \"gpu\"\n"), "");
+    const std::string bad = sceneError(kSceneHead + "[plasma]\ndevice = \"fpga\"\n");
+    EXPECT_NE(bad.find("plasma_settings.toml:13: plasma.device"), std::string::npos) << bad;
+    EXPECT_EQ(components::plasma::Settings().device, components::plasma::Settings::Device::Cpu);
+}
+
+// The step a time shows: the curls' detail phase times the frames' steps (frame k at phase
+// k/(frames − 1) is step k·stepsPerFrame, as the CPU frames); the box's clock looping over box_play_s.
+TEST(PlasmaComponent, ClockToStepIsTheFramesMapping)
+{
+    namespace plasma = components::plasma;
+    const plasma::SheetFramesSpec spec = smallSceneStrip(); // 4 frames of 10 steps
+    EXPECT_EQ(plasma::curlsStep(spec, 0.0), 0);
+    EXPECT_EQ(plasma::curlsStep(spec, 1.0 / 3.0), 10);
+    EXPECT_EQ(plasma::curlsStep(spec, 0.5), 15);
+    EXPECT_EQ(plasma::curlsStep(spec, 1.0), 30);
+    plasma::Settings box;
+    box.kind = plasma::Settings::Kind::Box;
+    box.boxFrames = 24;
+    box.boxTimeBetweenFramesS = 5 * box.boxTimeStepS; // 5 steps a frame
+    box.boxPlayS = 12.0;
+    EXPECT_DOUBLE_EQ(plasma::boxFramePosition(box, 6.0), 11.5);
+    EXPECT_EQ(plasma::boxStep(box, 6.0), 58); // 57.5 rounded away from zero
+    EXPECT_EQ(plasma::boxStep(box, 0.0), 0);
+    EXPECT_EQ(plasma::boxStep(box, 12.0), 0);  // the loop starts again
+    EXPECT_EQ(plasma::boxStep(box, 18.0), 58);
+    EXPECT_EQ(plasma::boxStep(box, 11.999999), 115);
+}

@@ -25,9 +25,16 @@ static_assert(sizeof(BoxFramesSpec) == 64, "add the new BoxFramesSpec field to b
 
 double wavenumber(const BoxFramesSpec& s) { return 2.0 * kPi * s.seedMode / s.sideM; }
 
-// Two cold beams on the same lattice (perCellAxis³ electrons per cell each), displaced along z by
-// a sin(k z + φ(x, y)) with φ = π sin(2πx/L) sin(2πy/L), at +v₀ and −v₀ along z.
-pic::Particles twoBeams(const BoxFramesSpec& s)
+std::vector<char> boxFramesBytes(const BoxFrames& f)
+{
+    std::vector<char> bytes(f.density.size() * sizeof(float));
+    std::memcpy(bytes.data(), f.density.data(), bytes.size());
+    return bytes;
+}
+
+} // namespace
+
+pic::Particles boxElectrons(const BoxFramesSpec& s)
 {
     const int n = s.cells * s.particlesPerCellAxis;
     const double spacing = s.sideM / n, k = wavenumber(s), v0 = boxBeamSpeed(s);
@@ -49,25 +56,22 @@ pic::Particles twoBeams(const BoxFramesSpec& s)
     return p;
 }
 
-// n/n₀ at the cell centres: the CIC deposit of the electrons moved back by half a cell on every
-// axis, plus the mean the deposit removed.
-std::vector<double> relativeCellCentreDensity(const pic::PeriodicGrid& grid, const pic::Particles& electrons,
-                                              double meanDensity)
+pic::PeriodicGrid boxGrid(const BoxFramesSpec& s)
 {
-    std::vector<double> n = pic::depositChargeDensityAtCellCentres(grid, electrons);
-    for (double& v : n)
-        v = 1.0 - v / (pic::kElementaryCharge * meanDensity);
+    const double spacing = s.sideM / s.cells;
+    return pic::PeriodicGrid(3, {s.cells, s.cells, s.cells}, {spacing, spacing, spacing});
+}
+
+std::vector<float> boxFrameDensity(const BoxFramesSpec& s, const pic::PeriodicGrid& grid,
+                                   const pic::Particles& electrons)
+{
+    const std::vector<double> deposit = pic::depositChargeDensityAtCellCentres(grid, electrons);
+    std::vector<float> n;
+    n.reserve(deposit.size());
+    for (double v : deposit)
+        n.push_back(static_cast<float>(1.0 - v / (pic::kElementaryCharge * s.electronDensity)));
     return n;
 }
-
-std::vector<char> boxFramesBytes(const BoxFrames& f)
-{
-    std::vector<char> bytes(f.density.size() * sizeof(float));
-    std::memcpy(bytes.data(), f.density.data(), bytes.size());
-    return bytes;
-}
-
-} // namespace
 
 double boxBeamSpeed(const BoxFramesSpec& s)
 {
@@ -78,9 +82,8 @@ BoxFrames simulateBoxFrames(const BoxFramesSpec& s)
 {
     if (s.frames < 2 || s.stepsPerFrame < 1 || s.cells < 2)
         throw std::invalid_argument("plasma box frames: needs 2 cells, 2 frames and 1 step per frame");
-    const double spacing = s.sideM / s.cells;
-    const pic::PeriodicGrid grid(3, {s.cells, s.cells, s.cells}, {spacing, spacing, spacing});
-    pic::ElectrostaticPic sim(grid, twoBeams(s), glm::dvec3(0.0, 0.0, s.magneticFieldT), s.timeStepS);
+    const pic::PeriodicGrid grid = boxGrid(s);
+    pic::ElectrostaticPic sim(grid, boxElectrons(s), glm::dvec3(0.0, 0.0, s.magneticFieldT), s.timeStepS);
     BoxFrames f;
     f.cells = s.cells;
     f.frames = s.frames;
@@ -89,8 +92,8 @@ BoxFrames simulateBoxFrames(const BoxFramesSpec& s)
         if (k > 0)
             for (int n = 0; n < s.stepsPerFrame; ++n)
                 sim.step();
-        for (double n : relativeCellCentreDensity(grid, sim.electrons(), s.electronDensity))
-            f.density.push_back(static_cast<float>(n));
+        const std::vector<float> n = boxFrameDensity(s, grid, sim.electrons());
+        f.density.insert(f.density.end(), n.begin(), n.end());
     }
     return f;
 }

@@ -5,6 +5,9 @@
 // displaces every electron along z by a sin(k z + φ(x, y)), its phase φ varying across the field, so
 // the bunches that grow in each flux tube lie on curved sheets. CPU, serial, double, deterministic:
 // every rank computes the same bytes, or reads them from the table cache.
+#include "components/plasma/simulation/particles.h"
+#include "components/plasma/simulation/periodic_grid.h"
+
 #include <string>
 #include <vector>
 
@@ -28,6 +31,18 @@ struct BoxFramesSpec {
 // two-stream instability; F. F. Chen, Introduction to Plasma Physics and Controlled Fusion, 3rd ed.,
 // 2016): v₀ (m/s) for k the seeded mode's wavenumber.
 double boxBeamSpeed(const BoxFramesSpec& spec);
+
+// The box's grid: cells³ cells of side sideM / cells.
+aurorawall::plasma::PeriodicGrid boxGrid(const BoxFramesSpec& spec);
+
+// Two cold beams on the same lattice (perCellAxis³ electrons per cell each), displaced along z by
+// a sin(k z + φ(x, y)) with φ = π sin(2πx/L) sin(2πy/L), at +v₀ and −v₀ along z.
+aurorawall::plasma::Particles boxElectrons(const BoxFramesSpec& spec);
+
+// A frame: n/n₀ at the cell centres, the CIC deposit of the electrons moved back by half a cell on
+// every axis, plus the mean the deposit removed; x fastest, then y, z.
+std::vector<float> boxFrameDensity(const BoxFramesSpec& spec, const aurorawall::plasma::PeriodicGrid& grid,
+                                   const aurorawall::plasma::Particles& electrons);
 
 struct BoxFrames {
     int cells = 0;

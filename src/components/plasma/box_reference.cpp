@@ -69,12 +69,6 @@ private:
 
 } // namespace
 
-double boxFramePosition(const Settings& plasma, double timeS)
-{
-    const double cycle = timeS / plasma.boxPlayS;
-    return (cycle - std::floor(cycle)) * (plasma.boxFrames - 1);
-}
-
 BoxDensity::BoxDensity(BoxFrames frames, double framePosition) : frames_(std::move(frames))
 {
     frame0_ = static_cast<int>(std::floor(framePosition));

@@ -13,10 +13,6 @@
 
 namespace aurorawall::components::plasma {
 
-// The frame position at clock time t (s), as BoxRenderer::setFrame: the frames play over box_play_s
-// seconds, then again from frame 0; p = frac(t / box_play_s) · (box_frames − 1).
-double boxFramePosition(const Settings& plasma, double timeS);
-
 // n/n₀ of the box at one frame position, as the shader's lookup: each frame trilinear between the
 // cell centres, periodic across the field (x, y), held at the first and last centres along z;
 // linear in time between frames floor(p) and min(floor(p) + 1, frames − 1).

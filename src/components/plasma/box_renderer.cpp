@@ -1,7 +1,9 @@
 #include "components/plasma/box_renderer.h"
 
+#include "common/data_dir.h"
 #include "components/airglow/airglow.h"
 #include "components/aurora/physics/colour.h"
+#include "gl/functions.h"
 #include "gl/shader_program.h"
 #include "io/table_cache.h"
 #include "scene/scene.h"
@@ -13,8 +15,8 @@
 
 namespace aurorawall::components::plasma {
 
-BoxRenderer::BoxRenderer(const Settings& plasma, double planetRadiusKm)
-    : PlasmaDetail(plasma), box_(plasma.kind == Settings::Kind::Box), settings_(plasma),
+BoxRenderer::BoxRenderer(const Settings& plasma, const aurora::Settings& aurora, double planetRadiusKm)
+    : PlasmaDetail(plasma, aurora), box_(plasma.kind == Settings::Kind::Box), settings_(plasma),
       boxFrames_(gl::Texture::create3D(1, 1, 1, gl::TexelFormat::R32F, gl::Filter::Linear, gl::Wrap::Repeat))
 {
     boxSummary_ = PlasmaDetail::precomputationLog();
@@ -24,8 +26,24 @@ BoxRenderer::BoxRenderer(const Settings& plasma, double planetRadiusKm)
     }
     const auto start = std::chrono::steady_clock::now();
     const BoxFramesSpec spec = boxFramesSpec(plasma);
-    const CachedBoxFrames cached = cachedBoxFrames(spec, io::defaultCacheDirectory());
-    const BoxFrames& f = cached.frames;
+    BoxFrames f;
+    std::string outcome;
+    if (plasma.device == Settings::Device::Gpu) {
+        const aurorawall::plasma::PeriodicGrid grid = boxGrid(spec);
+        const aurorawall::plasma::Particles electrons = boxElectrons(spec);
+        f = {spec.cells, 1, boxFrameDensity(spec, grid, electrons)};
+        liveBox_ = std::make_unique<LivePic>(
+            grid, electrons, glm::dvec3(0.0, 0.0, spec.magneticFieldT), spec.timeStepS,
+            [spec](const aurorawall::plasma::PeriodicGrid& g, const aurorawall::plasma::Particles& e) {
+                return boxFrameDensity(spec, g, e);
+            },
+            dataDirectory() + "/shaders");
+        outcome = "live on the GPU";
+    } else {
+        CachedBoxFrames cached = cachedBoxFrames(spec, io::defaultCacheDirectory());
+        f = std::move(cached.frames);
+        outcome = cached.outcome;
+    }
     boxFrames_ = gl::Texture::create3D(f.cells, f.cells, f.cells * f.frames, gl::TexelFormat::R32F, gl::Filter::Linear,
                                        gl::Wrap::Repeat);
     boxFrames_.upload(f.density);
@@ -47,7 +65,7 @@ BoxRenderer::BoxRenderer(const Settings& plasma, double planetRadiusKm)
     std::snprintf(text, sizeof text,
                   "; plasma box: %d^3 cells, %d frames of %d steps, beams %.3g m/s, peak n/n0 %.2f, "
                   "%s: %.0f ms",
-                  f.cells, f.frames, spec.stepsPerFrame, boxBeamSpeed(spec), peak, cached.outcome.c_str(), ms);
+                  f.cells, spec.frames, spec.stepsPerFrame, boxBeamSpeed(spec), peak, outcome.c_str(), ms);
     boxSummary_ += text;
 }
 
@@ -55,14 +73,18 @@ void BoxRenderer::setFrame(gl::Program& program, const cluster::FrameState& fram
 {
     PlasmaDetail::setFrame(program, frame);
     double position = 0.0;
-    if (box_) {
-        const double cycle = frame.timeS / settings_.boxPlayS;
-        position = (cycle - std::floor(cycle)) * (settings_.boxFrames - 1);
+    if (liveBox_) {
+        if (liveBox_->advanceTo(boxStep(settings_, frame.timeS))) {
+            boxFrames_.upload(liveBox_->frame());
+            gl::glFinish();
+        }
+    } else if (box_) {
+        position = boxFramePosition(settings_, frame.timeS);
     }
     program.set("uPlasmaBoxCentreFromCamera", glm::vec3(centreKm_ - frame.cameraPositionKm));
     program.set("uPlasmaBoxAxes", glm::mat3(axes_));
     const float steps = box_ ? static_cast<float>(settings_.boxStepsPerCell * settings_.boxCells) : 0.0f;
-    const float frames = box_ ? static_cast<float>(settings_.boxFrames) : 1.0f;
+    const float frames = box_ && !liveBox_ ? static_cast<float>(settings_.boxFrames) : 1.0f;
     program.set("uPlasmaBox",
                 glm::vec4(static_cast<float>(settings_.boxSideKm), steps, static_cast<float>(position), frames));
     program.set("uPlasmaBoxCells", box_ ? settings_.boxCells : 1);

@@ -117,6 +117,7 @@ public:
                                  p.particlesPerCellAxis;
         if (particles > 4e6)
             t.fail("particles_per_cell_axis", number(particles) + " electrons; at most 4e6");
+        p.device = t.choice("device", {"cpu", "gpu"}, 0) == 0 ? Settings::Device::Cpu : Settings::Device::Gpu;
         p.kind = t.choice("kind", {"curls", "box"}, 0) == 0 ? Settings::Kind::Curls : Settings::Kind::Box;
         if (p.kind == Settings::Kind::Box)
             readBox(t, p);
@@ -139,7 +140,8 @@ public:
     std::unique_ptr<scene::ComponentRenderer> makeRenderer(const scene::Scene& scene,
                                                            const scene::FindRenderer&) const override
     {
-        return std::make_unique<BoxRenderer>(scene.settings<Settings>(), scene.planetRadiusKm);
+        return std::make_unique<BoxRenderer>(scene.settings<Settings>(), scene.settings<aurora::Settings>(),
+                                             scene.planetRadiusKm);
     }
     // The box's emission (box_reference.h); with kind = "curls" nothing of its own.
     std::unique_ptr<scene::ReferenceShader> makeReference(const scene::Scene& scene,
@@ -197,6 +199,22 @@ BoxFramesSpec boxFramesSpec(const Settings& p)
     s.frames = p.boxFrames;
     s.stepsPerFrame = static_cast<int>(std::round(p.boxTimeBetweenFramesS / p.boxTimeStepS));
     return s;
+}
+
+long curlsStep(const SheetFramesSpec& spec, double detailPhase)
+{
+    return std::lround(detailPhase * (spec.frames - 1) * spec.stepsPerFrame);
+}
+
+double boxFramePosition(const Settings& p, double timeS)
+{
+    const double cycle = timeS / p.boxPlayS;
+    return (cycle - std::floor(cycle)) * (p.boxFrames - 1);
+}
+
+long boxStep(const Settings& p, double timeS)
+{
+    return std::lround(boxFramePosition(p, timeS) * boxFramesSpec(p).stepsPerFrame);
 }
 
 } // namespace aurorawall::components::plasma

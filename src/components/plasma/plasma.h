@@ -2,10 +2,11 @@
 // The plasma component: curtain detail from the particle-in-cell plasma. A diocotron-unstable strip of
 // electrons along the curtain, in the geomagnetic field along the field line, rolls up into vortices
 // (the curls of auroral arcs: Hallinan & Davis, Planet. Space Sci. 18, 1735 (1970)); simulated once at
-// start-up (sheet_frames.h), its electron density frames replace fluid_detail's in the aurora's
-// curtain profile. docs/PLASMA.md, "Driving the aurora".
+// start-up (sheet_frames.h) or live on the GPU (device = "gpu"), its electron density replaces
+// fluid_detail's in the aurora's curtain profile. docs/PLASMA.md, "Driving the aurora".
 // With kind = "box" it also simulates a 3D box of plasma along the field lines (box_frames.h) and
 // raymarches its electron density as the green line's emission. docs/PLASMA.md, "The plasma box".
+// The step a time shows, for both devices: see curlsStep and boxStep.
 #include "components/plasma/box_frames.h"
 #include "components/plasma/sheet_frames.h"
 #include "scene/component.h"
@@ -27,6 +28,11 @@ struct Settings : scene::SettingsOf<Settings> {
     double seedAmplitudeKm = 0.02;   // the strip's initial sinusoidal displacement across
     int frames = 16;
     double timeBetweenFramesS = 1.4e-4;
+
+    // cpu: the frames simulated at start-up in double (sheet_frames.h, box_frames.h); gpu: the same
+    // simulations run live in compute shaders (live_pic.h), stepped to the master's clock.
+    enum class Device { Cpu, Gpu };
+    Device device = Device::Cpu;
 
     enum class Kind { Curls, Box };
     Kind kind = Kind::Curls;
@@ -57,5 +63,15 @@ SheetFramesSpec sheetFramesSpec(const Settings& plasma);
 
 // The box's simulation (lengths to metres, steps between frames rounded).
 BoxFramesSpec boxFramesSpec(const Settings& plasma);
+
+// The step of the strip's simulation the curtain shows at detail phase 0 … 1: phase × (frames − 1)
+// frames, rounded to a step (the CPU frames interpolate between frames; the live run shows a step).
+long curlsStep(const SheetFramesSpec& spec, double detailPhase);
+
+// The box's frame position 0 … frames − 1 at the clock's time: the frames play over boxPlayS
+// seconds, then again from the start.
+double boxFramePosition(const Settings& plasma, double timeS);
+// The same as a step of the box's simulation, rounded.
+long boxStep(const Settings& plasma, double timeS);
 
 } // namespace aurorawall::components::plasma

@@ -1,6 +1,9 @@
 #include "components/plasma/plasma_detail.h"
 
+#include "common/data_dir.h"
+#include "components/aurora/curtain_frames.h"
 #include "components/plasma/simulation/plasma_parameters.h"
+#include "gl/functions.h"
 #include "gl/shader_program.h"
 #include "io/table_cache.h"
 
@@ -9,32 +12,73 @@
 
 namespace aurorawall::components::plasma {
 
-PlasmaDetail::PlasmaDetail(const Settings& plasma)
+namespace pic = aurorawall::plasma;
+
+PlasmaDetail::PlasmaDetail(const Settings& plasma, const aurora::Settings& aurora)
     : spec_(sheetFramesSpec(plasma)),
       frames_(gl::Texture::create3D(1, 1, 1, gl::TexelFormat::R32F, gl::Filter::Linear, gl::Wrap::Repeat))
 {
+    if (!aurora.curtains.empty())
+        curtain_ = aurora.curtains.front();
     const auto start = std::chrono::steady_clock::now();
-    const CachedSheetFrames cached = cachedSheetFrames(spec_, io::defaultCacheDirectory());
-    const fluid::FluxFrames& f = cached.frames;
+    fluid::FluxFrames f;
+    std::string outcome;
+    if (plasma.device == Settings::Device::Gpu) {
+        // Frame 0 on the CPU gives the curtain's shape, as the CPU frames' frame 0 does.
+        const pic::PeriodicGrid grid = pic::sheetGrid(spec_.sheet);
+        const pic::Particles electrons = pic::sheetElectrons(spec_.sheet);
+        f.nx = grid.cells[0];
+        f.ny = grid.cells[1];
+        f.frames = 1;
+        f.texelKmX = static_cast<float>(grid.spacing[0] * 1e-3);
+        f.texelKmY = static_cast<float>(grid.spacing[1] * 1e-3);
+        f.flux = sheetFrameDensity(spec_, grid, electrons);
+        const SheetFramesSpec spec = spec_;
+        live_ = std::make_unique<LivePic>(
+            grid, electrons, glm::dvec3(0.0, 0.0, spec_.sheet.magneticFieldT), pic::sheetTimeStep(spec_.sheet),
+            [spec](const pic::PeriodicGrid& g, const pic::Particles& e) { return sheetFrameDensity(spec, g, e); },
+            dataDirectory() + "/shaders");
+        outcome = "live on the GPU";
+    } else {
+        CachedSheetFrames cached = cachedSheetFrames(spec_, io::defaultCacheDirectory());
+        f = std::move(cached.frames);
+        outcome = cached.outcome;
+    }
     frames_ = gl::Texture::create3D(f.nx, f.ny, f.frames, gl::TexelFormat::R32F, gl::Filter::Linear, gl::Wrap::Repeat);
     frames_.upload(f.flux);
     shape_ = sheetDetailShape(spec_, f);
+    // The live strip's later steps are not known at start-up: the curtain reaches as far as the
+    // strip's box across (the shader samples nothing beyond it).
+    if (live_)
+        shape_.reachKm = 0.5 * spec_.sheet.widthM * 1e-3;
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    const double wc = aurorawall::plasma::cyclotronFrequency(spec_.sheet.magneticFieldT);
-    const double wp = aurorawall::plasma::plasmaFrequency(spec_.sheet.electronDensity);
-    const double dt = aurorawall::plasma::sheetTimeStep(spec_.sheet);
+    const double wc = pic::cyclotronFrequency(spec_.sheet.magneticFieldT);
+    const double wp = pic::plasmaFrequency(spec_.sheet.electronDensity);
+    const double dt = pic::sheetTimeStep(spec_.sheet);
     char text[400];
     std::snprintf(text, sizeof text,
                   "plasma: %d x %d cells, %d frames of %d steps, wc_dt %.3g, wp_dt %.3g, reach %.1f km, %s: %.0f ms",
-                  f.nx, f.ny, f.frames, spec_.stepsPerFrame, wc * dt, wp * dt, shape_.reachKm, cached.outcome.c_str(),
+                  f.nx, f.ny, spec_.frames, spec_.stepsPerFrame, wc * dt, wp * dt, shape_.reachKm, outcome.c_str(),
                   ms);
     summary_ = text;
+}
+
+void PlasmaDetail::setFrame(gl::Program&, const cluster::FrameState& frame)
+{
+    if (!live_)
+        return;
+    const double phase =
+        curtain_.keys.empty() ? 0.0 : aurora::curtainAt(curtain_, frame.timeS, spec_.sheet.lengthM * 1e-3).detailPhase;
+    if (live_->advanceTo(curlsStep(spec_, phase))) {
+        frames_.upload(live_->frame());
+        gl::glFinish();
+    }
 }
 
 void PlasmaDetail::bind(gl::Program& program) const
 {
     program.bindTexture("uFluxFrames", 3, frames_.id());
-    program.set("uFluxStrip", glm::vec4(spec_.sheet.lengthM * 1e-3, spec_.sheet.widthM * 1e-3, spec_.frames,
+    program.set("uFluxStrip", glm::vec4(spec_.sheet.lengthM * 1e-3, spec_.sheet.widthM * 1e-3, frames_.depth(),
                                         static_cast<float>(shape_.peakScale)));
 }
 

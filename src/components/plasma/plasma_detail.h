@@ -1,22 +1,32 @@
 #pragma once
-// The plasma component on the GPU: the electron strip's density frames (sheet_frames.h) as a 3D
-// texture (along x, across y, frame z; linear filtering, periodic along) with the uniforms of
+// The plasma component on the GPU: the electron strip's density as a 3D texture (along x, across y,
+// frame z; linear filtering, periodic along) with the uniforms of
 // shaders/components/aurora/curtain_profile.glsl, as fluid_detail binds them.
+//   device = "cpu": the frames simulated at start-up (sheet_frames.h), the curtain's detail phase
+//     choosing and blending frames in the shader.
+//   device = "gpu": one frame, the strip's simulation run live on the GPU (live_pic.h) and stepped in
+//     setFrame to the step of the first curtain's detail phase at the frame's time (curlsStep); the
+//     shader's frame lookup pinned to that one frame (frame count 1).
+#include "components/aurora/aurora.h"
 #include "components/fluid_detail/curtain_detail.h"
+#include "components/plasma/live_pic.h"
 #include "components/plasma/plasma.h"
 #include "gl/texture.h"
 #include "scene/component.h"
 
+#include <memory>
 #include <string>
 
 namespace aurorawall::components::plasma {
 
 class PlasmaDetail : public scene::ComponentRenderer {
 public:
-    explicit PlasmaDetail(const Settings& plasma);
+    // aurora: the scene's curtains (the first one's detail phase drives the live run).
+    PlasmaDetail(const Settings& plasma, const aurora::Settings& aurora);
 
     std::string precomputationLog() const override { return summary_; }
-    void setFrame(gl::Program&, const cluster::FrameState&) override {}
+    // device = "gpu": steps the live run to this frame's step and uploads its frame, waited for.
+    void setFrame(gl::Program&, const cluster::FrameState& frame) override;
     // Texture unit 3: uFluxFrames and uFluxStrip.
     void bind(gl::Program& program) const override;
 
@@ -24,6 +34,8 @@ public:
 
 private:
     SheetFramesSpec spec_;
+    aurora::Curtain curtain_; // the first curtain (none: detail phase 0)
+    std::unique_ptr<LivePic> live_;
     gl::Texture frames_;
     fluid_detail::DetailShape shape_;
     std::string summary_;

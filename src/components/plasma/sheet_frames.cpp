@@ -24,20 +24,23 @@ constexpr int kFormatVersion = 1;
 // Every field of the spec must be in the key: a new field changes the size and stops the build here.
 static_assert(sizeof(SheetFramesSpec) == 80, "add the new SheetFramesSpec field to sheetFramesCacheKey");
 
-// The density (m⁻³) at the cell centres: the CIC deposit of the electrons moved back by half a cell
-// (so node (i, j) stands for the point ((i + ½)Δx, (j + ½)Δy)), plus the background the deposit's
-// mean removal took away.
-std::vector<double> cellCentreDensity(const pic::PeriodicGrid& grid, const pic::Particles& electrons)
+} // namespace
+
+std::vector<float> sheetFrameDensity(const SheetFramesSpec& spec, const pic::PeriodicGrid& grid,
+                                     const pic::Particles& electrons)
 {
-    std::vector<double> n = pic::depositChargeDensityAtCellCentres(grid, electrons);
+    // The density (m⁻³) at the cell centres: the CIC deposit of the electrons moved back by half a
+    // cell, plus the background the deposit's mean removal took away.
+    const std::vector<double> deposit = pic::depositChargeDensityAtCellCentres(grid, electrons);
     const glm::dvec3 box = grid.boxLength();
     const double mean = electrons.weight * double(electrons.position.size()) / (box.x * box.y * box.z);
-    for (double& v : n)
-        v = mean - v / pic::kElementaryCharge;
-    return n;
+    const double perKm = 1.0 / (spec.sheet.electronDensity * spec.sheet.thicknessM * 1e-3);
+    std::vector<float> frame;
+    frame.reserve(deposit.size());
+    for (double v : deposit)
+        frame.push_back(static_cast<float>((mean - v / pic::kElementaryCharge) * perKm));
+    return frame;
 }
-
-} // namespace
 
 fluid::FluxFrames simulateSheetFrames(const SheetFramesSpec& spec)
 {
@@ -51,14 +54,13 @@ fluid::FluxFrames simulateSheetFrames(const SheetFramesSpec& spec)
     f.frames = spec.frames;
     f.texelKmX = static_cast<float>(grid.spacing[0] * 1e-3);
     f.texelKmY = static_cast<float>(grid.spacing[1] * 1e-3);
-    const double perKm = 1.0 / (spec.sheet.electronDensity * spec.sheet.thicknessM * 1e-3);
     f.flux.reserve(grid.nodeCount() * spec.frames);
     for (int k = 0; k < spec.frames; ++k) {
         if (k > 0)
             for (int n = 0; n < spec.stepsPerFrame; ++n)
                 sim.step();
-        for (double n : cellCentreDensity(grid, sim.electrons()))
-            f.flux.push_back(static_cast<float>(n * perKm));
+        const std::vector<float> frame = sheetFrameDensity(spec, grid, sim.electrons());
+        f.flux.insert(f.flux.end(), frame.begin(), frame.end());
     }
     return f;
 }

@@ -22,6 +22,10 @@ struct SheetFramesSpec {
 // ∫F du = 1 (1/km, u in km) for every column of frame 0, as the fluid's frames.
 fluid::FluxFrames simulateSheetFrames(const SheetFramesSpec& spec);
 
+// One such frame from the electrons on the spec's grid (aurorawall::plasma::sheetGrid).
+std::vector<float> sheetFrameDensity(const SheetFramesSpec& spec, const aurorawall::plasma::PeriodicGrid& grid,
+                                     const aurorawall::plasma::Particles& electrons);
+
 // Frame 0's shape for the aurora's curtain model: its measured standard deviation across, its reach,
 // the strip's length, and 1/(frame 0's largest value), which makes the smooth strip's peak 1.
 fluid_detail::DetailShape sheetDetailShape(const SheetFramesSpec& spec, const fluid::FluxFrames& frames);
