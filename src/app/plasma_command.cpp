@@ -146,7 +146,7 @@ int runPlasmaCommand(int argc, char** argv, std::ostream& out, std::ostream& err
                       "the heating case's particle shape: cic (cloud-in-cell, default) or tsc (triangular-shaped cloud)");
         std::string historyDirectory;
         cli.add()("history", po::value<std::string>(&historyDirectory),
-                  "an existing folder: each case run (but boris and exb) also writes there CASE.csv "
+                  "an existing folder: each case run, except boris and exb, also writes there CASE.csv "
                   "(heating: heating-dxX.csv, X = dx/lambda_D), the samples its measurement used against time "
                   "(in 1/omega_p; diocotron in 1/omega_D), with the fit's window and lines");
         cli.addPositional("action", &actionName);
