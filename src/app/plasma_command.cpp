@@ -7,10 +7,16 @@
 #include "components/plasma/simulation/verify_cases.h"
 #include "gl/context.h"
 
+#include <unistd.h>
+
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
 #include <ostream>
+#include <stdexcept>
 #include <string>
+#include <system_error>
 #include <vector>
 
 namespace aurorawall::app {
@@ -71,6 +77,34 @@ void printRows(std::ostream& out, const std::string& name, const std::vector<pla
     out.flush();
 }
 
+// The folder of --history must exist and be writable before any case runs.
+void requireWritableDirectory(const std::string& directory)
+{
+    if (!std::filesystem::is_directory(directory))
+        throw std::runtime_error("--history: '" + directory + "' is not a directory");
+    if (::access(directory.c_str(), W_OK | X_OK) != 0)
+        throw std::runtime_error("--history: cannot write in '" + directory + "'");
+}
+
+// A case's history as DIRECTORY/NAME.csv, written under a temporary name and then renamed, so that no
+// file is left half-written.
+void writeHistory(const std::string& directory, const std::string& name, const plasma::VerifyHistory& history)
+{
+    const std::filesystem::path path = std::filesystem::path(directory) / (name + ".csv");
+    const std::filesystem::path temporary = path.string() + ".tmp";
+    std::ofstream file(temporary);
+    plasma::writeHistoryCsv(file, history);
+    file.close();
+    std::error_code error;
+    if (!file) {
+        std::filesystem::remove(temporary, error);
+        throw std::runtime_error("--history: cannot write '" + path.string() + "'");
+    }
+    std::filesystem::rename(temporary, path, error);
+    if (error)
+        throw std::runtime_error("--history: cannot write '" + path.string() + "': " + error.message());
+}
+
 } // namespace
 
 int runPlasmaCommand(int argc, char** argv, std::ostream& out, std::ostream& err)
@@ -79,7 +113,7 @@ int runPlasmaCommand(int argc, char** argv, std::ostream& out, std::ostream& err
         cli::CommandLine cli(
             "plasma",
             "Usage: aurorawall plasma verify [--case NAME] [--device cpu|gpu] [--solver NAME] [--wp-dt X]\n"
-            "                               [--wc-dt X] [--dx-lambda-d X] [--shape cic|tsc]\n"
+            "                               [--wc-dt X] [--dx-lambda-d X] [--shape cic|tsc] [--history DIR]\n"
             "Runs the electrostatic particle-in-cell plasma's verification cases and prints CSV\n"
             "case,parameter,measured,expected,rel_error; expected comes from theory (frequencies and rates in\n"
             "units of the plasma frequency omega_p); rows of a run's settings, and the heating rates (no closed\n"
@@ -110,6 +144,11 @@ int runPlasmaCommand(int argc, char** argv, std::ostream& out, std::ostream& err
         plasma::ParticleShape shape = plasma::ParticleShape::CloudInCell;
         cli.addChoice("shape", &shape, kShapes,
                       "the heating case's particle shape: cic (cloud-in-cell, default) or tsc (triangular-shaped cloud)");
+        std::string historyDirectory;
+        cli.add()("history", po::value<std::string>(&historyDirectory),
+                  "an existing folder: each case run, except boris and exb, also writes there CASE.csv "
+                  "(heating: heating-dxX.csv, X = dx/lambda_D), the samples its measurement used against time "
+                  "(in 1/omega_p; diocotron in 1/omega_D), with the fit's window and lines");
         cli.addPositional("action", &actionName);
         if (!cli.parse(argc, argv)) {
             out << cli.help();
@@ -138,22 +177,40 @@ int runPlasmaCommand(int argc, char** argv, std::ostream& out, std::ostream& err
         if (shape != plasma::ParticleShape::CloudInCell && device == Device::Gpu)
             throw cli.usageError("--shape tsc runs only on --device cpu (the GPU step deposits by cloud-in-cell)");
 
+        if (cli.given("history")) requireWritableDirectory(historyDirectory);
+
         const auto runs = [chosen](Case c) { return chosen == Case::All || chosen == c; };
+        // Prints a case's rows, and with --history writes its history as FILE.csv.
+        const auto runCase = [&](const std::string& name, const std::string& file, const auto& verify) {
+            plasma::VerifyHistory history;
+            printRows(out, name, verify(historyDirectory.empty() ? nullptr : &history));
+            if (!historyDirectory.empty() && !history.columns.empty())
+                writeHistory(historyDirectory, file, history);
+        };
         const auto runCases = [&](const plasma::PicDevice& on) {
             out << "case,parameter,measured,expected,rel_error\n";
-            if (runs(Case::Langmuir)) printRows(out, "langmuir", plasma::verifyLangmuir(wpDt, on));
-            if (runs(Case::Langmuir2D)) printRows(out, "langmuir-2d", plasma::verifyLangmuir2D(wpDt, 256, on));
-            if (runs(Case::Langmuir3D)) printRows(out, "langmuir-3d", plasma::verifyLangmuir3D(wpDt, 32, on));
+            if (runs(Case::Langmuir))
+                runCase("langmuir", "langmuir", [&](auto h) { return plasma::verifyLangmuir(wpDt, on, h); });
+            if (runs(Case::Langmuir2D))
+                runCase("langmuir-2d", "langmuir-2d",
+                        [&](auto h) { return plasma::verifyLangmuir2D(wpDt, 256, on, h); });
+            if (runs(Case::Langmuir3D))
+                runCase("langmuir-3d", "langmuir-3d", [&](auto h) { return plasma::verifyLangmuir3D(wpDt, 32, on, h); });
             if (runs(Case::Boris)) printRows(out, "boris", plasma::verifyBoris(wcDt, 1000, on));
             if (runs(Case::ExB)) printRows(out, "exb", plasma::verifyExB(wcDt, on));
-            if (runs(Case::TwoStream)) printRows(out, "two-stream", plasma::verifyTwoStream(wpDt, on));
-            if (runs(Case::Energy)) printRows(out, "energy", plasma::verifyEnergy(wpDt, on));
+            if (runs(Case::TwoStream))
+                runCase("two-stream", "two-stream", [&](auto h) { return plasma::verifyTwoStream(wpDt, on, h); });
+            if (runs(Case::Energy))
+                runCase("energy", "energy", [&](auto h) { return plasma::verifyEnergy(wpDt, on, h); });
             if (runs(Case::Heating))
                 for (const double spacing : heatingSpacings)
-                    printRows(out, "heating", plasma::verifyHeating(wpDt, spacing, 1, on));
-            if (runs(Case::Landau)) printRows(out, "landau", plasma::verifyLandau(wpDt, 1 << 20, on));
+                    runCase("heating", "heating-dx" + number(spacing),
+                            [&](auto h) { return plasma::verifyHeating(wpDt, spacing, 1, on, 64, h); });
+            if (runs(Case::Landau))
+                runCase("landau", "landau", [&](auto h) { return plasma::verifyLandau(wpDt, 1 << 20, on, h); });
             if (runs(Case::Diocotron))
-                printRows(out, "diocotron", plasma::verifyDiocotron(kDiocotronWcDt, 0.1, on));
+                runCase("diocotron", "diocotron",
+                        [&](auto h) { return plasma::verifyDiocotron(kDiocotronWcDt, 0.1, on, h); });
         };
         if (device == Device::Gpu) {
             const auto context = gl::createContext(gl::Backend::Egl);

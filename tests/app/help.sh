@@ -135,4 +135,16 @@ expect 2 "^aurorawall plasma: --solver applies only to --device gpu" plasma veri
 expect 0 "--shape" plasma --help
 expect 2 "^aurorawall plasma: --shape: unknown value 'ngp' \(allowed: cic, tsc\)" plasma verify --case heating --shape ngp
 expect 2 "^aurorawall plasma: --shape applies only to --case heating" plasma verify --case landau --shape tsc
+# plasma verify --history: a folder that is not there is a runtime failure before any case runs; into
+# one that is, two-stream writes two-stream.csv (the fit's numbers, then the table) and nothing else.
+expect 0 "--history DIR" plasma --help
+expect 1 "^aurorawall plasma: --history: '.*/no-such-folder' is not a directory" \
+    plasma verify --case two-stream --history "$WORK/no-such-folder"
+mkdir -p "$WORK/history"
+"$AW" plasma verify --case two-stream --history "$WORK/history" >"$WORK/out" || fail "plasma verify --history: exit status $?"
+[ "$(ls "$WORK/history")" = two-stream.csv ] || fail "plasma verify --history wrote: $(ls "$WORK/history")"
+grep -q "^# fitted_rate = 0.3535" "$WORK/history/two-stream.csv" &&
+    grep -q "^t_wp,field_mode_V_per_m,in_fit,fitted,expected$" "$WORK/history/two-stream.csv" ||
+    fail "plasma verify --history: two-stream.csv lacks the fitted rate or the columns"
+echo "ok   0  aurorawall plasma verify --case two-stream --history DIR: two-stream.csv"
 echo "PASS help"

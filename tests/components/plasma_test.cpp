@@ -21,7 +21,10 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
+#include <map>
 #include <random>
+#include <sstream>
+#include <string>
 
 // The shared kernels in double (a named namespace: not every function is used).
 namespace aurorawall::plasma_test::f64 {
@@ -444,4 +447,110 @@ TEST(PlasmaVerify, Langmuir3DFollowsTheLeapfrogRelationAndTheGridDispersion)
         EXPECT_NEAR(signedError, -gridDispersion, 0.15 * gridDispersion) << "omega_p dt = " << wpDt;
     }
     EXPECT_THROW(verifyLangmuir3D(2.0), std::domain_error);
+}
+
+namespace {
+
+// A history written by writeHistoryCsv, read back: the "# name = value" lines and the table by column.
+struct WrittenHistory {
+    std::map<std::string, double> fit;
+    std::map<std::string, std::vector<double>> columns;
+};
+
+WrittenHistory writtenHistory(const VerifyHistory& history)
+{
+    std::ostringstream csv;
+    writeHistoryCsv(csv, history);
+    std::istringstream in(csv.str());
+    WrittenHistory written;
+    std::vector<std::string> names;
+    std::string line;
+    while (std::getline(in, line)) {
+        if (line.rfind("# ", 0) == 0) {
+            const std::size_t equals = line.find(" = ");
+            written.fit[line.substr(2, equals - 2)] = std::stod(line.substr(equals + 3));
+            continue;
+        }
+        std::istringstream cells(line);
+        std::string cell;
+        for (std::size_t c = 0; std::getline(cells, cell, ','); ++c) {
+            if (names.size() < history.columns.size())
+                names.push_back(cell);
+            else
+                written.columns[names[c]].push_back(std::stod(cell));
+        }
+    }
+    return written;
+}
+
+} // namespace
+
+// The langmuir history is the mode at every step of the 20 plasma periods, from t = 0 at ω_pΔt apart,
+// and the frequency refitted from the written samples (9 significant digits) is the printed one: the
+// samples' rounding (5e-10) moves cos(ωΔt) by about that, ωΔt by 5e-9 at ω_pΔt = 0.2, far below 1e-7.
+TEST(PlasmaVerify, LangmuirHistoryHoldsTheSamplesTheFrequencyCameFrom)
+{
+    constexpr double kWpDt = 0.2;
+    VerifyHistory history;
+    const VerifyRow r = row(verifyLangmuir(kWpDt, cpuDevice(), &history), "omega_over_wp");
+    const WrittenHistory written = writtenHistory(history);
+    const std::vector<double>& t = written.columns.at("t_wp");
+    const std::vector<double>& s = written.columns.at("field_mode");
+    ASSERT_EQ(t.size(), std::size_t(std::ceil(20 * 2.0 * kPiValue / kWpDt)) + 1);
+    ASSERT_EQ(s.size(), t.size());
+    for (std::size_t n = 0; n < t.size(); ++n)
+        EXPECT_NEAR(t[n], double(n) * kWpDt, 1e-9 * t.back());
+    // An independent least squares for cos(ωΔt): s_{n+1} + s_{n−1} = 2 cos(ωΔt) s_n.
+    double numerator = 0.0, denominator = 0.0;
+    for (std::size_t n = 1; n + 1 < s.size(); ++n) {
+        numerator += s[n] * (s[n + 1] + s[n - 1]);
+        denominator += 2.0 * s[n] * s[n];
+    }
+    const double refitted = std::acos(numerator / denominator) / kWpDt;
+    EXPECT_NEAR(refitted, r.measured, 1e-7 * r.measured);
+    EXPECT_NEAR(written.fit.at("fitted_omega"), r.measured, 1e-8 * r.measured);
+    EXPECT_NEAR(written.fit.at("expected_omega"), *r.expected, 1e-8 * *r.expected);
+}
+
+// The two-stream history holds every step from t = 0, the fit's window (from 6 e-foldings of the
+// expected rate) marked; the slope of ln|E_1| refitted over the marked written samples is the printed
+// growth rate (to 1e-7: the samples carry 9 digits, the window 3 e-foldings), and the window's samples
+// grow by about e³ from the first to the last.
+TEST(PlasmaVerify, TwoStreamHistoryHoldsTheSamplesTheRateCameFrom)
+{
+    constexpr double kWpDt = 0.2;
+    VerifyHistory history;
+    const VerifyRow r = row(verifyTwoStream(kWpDt, cpuDevice(), &history), "growth_rate_over_wp");
+    const WrittenHistory written = writtenHistory(history);
+    const std::vector<double>& t = written.columns.at("t_wp");
+    const std::vector<double>& amplitude = written.columns.at("field_mode_V_per_m");
+    const std::vector<double>& inFit = written.columns.at("in_fit");
+    const double gamma = 1.0 / (2.0 * std::sqrt(2.0)); // ω_p/(2√2), the cold symmetric beams' fastest growth
+    ASSERT_EQ(t.size(), std::size_t(std::ceil(9.0 / (gamma * kWpDt))) + 1);
+    EXPECT_EQ(t.front(), 0.0);
+    std::vector<double> ft, fy;
+    for (std::size_t n = 0; n < t.size(); ++n) {
+        EXPECT_NEAR(t[n], double(n) * kWpDt, 1e-9 * t.back());
+        EXPECT_EQ(inFit[n], t[n] >= 6.0 / gamma ? 1.0 : 0.0) << t[n];
+        if (inFit[n] == 1.0) {
+            ft.push_back(t[n]);
+            fy.push_back(std::log(amplitude[n]));
+        }
+    }
+    ASSERT_GT(ft.size(), 20u);
+    EXPECT_NEAR(fy.back() - fy.front(), 3.0, 0.2);
+    double mt = 0.0, my = 0.0;
+    for (std::size_t i = 0; i < ft.size(); ++i) {
+        mt += ft[i] / double(ft.size());
+        my += fy[i] / double(ft.size());
+    }
+    double stt = 0.0, sty = 0.0;
+    for (std::size_t i = 0; i < ft.size(); ++i) {
+        stt += (ft[i] - mt) * (ft[i] - mt);
+        sty += (ft[i] - mt) * (fy[i] - my);
+    }
+    EXPECT_NEAR(sty / stt, r.measured, 1e-7 * r.measured);
+    EXPECT_NEAR(written.fit.at("fitted_rate"), r.measured, 1e-8 * r.measured);
+    EXPECT_NEAR(written.fit.at("expected_rate"), gamma, 1e-8);
+    EXPECT_NEAR(written.fit.at("fit_start"), 6.0 / gamma, 1e-7);
 }

@@ -11,9 +11,11 @@
 #include <glm/vec3.hpp>
 
 #include <cstdint>
+#include <iosfwd>
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace aurorawall::plasma {
@@ -27,6 +29,19 @@ struct VerifyRow {
     // |measured − expected|/|expected|, or |measured − expected| where expected is 0.
     double relativeError() const;
 };
+
+// The samples a case measured, for plotting and refitting: one row per time (in 1/ω_p, or 1/ω_D for
+// diocotron), the first column the time; an empty cell (NaN) where a column has no value then. The
+// fit's window, its result and the theory's value as named numbers; the fitted and the theory's line
+// (where the case has them) evaluated at every row as columns.
+struct VerifyHistory {
+    std::vector<std::string> columns;
+    std::vector<std::vector<double>> rows;
+    std::vector<std::pair<std::string, double>> fit;
+};
+
+// The history as CSV: a comment line "# name = value" for each fit number, the column names, the rows.
+void writeHistoryCsv(std::ostream& out, const VerifyHistory& history);
 
 // A particle-in-cell run of a case: electrons advanced one step at a time in their own field.
 class PicRun {
@@ -64,14 +79,17 @@ const PicDevice& cpuDevice(ParticleShape shape = ParticleShape::CloudInCell);
 // s_{n+1} + s_{n−1} = 2 cos(ωΔt) s_n exactly, so cos(ωΔt) by least squares over the samples.
 double sampledCosineFrequency(const std::vector<double>& s);
 
+// Each case fills `history`, where given, with the samples its measurement used.
+
 // Cold plasma oscillation: frequency against sin(ωΔt/2) = ω_pΔt/2 (0 < ω_pΔt < 2).
-std::vector<VerifyRow> verifyLangmuir(double plasmaFrequencyTimesDt, const PicDevice& device = cpuDevice());
+std::vector<VerifyRow> verifyLangmuir(double plasmaFrequencyTimesDt, const PicDevice& device = cpuDevice(),
+                                      VerifyHistory* history = nullptr);
 // The same on a 2D grid, the wave along the diagonal of a square box.
 std::vector<VerifyRow> verifyLangmuir2D(double plasmaFrequencyTimesDt, int cellsPerAxis = 256,
-                                        const PicDevice& device = cpuDevice());
+                                        const PicDevice& device = cpuDevice(), VerifyHistory* history = nullptr);
 // The same on a 3D grid, the wave vector 2π(1, 1, 1)/L along the body diagonal of a cube.
 std::vector<VerifyRow> verifyLangmuir3D(double plasmaFrequencyTimesDt, int cellsPerAxis = 32,
-                                        const PicDevice& device = cpuDevice());
+                                        const PicDevice& device = cpuDevice(), VerifyHistory* history = nullptr);
 // One electron in a uniform B: rotation per step against 2·atan(ω_cΔt/2), and the relative change of
 // its speed over the run (expected 0: rounding only). ω_cΔt > 0.
 std::vector<VerifyRow> verifyBoris(double cyclotronFrequencyTimesDt, long steps = 1000,
@@ -80,25 +98,29 @@ std::vector<VerifyRow> verifyBoris(double cyclotronFrequencyTimesDt, long steps 
 // velocity) against E×B/B², in units of |E|/|B|, along E×B and along E.
 std::vector<VerifyRow> verifyExB(double cyclotronFrequencyTimesDt, const PicDevice& device = cpuDevice());
 // Cold symmetric two-stream at k v₀ = √(3/8) ω_p: the growth rate of the field amplitude.
-std::vector<VerifyRow> verifyTwoStream(double plasmaFrequencyTimesDt, const PicDevice& device = cpuDevice());
+std::vector<VerifyRow> verifyTwoStream(double plasmaFrequencyTimesDt, const PicDevice& device = cpuDevice(),
+                                       VerifyHistory* history = nullptr);
 // A thermal plasma (random start, Δx = λ_D) over a long run: the relative drift of the total energy.
-std::vector<VerifyRow> verifyEnergy(double plasmaFrequencyTimesDt, const PicDevice& device = cpuDevice());
+// With a history the energies of every step are kept (on the GPU each costs a read-back).
+std::vector<VerifyRow> verifyEnergy(double plasmaFrequencyTimesDt, const PicDevice& device = cpuDevice(),
+                                    VerifyHistory* history = nullptr);
 // Numerical heating of a thermal plasma (random start, `seed`, particlesPerCell on 64 cells) on a grid
 // of spacing dxOverDebyeLength · λ_D: the rate d(kT)/dt/(kT ω_p) of the temperature along x, from a
 // least-squares line through kT_x(t). No closed form: the grid's aliasing heats ever faster as Δx/λ_D
 // grows past ~1 (Birdsall & Langdon 1991, ch. 12). dxOverDebyeLength > 0, particlesPerCell ≥ 1.
 std::vector<VerifyRow> verifyHeating(double plasmaFrequencyTimesDt, double dxOverDebyeLength, std::uint64_t seed = 1,
-                                     const PicDevice& device = cpuDevice(), int particlesPerCell = 64);
+                                     const PicDevice& device = cpuDevice(), int particlesPerCell = 64,
+                                     VerifyHistory* history = nullptr);
 // Landau damping of a Langmuir wave at k λ_D = 0.5 (quiet Maxwellian of `particles`, a power of two,
 // on 64 cells): frequency and damping rate against the root of the kinetic dispersion relation.
 std::vector<VerifyRow> verifyLandau(double plasmaFrequencyTimesDt, int particles = 1 << 20,
-                                    const PicDevice& device = cpuDevice());
+                                    const PicDevice& device = cpuDevice(), VerifyHistory* history = nullptr);
 
 // The diocotron instability of a cold electron strip (thickness 2a, mode 1 at ka = 0.4) in a strong
 // B on a 2D grid: the exponential growth rate of the mode's field energy, halved, against the
 // guiding-centre rate diocotronGrowthRate, in units of ω_D = ω_p²/ω_c. ω_cΔt > 0, ω_p/ω_c in (0, 1),
 // ω_pΔt < 2.
 std::vector<VerifyRow> verifyDiocotron(double cyclotronFrequencyTimesDt, double plasmaOverCyclotronFrequency = 0.1,
-                                       const PicDevice& device = cpuDevice());
+                                       const PicDevice& device = cpuDevice(), VerifyHistory* history = nullptr);
 
 } // namespace aurorawall::plasma
