@@ -88,3 +88,69 @@ TEST(CurtainField, KeptTexturesHoldTheBytesOfAFreshBuild)
         EXPECT_EQ(readBack(running.polylines()), readBack(fresh.polylines())) << "t = " << t;
     }
 }
+
+// Fixed steps of 0.5 s through the moving keys: from the fourth frame on (after two equal steps),
+// every rebuild takes the build made ahead on the worker thread, and its textures hold the bytes of
+// a field that built only this frame itself.
+TEST(CurtainField, BuildAheadHoldsTheBytesOfTheFramesOwnBuild)
+{
+    const auto context = gl::createContext(gl::Backend::Egl);
+    const components::aurora::Settings settings = movingArc();
+    const components::aurora::CurtainModel model(settings, 6371.0, nullptr);
+    CurtainField running(model);
+    for (int n = 0; n <= 8; ++n) {
+        const double t = 12.0 + 0.5 * n;
+        running.update(t);
+        EXPECT_EQ(running.rebuilds(), size_t(n + 1));
+        EXPECT_EQ(running.rebuildsBuiltAhead(), size_t(n < 3 ? 0 : n - 2)) << "t = " << t;
+        CurtainField fresh(model);
+        fresh.update(t);
+        EXPECT_EQ(fresh.rebuildsBuiltAhead(), 0u);
+        EXPECT_EQ(readBack(running.footprintMap()), readBack(fresh.footprintMap())) << "t = " << t;
+        EXPECT_EQ(readBack(running.polylines()), readBack(fresh.polylines())) << "t = " << t;
+    }
+}
+
+// A step that breaks the pattern: the build made ahead for 16 s is dropped and the frame at 15.7 s
+// builds its own curtains, equal to a fresh field's; so does the next (the steps differ, and the
+// last prediction was wrong, so nothing was built ahead).
+TEST(CurtainField, WrongPredictionBuildsTheFrameItself)
+{
+    const auto context = gl::createContext(gl::Backend::Egl);
+    const components::aurora::Settings settings = movingArc();
+    const components::aurora::CurtainModel model(settings, 6371.0, nullptr);
+    CurtainField running(model);
+    for (double t : {14.0, 14.5, 15.0, 15.5})
+        running.update(t);
+    EXPECT_EQ(running.rebuildsBuiltAhead(), 1u); // 15.5 s, predicted after 15 s
+    for (double t : {15.7, 16.1}) {
+        running.update(t);
+        EXPECT_EQ(running.rebuildsBuiltAhead(), 1u) << "t = " << t;
+        CurtainField fresh(model);
+        fresh.update(t);
+        EXPECT_EQ(readBack(running.footprintMap()), readBack(fresh.footprintMap())) << "t = " << t;
+        EXPECT_EQ(readBack(running.polylines()), readBack(fresh.polylines())) << "t = " << t;
+    }
+    EXPECT_EQ(running.rebuilds(), 6u);
+}
+
+// The unit-free half of the build: buildCurtains made on a worker thread equals the same call on
+// this thread, byte for byte (texels and polylines), at times where the curtains move.
+TEST(CurtainField, BuildOnAWorkerThreadEqualsTheSameBuildHere)
+{
+    const components::aurora::Settings settings = movingArc();
+    const components::aurora::CurtainModel model(settings, 6371.0, nullptr);
+    components::aurora::CurtainBuildAhead ahead(model);
+    for (double t : {11.0, 13.25, 19.5}) {
+        const auto states = model.statesAt(t);
+        const components::aurora::CurtainBuild here = components::aurora::buildCurtains(model, states);
+        ahead.start(states);
+        const auto there = ahead.take(components::aurora::controlPointsOf(states));
+        ASSERT_TRUE(there.has_value()) << "t = " << t;
+        EXPECT_EQ(there->polylineTexels, here.polylineTexels) << "t = " << t;
+        EXPECT_EQ(there->map.texels, here.map.texels) << "t = " << t;
+        EXPECT_EQ(there->pointCounts, here.pointCounts) << "t = " << t;
+    }
+    ahead.start(model.statesAt(13.0));
+    EXPECT_FALSE(ahead.take(components::aurora::controlPointsOf(model.statesAt(13.5))).has_value());
+}

@@ -1,0 +1,86 @@
+#include "components/aurora/curtain_build.h"
+
+#include "components/aurora/physics/curtain_geometry.h"
+#include "common/constants.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace aurorawall::components::aurora {
+
+namespace {
+
+// The map's cap: centred on the mean direction of all curtain points, wide enough to hold every
+// point and the emitting band around it (reach) with room for the map's margin.
+physics::FootprintMapSpec capAround(const std::vector<physics::CurtainPolyline>& curtains, double extraKm,
+                                   double planetRadiusKm, int size)
+{
+    glm::dvec3 sum(0.0);
+    for (const auto& c : curtains)
+        for (const glm::dvec3& p : c.points)
+            sum += p;
+    const glm::dvec3 centre = glm::length(sum) > 0.0 ? glm::normalize(sum) : glm::dvec3(0, 0, 1);
+    double radius = 0.0;
+    for (const auto& c : curtains)
+        for (const glm::dvec3& p : c.points)
+            radius = std::max(radius, std::acos(std::clamp(glm::dot(p, centre), -1.0, 1.0)));
+    physics::FootprintMapSpec spec;
+    const glm::dvec2 latLon = physics::latLonFromUnit(centre);
+    spec.centreLatitudeDeg = latLon.x;
+    spec.centreLongitudeDeg = latLon.y;
+    spec.angularRadiusDeg = std::min(90.0, (radius + extraKm / planetRadiusKm) / kDegree + 0.5);
+    spec.size = size;
+    return spec;
+}
+
+} // namespace
+
+ControlPoints controlPointsOf(const std::vector<CurtainState>& states)
+{
+    ControlPoints points;
+    for (const CurtainState& s : states)
+        points.push_back(s.controlPointsLatLonDeg);
+    return points;
+}
+
+CurtainBuild buildCurtains(const CurtainModel& model, const std::vector<CurtainState>& states)
+{
+    const Settings& aurora = model.settings();
+    CurtainBuild build;
+    build.controlPoints = controlPointsOf(states);
+    std::vector<physics::CurtainPolyline> polylines;
+    size_t widest = 1;
+    for (const CurtainState& s : states) {
+        polylines.push_back(model.footprint(s));
+        const size_t n = polylines.back().points.size();
+        widest = std::max(widest, n);
+        build.pointCounts.push_back(n);
+        build.pointTotal += n;
+    }
+
+    const size_t rows = std::max<size_t>(polylines.size(), 1);
+    build.polylineWidth = static_cast<int>(widest);
+    build.polylineRows = static_cast<int>(rows);
+    build.polylineTexels.assign(4 * widest * rows, 0.0f);
+    for (size_t c = 0; c < polylines.size(); ++c)
+        for (size_t k = 0; k < widest; ++k) {
+            const size_t j = std::min(k, polylines[c].points.size() - 1);
+            const glm::dvec3& p = polylines[c].points[j];
+            float* t = &build.polylineTexels[4 * (c * widest + k)];
+            t[0] = static_cast<float>(p.x);
+            t[1] = static_cast<float>(p.y);
+            t[2] = static_cast<float>(p.z);
+            t[3] = static_cast<float>(polylines[c].arclengthKm[j]);
+        }
+
+    // The cap must hold every curtain's emitting band plus the map's margin (at most a few texels).
+    // The reach is the shader's float uniform, so the map is exact for that same value.
+    const double reachKm = static_cast<float>(model.reachKm());
+    const double extraKm = reachKm + 2.0 * aurora.polylineSpacingKm + 100.0;
+    physics::FootprintMapSpec spec = capAround(polylines, extraKm, model.planetRadiusKm(), aurora.footprintMapSize);
+    spec.reachKm = reachKm;
+    build.map = physics::buildFootprintMap(polylines, spec, model.planetRadiusKm());
+    return build;
+}
+
+} // namespace aurorawall::components::aurora

@@ -1,0 +1,32 @@
+#pragma once
+// Builds the curtains of a predicted next frame on a worker thread while this frame draws. The
+// build is buildCurtains of the predicted states, so when the next frame's control points are
+// exactly the predicted ones it holds the same bytes as a build on the frame's own thread.
+#include "components/aurora/curtain_build.h"
+
+#include <future>
+#include <optional>
+#include <vector>
+
+namespace aurorawall::components::aurora {
+
+class CurtainBuildAhead {
+public:
+    explicit CurtainBuildAhead(const CurtainModel& model) : model_(model) {}
+    CurtainBuildAhead(const CurtainBuildAhead&) = delete;
+    CurtainBuildAhead& operator=(const CurtainBuildAhead&) = delete;
+    ~CurtainBuildAhead();
+
+    // Starts building the curtains of these states (after the one under way, if any, has finished).
+    void start(std::vector<CurtainState> states);
+    // The started build if its control points are exactly these, waiting for it to finish; otherwise
+    // nothing (a build under way is finished and dropped). Nothing is under way afterwards.
+    std::optional<CurtainBuild> take(const ControlPoints& controlPoints);
+
+private:
+    const CurtainModel& model_;
+    std::future<CurtainBuild> pending_;
+    ControlPoints pendingControlPoints_;
+};
+
+} // namespace aurorawall::components::aurora
