@@ -114,8 +114,8 @@ echo "ok   0  aurorawall mie --n 1.5 --k 0 --x 10: Qext $(sed -n 2p "$WORK/mie.c
 # plasma: the action, the case and the leapfrog's stability limit.
 expect 0 "--wp-dt" plasma --help
 expect 2 "^aurorawall plasma: unrecognised option '--bogus'" plasma verify --bogus
-expect 2 "^aurorawall plasma: missing the action \(allowed: verify\)" plasma
-expect 2 "^aurorawall plasma: unknown action 'run' \(allowed: verify\)" plasma run
+expect 2 "^aurorawall plasma: missing the action \(allowed: verify, soak, accuracy\)" plasma
+expect 2 "^aurorawall plasma: unknown action 'run' \(allowed: verify, soak, accuracy\)" plasma run
 expect 2 "^aurorawall plasma: --case: unknown value 'ion-acoustic' \(allowed: all, langmuir, .*landau, diocotron\)" \
     plasma verify --case ion-acoustic
 expect 2 "^aurorawall plasma: --wp-dt must be in \(0, 2\): the leapfrog is unstable" plasma verify --wp-dt 2
@@ -132,4 +132,16 @@ expect 0 "--solver" plasma --help
 expect 2 "^aurorawall plasma: --solver: unknown value 'fft' \(allowed: fft-cpu, jacobi, sor, multigrid\)" \
     plasma verify --device gpu --solver fft
 expect 2 "^aurorawall plasma: --solver applies only to --device gpu" plasma verify --case boris --solver sor
+# plasma soak and plasma accuracy: their options.
+expect 0 "--every" plasma soak --help
+expect 2 "^aurorawall plasma soak: the option '--scene' is required but missing" plasma soak
+expect 2 "^aurorawall plasma soak: --steps must be >= 1" plasma soak --scene "$SRC_DIR/config/scenes/plasma-curls.toml" --steps 0
+expect 2 "^aurorawall plasma soak: .*config/scenes/quiet-arc.toml: the scene does not list plasma" \
+    plasma soak --scene "$SRC_DIR/config/scenes/quiet-arc.toml" --steps 1
+expect 1 "^aurorawall plasma soak: .*missing.toml" plasma soak --scene missing.toml
+expect 2 "^aurorawall plasma soak: --device: unknown value 'tpu' \(allowed: cpu, gpu\)" \
+    plasma soak --scene "$SRC_DIR/config/scenes/plasma-curls.toml" --device tpu
+expect 0 "--table" plasma accuracy --help
+expect 2 "^aurorawall plasma accuracy: --table: unknown value 'noise' \(allowed: all, particles, time-step, solvers\)" \
+    plasma accuracy --table noise
 echo "PASS help"
