@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <functional>
 #include <ostream>
@@ -32,9 +33,12 @@ constexpr double kThermalSpeed = 4.19e5; // m/s: 1 eV electrons
 const int kParticlesPerCell[] = {1, 2, 4, 8, 16, 32, 64};
 const double kWpDt[] = {0.05, 0.1, 0.2, 0.4, 0.8, 1.2, 1.5};
 
-enum class Table { All, Particles, TimeStep, Solvers };
-const cli::Choices<Table> kTables = {
-    {"all", Table::All}, {"particles", Table::Particles}, {"time-step", Table::TimeStep}, {"solvers", Table::Solvers}};
+enum class Table { All, Particles, TimeStep, Solvers, Heating };
+const cli::Choices<Table> kTables = {{"all", Table::All},
+                                     {"particles", Table::Particles},
+                                     {"time-step", Table::TimeStep},
+                                     {"solvers", Table::Solvers},
+                                     {"heating", Table::Heating}};
 
 double milliseconds(const std::function<void()>& work)
 {
@@ -110,6 +114,22 @@ void printSolvers(std::ostream& out)
                 << number(r.residual) << ',' << number(r.fieldError) << ',' << number(r.msPerSolve) << '\n';
             out.flush();
         }
+}
+
+void printHeating(std::ostream& out)
+{
+    out << "particles_per_cell,wp_dt,seed,heating_rate_over_wp,ms_per_step\n";
+    const auto print = [&out](const HeatingRow& r) {
+        out << r.particlesPerCell << ',' << r.wpDt << ',' << r.seed << ',' << number(r.rate) << ','
+            << number(r.msPerStep) << '\n';
+        out.flush();
+    };
+    for (int ppc : {8, 16, 32, 64, 128})
+        for (int seed : {1, 2})
+            print(heatingRate(ppc, 0.2, seed));
+    for (double wpDt : {0.05, 0.1, 0.4, 0.8, 1.2})
+        for (int seed : {1, 2})
+            print(heatingRate(64, wpDt, seed));
 }
 
 } // namespace
@@ -200,17 +220,47 @@ std::vector<SolverRow> solverTable(int dimension, int cellsPerAxis)
     return rows;
 }
 
+HeatingRow heatingRate(int particlesPerCell, double wpDt, int seed)
+{
+    constexpr int kCells = 64;
+    constexpr double kFitStart = 10.0, kFitEnd = 200.0; // 1/ω_p
+    const pic::PeriodicGrid grid(1, {kCells, 1, 1}, {8.0 * debyeLength(), 1.0, 1.0});
+    const int count = particlesPerCell * kCells;
+    pic::ElectrostaticPic sim(grid, pic::randomStart(grid, count, kDensity, kThermalSpeed, std::uint64_t(seed)),
+                              glm::dvec3(0.0), wpDt / pic::plasmaFrequency(kDensity));
+    // Least squares of kT_x/kT₀ against ω_p t at each half step in the window.
+    double n = 0.0, st = 0.0, sk = 0.0, stt = 0.0, stk = 0.0;
+    const long steps = long(std::ceil(kFitEnd / wpDt));
+    HeatingRow r{particlesPerCell, wpDt, seed, 0.0, 0.0};
+    r.msPerStep = milliseconds([&] {
+                      for (long step = 0; step < steps; ++step) {
+                          sim.step();
+                          const double t = (double(step) + 0.5) * wpDt;
+                          if (t < kFitStart) continue;
+                          double sum = 0.0;
+                          for (const glm::dvec3& v : sim.electrons().velocity)
+                              sum += v.x * v.x;
+                          const double kT = sum / (double(count) * kThermalSpeed * kThermalSpeed);
+                          n += 1.0, st += t, sk += kT, stt += t * t, stk += t * kT;
+                      }
+                  }) /
+                  double(steps);
+    r.rate = (n * stk - st * sk) / (n * stt - st * st);
+    return r;
+}
+
 int runPlasmaAccuracyCommand(int argc, char** argv, std::ostream& out, std::ostream& err)
 {
     return cli::runCommand("plasma accuracy", out, err, [&] {
         cli::CommandLine cli(
             "plasma accuracy",
-            "Usage: aurorawall plasma accuracy [--table all|particles|time-step|solvers]\n"
+            "Usage: aurorawall plasma accuracy [--table all|particles|time-step|solvers|heating]\n"
             "The particle-in-cell plasma's error against its run time, as CSV tables, the cost measured on the spot\n"
             "(ms of wall-clock time on this machine): particles, the density noise of a thermal plasma against\n"
             "particles per cell against its closed form for a random start; time-step, the largest relative\n"
             "energy error over a fixed physical time against omega_p dt; solvers, the Poisson residual and the\n"
-            "field error against the FFT of Jacobi's 20 and 200 sweeps (docs/PLASMA.md).\n"
+            "field error against the FFT of Jacobi's 20 and 200 sweeps; heating, the numerical heating rate at\n"
+            "dx = 8 Debye lengths against particles per cell and omega_p dt (docs/PLASMA.md).\n"
             "Exit status: 0 success, 1 output not written, 2 usage error.\n");
         Table table = Table::All;
         cli.addChoice("table", &table, kTables, "the table to print (all: each in turn, after a blank line)");
@@ -227,6 +277,7 @@ int runPlasmaAccuracyCommand(int argc, char** argv, std::ostream& out, std::ostr
         if (prints(Table::Particles)) separate(), printParticles(out);
         if (prints(Table::TimeStep)) separate(), printTimeSteps(out);
         if (prints(Table::Solvers)) separate(), printSolvers(out);
+        if (prints(Table::Heating)) separate(), printHeating(out);
     });
 }
 

@@ -4,6 +4,7 @@
 //   particles   the density noise of a thermal plasma against particles per cell, quiet and random
 //   time-step   the relative energy error over a fixed physical time against ω_pΔt
 //   solvers     the Poisson solvers (FFT, Jacobi 20 and 200 sweeps) against the FFT
+//   heating     the numerical heating rate at Δx = 8 λ_D against particles per cell and ω_pΔt
 #include <iosfwd>
 #include <optional>
 #include <string>
@@ -55,6 +56,18 @@ struct SolverRow {
     double msPerSolve = 0.0;
 };
 std::vector<SolverRow> solverTable(int dimension, int cellsPerAxis);
+
+// The numerical heating of a 1 eV plasma (1D random start, 64 cells, Δx = 8 λ_D, no B), as the verify
+// case heating measures it: the least-squares slope of kT_x/kT₀ = ⟨v_x²⟩/v_th² against ω_p t between
+// 10 and 200 /ω_p (d(kT)/dt/(kT ω_p)); here with the particles per cell and the seed as parameters.
+struct HeatingRow {
+    int particlesPerCell = 64;
+    double wpDt = 0.2;
+    int seed = 1;
+    double rate = 0.0;
+    double msPerStep = 0.0;
+};
+HeatingRow heatingRate(int particlesPerCell, double wpDt, int seed);
 
 // argv[0] is the action's name ("accuracy"). Prints the chosen table (or all, each after a blank
 // line). Returns the exit status (app/cli/exit_status.h).

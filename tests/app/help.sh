@@ -142,6 +142,6 @@ expect 1 "^aurorawall plasma soak: .*missing.toml" plasma soak --scene missing.t
 expect 2 "^aurorawall plasma soak: --device: unknown value 'tpu' \(allowed: cpu, gpu\)" \
     plasma soak --scene "$SRC_DIR/config/scenes/plasma-curls.toml" --device tpu
 expect 0 "--table" plasma accuracy --help
-expect 2 "^aurorawall plasma accuracy: --table: unknown value 'noise' \(allowed: all, particles, time-step, solvers\)" \
+expect 2 "^aurorawall plasma accuracy: --table: unknown value 'noise' \(allowed: all, particles, time-step, solvers, heating\)" \
     plasma accuracy --table noise
 echo "PASS help"
