@@ -160,7 +160,9 @@ TEST(PlasmaStiff, SelfConsistentEnergyKeptAtLargeOmegaCDt)
     for (const double wcDt : {10.0, 100.0, 1000.0}) {
         const double worst = largestEnergyChange(wcDt);
         EXPECT_LT(worst, 0.05) << "omega_c dt = " << wcDt;
-        if (wcDt >= 100.0) EXPECT_LT(worst, unmagnetised) << "omega_c dt = " << wcDt;
+        if (wcDt >= 100.0) {
+            EXPECT_LT(worst, unmagnetised) << "omega_c dt = " << wcDt;
+        }
     }
 }
 
