@@ -2,6 +2,8 @@
 
 #include "app/cli/command_line.h"
 #include "app/cli/exit_status.h"
+#include "app/plasma_accuracy.h"
+#include "app/plasma_soak.h"
 #include "common/data_dir.h"
 #include "components/plasma/gpu/gpu_verify_cases.h"
 #include "components/plasma/simulation/verify_cases.h"
@@ -24,8 +26,8 @@ namespace {
 
 namespace po = boost::program_options;
 
-enum class Action { Verify };
-const cli::Choices<Action> kActions = {{"verify", Action::Verify}};
+enum class Action { Verify, Soak, Accuracy };
+const cli::Choices<Action> kActions = {{"verify", Action::Verify}, {"soak", Action::Soak}, {"accuracy", Action::Accuracy}};
 
 enum class Case { All, Langmuir, Langmuir2D, Langmuir3D, Boris, ExB, TwoStream, Energy, Heating, Landau, Diocotron };
 const cli::Choices<Case> kCases = {{"all", Case::All},
@@ -109,11 +111,15 @@ void writeHistory(const std::string& directory, const std::string& name, const p
 
 int runPlasmaCommand(int argc, char** argv, std::ostream& out, std::ostream& err)
 {
+    if (argc > 1 && std::string(argv[1]) == "soak") return runPlasmaSoakCommand(argc - 1, argv + 1, out, err);
+    if (argc > 1 && std::string(argv[1]) == "accuracy") return runPlasmaAccuracyCommand(argc - 1, argv + 1, out, err);
     return cli::runCommand("plasma", out, err, [&] {
         cli::CommandLine cli(
             "plasma",
             "Usage: aurorawall plasma verify [--case NAME] [--device cpu|gpu] [--solver NAME] [--wp-dt X]\n"
             "                               [--wc-dt X] [--dx-lambda-d X] [--shape cic|tsc] [--history DIR]\n"
+            "       aurorawall plasma soak --help, aurorawall plasma accuracy --help: the long runs of a scene's\n"
+            "       plasma, the error against run time\n"
             "Runs the electrostatic particle-in-cell plasma's verification cases and prints CSV\n"
             "case,parameter,measured,expected,rel_error; expected comes from theory (frequencies and rates in\n"
             "units of the plasma frequency omega_p); rows of a run's settings, and the heating rates (no closed\n"

@@ -114,8 +114,8 @@ echo "ok   0  aurorawall mie --n 1.5 --k 0 --x 10: Qext $(sed -n 2p "$WORK/mie.c
 # plasma: the action, the case and the leapfrog's stability limit.
 expect 0 "--wp-dt" plasma --help
 expect 2 "^aurorawall plasma: unrecognised option '--bogus'" plasma verify --bogus
-expect 2 "^aurorawall plasma: missing the action \(allowed: verify\)" plasma
-expect 2 "^aurorawall plasma: unknown action 'run' \(allowed: verify\)" plasma run
+expect 2 "^aurorawall plasma: missing the action \(allowed: verify, soak, accuracy\)" plasma
+expect 2 "^aurorawall plasma: unknown action 'run' \(allowed: verify, soak, accuracy\)" plasma run
 expect 2 "^aurorawall plasma: --case: unknown value 'ion-acoustic' \(allowed: all, langmuir, langmuir-2d, langmuir-3d, .*landau, diocotron\)" \
     plasma verify --case ion-acoustic
 expect 2 "^aurorawall plasma: --wp-dt must be in \(0, 2\): the leapfrog is unstable" plasma verify --wp-dt 2
@@ -147,4 +147,16 @@ grep -q "^# fitted_rate = 0.3535" "$WORK/history/two-stream.csv" &&
     grep -q "^t_wp,field_mode_V_per_m,in_fit,fitted,expected$" "$WORK/history/two-stream.csv" ||
     fail "plasma verify --history: two-stream.csv lacks the fitted rate or the columns"
 echo "ok   0  aurorawall plasma verify --case two-stream --history DIR: two-stream.csv"
+# plasma soak and plasma accuracy: their options.
+expect 0 "--every" plasma soak --help
+expect 2 "^aurorawall plasma soak: the option '--scene' is required but missing" plasma soak
+expect 2 "^aurorawall plasma soak: --steps must be >= 1" plasma soak --scene "$SRC_DIR/config/scenes/plasma-curls.toml" --steps 0
+expect 2 "^aurorawall plasma soak: .*config/scenes/quiet-arc.toml: the scene does not list plasma" \
+    plasma soak --scene "$SRC_DIR/config/scenes/quiet-arc.toml" --steps 1
+expect 1 "^aurorawall plasma soak: .*missing.toml" plasma soak --scene missing.toml
+expect 2 "^aurorawall plasma soak: --device: unknown value 'tpu' \(allowed: cpu, gpu\)" \
+    plasma soak --scene "$SRC_DIR/config/scenes/plasma-curls.toml" --device tpu
+expect 0 "--table" plasma accuracy --help
+expect 2 "^aurorawall plasma accuracy: --table: unknown value 'noise' \(allowed: all, particles, time-step, solvers, heating\)" \
+    plasma accuracy --table noise
 echo "PASS help"
