@@ -159,8 +159,6 @@ cluster::FrameStats runFrames(WallSession& session, const cluster::MpiWorld& wor
     std::vector<std::string> componentNames;
     for (const scene::Component* c : session.scene.components())
         componentNames.push_back(c->name());
-    if (componentNames.size() > size_t(cluster::kMaxComponents))
-        throw std::logic_error("the stats have room for " + std::to_string(cluster::kMaxComponents) + " components");
     cluster::FrameStats stats(pixelsPerFrame(session.wall), componentNames);
     bool stopRequested = false;
     control::WallStatus wallStatus;

@@ -8,6 +8,7 @@
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
 
 namespace aurorawall::cluster {
 
@@ -33,6 +34,14 @@ double FrameRecord::imbalance() const
     return mean > 0.0 ? maxRenderMs() / mean : 1.0;
 }
 
+FrameStats::FrameStats(double pixelsPerFrame, std::vector<std::string> componentNames)
+    : pixelsPerFrame_(pixelsPerFrame), componentNames_(std::move(componentNames))
+{
+    if (componentNames_.size() > size_t(kMaxComponents))
+        throw std::length_error("the stats have room for " + std::to_string(kMaxComponents) + " components, not " +
+                                std::to_string(componentNames_.size()));
+}
+
 std::string FrameStats::frameLine(const FrameRecord& r) const
 {
     std::ostringstream s;
@@ -45,7 +54,7 @@ std::string FrameStats::frameLine(const FrameRecord& r) const
     s.precision(2);
     s << r.imbalance();
     s.precision(1);
-    for (size_t c = 0; c < componentNames_.size() && c < size_t(kMaxComponents); ++c) {
+    for (size_t c = 0; c < componentNames_.size(); ++c) {
         double ms = 0.0;
         for (const RankReport& rank : r.ranks)
             ms = std::max(ms, rank.componentMs[c]);
@@ -104,7 +113,7 @@ void FrameStats::write(const std::string& path) const
                     << r.renderCpuMs << "," << r.exchangeMs << "," << r.exchangeMB << "," << r.waitMs << "," << r.swapMs << ","
                     << r.renderWork;
             for (const RankReport& r : f.ranks)
-                for (size_t c = 0; c < componentNames_.size() && c < size_t(kMaxComponents); ++c)
+                for (size_t c = 0; c < componentNames_.size(); ++c)
                     out << "," << r.componentMs[c];
             out << "\n";
         }
@@ -122,7 +131,7 @@ void FrameStats::write(const std::string& path) const
                     << ", \"wait_ms\": " << f.ranks[r].waitMs
                     << ", \"swap_ms\": " << f.ranks[r].swapMs << ", \"render_work\": " << f.ranks[r].renderWork
                     << ", \"component_ms\": {";
-                for (size_t c = 0; c < componentNames_.size() && c < size_t(kMaxComponents); ++c)
+                for (size_t c = 0; c < componentNames_.size(); ++c)
                     out << (c ? ", " : "") << "\"" << componentNames_[c] << "\": " << f.ranks[r].componentMs[c];
                 out << "}}";
             }

@@ -25,7 +25,7 @@ struct RankReport {
     double renderCpuMs = 0.0; // CPU time of the whole process while rendering, all threads
                               // (llvmpipe's included): the rank's own work, even on a shared machine
     double exchangeMs = 0.0;  // load balancing: sending, receiving and uploading band pixels
-    double exchangeMB = 0.0;  // megabytes of band pixels this rank sent plus received
+    double exchangeMB = 0.0;  // megabytes this rank sent plus received: compressed band pixels
     double renderWork = 0.0;  // load balancing: the work of the rays it drew, the sum over its drawn
                               // pixels of 1 + aurora samples (main.frag's work output): a noise-free
                               // measure of its share (0 with the static split, which measures nothing)
@@ -52,11 +52,9 @@ struct FrameRecord {
 
 class FrameStats {
 public:
-    // componentNames: the scene's components in order, naming RankReport::componentMs.
-    explicit FrameStats(double pixelsPerFrame, std::vector<std::string> componentNames = {})
-        : pixelsPerFrame_(pixelsPerFrame), componentNames_(std::move(componentNames))
-    {
-    }
+    // componentNames: the scene's components in order, naming RankReport::componentMs; at most
+    // kMaxComponents (std::length_error otherwise).
+    explicit FrameStats(double pixelsPerFrame, std::vector<std::string> componentNames = {});
 
     void add(FrameRecord record) { records_.push_back(std::move(record)); }
     const std::vector<FrameRecord>& records() const { return records_; }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <exception>
 #include <numeric>
 #include <set>
@@ -130,6 +131,13 @@ std::vector<char> MpiWorld::gatherBytes(const std::vector<char>& mine, std::vect
     MPI_Gatherv(mine.data(), mySize, MPI_BYTE, all.data(), sizesOut.data(), displacements.data(), MPI_BYTE, 0,
                 MPI_COMM_WORLD);
     return all;
+}
+
+void MpiWorld::abortJob(int status) const
+{
+    std::fflush(stderr);
+    MPI_Abort(MPI_COMM_WORLD, status);
+    std::abort(); // MPI_Abort does not return
 }
 
 } // namespace aurorawall::cluster

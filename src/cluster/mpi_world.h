@@ -27,6 +27,10 @@ public:
     int size() const { return size_; }
     bool isMaster() const { return rank_ == 0; }
 
+    // Ends every rank of the job with `status` (MPI_Abort): for a failure in the middle of a frame,
+    // when the other ranks may be blocked waiting for this one.
+    [[noreturn]] void abortJob(int status) const;
+
     // Collective: from now on the master ends the job if another rank sends no heartbeat for
     // `timeoutS` seconds (cluster/watchdog.h).
     void startWatchdog(double timeoutS) const;

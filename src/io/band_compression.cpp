@@ -5,6 +5,7 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace aurorawall::io {
 
@@ -64,8 +65,11 @@ std::vector<std::uint8_t> compressHalves(const std::vector<std::uint16_t>& halve
     checkChannels(channels);
     const std::vector<std::uint8_t> planes = bytePlanes(halves, channels);
     const std::unique_ptr<ZSTD_CCtx, decltype(&ZSTD_freeCCtx)> context(ZSTD_createCCtx(), &ZSTD_freeCCtx);
-    ZSTD_CCtx_setParameter(context.get(), ZSTD_c_compressionLevel, kZstdLevel);
-    ZSTD_CCtx_setParameter(context.get(), ZSTD_c_checksumFlag, 1);
+    if (!context)
+        throw std::runtime_error("half compression: no memory for a compression context");
+    for (const auto& [parameter, value] : {std::pair{ZSTD_c_compressionLevel, kZstdLevel}, std::pair{ZSTD_c_checksumFlag, 1}})
+        if (const std::size_t status = ZSTD_CCtx_setParameter(context.get(), parameter, value); ZSTD_isError(status))
+            throw std::runtime_error(std::string("half compression: ") + ZSTD_getErrorName(status));
     std::vector<std::uint8_t> compressed(ZSTD_compressBound(planes.size()));
     const std::size_t size =
         ZSTD_compress2(context.get(), compressed.data(), compressed.size(), planes.data(), planes.size());
@@ -82,6 +86,9 @@ std::vector<std::uint16_t> decompressHalves(const std::vector<std::uint8_t>& com
     const unsigned long long content = ZSTD_getFrameContentSize(compressed.data(), compressed.size());
     if (content == ZSTD_CONTENTSIZE_ERROR || content == ZSTD_CONTENTSIZE_UNKNOWN)
         throw std::runtime_error("half compression: not a compressed block of halves (" + std::to_string(compressed.size()) + " bytes)");
+    if (ZSTD_findFrameCompressedSize(compressed.data(), compressed.size()) != compressed.size())
+        throw std::runtime_error("half compression: " + std::to_string(compressed.size()) +
+                                 " bytes are not exactly one compressed block");
     if (content != 2 * count)
         throw std::runtime_error("half compression: the block holds " + std::to_string(content / 2) + " halves, expected " + std::to_string(count));
     std::vector<std::uint8_t> planes(2 * count);

@@ -74,10 +74,7 @@ void BoxRenderer::setFrame(gl::Program& program, const cluster::FrameState& fram
     PlasmaDetail::setFrame(program, frame);
     double position = 0.0;
     if (liveBox_) {
-        if (liveBox_->advanceTo(boxStep(settings_, frame.timeS))) {
-            boxFrames_.upload(liveBox_->frame());
-            gl::glFinish();
-        }
+        liveBox_->showStep(boxStep(settings_, frame.timeS), boxFrames_);
     } else if (box_) {
         position = boxFramePosition(settings_, frame.timeS);
     }

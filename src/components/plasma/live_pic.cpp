@@ -1,5 +1,7 @@
 #include "components/plasma/live_pic.h"
 
+#include "gl/functions.h"
+
 #include <stdexcept>
 #include <utility>
 
@@ -21,7 +23,7 @@ bool LivePic::advanceTo(long n)
         throw std::invalid_argument("plasma live simulation: step " + std::to_string(n) + " is before the start");
     if (n == frameStep_)
         return false;
-    if (n < gpu_->stepCount()) {
+    if (!gpu_ || n < gpu_->stepCount()) { // behind, or a restart that failed before
         gpu_.reset(); // its buffers freed before the new one's are made
         gpu_ = std::make_unique<pic::GpuPic>(grid_, start_, magneticField_, dt_, shaderDir_);
     }
@@ -33,6 +35,14 @@ bool LivePic::advanceTo(long n)
     frame_ = frameDensity_(grid_, electrons);
     frameStep_ = n;
     return true;
+}
+
+void LivePic::showStep(long n, gl::Texture& frames)
+{
+    if (advanceTo(n)) {
+        frames.upload(frame_);
+        gl::glFinish();
+    }
 }
 
 } // namespace aurorawall::components::plasma

@@ -7,6 +7,7 @@
 #include "components/plasma/gpu/gpu_pic.h"
 #include "components/plasma/simulation/particles.h"
 #include "components/plasma/simulation/periodic_grid.h"
+#include "gl/texture.h"
 
 #include <functional>
 #include <memory>
@@ -28,7 +29,10 @@ public:
     // Steps to step n ≥ 0 (restarting first if n is behind) and computes its frame; nothing when the
     // frame of step n is already there. Returns whether the frame changed.
     bool advanceTo(long n);
-    long step() const { return gpu_->stepCount(); }
+    // advanceTo(n), then the frame uploaded into `frames` (when it changed) and the GPU waited for, so
+    // the time spent here is the plasma's whole share of the frame.
+    void showStep(long n, gl::Texture& frames);
+    long step() const { return gpu_ ? gpu_->stepCount() : 0; }
     // The frame of the last advanceTo's step.
     const std::vector<float>& frame() const { return frame_; }
 

@@ -69,10 +69,7 @@ void PlasmaDetail::setFrame(gl::Program&, const cluster::FrameState& frame)
         return;
     const double phase =
         curtain_.keys.empty() ? 0.0 : aurora::curtainAt(curtain_, frame.timeS, spec_.sheet.lengthM * 1e-3).detailPhase;
-    if (live_->advanceTo(curlsStep(spec_, phase))) {
-        frames_.upload(live_->frame());
-        gl::glFinish();
-    }
+    live_->showStep(curlsStep(spec_, phase), frames_);
 }
 
 void PlasmaDetail::bind(gl::Program& program) const
