@@ -8,6 +8,7 @@
 #include "components/plasma/gpu/gpu_verify_cases.h"
 #include "components/plasma/simulation/verify_cases.h"
 #include "gl/context.h"
+#include "io/atomic_file.h"
 
 #include <unistd.h>
 
@@ -18,7 +19,6 @@
 #include <ostream>
 #include <stdexcept>
 #include <string>
-#include <system_error>
 #include <vector>
 
 namespace aurorawall::app {
@@ -88,23 +88,22 @@ void requireWritableDirectory(const std::string& directory)
         throw std::runtime_error("--history: cannot write in '" + directory + "'");
 }
 
-// A case's history as DIRECTORY/NAME.csv, written under a temporary name and then renamed, so that no
-// file is left half-written.
+// A case's history as DIRECTORY/NAME.csv, written atomically (io/atomic_file.h): no file is left
+// half-written.
 void writeHistory(const std::string& directory, const std::string& name, const plasma::VerifyHistory& history)
 {
-    const std::filesystem::path path = std::filesystem::path(directory) / (name + ".csv");
-    const std::filesystem::path temporary = path.string() + ".tmp";
-    std::ofstream file(temporary);
-    plasma::writeHistoryCsv(file, history);
-    file.close();
-    std::error_code error;
-    if (!file) {
-        std::filesystem::remove(temporary, error);
-        throw std::runtime_error("--history: cannot write '" + path.string() + "'");
+    const std::string path = (std::filesystem::path(directory) / (name + ".csv")).string();
+    try {
+        io::writeFileAtomically(path, [&history](const std::string& temporary) {
+            std::ofstream file(temporary);
+            plasma::writeHistoryCsv(file, history);
+            file.close();
+            if (!file)
+                throw std::runtime_error("cannot write");
+        });
+    } catch (const std::exception& error) {
+        throw std::runtime_error("--history: cannot write '" + path + "': " + error.what());
     }
-    std::filesystem::rename(temporary, path, error);
-    if (error)
-        throw std::runtime_error("--history: cannot write '" + path.string() + "': " + error.message());
 }
 
 } // namespace

@@ -76,7 +76,7 @@ struct GpuPic::Programs {
     gl::Program deposit, field, push;
 };
 
-const PeriodicGrid& GpuPic::fitted(const PeriodicGrid& grid, std::size_t particleCount)
+const PeriodicGrid& GpuPic::checkedAgainstGpuLimits(const PeriodicGrid& grid, std::size_t particleCount)
 {
     depositQuantumBits(particleCount, grid.dimension);
     const GpuLimits limits = currentGpuLimits();
@@ -87,7 +87,7 @@ const PeriodicGrid& GpuPic::fitted(const PeriodicGrid& grid, std::size_t particl
 
 GpuPic::GpuPic(const PeriodicGrid& grid, const Particles& electrons, glm::dvec3 magneticField, double dt,
                const std::string& shaderDir, glm::dvec3 externalField, GpuPicSolver solver)
-    : grid_(fitted(grid, electrons.position.size())), solver_(solver), poisson_(grid), particleCount_(electrons.position.size()), weight_(electrons.weight),
+    : grid_(checkedAgainstGpuLimits(grid, electrons.position.size())), solver_(solver), poisson_(grid), particleCount_(electrons.position.size()), weight_(electrons.weight),
       quantumBits_(depositQuantumBits(electrons.position.size(), grid.dimension)), dt_(dt),
       zeroQuanta_(grid.nodeCount(), 0)
 {

@@ -92,7 +92,7 @@ public:
 private:
     struct Programs;
     // `grid`, once the grid and the particle count fit the deposit and the current context's limits.
-    static const PeriodicGrid& fitted(const PeriodicGrid& grid, std::size_t particleCount);
+    static const PeriodicGrid& checkedAgainstGpuLimits(const PeriodicGrid& grid, std::size_t particleCount);
     void bindBuffers() const;
     void push(double dt, bool movePositions);
     void deposit();
