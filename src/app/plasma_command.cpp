@@ -116,7 +116,8 @@ int runPlasmaCommand(int argc, char** argv, std::ostream& out, std::ostream& err
         cli::CommandLine cli(
             "plasma",
             "Usage: aurorawall plasma verify [--case NAME] [--device cpu|gpu] [--solver NAME] [--wp-dt X]\n"
-            "                               [--wc-dt X] [--dx-lambda-d X] [--shape cic|tsc] [--history DIR]\n"
+            "                               [--wc-dt X] [--dx-lambda-d X] [--k-lambda-d K] [--shape cic|tsc]\n"
+            "                               [--history DIR]\n"
             "       aurorawall plasma soak --help, aurorawall plasma accuracy --help: the long runs of a scene's\n"
             "       plasma, the error against run time\n"
             "Runs the electrostatic particle-in-cell plasma's verification cases and prints CSV\n"
@@ -128,7 +129,7 @@ int runPlasmaCommand(int argc, char** argv, std::ostream& out, std::ostream& err
             "Exit status: 0 success, 1 a run failed or output not written, 2 usage error.\n");
         std::string actionName;
         Case chosen = Case::All;
-        double wpDt = 0.2, wcDt = 1.0;
+        double wpDt = 0.2, wcDt = 1.0, kDebye = 0.5;
         std::vector<double> heatingSpacings = kHeatingSpacings;
         Device device = Device::Cpu;
         cli.addChoice("case", &chosen, kCases, "the case to run (all: each in turn)");
@@ -139,6 +140,9 @@ int runPlasmaCommand(int argc, char** argv, std::ostream& out, std::ostream& err
                       "the Poisson solve of --device gpu: fft-cpu (exact, FFT in double on the CPU, default), "
                       "jacobi (20 Jacobi sweeps on the GPU, does not converge), sor (red-black SOR on the GPU "
                       "to 1e-6) or multigrid (6 V-cycles on the GPU)");
+        cli.add()("k-lambda-d", po::value<double>(&kDebye)->default_value(0.5, "0.5"),
+                  ("the landau case's wave number times the Debye length, in [" + number(plasma::kLandauMinKDebye) +
+                   ", " + number(plasma::kLandauMaxKDebye) + "]").c_str());
         cli.add()("wp-dt", po::value<double>(&wpDt)->default_value(0.2, "0.2"),
                   "omega_p dt of langmuir, langmuir-2d, langmuir-3d, two-stream, energy, heating and landau, in (0, 2): the leapfrog is unstable "
                   "from 2 on")("wc-dt", po::value<double>(&wcDt)->default_value(1.0),
@@ -164,6 +168,11 @@ int runPlasmaCommand(int argc, char** argv, std::ostream& out, std::ostream& err
             throw cli.usageError("missing the action (allowed: " + cli::wordsOf(kActions) + ")");
         if (!cli::findChoice(kActions, actionName, action))
             throw cli.usageError("unknown action '" + actionName + "' (allowed: " + cli::wordsOf(kActions) + ")");
+        if (!(kDebye >= plasma::kLandauMinKDebye && kDebye <= plasma::kLandauMaxKDebye))
+            throw cli.usageError("--k-lambda-d must be in [" + number(plasma::kLandauMinKDebye) + ", " +
+                                 number(plasma::kLandauMaxKDebye) + "] (got " + number(kDebye) + ")");
+        if (cli.given("k-lambda-d") && chosen != Case::Landau)
+            throw cli.usageError("--k-lambda-d applies only to --case landau");
         if (!(wpDt > 0.0 && wpDt < 2.0))
             throw cli.usageError("--wp-dt must be in (0, 2): the leapfrog is unstable for omega_p dt >= 2 (got " +
                                  number(wpDt) + ")");
@@ -212,7 +221,7 @@ int runPlasmaCommand(int argc, char** argv, std::ostream& out, std::ostream& err
                     runCase("heating", "heating-dx" + number(spacing),
                             [&](auto h) { return plasma::verifyHeating(wpDt, spacing, 1, on, 64, h); });
             if (runs(Case::Landau))
-                runCase("landau", "landau", [&](auto h) { return plasma::verifyLandau(wpDt, 1 << 20, on, h); });
+                runCase("landau", "landau", [&](auto h) { return plasma::verifyLandau(wpDt, kDebye, 1 << 20, on, h); });
             if (runs(Case::Diocotron))
                 runCase("diocotron", "diocotron",
                         [&](auto h) { return plasma::verifyDiocotron(kDiocotronWcDt, 0.1, on, h); });

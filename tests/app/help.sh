@@ -133,6 +133,8 @@ expect 2 "^aurorawall plasma: --solver: unknown value 'fft' \(allowed: fft-cpu, 
     plasma verify --device gpu --solver fft
 expect 2 "^aurorawall plasma: --solver applies only to --device gpu" plasma verify --case boris --solver sor
 expect 0 "--shape" plasma --help
+expect 2 "^aurorawall plasma: --k-lambda-d must be in \[0.35, 0.7\] \(got 0.2\)" plasma verify --case landau --k-lambda-d 0.2
+expect 2 "^aurorawall plasma: --k-lambda-d applies only to --case landau" plasma verify --case boris --k-lambda-d 0.4
 expect 2 "^aurorawall plasma: --shape: unknown value 'ngp' \(allowed: cic, tsc\)" plasma verify --case heating --shape ngp
 expect 2 "^aurorawall plasma: --shape applies only to --case heating" plasma verify --case landau --shape tsc
 # plasma verify --history: a folder that is not there is a runtime failure before any case runs; into

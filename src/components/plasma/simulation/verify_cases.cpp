@@ -476,34 +476,50 @@ std::vector<VerifyRow> verifyHeating(double wpDt, double dxOverDebye, std::uint6
                 device.settings(particles, 1), {{"heating_rate_over_wp", fit.slope, std::nullopt}});
 }
 
-std::vector<VerifyRow> verifyLandau(double wpDt, int particles, const PicDevice& device, VerifyHistory* history)
+std::vector<VerifyRow> verifyLandau(double wpDt, double kLambda, int particles, const PicDevice& device,
+                                    VerifyHistory* history)
 {
     requireLeapfrogStable(wpDt);
-    constexpr double kLambda = 0.5; // k λ_D
+    if (!(kLambda >= kLandauMinKDebye && kLambda <= kLandauMaxKDebye))
+    {
+        char range[160];
+        std::snprintf(range, sizeof range, "k lambda_D must be in [%g, %g] (got %g)", kLandauMinKDebye,
+                      kLandauMaxKDebye, kLambda);
+        throw std::domain_error(range);
+    }
     constexpr int kCells = 64;
     const double wp = plasmaFrequency(kDensity), dt = wpDt / wp;
     const double thermalSpeed = 4.19e5;
     const double lambdaD = debyeLength(thermalSpeed, kDensity);
     const double length = 2.0 * kPi * lambdaD / kLambda;
     const PeriodicGrid grid(1, {kCells, 1, 1}, {length / kCells, 1.0, 1.0});
-    // A 1% density perturbation: δn/n = k·amplitude.
-    const Perturbation wave{1, 0.01 * length / (2.0 * kPi)};
+    // The density wave δn/n = k·amplitude: small enough that the electrons it traps bounce slower
+    // than the wave damps (bounce frequency ω_b = ω_p √(δn/n) below |γ|/√2, so linear theory holds
+    // over the run; O'Neil, Phys. Fluids 8, 2255 (1965)), at most 1%.
+    const std::complex<double> root = landauRoot(kLambda);
+    const double densityWave = std::min(0.01, 2.0 * root.imag() * root.imag());
+    const Perturbation wave{1, densityWave * length / (2.0 * kPi)};
     const std::unique_ptr<PicRun> run =
         device.run(grid, quietMaxwellian(grid, particles, kDensity, wave, thermalSpeed), glm::dvec3(0.0), dt);
-    // The standing wave's field mode s(t) ∝ exp(γt) cos(ωt + φ) from 6 to 20 /ω_p (before 6 the
-    // free-streaming part, ∝ exp(−(k v_th t)²/2), is still above 1%; after 20 the wave nears the
-    // particles' noise, a 1% wave being linear, a 5% one not quite): its zero crossings
-    // (linear between steps) are π/ω apart, and the logarithm of its largest |s| between two crossings
-    // (the parabola through the three samples around it) grows at the rate γ.
+    // The standing wave's field mode s(t) ∝ exp(γt) cos(ωt + φ) over a window (in 1/ω_p) from where
+    // the free-streaming part, ∝ exp(−(kλ_D ω_p t)²/2), has fallen below 1% of the wave,
+    // t₀ = √(2 ln 100)/(kλ_D), to where the theory's damping has taken 2.1 e-foldings (the wave, 1% at
+    // the start so that it stays linear, then nears the particles' noise), at most 60/ω_p and at least
+    // 3 periods: at kλ_D = 0.5 from 6.1 to 19.8. Its zero crossings (linear between steps) are π/ω
+    // apart, and the logarithm of its largest |s| between two crossings (the parabola through the
+    // three samples around it) grows at the rate γ.
+    const double fitStart = std::sqrt(2.0 * std::log(100.0)) / kLambda;
+    const double fitEnd =
+        fitStart + std::clamp(2.1 / std::abs(root.imag()), 3.0 * 2.0 * kPi / root.real(), 60.0);
     std::vector<double> s;
-    const long steps = long(std::ceil(20.0 / wpDt));
+    const long steps = long(std::ceil(fitEnd / wpDt));
     for (long n = 0; n <= steps; ++n) {
         s.push_back(fieldMode(run->nodeField(), 1).imag()); // the field of a cos(kx) density wave ∝ sin(kx)
         run->step();
     }
     std::vector<long> crossing;      // the step before each zero crossing
     std::vector<double> crossingTime; // in 1/ω_p
-    for (long n = long(std::ceil(6.0 / wpDt)); n < steps; ++n)
+    for (long n = long(std::ceil(fitStart / wpDt)); n < steps; ++n)
         if ((s[n] < 0.0) != (s[n + 1] < 0.0)) {
             crossing.push_back(n);
             crossingTime.push_back((double(n) + s[n] / (s[n] - s[n + 1])) * wpDt);
@@ -521,7 +537,6 @@ std::vector<VerifyRow> verifyLandau(double wpDt, int particles, const PicDevice&
     if (peakTime.size() < 3)
         throw std::runtime_error("landau: fewer than four zero crossings of the field");
     const double halfPeriod = (crossingTime.back() - crossingTime.front()) / double(crossingTime.size() - 1);
-    const std::complex<double> root = landauRoot(kLambda);
     const Line fit = fittedLine(peakTime, logPeak);
     if (history) {
         // |s| at every step, the maxima (at their interpolated times) and the lines through them.
@@ -538,8 +553,8 @@ std::vector<VerifyRow> verifyLandau(double wpDt, int particles, const PicDevice&
                                      std::exp(theory.at(peakTime[p]))});
         std::sort(history->rows.begin(), history->rows.end(),
                   [](const std::vector<double>& a, const std::vector<double>& b) { return a[0] < b[0]; });
-        history->fit = {{"fit_start", 6.0},
-                        {"fit_end", 20.0},
+        history->fit = {{"fit_start", fitStart},
+                        {"fit_end", fitEnd},
                         {"fitted_rate", fit.slope},
                         {"fitted_intercept", fit.intercept},
                         {"expected_rate", root.imag()},

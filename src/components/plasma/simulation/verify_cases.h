@@ -111,9 +111,14 @@ std::vector<VerifyRow> verifyEnergy(double plasmaFrequencyTimesDt, const PicDevi
 std::vector<VerifyRow> verifyHeating(double plasmaFrequencyTimesDt, double dxOverDebyeLength, std::uint64_t seed = 1,
                                      const PicDevice& device = cpuDevice(), int particlesPerCell = 64,
                                      VerifyHistory* history = nullptr);
-// Landau damping of a Langmuir wave at k λ_D = 0.5 (quiet Maxwellian of `particles`, a power of two,
-// on 64 cells): frequency and damping rate against the root of the kinetic dispersion relation.
-std::vector<VerifyRow> verifyLandau(double plasmaFrequencyTimesDt, int particles = 1 << 20,
+// The kλ_D the landau case measures (see verifyLandau).
+inline constexpr double kLandauMinKDebye = 0.35;
+inline constexpr double kLandauMaxKDebye = 0.7;
+// Landau damping of a Langmuir wave at kDebyeLength = kλ_D (a quiet Maxwellian of `particles`, a
+// power of two, on 64 cells, a 1% density wave): frequency and damping rate against the root of the
+// kinetic dispersion relation (landauRoot). std::domain_error outside [kLandauMinKDebye,
+// kLandauMaxKDebye].
+std::vector<VerifyRow> verifyLandau(double plasmaFrequencyTimesDt, double kDebyeLength = 0.5, int particles = 1 << 20,
                                     const PicDevice& device = cpuDevice(), VerifyHistory* history = nullptr);
 
 // The diocotron instability of a cold electron strip (thickness 2a, mode 1 at ka = 0.4) in a strong
