@@ -3,10 +3,9 @@
 #include "app/cli/command_line.h"
 #include "app/cli/exit_status.h"
 #include "common/data_dir.h"
-#include "components/plasma/gpu/gpu_pic.h"
+#include "components/plasma/gpu/gpu_verify_cases.h"
 #include "components/plasma/simulation/electron_sheet.h"
-#include "components/plasma/simulation/electrostatic_pic.h"
-#include "components/plasma/simulation/particle_mesh.h"
+#include "components/plasma/simulation/verify_cases.h"
 #include "components/plasma/simulation/plasma_parameters.h"
 #include "components/registry.h"
 #include "gl/context.h"
@@ -29,58 +28,6 @@ using components::plasma::BoxFramesSpec;
 
 enum class Device { Cpu, Gpu };
 const cli::Choices<Device> kDevices = {{"cpu", Device::Cpu}, {"gpu", Device::Gpu}};
-
-// What a row and a check need of a running simulation, on either device, at its current step n.
-class Stepper {
-public:
-    virtual ~Stepper() = default;
-    // The energies at step n, then one step to n + 1.
-    virtual pic::StepEnergies energiesThenStep() = 0;
-    virtual std::vector<glm::dvec3> positions() const = 0;
-    virtual std::vector<glm::dvec3> velocities() const = 0;
-    virtual std::vector<glm::dvec3> nodeField() const = 0;
-    virtual std::vector<double> chargeDensity() const = 0; // C/m³, Σρ = 0
-};
-
-class CpuStepper : public Stepper {
-public:
-    explicit CpuStepper(const SoakSimulation& s) : sim_(s.grid, s.electrons, s.magneticField, s.dt) {}
-    pic::StepEnergies energiesThenStep() override { return sim_.step(); }
-    std::vector<glm::dvec3> positions() const override { return sim_.electrons().position; }
-    std::vector<glm::dvec3> velocities() const override { return sim_.electrons().velocity; }
-    std::vector<glm::dvec3> nodeField() const override { return sim_.nodeField(); }
-    std::vector<double> chargeDensity() const override { return pic::depositChargeDensity(sim_.grid(), sim_.electrons()); }
-
-private:
-    pic::ElectrostaticPic sim_;
-};
-
-// GpuPic keeps no energies: the field's as ½ε₀Σ|E|²ΔV over the nodes, the kinetic as ½mΣ|v_{n−1/2}|².
-class GpuStepper : public Stepper {
-public:
-    GpuStepper(const SoakSimulation& s, const std::string& shaderDir)
-        : sim_(s.grid, s.electrons, s.magneticField, s.dt, shaderDir), mass_(pic::kElectronMass * s.electrons.weight)
-    {
-    }
-    pic::StepEnergies energiesThenStep() override
-    {
-        pic::StepEnergies e;
-        for (const glm::dvec3& field : sim_.nodeField())
-            e.field += 0.5 * pic::kVacuumPermittivity * glm::dot(field, field) * sim_.grid().cellVolume();
-        for (const glm::dvec3& v : sim_.velocities())
-            e.kinetic += 0.5 * mass_ * glm::dot(v, v);
-        sim_.step();
-        return e;
-    }
-    std::vector<glm::dvec3> positions() const override { return sim_.positions(); }
-    std::vector<glm::dvec3> velocities() const override { return sim_.velocities(); }
-    std::vector<glm::dvec3> nodeField() const override { return sim_.nodeField(); }
-    std::vector<double> chargeDensity() const override { return sim_.chargeDensity(); }
-
-private:
-    pic::GpuPic sim_;
-    double mass_;
-};
 
 std::string number(double value)
 {
@@ -115,7 +62,7 @@ void checkPositions(const std::string& name, long step, const std::vector<glm::d
                                           number(positions[i][a]) + " m is outside the box [0, " + number(box[a]) + "]");
 }
 
-void soak(const SoakSimulation& s, Stepper& sim, long steps, long every, std::ostream& out)
+void soak(const SoakSimulation& s, pic::PicRun& sim, long steps, long every, std::ostream& out)
 {
     const glm::dvec3 box = s.grid.boxLength();
     // n₀, the box's mean electron density (m⁻³): the ion background's.
@@ -132,7 +79,7 @@ void soak(const SoakSimulation& s, Stepper& sim, long steps, long every, std::os
             for (double rho : sim.chargeDensity())
                 maxDensity = std::max(maxDensity, 1.0 - rho / (pic::kElementaryCharge * meanDensity));
         }
-        const pic::StepEnergies e = sim.energiesThenStep();
+        const pic::StepEnergies e = sim.stepWithEnergies();
         if (row) {
             if (!std::isfinite(e.total()))
                 failCheck(s.name, n, "the energy is " + number(e.total()));
@@ -205,17 +152,15 @@ int runPlasmaSoakCommand(int argc, char** argv, std::ostream& out, std::ostream&
 
         out << "simulation,step,time_s,field_energy_j,kinetic_energy_j,total_energy_j,max_abs_e_v_per_m,"
                "max_density_over_n0\n";
+        const auto runAll = [&](const pic::PicDevice& on) {
+            for (const SoakSimulation& s : runs)
+                soak(s, *on.run(s.grid, s.electrons, s.magneticField, s.dt), steps, every, out);
+        };
         if (device == Device::Gpu) {
             const auto context = gl::createContext(gl::Backend::Egl);
-            for (const SoakSimulation& s : runs) {
-                GpuStepper sim(s, dataDirectory() + "/shaders");
-                soak(s, sim, steps, every, out);
-            }
-            return;
-        }
-        for (const SoakSimulation& s : runs) {
-            CpuStepper sim(s);
-            soak(s, sim, steps, every, out);
+            runAll(pic::GpuPicDevice(dataDirectory() + "/shaders"));
+        } else {
+            runAll(pic::cpuDevice());
         }
     });
 }

@@ -42,7 +42,9 @@ public:
         }
         return field_;
     }
+    std::vector<glm::dvec3> positions() override { return pic_.positions(); }
     std::vector<glm::dvec3> velocities() override { return pic_.velocities(); }
+    std::vector<double> chargeDensity() override { return pic_.chargeDensity(); }
 
 private:
     GpuPic pic_;

@@ -122,7 +122,12 @@ public:
     void step() override { pic_.step(); }
     StepEnergies stepWithEnergies() override { return pic_.step(); }
     const std::vector<glm::dvec3>& nodeField() override { return pic_.nodeField(); }
+    std::vector<glm::dvec3> positions() override { return pic_.electrons().position; }
     std::vector<glm::dvec3> velocities() override { return pic_.electrons().velocity; }
+    std::vector<double> chargeDensity() override
+    {
+        return depositChargeDensity(pic_.grid(), pic_.electrons(), pic_.shape());
+    }
 
 private:
     ElectrostaticPic pic_;

@@ -51,9 +51,12 @@ public:
     virtual void step() = 0;
     // The same step, returning the energies at step n as ElectrostaticPic::step does.
     virtual StepEnergies stepWithEnergies() = 0;
-    // The field at the nodes (V/m) and the velocities (m/s, half a step behind) of the current step.
+    // The field at the nodes (V/m), the positions (m), the velocities (m/s, half a step behind) and
+    // the charge density at the nodes (C/m³, Σρ = 0) of the current step.
     virtual const std::vector<glm::dvec3>& nodeField() = 0;
+    virtual std::vector<glm::dvec3> positions() = 0;
     virtual std::vector<glm::dvec3> velocities() = 0;
+    virtual std::vector<double> chargeDensity() = 0;
 };
 
 // Where the cases run.
