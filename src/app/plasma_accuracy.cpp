@@ -223,13 +223,12 @@ std::vector<SolverRow> solverTable(int dimension, int cellsPerAxis)
 
 HeatingRow heatingRate(int particlesPerCell, double wpDt, int seed)
 {
-    constexpr double kFitEnd = 200.0; // 1/ω_p: the case's run
     HeatingRow r{particlesPerCell, wpDt, seed, 0.0, 0.0};
     std::vector<pic::VerifyRow> rows;
     const double ms = milliseconds([&] {
         rows = pic::verifyHeating(wpDt, 8.0, std::uint64_t(seed), pic::cpuDevice(), particlesPerCell);
     });
-    r.msPerStep = ms / std::ceil(kFitEnd / wpDt);
+    r.msPerStep = ms / std::ceil(pic::kHeatingRunEndWp / wpDt);
     for (const pic::VerifyRow& row : rows)
         if (row.parameter == "heating_rate_over_wp")
             r.rate = row.measured;

@@ -445,7 +445,7 @@ std::vector<VerifyRow> verifyHeating(double wpDt, double dxOverDebye, std::uint6
         throw std::domain_error("particles per cell must be at least 1");
     constexpr int kCells = 64;
     const int particles = particlesPerCell * kCells;
-    constexpr double kFitStart = 10.0, kFitEnd = 200.0; // 1/ω_p: after the start's field has formed
+    constexpr double kFitStart = 10.0, kFitEnd = kHeatingRunEndWp; // 1/ω_p: after the start's field has formed
     const double wp = plasmaFrequency(kDensity), dt = wpDt / wp;
     const double thermalSpeed = 4.19e5; // m/s: 1 eV electrons
     const double lambdaD = debyeLength(thermalSpeed, kDensity);

@@ -107,6 +107,8 @@ std::vector<VerifyRow> verifyTwoStream(double plasmaFrequencyTimesDt, const PicD
 // With a history the energies of every step are kept (on the GPU each costs a read-back).
 std::vector<VerifyRow> verifyEnergy(double plasmaFrequencyTimesDt, const PicDevice& device = cpuDevice(),
                                     VerifyHistory* history = nullptr);
+// The heating case runs to this time (1/ω_p), fitting from 10 /ω_p on.
+inline constexpr double kHeatingRunEndWp = 200.0;
 // Numerical heating of a thermal plasma (random start, `seed`, particlesPerCell on 64 cells) on a grid
 // of spacing dxOverDebyeLength · λ_D: the rate d(kT)/dt/(kT ω_p) of the temperature along x, from a
 // least-squares line through kT_x(t). No closed form: the grid's aliasing heats ever faster as Δx/λ_D
