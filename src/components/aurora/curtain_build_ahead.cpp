@@ -2,16 +2,26 @@
 
 namespace aurorawall::components::aurora {
 
+namespace {
+
+void finish(std::future<CurtainBuild>& build)
+{
+    if (build.valid())
+        build.wait();
+}
+
+} // namespace
+
 CurtainBuildAhead::~CurtainBuildAhead()
 {
-    if (pending_.valid())
-        pending_.wait();
+    finish(pending_);
+    finish(dropped_);
 }
 
 void CurtainBuildAhead::start(std::vector<CurtainState> states)
 {
-    if (pending_.valid())
-        pending_.wait();
+    finish(pending_);
+    finish(dropped_);
     pendingControlPoints_ = controlPointsOf(states);
     pending_ = std::async(std::launch::async,
                           [&model = model_, states = std::move(states)] { return buildCurtains(model, states); });
@@ -23,8 +33,7 @@ std::optional<CurtainBuild> CurtainBuildAhead::take(const ControlPoints& control
         return std::nullopt;
     if (pendingControlPoints_ != controlPoints) {
         // A wrong prediction: dropped unread, so that an error of its build is not reported either.
-        pending_.wait();
-        pending_ = {};
+        dropped_ = std::move(pending_);
         return std::nullopt;
     }
     return pending_.get();

@@ -17,15 +17,17 @@ public:
     CurtainBuildAhead& operator=(const CurtainBuildAhead&) = delete;
     ~CurtainBuildAhead();
 
-    // Starts building the curtains of these states (after the one under way, if any, has finished).
+    // Starts building the curtains of these states (after any build started before has finished).
     void start(std::vector<CurtainState> states);
     // The started build if its control points are exactly these, waiting for it to finish; otherwise
-    // nothing (a build under way is finished and dropped). Nothing is under way afterwards.
+    // nothing, at once: a wrong prediction is dropped unread and left to finish on its thread while
+    // the caller builds the right curtains (start and the destructor wait for it).
     std::optional<CurtainBuild> take(const ControlPoints& controlPoints);
 
 private:
     const CurtainModel& model_;
     std::future<CurtainBuild> pending_;
+    std::future<CurtainBuild> dropped_; // a wrong prediction still finishing
     ControlPoints pendingControlPoints_;
 };
 
