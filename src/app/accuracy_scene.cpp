@@ -137,6 +137,7 @@ scene::Scene without(scene::Scene s, const std::string& component)
 void applyFinestSettings(scene::Scene& s)
 {
     s.settings<AuroraSettings>().stepKm = 0.25;
+    s.settings<AuroraSettings>().resolveKm = 0.125;
     s.settings<AuroraSettings>().skipEmptySpace = false;
     s.settings<AuroraSettings>().footprintMapSize = 1024;
     s.settings<AuroraSettings>().tableAltitudeStepKm = 0.25;
@@ -181,8 +182,10 @@ std::vector<Variant> knobVariants()
 {
     std::vector<Variant> v;
     v.push_back({"default", "-", [](scene::Scene&) {}});
-    for (double step : {0.5, 1.0, 2.0, 4.0})
+    for (double step : {0.5, 1.0, 2.0, 4.0, 8.0})
         v.push_back({"step_km", number(step), [step](scene::Scene& s) { s.settings<AuroraSettings>().stepKm = step; }});
+    for (double resolve : {0.25, 0.5, 1.0, 2.0, 100.0})
+        v.push_back({"resolve_km", number(resolve), [resolve](scene::Scene& s) { s.settings<AuroraSettings>().resolveKm = resolve; }});
     for (bool skip : {true, false})
         v.push_back({"skip_empty_space", skip ? "yes" : "no", [skip](scene::Scene& s) { s.settings<AuroraSettings>().skipEmptySpace = skip; }});
     for (int size : {128, 256, 512, 1024})
@@ -221,8 +224,8 @@ std::vector<Feature> featureVariants()
         {{"default", "-", [](scene::Scene&) {}}, "-"},
         {{"no distance field (skip_empty_space = no)", "", [](scene::Scene& s) { s.settings<AuroraSettings>().skipEmptySpace = false; }}, "+350%"},
         {{"aurora layer 100 km thicker", "", [](scene::Scene& s) { s.settings<AuroraSettings>().topKm += 100.0; }}, "+32%"},
-        {{"1 km steps instead of 2", "", [](scene::Scene& s) { s.settings<AuroraSettings>().stepKm = 1.0; }}, "+60%"},
-        {{"4 km steps instead of 2", "", [](scene::Scene& s) { s.settings<AuroraSettings>().stepKm = 4.0; }}, "-33%"},
+        {{"half the step (paper: 1 km instead of 2)", "", [](scene::Scene& s) { s.settings<AuroraSettings>().stepKm *= 0.5; }}, "+60%"},
+        {{"double the step (paper: 4 km instead of 2)", "", [](scene::Scene& s) { s.settings<AuroraSettings>().stepKm *= 2.0; }}, "-33%"},
         {{"deposition table at half resolution", "", [](scene::Scene& s) {
               s.settings<AuroraSettings>().tableAltitudeStepKm *= 2.0;
               s.settings<AuroraSettings>().tableEnergyCount /= 2;

@@ -9,6 +9,7 @@
 uniform float uAuroraBottomKm;
 uniform float uAuroraTopKm;
 uniform float uAuroraStepKm;
+uniform float uAuroraResolveKm;      // sub-steps: the altitude and the position along a curtain change by at most this
 uniform int uSkipEmptySpace;         // 0: the naive fine march everywhere (the reference)
 uniform int uCurtainCount;
 uniform sampler2D uCurtainPolylines; // RGBA32F, row c: xyz unit vector, w arclength km
@@ -24,11 +25,6 @@ uniform float uFootprintMarginKm;
 
 int gAuroraSamples = 0; // samples this pixel's ray has taken in auroraSegment: its work (main.frag)
 
-struct CurtainHit {
-    float skipKm;   // a step this long cannot reach any curtain's emitting part
-    vec3 radiance;  // linear sRGB radiance added per km of path at this point
-};
-
 // Where n projects along segment j of curtain c: (km along from the segment's start, segment
 // length km, signed lateral distance km, distance beyond the segment's ends km).
 vec4 segmentProjection(int c, int j, vec3 n)
@@ -41,48 +37,94 @@ vec4 segmentProjection(int c, int j, vec3 n)
 // Curtain coordinates of direction n relative to curtain c, starting from polyline point i (the
 // footprint map's nearest point, which can be a few texels of arclength away from the true
 // nearest one): jump along the polyline by the projected along-track offset until n projects
-// inside the segment, then take the closest of that segment and its neighbours.
-// Returns (s km along the curtain, u km across, distance km).
-vec3 curtainCoordinates(int c, int i, vec3 n)
+// inside the segment or the jumps turn back (n lies off a corner's outer side, between two
+// segments' ends), then take the closest of that segment and its neighbours.
+struct CurtainCoordinates {
+    float s;        // km along the curtain (beyond its ends: negative, or more than its length)
+    float u;        // km across it (signed)
+    float distance; // km from its polyline
+    vec3 normal;    // unit normal of the closest segment's great circle: u grows along it
+};
+
+CurtainCoordinates curtainCoordinates(int c, int i, vec3 n)
 {
     int last = int(uCurtainState[c].z) - 2; // index of the last segment
     int j = clamp(i, 0, last);
+    vec4 p = segmentProjection(c, j, n);
+    int direction = 0;
     for (int jump = 0; jump < 6; ++jump) {
-        vec4 p = segmentProjection(c, j, n);
         int step = int(floor(p.x / max(p.y, 1e-6)));
         int next = clamp(j + step, 0, last);
-        if (next == j)
+        if (next == j || step * direction < 0)
             break;
+        direction = step;
         j = next;
+        p = segmentProjection(c, j, n);
     }
-    vec3 best = vec3(0.0, 0.0, 1e30);
-    for (int k = max(j - 1, 0); k <= min(j + 1, last); ++k) {
-        vec4 p = segmentProjection(c, k, n);
-        float distance = length(vec2(p.z, p.w));
-        if (distance < best.z)
-            best = vec3(texelFetch(uCurtainPolylines, ivec2(k, c), 0).w + clamp(p.x, 0.0, p.y), p.z, distance);
+    CurtainCoordinates best;
+    best.distance = length(vec2(p.z, p.w));
+    best.u = p.z;
+    best.s = texelFetch(uCurtainPolylines, ivec2(j, c), 0).w + p.x;
+    int closest = j;
+    for (int side = -1; side <= 1; side += 2) {
+        int k = j + side;
+        if (k < 0 || k > last)
+            continue;
+        vec4 q = segmentProjection(c, k, n);
+        float distance = length(vec2(q.z, q.w));
+        if (distance < best.distance) {
+            best.s = texelFetch(uCurtainPolylines, ivec2(k, c), 0).w + q.x;
+            best.u = q.z;
+            best.distance = distance;
+            closest = k;
+        }
     }
+    vec3 a = texelFetch(uCurtainPolylines, ivec2(closest, c), 0).xyz;
+    vec3 b = texelFetch(uCurtainPolylines, ivec2(closest + 1, c), 0).xyz;
+    best.normal = normalize(cross(a, b - a));
     return best;
 }
 
-CurtainHit sampleCurtains(vec3 p, float h)
+struct CurtainStep {
+    float skipKm;   // from the step's midpoint, a distance within which no curtain emits
+    vec3 radiance;  // linear sRGB radiance the step adds
+};
+
+// The emission of the ray o + t d over the step [t0, t1] (km). The curtain coordinates are found
+// once, at the step's midpoint t_m, and the footprint's motion is linear over the step:
+// u(t) = u_m + u' (t − t_m), s(t) = s_m + s' (t − t_m). The step is cut into sub-steps over which
+// the altitude and the position along the curtain each change by at most uAuroraResolveKm; on each
+// the emission is integrated across the curtain in closed form,
+//   ∫ flux(s, u(t)) E(h(t)) dt ≈ E(h(t̄)) · (1/u') ∫_{u(ta)}^{u(tb)} flux(s_mid, u) du,
+// with t̄ the flux-weighted mean position of the sub-step, from the column's first moment
+// (curtain_profile.glsl, curtainColumn). A sub-step running along the curtain (|Δu| below 1 m)
+// takes the midpoint rule. The step's midpoint decides which curtains are near, as a point sample did.
+CurtainStep integrateCurtains(vec3 o, vec3 d, float t0, float t1)
 {
-    CurtainHit hit;
-    hit.radiance = vec3(0.0);
-    vec3 n = normalize(p);
+    CurtainStep step;
+    step.radiance = vec3(0.0);
+    float tm = 0.5 * (t0 + t1);
+    float len = t1 - t0;
+    vec3 p = o + tm * d;
+    float r = length(p);
+    vec3 n = p / r;
     float outsideKm = footprintMapOutsideKm(n, uFootprintCentre, uFootprintAngularRadius, uPlanetRadiusKm);
     if (outsideKm > 0.0) {
         // The map's cap holds every curtain with its reach (CPU side), so nothing emits out here.
-        hit.skipKm = outsideKm;
-        return hit;
+        step.skipKm = outsideKm;
+        return step;
     }
     vec2 texel = footprintMapTexel(footprintMapCoord(n, uFootprintCentre, uFootprintEast, uFootprintAngularRadius),
                                    uFootprintSize);
     vec4 nearest = texelFetch(uFootprintMap, ivec2(texel), 0);
     float lowerKm = footprintConservativeKm(nearest.z, uFootprintMarginKm);
-    hit.skipKm = lowerKm - uCurtainReachKm;
-    if (hit.skipKm > 0.0)
-        return hit;
+    // A step whose midpoint lies farther than reach + step/2 from every curtain emits nothing.
+    step.skipKm = lowerKm - uCurtainReachKm - 0.5 * uAuroraStepKm;
+    if (step.skipKm > 0.0)
+        return step;
+    // How fast the footprint moves per km of ray, dn/dt = (d − n (n·d)) / r, and the altitude, dh/dt = n·d.
+    vec3 footprintRate = (d - n * dot(n, d)) / r;
+    float hRate = dot(n, d);
     // The nearest curtain, and where curtains overlap the nearest point of another one: the
     // fluxes of overlapping curtains add (the map's fourth channel, src/components/aurora/physics/footprint_map.h).
     vec4 candidates = vec4(nearest.x, nearest.y, -1.0, -1.0);
@@ -95,22 +137,56 @@ CurtainHit sampleCurtains(vec3 p, float h)
         if (candidate.x < 0.0)
             continue;
         int c = int(candidate.x);
-        vec3 su = curtainCoordinates(c, int(candidate.y), n);
-        if (su.z > uCurtainReachKm)
+        CurtainCoordinates cc = curtainCoordinates(c, int(candidate.y), n);
+        if (cc.distance - 0.5 * len > uCurtainReachKm)
             continue;
-        float flux = uCurtainState[c].x * curtainProfile(c, su.x, su.y);
-        if (flux > 0.0)
-            hit.radiance += flux * auroraEmissionRgbPerKm(h, uCurtainState[c].y);
+        float lengthKm = texelFetch(uCurtainPolylines, ivec2(int(uCurtainState[c].z) - 1, c), 0).w;
+        // u = R asin(n·normal), so du/dt = R (normal·dn/dt) / √(1 − (n·normal)²); s runs along
+        // cross(normal, n), the direction from the segment's start to its end.
+        float across = dot(n, cc.normal);
+        float scale = uPlanetRadiusKm * inversesqrt(max(1.0 - across * across, 1e-12));
+        float uRate = scale * dot(cc.normal, footprintRate);
+        float sRate = scale * dot(cross(cc.normal, n), footprintRate);
+        int parts = int(clamp(ceil(max(abs(hRate), abs(sRate)) * len / uAuroraResolveKm), 1.0, 64.0));
+        float part = len / float(parts);
+        float du = uRate * part;
+        vec3 energy = vec3(0.0);
+        for (int i = 0; i < parts; ++i) {
+            float ta = t0 + float(i) * part;
+            float tMid = ta + 0.5 * part;
+            float u = cc.u + uRate * (tMid - tm);
+            float s = cc.s + sRate * (tMid - tm);
+            // Beyond its reach (across, or around the curtain's ends) a curtain does not emit.
+            float beyondEnds = max(max(-s, s - lengthKm), 0.0);
+            if (length(vec2(u, beyondEnds)) > uCurtainReachKm)
+                continue;
+            s = clamp(s, 0.0, lengthKm);
+            float mass; // ∫ profile dt over the sub-step, km
+            float tMean = tMid;
+            if (abs(du) < 1e-3) {
+                mass = curtainProfile(c, s, u) * part;
+            } else {
+                vec2 column = curtainColumn(c, s, u - 0.5 * du, u + 0.5 * du);
+                mass = column.x / uRate;
+                if (column.x != 0.0)
+                    tMean = clamp(tMid + (column.y / column.x - u) / uRate, ta, ta + part);
+            }
+            if (mass > 0.0)
+                energy += mass * auroraEmissionRgbPerKm(length(o + tMean * d) - uPlanetRadiusKm, uCurtainState[c].y);
+        }
+        step.radiance += uCurtainState[c].x * energy;
     }
-    return hit;
+    return step;
 }
 
-// Emission integrated along the ray segment [seg.x, seg.y] by the left-endpoint rectangle rule on the
-// grid t_k = seg.x + k·uAuroraStepKm (the last step ends at seg.y). With skipping, long jumps where the
-// footprint map proves no curtain is near (moving s km changes the footprint position by at most s km
-// above the ground) go over whole steps only, landing on the same grid: the skipping march evaluates a
-// subset of the naive march's samples, and every sample it leaves out emits nothing, so both give the
-// same sum (tests/render/skipping_test.cpp).
+// Emission integrated along the ray segment [seg.x, seg.y] in steps [t_k, t_k+1] on the grid
+// t_k = seg.x + k·uAuroraStepKm (the last step ends at seg.y), each integrated across the curtains
+// by integrateCurtains. With skipping, long jumps where the footprint map proves no curtain is near
+// (moving s km changes the footprint position by at most s km above the ground) go over whole
+// steps only, landing on the same grid: the skipping march evaluates a subset of the naive march's
+// steps, and every step it leaves out has its midpoint farther than reach + step/2 from every
+// curtain, where integrateCurtains adds nothing, so both give the same sum
+// (tests/render/skipping_test.cpp).
 vec3 auroraSegment(vec3 o, vec3 d, vec2 seg)
 {
     vec3 sum = vec3(0.0);
@@ -118,12 +194,10 @@ vec3 auroraSegment(vec3 o, vec3 d, vec2 seg)
     int steps = int(min(ceil((seg.y - seg.x) / uAuroraStepKm), 4.0e6));
     for (int k = 0; k < steps;) {
         float t = seg.x + float(k) * uAuroraStepKm;
-        vec3 p = o + t * d;
-        float h = length(p) - uPlanetRadiusKm;
-        CurtainHit hit = sampleCurtains(p, h);
+        CurtainStep step = integrateCurtains(o, d, t, min(t + uAuroraStepKm, seg.y));
         ++gAuroraSamples;
-        sum += hit.radiance * min(uAuroraStepKm, seg.y - t);
-        k += uSkipEmptySpace != 0 ? int(clamp(floor(hit.skipKm / uAuroraStepKm), 1.0, 4.0e6)) : 1;
+        sum += step.radiance;
+        k += uSkipEmptySpace != 0 ? int(clamp(floor(step.skipKm / uAuroraStepKm), 1.0, 4.0e6)) : 1;
     }
     return sum;
 }

@@ -8,6 +8,8 @@ uniform vec4 uCurtainDetail[MAX_CURTAINS];
 
 #if defined(HAS_FLUID_DETAIL) || defined(HAS_PLASMA)
 uniform sampler3D uFluxFrames;   // x: along (periodic), y: across, z: frame; flux 1/km
+uniform sampler3D uFluxColumns;  // the flux's running integrals across at the cell centres
+                                 // (src/components/fluid_detail/simulation/flux_columns.h)
 uniform vec4 uFluxStrip;         // strip length km, strip width km, frame count, peak scale
 #endif
 
@@ -25,5 +27,41 @@ float curtainProfile(int c, float s, float u)
 #else
     float x = u * detail.z; // in standard deviations
     return exp(-0.5 * x * x);
+#endif
+}
+
+#if defined(HAS_FLUID_DETAIL) || defined(HAS_PLASMA)
+// The running integrals (C, M) across the strip at across position a (simulation km) of the column at
+// coord.xz (curtain_column.glsl, fluxColumnValue): the texture filters along and between frames only;
+// across, the entry at the centre below a is read at its row's middle and extended in float.
+vec2 fluxColumnAt(vec3 coord, float across)
+{
+    float rows = float(textureSize(uFluxColumns, 0).y);
+    float cellWidth = uFluxStrip.y / (rows - 1.0);
+    float a = clamp(across, -0.5 * uFluxStrip.y, 0.5 * uFluxStrip.y);
+    float position = (a + 0.5 * uFluxStrip.y) / cellWidth - 0.5; // in cell centres
+    float below = clamp(floor(position), -1.0, rows - 2.0);
+    vec4 texel = textureLod(uFluxColumns, vec3(coord.x, (below + 1.5) / rows, coord.z), 0.0);
+    float centre = (below + 0.5) * cellWidth - 0.5 * uFluxStrip.y;
+    return fluxColumnValue(texel, centre, a - centre, cellWidth);
+}
+#endif
+
+// The profile's column across the curtain between u0 and u1 (km, either order): (∫ profile du,
+// ∫ u profile du) in km and km², for integrating a ray step across a thin curtain in closed form
+// (aurora_curtains.glsl). Exact for the smooth Gaussian; for the frames, exact at their cell edges
+// and linear between them.
+vec2 curtainColumn(int c, float s, float u0, float u1)
+{
+    vec4 detail = uCurtainDetail[c];
+    float a0 = u0 * detail.z;
+    float a1 = u1 * detail.z;
+#if defined(HAS_FLUID_DETAIL) || defined(HAS_PLASMA)
+    float frame = detail.y * (uFluxStrip.z - 1.0);
+    vec3 coord = vec3((s + detail.x) / uFluxStrip.x, 0.0, (frame + 0.5) / uFluxStrip.z);
+    vec2 column = fluxColumnAt(coord, a1) - fluxColumnAt(coord, a0);
+    return uFluxStrip.w * vec2(column.x / detail.z, column.y / (detail.z * detail.z));
+#else
+    return vec2(gaussianMass(a0, a1) / detail.z, gaussianMoment(a0, a1) / (detail.z * detail.z));
 #endif
 }

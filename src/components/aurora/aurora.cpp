@@ -26,6 +26,7 @@ public:
         program.set("uAuroraBottomKm", static_cast<float>(s_.bottomKm));
         program.set("uAuroraTopKm", static_cast<float>(s_.topKm));
         program.set("uAuroraStepKm", static_cast<float>(s_.stepKm));
+        program.set("uAuroraResolveKm", static_cast<float>(s_.resolveKm));
         program.set("uSkipEmptySpace", s_.skipEmptySpace ? 1 : 0);
         field_.update(frame.timeS);
     }
@@ -104,6 +105,7 @@ public:
         if (scene.has("atmosphere") && a.bottomKm < scene.settings<atmosphere::Settings>().topKm)
             t.fail("bottom_km", "must not be below atmosphere.top_km (the layers are composited in order)");
         a.stepKm = t.number("step_km", 0.05, 100.0, a.stepKm);
+        a.resolveKm = t.number("resolve_km", 0.01, 100.0, a.resolveKm);
         a.polylineSpacingKm = t.number("polyline_spacing_km", 0.1, 100.0, a.polylineSpacingKm);
         a.footprintMapSize = static_cast<int>(t.number("footprint_map_size", 16, 8192, a.footprintMapSize));
         if (a.footprintMapSize & (a.footprintMapSize - 1))
@@ -122,7 +124,8 @@ public:
     std::vector<std::string> shaderModules() const override
     {
         return {"render/angle.glsl", "components/aurora/deposition_coords.glsl", "components/aurora/deposition.glsl",
-                "components/aurora/footprint_map.glsl", "components/aurora/curtain_profile.glsl",
+                "components/aurora/footprint_map.glsl", "components/aurora/curtain_column.glsl",
+                "components/aurora/curtain_profile.glsl",
                 "components/aurora/segment_projection.glsl",
                 "components/aurora/aurora_curtains.glsl"};
     }

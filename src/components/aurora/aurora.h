@@ -38,7 +38,8 @@ struct Settings : scene::SettingsOf<Settings> {
     physics::Spectrum spectrum = physics::Spectrum::Maxwellian; // of the precipitating electrons
     double bottomKm = 85.0;
     double topKm = 300.0;
-    double stepKm = 2.0;              // march step inside curtains
+    double stepKm = 8.0;              // march step inside curtains (curtain coordinates once per step)
+    double resolveKm = 0.5;           // sub-steps: altitude and position along a curtain change by at most this
     double polylineSpacingKm = 2.0;   // curtain splines are sampled this finely for the shader
     int footprintMapSize = 512;       // texels per side of the jump-flooded footprint map
     bool skipEmptySpace = true;       // long steps where the footprint map proves no curtain is near

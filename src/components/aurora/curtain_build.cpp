@@ -74,8 +74,10 @@ CurtainBuild buildCurtains(const CurtainModel& model, const std::vector<CurtainS
         }
 
     // The cap must hold every curtain's emitting band plus the map's margin (at most a few texels).
-    // The reach is the shader's float uniform, so the map is exact for that same value.
-    const double reachKm = static_cast<float>(model.reachKm());
+    // A march step reaches half its length beyond its midpoint, where the shader reads the map: the
+    // map is exact, and names a second curtain, out to the reach plus half a step (the shader's float
+    // uniforms, so the map is exact for those same values).
+    const double reachKm = double(static_cast<float>(model.reachKm())) + 0.5 * double(static_cast<float>(aurora.stepKm));
     const double extraKm = reachKm + 2.0 * aurora.polylineSpacingKm + 100.0;
     physics::FootprintMapSpec spec = capAround(polylines, extraKm, model.planetRadiusKm(), aurora.footprintMapSize);
     spec.reachKm = reachKm;

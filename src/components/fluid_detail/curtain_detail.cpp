@@ -48,14 +48,12 @@ DetailShape detailShape(const fluid::CurtainDetailSpec& spec, const fluid::FluxF
 }
 
 CurtainDetail::CurtainDetail(const Settings& detail)
-    : spec_(curtainDetailSpec(detail)),
-      frames_(gl::Texture::create3D(1, 1, 1, gl::TexelFormat::R32F, gl::Filter::Linear, gl::Wrap::Repeat))
+    : spec_(curtainDetailSpec(detail))
 {
     const auto start = std::chrono::steady_clock::now();
     const CachedFluxFrames cached = cachedFluxFrames(spec_, io::defaultCacheDirectory());
     const fluid::FluxFrames& f = cached.frames;
-    frames_ = gl::Texture::create3D(f.nx, f.ny, f.frames, gl::TexelFormat::R32F, gl::Filter::Linear, gl::Wrap::Repeat);
-    frames_.upload(f.flux);
+    textures_.upload(f);
     shape_ = detailShape(spec_, f);
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     char text[400];
@@ -66,8 +64,7 @@ CurtainDetail::CurtainDetail(const Settings& detail)
 
 void CurtainDetail::bind(gl::Program& program) const
 {
-    program.bindTexture("uFluxFrames", 3, frames_.id());
-    program.set("uFluxStrip", glm::vec4(spec_.stripLengthKm, spec_.stripWidthKm, spec_.frames, static_cast<float>(shape_.peakScale)));
+    textures_.bind(program, spec_.stripLengthKm, spec_.stripWidthKm, shape_.peakScale);
 }
 
 } // namespace aurorawall::components::fluid_detail

@@ -74,7 +74,8 @@ void BoxRenderer::setFrame(gl::Program& program, const cluster::FrameState& fram
     PlasmaDetail::setFrame(program, frame);
     double position = 0.0;
     if (liveBox_) {
-        liveBox_->showStep(boxStep(settings_, frame.timeS), boxFrames_);
+        liveBox_->showStep(boxStep(settings_, frame.timeS),
+                           [this](const std::vector<float>& density) { boxFrames_.upload(density); });
     } else if (box_) {
         position = boxFramePosition(settings_, frame.timeS);
     }

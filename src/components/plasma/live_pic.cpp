@@ -37,10 +37,10 @@ bool LivePic::advanceTo(long n)
     return true;
 }
 
-void LivePic::showStep(long n, gl::Texture& frames)
+void LivePic::showStep(long n, const std::function<void(const std::vector<float>&)>& upload)
 {
     if (advanceTo(n)) {
-        frames.upload(frame_);
+        upload(frame_);
         gl::glFinish();
     }
 }

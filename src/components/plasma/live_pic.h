@@ -7,7 +7,6 @@
 #include "components/plasma/gpu/gpu_pic.h"
 #include "components/plasma/simulation/particles.h"
 #include "components/plasma/simulation/periodic_grid.h"
-#include "gl/texture.h"
 
 #include <functional>
 #include <memory>
@@ -29,9 +28,9 @@ public:
     // Steps to step n ≥ 0 (restarting first if n is behind) and computes its frame; nothing when the
     // frame of step n is already there. Returns whether the frame changed.
     bool advanceTo(long n);
-    // advanceTo(n), then the frame uploaded into `frames` (when it changed) and the GPU waited for, so
+    // advanceTo(n), then the frame handed to `upload` (when it changed) and the GPU waited for, so
     // the time spent here is the plasma's whole share of the frame.
-    void showStep(long n, gl::Texture& frames);
+    void showStep(long n, const std::function<void(const std::vector<float>&)>& upload);
     long step() const { return gpu_ ? gpu_->stepCount() : 0; }
     // The frame of the last advanceTo's step.
     const std::vector<float>& frame() const { return frame_; }

@@ -15,8 +15,7 @@ namespace aurorawall::components::plasma {
 namespace pic = aurorawall::plasma;
 
 PlasmaDetail::PlasmaDetail(const Settings& plasma, const aurora::Settings& aurora)
-    : spec_(sheetFramesSpec(plasma)),
-      frames_(gl::Texture::create3D(1, 1, 1, gl::TexelFormat::R32F, gl::Filter::Linear, gl::Wrap::Repeat))
+    : spec_(sheetFramesSpec(plasma))
 {
     if (!aurora.curtains.empty())
         curtain_ = aurora.curtains.front();
@@ -44,13 +43,14 @@ PlasmaDetail::PlasmaDetail(const Settings& plasma, const aurora::Settings& auror
         f = std::move(cached.frames);
         outcome = cached.outcome;
     }
-    frames_ = gl::Texture::create3D(f.nx, f.ny, f.frames, gl::TexelFormat::R32F, gl::Filter::Linear, gl::Wrap::Repeat);
-    frames_.upload(f.flux);
+    textures_.upload(f);
     shape_ = sheetDetailShape(spec_, f);
     // The live strip's later steps are not known at start-up: the curtain reaches as far as the
     // strip's box across (the shader samples nothing beyond it).
-    if (live_)
+    if (live_) {
         shape_.reachKm = 0.5 * spec_.sheet.widthM * 1e-3;
+        liveFrame_ = f;
+    }
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     const double wc = pic::cyclotronFrequency(spec_.sheet.magneticFieldT);
     const double wp = pic::plasmaFrequency(spec_.sheet.electronDensity);
@@ -69,14 +69,15 @@ void PlasmaDetail::setFrame(gl::Program&, const cluster::FrameState& frame)
         return;
     const double phase =
         curtain_.keys.empty() ? 0.0 : aurora::curtainAt(curtain_, frame.timeS, spec_.sheet.lengthM * 1e-3).detailPhase;
-    live_->showStep(curlsStep(spec_, phase), frames_);
+    live_->showStep(curlsStep(spec_, phase), [this](const std::vector<float>& density) {
+        liveFrame_.flux = density;
+        textures_.upload(liveFrame_);
+    });
 }
 
 void PlasmaDetail::bind(gl::Program& program) const
 {
-    program.bindTexture("uFluxFrames", 3, frames_.id());
-    program.set("uFluxStrip", glm::vec4(spec_.sheet.lengthM * 1e-3, spec_.sheet.widthM * 1e-3, frames_.depth(),
-                                        static_cast<float>(shape_.peakScale)));
+    textures_.bind(program, spec_.sheet.lengthM * 1e-3, spec_.sheet.widthM * 1e-3, shape_.peakScale);
 }
 
 } // namespace aurorawall::components::plasma
