@@ -148,9 +148,14 @@ CurtainStep integrateCurtains(vec3 o, vec3 d, float t0, float t1)
         float uRate = scale * dot(cc.normal, footprintRate);
         float sRate = scale * dot(cross(cc.normal, n), footprintRate);
         int parts = int(clamp(ceil(max(abs(hRate), abs(sRate)) * len / uAuroraResolveKm), 1.0, 64.0));
+        // Where the altitude changes by less than uAuroraResolveKm over the whole step, one emission
+        // at the step's flux-weighted mean position serves all its sub-steps.
+        bool emissionPerPart = abs(hRate) * len > uAuroraResolveKm;
         float part = len / float(parts);
         float du = uRate * part;
         vec3 energy = vec3(0.0);
+        float stepMass = 0.0;
+        float stepMoment = 0.0; // ∫ t profile dt, km²
         for (int i = 0; i < parts; ++i) {
             float ta = t0 + float(i) * part;
             float tMid = ta + 0.5 * part;
@@ -160,20 +165,22 @@ CurtainStep integrateCurtains(vec3 o, vec3 d, float t0, float t1)
             float beyondEnds = max(max(-s, s - lengthKm), 0.0);
             if (length(vec2(u, beyondEnds)) > uCurtainReachKm)
                 continue;
-            s = clamp(s, 0.0, lengthKm);
-            float mass; // ∫ profile dt over the sub-step, km
-            float tMean = tMid;
-            if (abs(du) < 1e-3) {
-                mass = curtainProfile(c, s, u) * part;
-            } else {
-                vec2 column = curtainColumn(c, s, u - 0.5 * du, u + 0.5 * du);
-                mass = column.x / uRate;
-                if (column.x != 0.0)
-                    tMean = clamp(tMid + (column.y / column.x - u) / uRate, ta, ta + part);
-            }
-            if (mass > 0.0)
+            vec3 column = curtainColumn(c, clamp(s, 0.0, lengthKm), u - 0.5 * du, u + 0.5 * du);
+            bool alongCurtain = abs(du) < 1e-3;
+            float mass = alongCurtain ? column.z * part : column.x / uRate; // ∫ profile dt over the sub-step, km
+            if (mass <= 0.0)
+                continue;
+            float tMean = alongCurtain ? tMid : clamp(tMid + (column.y / column.x - u) / uRate, ta, ta + part);
+            if (emissionPerPart) {
                 energy += mass * auroraEmissionRgbPerKm(length(o + tMean * d) - uPlanetRadiusKm, uCurtainState[c].y);
+            } else {
+                stepMass += mass;
+                stepMoment += mass * tMean;
+            }
         }
+        if (stepMass > 0.0)
+            energy += stepMass * auroraEmissionRgbPerKm(length(o + (stepMoment / stepMass) * d) - uPlanetRadiusKm,
+                                                        uCurtainState[c].y);
         step.radiance += uCurtainState[c].x * energy;
     }
     return step;

@@ -32,9 +32,10 @@ float curtainProfile(int c, float s, float u)
 
 #if defined(HAS_FLUID_DETAIL) || defined(HAS_PLASMA)
 // The running integrals (C, M) across the strip at across position a (simulation km) of the column at
-// coord.xz (curtain_column.glsl, fluxColumnValue): the texture filters along and between frames only;
-// across, the entry at the centre below a is read at its row's middle and extended in float.
-vec2 fluxColumnAt(vec3 coord, float across)
+// coord.xz (curtain_column.glsl, fluxColumnValue), and the flux F there: the texture filters along and
+// between frames only; across, the entry at the centre below a is read at its row's middle and
+// extended in float.
+vec3 fluxColumnAt(vec3 coord, float across)
 {
     float rows = float(textureSize(uFluxColumns, 0).y);
     float cellWidth = uFluxStrip.y / (rows - 1.0);
@@ -43,15 +44,16 @@ vec2 fluxColumnAt(vec3 coord, float across)
     float below = clamp(floor(position), -1.0, rows - 2.0);
     vec4 texel = textureLod(uFluxColumns, vec3(coord.x, (below + 1.5) / rows, coord.z), 0.0);
     float centre = (below + 0.5) * cellWidth - 0.5 * uFluxStrip.y;
-    return fluxColumnValue(texel, centre, a - centre, cellWidth);
+    float flux = abs(across) < 0.5 * uFluxStrip.y ? texel.z + texel.w * (a - centre) / cellWidth : 0.0;
+    return vec3(fluxColumnValue(texel, centre, a - centre, cellWidth), flux);
 }
 #endif
 
 // The profile's column across the curtain between u0 and u1 (km, either order): (∫ profile du,
-// ∫ u profile du) in km and km², for integrating a ray step across a thin curtain in closed form
-// (aurora_curtains.glsl). Exact for the smooth Gaussian; for the frames, exact at their cell edges
-// and linear between them.
-vec2 curtainColumn(int c, float s, float u0, float u1)
+// ∫ u profile du, the profile's mean at u0 and u1) in km, km² and 1, for integrating a ray step
+// across a thin curtain in closed form (aurora_curtains.glsl). Exact for the smooth Gaussian and for
+// the frames as the texture interpolates them (linear between cell centres).
+vec3 curtainColumn(int c, float s, float u0, float u1)
 {
     vec4 detail = uCurtainDetail[c];
     float a0 = u0 * detail.z;
@@ -59,9 +61,11 @@ vec2 curtainColumn(int c, float s, float u0, float u1)
 #if defined(HAS_FLUID_DETAIL) || defined(HAS_PLASMA)
     float frame = detail.y * (uFluxStrip.z - 1.0);
     vec3 coord = vec3((s + detail.x) / uFluxStrip.x, 0.0, (frame + 0.5) / uFluxStrip.z);
-    vec2 column = fluxColumnAt(coord, a1) - fluxColumnAt(coord, a0);
-    return uFluxStrip.w * vec2(column.x / detail.z, column.y / (detail.z * detail.z));
+    vec3 lo = fluxColumnAt(coord, a0);
+    vec3 hi = fluxColumnAt(coord, a1);
+    return uFluxStrip.w * vec3((hi.x - lo.x) / detail.z, (hi.y - lo.y) / (detail.z * detail.z), 0.5 * (lo.z + hi.z));
 #else
-    return vec2(gaussianMass(a0, a1) / detail.z, gaussianMoment(a0, a1) / (detail.z * detail.z));
+    return vec3(gaussianMass(a0, a1) / detail.z, gaussianMoment(a0, a1) / (detail.z * detail.z),
+                0.5 * (exp(-0.5 * a0 * a0) + exp(-0.5 * a1 * a1)));
 #endif
 }

@@ -11,6 +11,29 @@ AURORAWALL_GLSL_PRECISION(double)
 
 namespace aurorawall::fluid {
 
+namespace {
+
+// The entries (C, M, F, ΔF) at the centres origin + (i + ½)Δ, i = −1 … n − 1, of the periodic flux
+// `values` (n cell centres), written to out[stride·(i + 1)]; C and M are 0 at origin.
+void runningIntegrals(const std::vector<double>& values, double delta, double origin, float* out, std::size_t stride)
+{
+    const int n = static_cast<int>(values.size());
+    const auto flux = [&](int i) { return values[((i % n) + n) % n]; };
+    const double first = origin - 0.5 * delta;
+    const glm::dvec2 toOrigin =
+        f64::fluxColumnValue(glm::dvec4(0.0, 0.0, flux(-1), flux(0) - flux(-1)), first, 0.5 * delta, delta);
+    glm::dvec2 integrals = -toOrigin;
+    for (int r = 0; r <= n; ++r) {
+        const int i = r - 1;
+        const glm::dvec4 entry(integrals.x, integrals.y, flux(i), flux(i + 1) - flux(i));
+        for (int channel = 0; channel < 4; ++channel)
+            out[stride * std::size_t(r) + std::size_t(channel)] = static_cast<float>(entry[channel]);
+        integrals = f64::fluxColumnValue(entry, first + r * delta, delta, delta);
+    }
+}
+
+} // namespace
+
 FluxColumns fluxColumns(const FluxFrames& f)
 {
     FluxColumns c;
@@ -18,32 +41,13 @@ FluxColumns fluxColumns(const FluxFrames& f)
     c.rows = f.ny + 1;
     c.frames = f.frames;
     c.texels.assign(std::size_t(4) * c.nx * c.rows * c.frames, 0.0f);
-    const double du = f.texelKmY;
-    const double halfWidth = 0.5 * f.ny * du;
+    std::vector<double> column(f.ny);
     for (int k = 0; k < f.frames; ++k)
         for (int i = 0; i < f.nx; ++i) {
-            // Row 0: centre −1 (the last row's flux, periodic), its integrals chosen so that C and M
-            // are 0 at the strip's lower edge, half a cell above it.
-            const double below = f.at(k, i, f.ny - 1);
-            const double first = -halfWidth - 0.5 * du;
-            const glm::dvec2 toEdge = f64::fluxColumnValue(glm::dvec4(0.0, 0.0, below, f.at(k, i, 0) - below), first,
-                                                           0.5 * du, du);
-            glm::dvec4 entry(-toEdge.x, -toEdge.y, below, f.at(k, i, 0) - below);
-            for (int r = 0; r < c.rows; ++r) {
-                const double centre = first + r * du;
-                if (r > 0) {
-                    const double flux = f.at(k, i, r - 1);
-                    const double next = f.at(k, i, r % f.ny);
-                    entry = glm::dvec4(entry.x, entry.y, flux, next - flux);
-                }
-                const std::size_t at = 4 * ((std::size_t(k) * c.rows + r) * c.nx + i);
-                for (int channel = 0; channel < 4; ++channel)
-                    c.texels[at + channel] = static_cast<float>(entry[channel]);
-                // The integrals at the next centre.
-                const glm::dvec2 next = f64::fluxColumnValue(entry, centre, du, du);
-                entry.x = next.x;
-                entry.y = next.y;
-            }
+            for (int j = 0; j < f.ny; ++j)
+                column[j] = f.at(k, i, j);
+            runningIntegrals(column, f.texelKmY, -0.5 * f.ny * double(f.texelKmY),
+                             &c.texels[4 * (std::size_t(k) * c.rows * c.nx + i)], 4 * std::size_t(c.nx));
         }
     return c;
 }
