@@ -9,7 +9,7 @@
 uniform float uAuroraBottomKm;
 uniform float uAuroraTopKm;
 uniform float uAuroraStepKm;
-uniform float uAuroraResolveKm;      // sub-steps: the altitude and the position along a curtain change by at most this
+uniform float uAuroraResolveKm;      // sub-steps (at most 64 a step): altitude and position along a curtain change by at most this
 uniform int uSkipEmptySpace;         // 0: the naive fine march everywhere (the reference)
 uniform int uCurtainCount;
 uniform sampler2D uCurtainPolylines; // RGBA32F, row c: xyz unit vector, w arclength km
@@ -23,7 +23,7 @@ uniform float uFootprintAngularRadius;
 uniform float uFootprintSize;
 uniform float uFootprintMarginKm;
 
-int gAuroraSamples = 0; // samples this pixel's ray has taken in auroraSegment: its work (main.frag)
+int gAuroraSamples = 0; // steps this pixel's ray has taken in auroraSegment: its work (main.frag)
 
 // Where n projects along segment j of curtain c: (km along from the segment's start, segment
 // length km, signed lateral distance km, distance beyond the segment's ends km).
