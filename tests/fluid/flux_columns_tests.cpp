@@ -11,7 +11,7 @@
 
 namespace aurorawall::f64 {
 AURORAWALL_GLSL_PRECISION(double)
-#include "components/aurora/curtain_column.glsl"
+#include "components/aurora/flux_column.glsl"
 } // namespace aurorawall::f64
 
 using namespace aurorawall;

@@ -32,7 +32,7 @@ float curtainProfile(int c, float s, float u)
 
 #if defined(HAS_FLUID_DETAIL) || defined(HAS_PLASMA)
 // The running integrals (C, M) across the strip at across position a (simulation km) of the column at
-// coord.xz (curtain_column.glsl, fluxColumnValue), and the flux F there: the texture filters along and
+// coord.xz (flux_column.glsl, fluxColumnValue), and the flux F there: the texture filters along and
 // between frames only; across, the entry at the centre below a is read at its row's middle and
 // extended in float.
 vec3 fluxColumnAt(vec3 coord, float across)

@@ -124,7 +124,8 @@ public:
     std::vector<std::string> shaderModules() const override
     {
         return {"render/angle.glsl", "components/aurora/deposition_coords.glsl", "components/aurora/deposition.glsl",
-                "components/aurora/footprint_map.glsl", "components/aurora/curtain_column.glsl",
+                "components/aurora/footprint_map.glsl", "components/aurora/gaussian_column.glsl",
+                "components/aurora/flux_column.glsl",
                 "components/aurora/curtain_profile.glsl",
                 "components/aurora/segment_projection.glsl",
                 "components/aurora/aurora_curtains.glsl"};

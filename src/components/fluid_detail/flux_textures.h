@@ -2,7 +2,7 @@
 // The curtain flux frames on the GPU, as shaders/components/aurora/curtain_profile.glsl reads them
 // (fluid_detail's simulated frames, the plasma's electron strip): the flux itself (unit 3,
 // uFluxFrames: x along, y across, z frame; linear, periodic) and its running integrals across the
-// strip (unit 10, uFluxColumns: fluid::fluxColumns, the ny + 1 cell edges across), which let a ray
+// strip (unit 10, uFluxColumns: fluid::fluxColumns, entries at the cell centres across), which let a ray
 // step be integrated across a thin curtain in closed form.
 #include "components/fluid_detail/simulation/curtain_detail.h"
 #include "gl/shader_program.h"

@@ -5,7 +5,7 @@
 namespace aurorawall::f64 {
 namespace {
 AURORAWALL_GLSL_PRECISION(double)
-#include "components/aurora/curtain_column.glsl"
+#include "components/aurora/flux_column.glsl"
 } // namespace
 } // namespace aurorawall::f64
 

@@ -5,7 +5,7 @@
 // (fluid::sampleFlux: linear between cell centres, periodic), has the running integrals across it
 //   C(u) = ∫_{−Ly/2}^{u} F du',   M(u) = ∫_{−Ly/2}^{u} u' F du'
 // (the mass below u and its first moment). Between two cell centres F is linear, so C and M are
-// polynomials there, given exactly by shaders/components/aurora/curtain_column.glsl (fluxColumnValue)
+// polynomials there, given exactly by shaders/components/aurora/flux_column.glsl (fluxColumnValue)
 // from the entry at the lower centre: (C(c), M(c), F(c), F(c + Δ) − F(c)). The entries sit at the
 // centres c_j = (j + ½)Δu − Ly/2 for j = −1 … ny − 1 (the first lies half a cell below the strip,
 // where the periodic flux still rises toward its first centre), for every cell centre along and

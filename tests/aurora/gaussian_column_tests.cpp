@@ -1,4 +1,4 @@
-// The smooth curtain's column across it (shaders/components/aurora/curtain_column.glsl, shared
+// The smooth curtain's column across it (shaders/components/aurora/gaussian_column.glsl, shared
 // text) against std::erf / std::erfc in double, including the far tails where 1 − erf cancels.
 #include "common/glsl.h"
 
@@ -8,12 +8,12 @@
 
 namespace aurorawall::f32 {
 AURORAWALL_GLSL_PRECISION(float)
-#include "components/aurora/curtain_column.glsl"
+#include "components/aurora/gaussian_column.glsl"
 } // namespace aurorawall::f32
 
 namespace aurorawall::f64 {
 AURORAWALL_GLSL_PRECISION(double)
-#include "components/aurora/curtain_column.glsl"
+#include "components/aurora/gaussian_column.glsl"
 } // namespace aurorawall::f64
 
 using namespace aurorawall;

@@ -1,7 +1,6 @@
-// A curtain's profile integrated across an interval, for integrating a ray step across a curtain
-// in closed form (aurora_curtains.glsl): the smooth curtain's Gaussian exp(−x²/2), and the running
-// integrals of tabulated flux frames. One text for GLSL and C++ (src/common/glsl.h): `real` is
-// float on the GPU, float or double on the CPU.
+// The smooth curtain's Gaussian profile exp(−x²/2) integrated across an interval, for integrating a
+// ray step across a curtain in closed form (aurora_curtains.glsl). One text for GLSL and C++
+// (src/common/glsl.h): `real` is float on the GPU, float or double on the CPU.
 
 // erfc(x) for x ≥ 0 by the Chebyshev fit of Press et al., "Numerical Recipes" (2nd ed., 1992, §6.2,
 // erfcc): relative error below 1.2e-7 for every x ≥ 0, and no cancellation in the tail.
@@ -41,17 +40,4 @@ real gaussianMass(real a, real b)
 real gaussianMoment(real a, real b)
 {
     return exp(real(-0.5) * a * a) - exp(real(-0.5) * b * b);
-}
-
-// The running integrals C(a) = ∫_{−w/2}^{a} F da' and M(a) = ∫_{−w/2}^{a} a' F da' of a flux F that is
-// linear between cell centres (src/components/fluid_detail/simulation/flux_columns.h), from the
-// table's entry at the centre c below a: texel = (C(c), M(c), F(c), F(c + Δ) − F(c)), x = a − c in
-// [0, Δ]. With F = F(c) + k x', k = (F(c + Δ) − F(c))/Δ:
-//   C(a) = C(c) + F(c) x + k x²/2,   M(a) = M(c) + c (C(a) − C(c)) + F(c) x²/2 + k x³/3.
-vec2 fluxColumnValue(vec4 texel, real centre, real x, real cellWidth)
-{
-    real k = texel.w / cellWidth;
-    real mass = x * (texel.z + real(0.5) * k * x);
-    real moment = x * x * (real(0.5) * texel.z + k * x / real(3.0));
-    return vec2(texel.x + mass, texel.y + centre * mass + moment);
 }
