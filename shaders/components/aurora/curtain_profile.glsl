@@ -7,30 +7,11 @@ const int MAX_CURTAINS = 16;
 uniform vec4 uCurtainDetail[MAX_CURTAINS];
 
 #if defined(HAS_FLUID_DETAIL) || defined(HAS_PLASMA)
-uniform sampler3D uFluxFrames;   // x: along (periodic), y: across, z: frame; flux 1/km
-uniform sampler3D uFluxColumns;  // the flux's running integrals across at the cell centres
+uniform sampler3D uFluxColumns;  // x: along (periodic), y: entry across, z: frame; the flux (1/km) and
+                                 // its running integrals across at the cell centres
                                  // (src/components/fluid_detail/simulation/flux_columns.h)
 uniform vec4 uFluxStrip;         // strip length km, strip width km, frame count, peak scale
-#endif
 
-float curtainProfile(int c, float s, float u)
-{
-    vec4 detail = uCurtainDetail[c];
-#if defined(HAS_FLUID_DETAIL) || defined(HAS_PLASMA)
-    float across = u * detail.z; // in the simulation's km
-    if (abs(across) >= 0.5 * uFluxStrip.y)
-        return 0.0;
-    // Texel centres at (i + 1/2)/n on every axis (src/components/fluid_detail/simulation/curtain_detail.h, docs/fluid.md).
-    float frame = detail.y * (uFluxStrip.z - 1.0);
-    vec3 coord = vec3((s + detail.x) / uFluxStrip.x, across / uFluxStrip.y + 0.5, (frame + 0.5) / uFluxStrip.z);
-    return uFluxStrip.w * textureLod(uFluxFrames, coord, 0.0).r;
-#else
-    float x = u * detail.z; // in standard deviations
-    return exp(-0.5 * x * x);
-#endif
-}
-
-#if defined(HAS_FLUID_DETAIL) || defined(HAS_PLASMA)
 // The running integrals (C, M) across the strip at across position a (simulation km) of the column at
 // coord.xz (flux_column.glsl, fluxColumnValue), and the flux F there: the texture filters along and
 // between frames only; across, the entry at the centre below a is read at its row's middle and

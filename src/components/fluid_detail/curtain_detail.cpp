@@ -53,7 +53,7 @@ CurtainDetail::CurtainDetail(const Settings& detail)
     const auto start = std::chrono::steady_clock::now();
     const CachedFluxFrames cached = cachedFluxFrames(spec_, io::defaultCacheDirectory());
     const fluid::FluxFrames& f = cached.frames;
-    textures_.upload(f);
+    columns_.upload(f);
     shape_ = detailShape(spec_, f);
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     char text[400];
@@ -64,7 +64,7 @@ CurtainDetail::CurtainDetail(const Settings& detail)
 
 void CurtainDetail::bind(gl::Program& program) const
 {
-    textures_.bind(program, spec_.stripLengthKm, spec_.stripWidthKm, shape_.peakScale);
+    columns_.bind(program, spec_.stripLengthKm, spec_.stripWidthKm, shape_.peakScale);
 }
 
 } // namespace aurorawall::components::fluid_detail

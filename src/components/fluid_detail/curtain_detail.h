@@ -1,11 +1,11 @@
 #pragma once
 // The fluid_detail component on the GPU: the Kelvin-Helmholtz flux frames of src/components/fluid_detail/simulation as
-// textures (flux_textures.h), with the constants that turn a lookup into a profile of peak 1. Simulated at start-up, or read from the
+// a texture (flux_column_texture.h), with the constants that turn a lookup into a profile of peak 1. Simulated at start-up, or read from the
 // on-disk cache (cached_flux_frames.h); the simulation is deterministic and a cache file is read
 // only when its checksum and key match, so every rank holds the same frames.
 #include "components/fluid_detail/simulation/curtain_detail.h"
 #include "gl/shader_program.h"
-#include "components/fluid_detail/flux_textures.h"
+#include "components/fluid_detail/flux_column_texture.h"
 #include "components/fluid_detail/fluid_detail.h"
 #include "scene/component.h"
 
@@ -30,14 +30,14 @@ public:
 
     std::string precomputationLog() const override { return summary_; }
     void setFrame(gl::Program&, const cluster::FrameState&) override {}
-    // Texture units 3 and 10 and the uniforms of shaders/components/aurora/curtain_profile.glsl.
+    // Texture unit 3 and the uniforms of shaders/components/aurora/curtain_profile.glsl.
     void bind(gl::Program& program) const override;
 
     const DetailShape& shape() const { return shape_; }
 
 private:
     fluid::CurtainDetailSpec spec_;
-    FluxTextures textures_;
+    FluxColumnTexture columns_;
     DetailShape shape_;
     std::string summary_;
 };

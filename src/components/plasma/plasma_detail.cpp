@@ -43,7 +43,7 @@ PlasmaDetail::PlasmaDetail(const Settings& plasma, const aurora::Settings& auror
         f = std::move(cached.frames);
         outcome = cached.outcome;
     }
-    textures_.upload(f);
+    columns_.upload(f);
     shape_ = sheetDetailShape(spec_, f);
     // The live strip's later steps are not known at start-up: the curtain reaches as far as the
     // strip's box across (the shader samples nothing beyond it).
@@ -71,13 +71,13 @@ void PlasmaDetail::setFrame(gl::Program&, const cluster::FrameState& frame)
         curtain_.keys.empty() ? 0.0 : aurora::curtainAt(curtain_, frame.timeS, spec_.sheet.lengthM * 1e-3).detailPhase;
     live_->showStep(curlsStep(spec_, phase), [this](const std::vector<float>& density) {
         liveFrame_.flux = density;
-        textures_.upload(liveFrame_);
+        columns_.upload(liveFrame_);
     });
 }
 
 void PlasmaDetail::bind(gl::Program& program) const
 {
-    textures_.bind(program, spec_.sheet.lengthM * 1e-3, spec_.sheet.widthM * 1e-3, shape_.peakScale);
+    columns_.bind(program, spec_.sheet.lengthM * 1e-3, spec_.sheet.widthM * 1e-3, shape_.peakScale);
 }
 
 } // namespace aurorawall::components::plasma

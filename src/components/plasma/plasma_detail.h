@@ -1,6 +1,6 @@
 #pragma once
 // The plasma component on the GPU: the electron strip's density as curtain flux frames
-// (fluid_detail/flux_textures.h) with the uniforms of shaders/components/aurora/curtain_profile.glsl,
+// (fluid_detail/flux_column_texture.h) with the uniforms of shaders/components/aurora/curtain_profile.glsl,
 // as fluid_detail binds them.
 //   device = "cpu": the frames simulated at start-up (sheet_frames.h), the curtain's detail phase
 //     choosing and blending frames in the shader.
@@ -11,7 +11,7 @@
 #include "components/fluid_detail/curtain_detail.h"
 #include "components/plasma/live_pic.h"
 #include "components/plasma/plasma.h"
-#include "components/fluid_detail/flux_textures.h"
+#include "components/fluid_detail/flux_column_texture.h"
 #include "scene/component.h"
 
 #include <memory>
@@ -27,7 +27,7 @@ public:
     std::string precomputationLog() const override { return summary_; }
     // device = "gpu": steps the live run to this frame's step and uploads its frame, waited for.
     void setFrame(gl::Program&, const cluster::FrameState& frame) override;
-    // Texture units 3 and 10: uFluxFrames, uFluxColumns and uFluxStrip.
+    // Texture unit 3: uFluxColumns and uFluxStrip.
     void bind(gl::Program& program) const override;
 
     const fluid_detail::DetailShape& shape() const { return shape_; }
@@ -36,7 +36,7 @@ private:
     SheetFramesSpec spec_;
     aurora::Curtain curtain_; // the first curtain (none: detail phase 0)
     std::unique_ptr<LivePic> live_;
-    fluid_detail::FluxTextures textures_;
+    fluid_detail::FluxColumnTexture columns_;
     fluid::FluxFrames liveFrame_; // device = "gpu": the live run's frame, its flux replaced each step
     fluid_detail::DetailShape shape_;
     std::string summary_;
