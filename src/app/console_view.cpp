@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace aurorawall::app {
@@ -9,6 +10,22 @@ namespace aurorawall::app {
 int consoleHeightPx(int canvasWidth, int canvasHeight)
 {
     return std::max(1, static_cast<int>(std::lround(double(kConsoleWidthPx) * canvasHeight / canvasWidth)));
+}
+
+glm::ivec2 consolePositionPx(const wall::Wall& wall)
+{
+    bool windowed = false;
+    glm::ivec2 position{std::numeric_limits<int>::max(), std::numeric_limits<int>::min()};
+    for (const wall::Screen& screen : wall.screens) {
+        const wall::WindowPlacement& w = screen.window;
+        if (w.fullscreen)
+            continue;
+        windowed = true;
+        const int height = w.height > 0 ? w.height : screen.heightPx;
+        position.x = std::min(position.x, w.x);
+        position.y = std::max(position.y, w.y + height);
+    }
+    return windowed ? position : glm::ivec2{-1, -1};
 }
 
 namespace {

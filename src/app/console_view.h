@@ -5,6 +5,7 @@
 #include "gl/full_screen_triangle.h"
 #include "gl/texture.h"
 #include "io/image.h"
+#include "wall/wall.h"
 
 #include <memory>
 #include <vector>
@@ -21,6 +22,11 @@ struct ConsoleView {
 
 // The console's height for a canvas of canvasWidth x canvasHeight pixels: the same aspect, at least 1.
 int consoleHeightPx(int canvasWidth, int canvasHeight);
+
+// Where the console opens on the master's desktop: windowed walls put every screen's window on one
+// desktop, so the console goes just below the lowest of them, at the leftmost one's x, covering none;
+// {-1, -1} (the window system chooses) when every screen is fullscreen.
+glm::ivec2 consolePositionPx(const wall::Wall& wall);
 
 // The canvas (rows top-down) averaged over boxes into width x height pixels as RGBA floats with rows
 // bottom-up (a texture's upload order): each console pixel the mean of the canvas pixels whose centres

@@ -90,6 +90,9 @@ void openGraphics(const cluster::MpiWorld& world, WallSession& s)
         spec.title = "aurorawall console";
         spec.widthPx = kConsoleWidthPx;
         spec.heightPx = consoleHeightPx(s.wall.canvasSizePx.x, s.wall.canvasSizePx.y);
+        const glm::ivec2 position = consolePositionPx(s.wall);
+        spec.x = position.x;
+        spec.y = position.y;
         windows.push_back(spec);
     }
     s.context = gl::createContext(backend, windows);

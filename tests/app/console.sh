@@ -25,7 +25,10 @@ ask() { "${client[@]}" --port "$port" "$@" || { kill $job; fail "'$*' was not an
 window=$(xdotool search --name '^aurorawall console$' | head -n 1)
 [ -n "$window" ] || { kill $job; fail "no window 'aurorawall console'"; }
 size=$(xdotool getwindowgeometry "$window" | sed -n 's/.*Geometry: //p')
-echo "console window: $size"
+position=$(xdotool getwindowgeometry "$window" | sed -n 's/.*Position: \([0-9-]*,[0-9-]*\).*/\1/p')
+echo "console window: $size at $position"
+# The wall's four windows fill the desktop's top 36 rows; the console opens below them, covering none.
+[ "$position" = "0,36" ] || { kill $job; fail "the console opened at $position, expected 0,36 below the wall's windows"; }
 ask pause >/dev/null
 sleep 1
 grab() { python3 "$HERE/window_pixels.py" "$window" "$WORK/$1.ppm"; }
@@ -34,8 +37,12 @@ grab plain
 python3 - "$WORK/plain.ppm" <<'PY' || { kill $job; fail "the console shows a black window"; }
 import sys
 data = open(sys.argv[1], "rb").read().split(maxsplit=4)[4]
-lit = sum(1 for i in range(0, len(data), 3) if data[i:i + 3] != b"\0\0\0")
+width = int(open(sys.argv[1], "rb").read().split(maxsplit=4)[1])
+dark = [(i // 3 % width, i // 3 // width) for i in range(0, len(data), 3) if data[i:i + 3] == b"\0\0\0"]
+lit = len(data) // 3 - len(dark)
 print(f"lit console pixels: {lit} of {len(data) // 3}")
+if dark:
+    print(f"black pixels from {min(dark)} to {max(dark)}")
 sys.exit(0 if lit == len(data) // 3 else 1)
 PY
 

@@ -1,6 +1,8 @@
 // The console's preview of the gathered wall (app/console_view.h): box means, rows turned bottom-up.
 #include "app/console_view.h"
 
+#include "wall/wall_file.h"
+
 #include <gtest/gtest.h>
 
 namespace aurorawall::app {
@@ -47,6 +49,26 @@ TEST(ConsoleView, EnlargingTakesTheNearestPixel)
     EXPECT_EQ(t[2 * 4], 1.0f);
     EXPECT_EQ(t[3 * 4], 1.0f);
     EXPECT_THROW(previewTexels(io::Image(), 4, 1), std::invalid_argument);
+}
+
+// Windowed walls: the console opens below the lowest window, at the leftmost x, so it covers none.
+TEST(ConsoleView, OpensBelowTheWallsWindows)
+{
+    const wall::Wall desktop = wall::loadWall(AW_WALLS_DIR "/desktop-2x2.toml"); // 2x2 windows of 320x180
+    EXPECT_EQ(consolePositionPx(desktop), glm::ivec2(0, 360));
+    const wall::Wall bezel = wall::loadWall(AW_WALLS_DIR "/desktop-2x2-bezel.toml"); // half-size windows
+    int bottom = 0;
+    for (const wall::Screen& s : bezel.screens)
+        bottom = std::max(bottom, s.window.y + s.window.height);
+    EXPECT_GT(bottom, 0);
+    EXPECT_EQ(consolePositionPx(bezel), glm::ivec2(0, bottom));
+    EXPECT_LT(bottom, 360); // the bezel wall's canvas is taller than 360 px, its windows half size
+}
+
+// Fullscreen walls: the window system places the console.
+TEST(ConsoleView, FullscreenWallsLeaveTheConsoleToTheWindowSystem)
+{
+    EXPECT_EQ(consolePositionPx(wall::loadWall(AW_WALLS_DIR "/uaf-powerwall.toml")), glm::ivec2(-1, -1));
 }
 
 } // namespace
