@@ -40,7 +40,7 @@ RenderOptions parseRenderOptions(int argc, char** argv)
          "(--control-port)")
         ("dt", po::value(&o.timeStepS), "animation time step per frame in seconds (default: the scene's time_step_s)")
         ("start-time", po::value(&o.startTimeS), "animation time of the first frame in seconds (default: the scene's)")
-        ("realtime", po::bool_switch(&o.realTime), "animation time follows the master's wall clock instead of --dt")
+        ("realtime", po::bool_switch(&o.realTime), "animation time follows the master's wall clock instead of --dt (one frame behind it: each frame shows the moment the one before it began)")
         ("exposure", po::value(&o.exposure), "multiplies radiance for the PNG preview and windows (default: the scene's)");
     cli.addChoice("tonemap", &o.toneMap, kToneMaps,
                   "preview curve: aces (ACES filmic + sRGB) or magnitude-gamma (Lawlor & Genetti)");

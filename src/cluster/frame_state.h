@@ -4,6 +4,7 @@
 #include <glm/glm.hpp>
 
 #include <cstdint>
+#include <limits>
 #include <type_traits>
 
 namespace aurorawall::cluster {
@@ -11,6 +12,9 @@ namespace aurorawall::cluster {
 struct FrameState {
     std::uint64_t frame = 0;
     double timeS = 0.0;                   // animation time, seconds (double: stays exact at 1e9 s)
+    double nextTimeS = std::numeric_limits<double>::quiet_NaN(); // the time the next frame shows unless a
+                                          // command changes it (pause, play, speed, step, time), for
+                                          // ranks to prepare ahead; NaN: not known (a single frame)
     glm::dvec3 cameraPositionKm{0.0};     // planet frame
     glm::dvec3 cameraRight{1.0, 0.0, 0.0};
     glm::dvec3 cameraUp{0.0, 1.0, 0.0};

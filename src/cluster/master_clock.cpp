@@ -1,10 +1,12 @@
 #include "cluster/master_clock.h"
 
+#include <algorithm>
+
 namespace aurorawall::cluster {
 
 MasterClock::MasterClock(const ClockSettings& settings, const scene::Camera& camera, double exposure)
     : settings_(settings), camera_(camera), cameraTimeS_(settings.startTimeS), exposure_(exposure),
-      anchorTimeS_(settings.startTimeS), anchorWall_(std::chrono::steady_clock::now()),
+      anchorTimeS_(settings.startTimeS), anchorWall_(std::chrono::steady_clock::now()), lastCallWall_(anchorWall_),
       lastTimeS_(settings.startTimeS)
 {
 }
@@ -12,17 +14,26 @@ MasterClock::MasterClock(const ClockSettings& settings, const scene::Camera& cam
 FrameState MasterClock::next(bool stopRequested)
 {
     const auto now = std::chrono::steady_clock::now();
+    const auto previousCall = lastCallWall_;
+    lastCallWall_ = now;
+    // Real time: speed x the wall-clock seconds from the anchor to `wall` (no earlier than the anchor).
+    const auto realTimeAt = [&](std::chrono::steady_clock::time_point wall) {
+        return anchorTimeS_ + speed_ * std::chrono::duration<double>(std::max(wall, anchorWall_) - anchorWall_).count();
+    };
+    const auto fixedStepTime = [&](std::uint64_t advances) {
+        return anchorTimeS_ + static_cast<double>(advances) * (speed_ * settings_.timeStepS);
+    };
     double timeS = lastTimeS_;
     if (jumpPending_) { // steps asked for after the jump count from the time jumped to
         advances_ = paused_ ? stepsPending_ : 0;
-        timeS = anchorTimeS_ + static_cast<double>(advances_) * (speed_ * settings_.timeStepS);
+        timeS = fixedStepTime(advances_);
         anchorWall_ = now;
         jumpPending_ = false;
     } else if (!paused_ && settings_.realTime) {
-        timeS = anchorTimeS_ + speed_ * std::chrono::duration<double>(now - anchorWall_).count();
+        timeS = realTimeAt(previousCall);
     } else if (!paused_ || stepsPending_ > 0) {
         advances_ += paused_ ? stepsPending_ : 1;
-        timeS = anchorTimeS_ + static_cast<double>(advances_) * (speed_ * settings_.timeStepS);
+        timeS = fixedStepTime(advances_);
     }
     stepsPending_ = 0;
     lastTimeS_ = timeS;
@@ -30,6 +41,8 @@ FrameState MasterClock::next(bool stopRequested)
     FrameState s;
     s.frame = frame_;
     s.timeS = timeS;
+    // The same expressions the next call evaluates when no command comes between.
+    s.nextTimeS = paused_ ? timeS : settings_.realTime ? realTimeAt(now) : fixedStepTime(advances_ + 1);
     const scene::Camera c = camera();
     s.cameraPositionKm = c.positionKm;
     s.cameraBack = -c.forward;

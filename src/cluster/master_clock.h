@@ -26,8 +26,10 @@ public:
 
     // The state of the next frame; quit is set once the frame count is reached or `stopRequested`.
     // Its zoom is the keyed path's at its time, 1 (the wall's own view) for a camera without a path.
-    // Playing, the animation time advances by speed x timeStepS per frame (or speed x the wall-clock
-    // time elapsed with realTime); paused it stands still but for the steps asked for.
+    // Playing, the animation time advances by speed x timeStepS per frame; with realTime each frame
+    // shows the time of the moment the frame before it began (speed x the wall-clock time since the
+    // anchor, one frame behind the clock), so that every frame already knows its successor's time
+    // (nextTimeS). Paused it stands still but for the steps asked for.
     FrameState next(bool stopRequested);
 
     void pause();
@@ -68,6 +70,7 @@ private:
     double anchorTimeS_;
     std::uint64_t advances_ = 0;
     std::chrono::steady_clock::time_point anchorWall_; // real time: when the anchor time was shown
+    std::chrono::steady_clock::time_point lastCallWall_; // real time: when the last frame began
     bool jumpPending_ = true;       // the next frame shows anchorTimeS_ itself (also the first frame)
     std::uint64_t stepsPending_ = 0;
     double lastTimeS_;

@@ -4,6 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
+#include <thread>
+
 using namespace aurorawall;
 using namespace aurorawall::cluster;
 
@@ -153,4 +156,57 @@ TEST(MasterClock, TheCameraFollowsItsKeyedPathUntilPutElsewhere)
     clock.setCamera(still);
     clock.setTime(5.0);
     EXPECT_EQ(clock.next(false).cameraPositionKm, glm::dvec3(6500.0, 0.0, 0.0));
+}
+
+// Every frame announces the next one's time: with no command between, the next frame shows exactly it
+// (fixed steps, paused, after a jump); a command in between may change it.
+TEST(MasterClock, EachFrameAnnouncesTheNextFramesTime)
+{
+    MasterClock clock(fixedStep(3.0, 0.1), flyingCamera(), 1.0);
+    FrameState s = clock.next(false);
+    for (int n = 0; n < 50; ++n) {
+        const FrameState next = clock.next(false);
+        ASSERT_EQ(next.timeS, s.nextTimeS) << "frame " << next.frame;
+        ASSERT_GT(next.timeS, s.timeS);
+        s = next;
+    }
+    clock.pause();
+    s = clock.next(false);
+    EXPECT_EQ(s.nextTimeS, s.timeS);
+    EXPECT_EQ(clock.next(false).timeS, s.nextTimeS);
+    clock.setTime(40.0);
+    clock.play();
+    s = clock.next(false);
+    EXPECT_EQ(s.timeS, 40.0);
+    EXPECT_EQ(s.nextTimeS, 40.1);
+    EXPECT_EQ(clock.next(false).timeS, 40.1);
+}
+
+// Real time: frame n + 1 shows speed x the wall-clock time from the anchor to the moment frame n began,
+// exactly the time frame n announced; the time never runs backwards and keeps up with the clock.
+TEST(MasterClock, RealTimeFramesShowTheTimeTheirPredecessorAnnounced)
+{
+    ClockSettings settings = fixedStep(100.0, 0.5);
+    settings.realTime = true;
+    MasterClock clock(settings, flyingCamera(), 1.0);
+    clock.setSpeed(2.0);
+    FrameState s = clock.next(false);
+    EXPECT_EQ(s.timeS, 100.0);
+    const auto start = std::chrono::steady_clock::now();
+    for (int n = 0; n < 5; ++n) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+        const FrameState next = clock.next(false);
+        ASSERT_EQ(next.timeS, s.nextTimeS) << "frame " << next.frame;
+        ASSERT_GE(next.timeS, s.timeS);
+        ASSERT_GE(next.nextTimeS, next.timeS + 2.0 * 0.020); // at least 20 ms of the clock at speed 2
+        s = next;
+    }
+    // Frame 6 shows the moment frame 5 began: at least 4 sleeps after frame 1 began, on the clock.
+    const double sinceFirstS = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    EXPECT_GE(s.timeS, 100.0 + 2.0 * 0.080);
+    EXPECT_LE(s.timeS, 100.0 + 2.0 * sinceFirstS);
+    clock.pause(); // a command between frames: the next frame shows the time shown, still
+    const double shown = clock.timeS();
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    EXPECT_EQ(clock.next(false).timeS, shown);
 }

@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -46,6 +47,8 @@ std::vector<float> readBack(const gl::Texture& t)
     return texels;
 }
 
+constexpr double unknownNext = std::numeric_limits<double>::quiet_NaN(); // a lone frame: nothing built ahead
+
 bool rebuilt(const CurtainField& field) { return field.summary().find(", rebuilt:") != std::string::npos; }
 
 } // namespace
@@ -56,21 +59,21 @@ TEST(CurtainField, RebuildsExactlyWhenTheControlPointsChange)
     const components::aurora::Settings settings = movingArc();
     const components::aurora::CurtainModel model(settings, 6371.0, nullptr);
     CurtainField field(model);
-    field.update(0.0);
+    field.update(0.0, unknownNext);
     EXPECT_TRUE(rebuilt(field));
-    field.update(5.0); // before the first key: held still
+    field.update(5.0, unknownNext); // before the first key: held still
     EXPECT_FALSE(rebuilt(field));
-    field.update(12.0);
+    field.update(12.0, unknownNext);
     EXPECT_TRUE(rebuilt(field));
-    field.update(12.0);
+    field.update(12.0, unknownNext);
     EXPECT_FALSE(rebuilt(field));
-    field.update(12.5);
+    field.update(12.5, unknownNext);
     EXPECT_TRUE(rebuilt(field));
-    field.update(22.0);
-    field.update(25.0); // only the flux moves
+    field.update(22.0, unknownNext);
+    field.update(25.0, unknownNext); // only the flux moves
     EXPECT_FALSE(rebuilt(field));
-    field.update(35.0);
-    field.update(40.0); // after the last key: held still
+    field.update(35.0, unknownNext);
+    field.update(40.0, unknownNext); // after the last key: held still
     EXPECT_FALSE(rebuilt(field));
 }
 
@@ -81,57 +84,61 @@ TEST(CurtainField, KeptTexturesHoldTheBytesOfAFreshBuild)
     const components::aurora::CurtainModel model(settings, 6371.0, nullptr);
     CurtainField running(model);
     for (double t : {11.0, 13.0, 17.0, 25.0}) {
-        running.update(t);
+        running.update(t, unknownNext);
         CurtainField fresh(model);
-        fresh.update(t);
+        fresh.update(t, unknownNext);
         EXPECT_EQ(readBack(running.footprintMap()), readBack(fresh.footprintMap())) << "t = " << t;
         EXPECT_EQ(readBack(running.polylines()), readBack(fresh.polylines())) << "t = " << t;
     }
 }
 
-// Fixed steps of 0.5 s through the moving keys: from the fourth frame on (after two equal steps),
-// every rebuild takes the build made ahead on the worker thread, and its textures hold the bytes of
-// a field that built only this frame itself.
+// Frames that announce their successor's time (cluster::FrameState::nextTimeS), at fixed steps and
+// at the uneven steps of a real-time clock: from the second frame on every rebuild takes the build
+// made ahead on the worker thread, and its textures hold the bytes of a field that built only this
+// frame itself.
 TEST(CurtainField, BuildAheadHoldsTheBytesOfTheFramesOwnBuild)
 {
     const auto context = gl::createContext(gl::Backend::Egl);
     const components::aurora::Settings settings = movingArc();
     const components::aurora::CurtainModel model(settings, 6371.0, nullptr);
-    CurtainField running(model);
-    for (int n = 0; n <= 8; ++n) {
-        const double t = 12.0 + 0.5 * n;
-        running.update(t);
-        EXPECT_EQ(running.rebuilds(), size_t(n + 1));
-        EXPECT_EQ(running.rebuildsBuiltAhead(), size_t(n < 3 ? 0 : n - 2)) << "t = " << t;
-        CurtainField fresh(model);
-        fresh.update(t);
-        EXPECT_EQ(fresh.rebuildsBuiltAhead(), 0u);
-        EXPECT_EQ(readBack(running.footprintMap()), readBack(fresh.footprintMap())) << "t = " << t;
-        EXPECT_EQ(readBack(running.polylines()), readBack(fresh.polylines())) << "t = " << t;
+    for (const std::vector<double>& times : {std::vector<double>{12.0, 12.5, 13.0, 13.5, 14.0, 14.5},
+                                             std::vector<double>{12.0, 12.031, 12.097, 12.112, 12.3, 13.9}}) {
+        CurtainField running(model);
+        for (size_t n = 0; n < times.size(); ++n) {
+            const double t = times[n];
+            running.update(t, n + 1 < times.size() ? times[n + 1] : unknownNext);
+            EXPECT_EQ(running.rebuilds(), n + 1);
+            EXPECT_EQ(running.rebuildsBuiltAhead(), n) << "t = " << t;
+            CurtainField fresh(model);
+            fresh.update(t, unknownNext);
+            EXPECT_EQ(fresh.rebuildsBuiltAhead(), 0u);
+            EXPECT_EQ(readBack(running.footprintMap()), readBack(fresh.footprintMap())) << "t = " << t;
+            EXPECT_EQ(readBack(running.polylines()), readBack(fresh.polylines())) << "t = " << t;
+        }
     }
 }
 
-// A step that breaks the pattern: the build made ahead for 16 s is dropped and the frame at 15.7 s
-// builds its own curtains, equal to a fresh field's; so does the next (the steps differ, and the
-// last prediction was wrong, so nothing was built ahead).
+// A command changed the next frame's time (the master announced 16 s, then a new time of 15.7 s was
+// set): the build made ahead is dropped and the frame builds its own curtains, equal to a fresh
+// field's.
 TEST(CurtainField, WrongPredictionBuildsTheFrameItself)
 {
     const auto context = gl::createContext(gl::Backend::Egl);
     const components::aurora::Settings settings = movingArc();
     const components::aurora::CurtainModel model(settings, 6371.0, nullptr);
     CurtainField running(model);
-    for (double t : {14.0, 14.5, 15.0, 15.5})
-        running.update(t);
-    EXPECT_EQ(running.rebuildsBuiltAhead(), 1u); // 15.5 s, predicted after 15 s
-    for (double t : {15.7, 16.1}) {
-        running.update(t);
-        EXPECT_EQ(running.rebuildsBuiltAhead(), 1u) << "t = " << t;
-        CurtainField fresh(model);
-        fresh.update(t);
-        EXPECT_EQ(readBack(running.footprintMap()), readBack(fresh.footprintMap())) << "t = " << t;
-        EXPECT_EQ(readBack(running.polylines()), readBack(fresh.polylines())) << "t = " << t;
-    }
-    EXPECT_EQ(running.rebuilds(), 6u);
+    running.update(15.0, 15.5);
+    running.update(15.5, 16.0);
+    EXPECT_EQ(running.rebuildsBuiltAhead(), 1u);
+    running.update(15.7, 16.1);
+    EXPECT_EQ(running.rebuildsBuiltAhead(), 1u);
+    CurtainField fresh(model);
+    fresh.update(15.7, unknownNext);
+    EXPECT_EQ(readBack(running.footprintMap()), readBack(fresh.footprintMap()));
+    EXPECT_EQ(readBack(running.polylines()), readBack(fresh.polylines()));
+    running.update(16.1, unknownNext); // the announced time came: built ahead
+    EXPECT_EQ(running.rebuildsBuiltAhead(), 2u);
+    EXPECT_EQ(running.rebuilds(), 4u);
 }
 
 // The unit-free half of the build: buildCurtains made on a worker thread equals the same call on

@@ -28,7 +28,7 @@ public:
         program.set("uAuroraStepKm", static_cast<float>(s_.stepKm));
         program.set("uAuroraResolveKm", static_cast<float>(s_.resolveKm));
         program.set("uSkipEmptySpace", s_.skipEmptySpace ? 1 : 0);
-        field_.update(frame.timeS);
+        field_.update(frame.timeS, frame.nextTimeS);
     }
     void bind(gl::Program& program) const override
     {

@@ -1,6 +1,7 @@
 #include "components/aurora/curtain_field.h"
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <optional>
 
@@ -26,7 +27,7 @@ CurtainField::CurtainField(const CurtainModel& model) : model_(model), ahead_(mo
     detailUniform_.resize(state_.size());
 }
 
-void CurtainField::update(double timeS)
+void CurtainField::update(double timeS, double nextTimeS)
 {
     const auto start = std::chrono::steady_clock::now();
     const std::vector<CurtainState> states = model_.statesAt(timeS);
@@ -34,7 +35,6 @@ void CurtainField::update(double timeS)
     // differ (exactly) from the last build's, e.g. not while every curtain holds still.
     const ControlPoints controlPoints = controlPointsOf(states);
     std::optional<CurtainBuild> ahead = ahead_.take(controlPoints);
-    lastPredictionRight_ = ahead.has_value();
     const bool rebuilt = !footprint_ || controlPoints != controlPoints_;
     if (rebuilt) {
         ++rebuilds_;
@@ -50,7 +50,7 @@ void CurtainField::update(double timeS)
         state_[i] = glm::vec4(s.energyFluxErgPerCm2S, s.energyKeV, static_cast<float>(pointCounts_[i]), 0.0f);
         detailUniform_[i] = glm::vec4(s.detailOffsetKm, s.detailPhase, model_.lateralScale(i), 0.0f);
     }
-    buildNextAhead(timeS);
+    buildAhead(nextTimeS);
 
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     char text[280];
@@ -62,15 +62,11 @@ void CurtainField::update(double timeS)
     summary_ = text;
 }
 
-void CurtainField::buildNextAhead(double timeS)
+void CurtainField::buildAhead(double nextTimeS)
 {
-    const double stepS = timeS - lastTimeS_;
-    const bool predictable = stepS != 0.0 && (stepS == lastStepS_ || lastPredictionRight_);
-    lastTimeS_ = timeS;
-    lastStepS_ = stepS;
-    if (!predictable)
+    if (std::isnan(nextTimeS))
         return;
-    std::vector<CurtainState> next = model_.statesAt(timeS + stepS);
+    std::vector<CurtainState> next = model_.statesAt(nextTimeS);
     if (controlPointsOf(next) != controlPoints_)
         ahead_.start(std::move(next));
 }

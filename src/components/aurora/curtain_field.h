@@ -5,10 +5,10 @@
 // the master's animation time, deterministically, so every rank uploads the same bytes; kept (with
 // their textures) while the curtains' control points stay exactly the same.
 //
-// While a frame draws, the curtains of the next frame's predicted time (this time plus the last step)
-// are built on a worker thread; the next update uploads that build when its control points are
-// exactly the frame's, and otherwise builds them itself. The prediction is made while the time has
-// advanced by the same step twice in a row (a fixed-step clock) or the last prediction was right.
+// While a frame draws, the curtains of the next frame's time as the master announced it
+// (cluster::FrameState::nextTimeS) are built on a worker thread; the next update uploads that build
+// when its control points are exactly the frame's (a command such as pause or a new time can make
+// the next frame differ), and otherwise builds them itself.
 #include "gl/shader_program.h"
 #include "gl/texture.h"
 #include "components/aurora/curtain_build_ahead.h"
@@ -16,7 +16,6 @@
 
 #include <glm/glm.hpp>
 
-#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -29,8 +28,8 @@ public:
 
     // Evaluates the keyframes at timeS; rebuilds (or takes the build made ahead) and uploads the
     // polylines and the map when the control points differ from the last build's. Then starts
-    // building the next frame's curtains ahead.
-    void update(double timeS);
+    // building the curtains of nextTimeS ahead, when they differ from this frame's (NaN: not known).
+    void update(double timeS, double nextTimeS);
 
     // Texture units 4 and 5 and the curtain uniforms of shaders/components/aurora/aurora_curtains.glsl.
     void bind(gl::Program& program) const;
@@ -49,13 +48,10 @@ public:
 
 private:
     void upload(const CurtainBuild& build);
-    void buildNextAhead(double timeS);
+    void buildAhead(double nextTimeS);
 
     const CurtainModel& model_;
     CurtainBuildAhead ahead_;
-    double lastTimeS_ = std::numeric_limits<double>::quiet_NaN();
-    double lastStepS_ = std::numeric_limits<double>::quiet_NaN();
-    bool lastPredictionRight_ = false;
     size_t rebuilds_ = 0, rebuildsBuiltAhead_ = 0;
     ControlPoints controlPoints_; // of the last build
     std::vector<size_t> pointCounts_;
