@@ -74,6 +74,11 @@ Texture Texture::create3D(int width, int height, int depth, TexelFormat format, 
     return Texture(GL_TEXTURE_3D, width, height, depth, format, filter, wrap);
 }
 
+Texture Texture::create2DArray(int width, int height, int layers, TexelFormat format, Filter filter, Wrap wrap)
+{
+    return Texture(GL_TEXTURE_2D_ARRAY, width, height, layers, format, filter, wrap);
+}
+
 Texture::Texture(Texture&& other) noexcept
     : id_(std::exchange(other.id_, 0)), target_(other.target_), format_(other.format_),
       width_(other.width_), height_(other.height_), depth_(other.depth_)

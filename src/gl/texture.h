@@ -1,5 +1,5 @@
 #pragma once
-// Float textures (2D/3D) for lookup tables and render targets, owned (move-only).
+// Float textures (2D, 3D, 2D arrays) for lookup tables and render targets, owned (move-only).
 #include <GL/glcorearb.h>
 
 #include <vector>
@@ -16,6 +16,8 @@ class Texture {
 public:
     static Texture create2D(int width, int height, TexelFormat format, Filter filter, Wrap wrap);
     static Texture create3D(int width, int height, int depth, TexelFormat format, Filter filter, Wrap wrap);
+    // depth layers of width x height texels, filtered within a layer only.
+    static Texture create2DArray(int width, int height, int layers, TexelFormat format, Filter filter, Wrap wrap);
 
     Texture(Texture&& other) noexcept;
     Texture& operator=(Texture&& other) noexcept;

@@ -59,7 +59,7 @@ glm::dvec2 columnAt(const FluxColumns& c, const FluxFrames& f, int frame, int al
     const double du = f.texelKmY, halfWidth = 0.5 * f.ny * du;
     const double position = (u + halfWidth) / du - 0.5;
     const double below = std::clamp(std::floor(position), -1.0, double(c.rows - 2));
-    const std::size_t at = 4 * ((std::size_t(frame) * c.rows + std::size_t(below + 1.0)) * c.nx + along);
+    const std::size_t at = 4 * ((std::size_t(below + 1.0) * c.frames + std::size_t(frame)) * c.nx + along);
     const glm::dvec4 texel(c.texels[at], c.texels[at + 1], c.texels[at + 2], c.texels[at + 3]);
     const double centre = (below + 0.5) * du - halfWidth;
     return f64::fluxColumnValue(texel, centre, u - centre, du);

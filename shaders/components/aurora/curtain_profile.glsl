@@ -7,23 +7,23 @@ const int MAX_CURTAINS = 16;
 uniform vec4 uCurtainDetail[MAX_CURTAINS];
 
 #if defined(HAS_FLUID_DETAIL) || defined(HAS_PLASMA)
-uniform sampler3D uFluxColumns;  // x: along (periodic), y: entry across, z: frame; the flux (1/km) and
+uniform sampler2DArray uFluxColumns; // x: along (periodic), y: frame, layer: entry across; the flux (1/km) and
                                  // its running integrals across at the cell centres
                                  // (src/components/fluid_detail/simulation/flux_columns.h)
 uniform vec4 uFluxStrip;         // strip length km, strip width km, frame count, peak scale
 
 // The running integrals (C, M) across the strip at across position a (simulation km) of the column at
-// coord.xz (flux_column.glsl, fluxColumnValue), and the flux F there: the texture filters along and
-// between frames only; across, the entry at the centre below a is read at its row's middle and
+// coord = (along, frame) (flux_column.glsl, fluxColumnValue), and the flux F there: the texture
+// filters along and between frames only; across, the entry at the centre below a (its layer) is
 // extended in float.
-vec3 fluxColumnAt(vec3 coord, float across)
+vec3 fluxColumnAt(vec2 coord, float across)
 {
-    float rows = float(textureSize(uFluxColumns, 0).y);
+    float rows = float(textureSize(uFluxColumns, 0).z);
     float cellWidth = uFluxStrip.y / (rows - 1.0);
     float a = clamp(across, -0.5 * uFluxStrip.y, 0.5 * uFluxStrip.y);
     float position = (a + 0.5 * uFluxStrip.y) / cellWidth - 0.5; // in cell centres
     float below = clamp(floor(position), -1.0, rows - 2.0);
-    vec4 texel = textureLod(uFluxColumns, vec3(coord.x, (below + 1.5) / rows, coord.z), 0.0);
+    vec4 texel = textureLod(uFluxColumns, vec3(coord, below + 1.0), 0.0);
     float centre = (below + 0.5) * cellWidth - 0.5 * uFluxStrip.y;
     float flux = abs(across) < 0.5 * uFluxStrip.y ? texel.z + texel.w * (a - centre) / cellWidth : 0.0;
     return vec3(fluxColumnValue(texel, centre, a - centre, cellWidth), flux);
@@ -41,7 +41,7 @@ vec3 curtainColumn(int c, float s, float u0, float u1)
     float a1 = u1 * detail.z;
 #if defined(HAS_FLUID_DETAIL) || defined(HAS_PLASMA)
     float frame = detail.y * (uFluxStrip.z - 1.0);
-    vec3 coord = vec3((s + detail.x) / uFluxStrip.x, 0.0, (frame + 0.5) / uFluxStrip.z);
+    vec2 coord = vec2((s + detail.x) / uFluxStrip.x, (frame + 0.5) / uFluxStrip.z);
     vec3 lo = fluxColumnAt(coord, a0);
     vec3 hi = fluxColumnAt(coord, a1);
     return uFluxStrip.w * vec3((hi.x - lo.x) / detail.z, (hi.y - lo.y) / (detail.z * detail.z), 0.5 * (lo.z + hi.z));

@@ -1,8 +1,9 @@
 #pragma once
 // The curtain flux frames on the GPU, as shaders/components/aurora/curtain_profile.glsl reads them
 // (fluid_detail's simulated frames, the plasma's electron strip): their running integrals across the
-// strip (fluid::fluxColumns; unit 3, uFluxColumns: x along, y entry across, z frame; linear, periodic
-// along), from which the shader takes both the flux and its integral over a ray step.
+// strip (fluid::fluxColumns; unit 3, uFluxColumns: a 2D array, x along, y frame, a layer per entry
+// across; linear along and between frames, periodic along), from which the shader takes both the flux
+// and its integral over a ray step. Bilinear within a layer reads 4 texels where a 3D texture read 8.
 #include "components/fluid_detail/simulation/curtain_detail.h"
 #include "gl/shader_program.h"
 #include "gl/texture.h"

@@ -47,7 +47,7 @@ FluxColumns fluxColumns(const FluxFrames& f)
             for (int j = 0; j < f.ny; ++j)
                 column[j] = f.at(k, i, j);
             runningIntegrals(column, f.texelKmY, -0.5 * f.ny * double(f.texelKmY),
-                             &c.texels[4 * (std::size_t(k) * c.rows * c.nx + i)], 4 * std::size_t(c.nx));
+                             &c.texels[4 * (std::size_t(k) * c.nx + i)], 4 * std::size_t(c.nx) * c.frames);
         }
     return c;
 }

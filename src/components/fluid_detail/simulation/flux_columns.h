@@ -20,7 +20,8 @@ struct FluxColumns {
     int nx = 0;      // cells along, as the frames
     int rows = 0;    // ny + 1 entries across: row r holds centre j = r − 1
     int frames = 0;
-    // (C, M, F, ΔF) in 1, km, 1/km, 1/km: texels[4·((k·rows + r)·nx + i) + {0, 1, 2, 3}].
+    // (C, M, F, ΔF) in 1, km, 1/km, 1/km: texels[4·((r·frames + k)·nx + i) + {0, 1, 2, 3}] (a row
+    // across is a layer of a 2D array texture whose x runs along and y through the frames).
     std::vector<float> texels;
 };
 
