@@ -129,12 +129,13 @@ TEST_F(ReferenceRay, RejectsWhatItDoesNotModel)
     EXPECT_THROW(render::ReferenceModel(*scene_, 0.0, nullptr), std::invalid_argument);
 }
 
-// The default march (8 km steps, each integrated across the curtain in closed form with 0.5 km
-// sub-steps) and the same steps with 0.25 km sub-steps, against the CPU reference at views along the
-// paper's benchmark path: at the start (70 km up), inside the aurora layer (frame 28, 144 km up) and
-// above it (frame 60, 251 km up). Point samples every 2 km were 4-8% RMS off at these views.
-// Measured here: RMS 0.98%, 1.8%, 1.3% with 0.5 km sub-steps and 0.13%, 1.9%, 0.11% with 0.25 km (at
-// frame 28 one pixel stays 7.5% off until the step itself is 1 km). Held to 3%.
+// The default march (8 km steps, each integrated across the curtain in closed form with sub-steps of
+// 0.5 km in altitude and 1.5 of the detail's 0.25 km cells along) and the same steps with 0.25 km
+// sub-steps (one cell along), against the CPU reference at views along the paper's benchmark path: at
+// the start (70 km up), inside the aurora layer (frame 28, 144 km up) and above it (frame 60, 251 km
+// up). Point samples every 2 km were 4-8% RMS off at these views. Measured here: RMS 0.95%, 1.3%,
+// 0.15% with the defaults and 0.13%, 1.9%, 0.14% with 0.25 km sub-steps (at frame 28 one pixel stays
+// 7.5% off until the step itself is 1 km). Held to 2.5%.
 TEST_F(ReferenceRay, CoarseStepsIntegratedAcrossTheCurtainStayNearTheReference)
 {
     for (long long frame : {0LL, 28LL, 60LL}) {
@@ -157,7 +158,7 @@ TEST_F(ReferenceRay, CoarseStepsIntegratedAcrossTheCurtainStayNearTheReference)
             std::printf("frame %lld, 8 km steps, %.2f km sub-steps vs CPU reference at %zu pixels: rms %.3g, max %.3g\n",
                         frame, resolveKm, e.pixels, e.rms, e.max);
             EXPECT_EQ(e.pixels, pixels.size());
-            EXPECT_LT(e.rms, 0.03) << "frame " << frame;
+            EXPECT_LT(e.rms, 0.025) << "frame " << frame;
         }
     }
 }

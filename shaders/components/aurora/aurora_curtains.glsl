@@ -10,6 +10,7 @@ uniform float uAuroraBottomKm;
 uniform float uAuroraTopKm;
 uniform float uAuroraStepKm;
 uniform float uAuroraResolveKm;      // sub-steps (at most 64 a step): altitude and position along a curtain change by at most this
+uniform float uAuroraResolveAlongCells; // and the position along by at most this many of the detail's cells along
 uniform int uSkipEmptySpace;         // 0: the naive fine march everywhere (the reference)
 uniform int uCurtainCount;
 uniform sampler2D uCurtainPolylines; // RGBA32F, row c: xyz unit vector, w arclength km
@@ -93,7 +94,8 @@ struct CurtainStep {
 // The emission of the ray o + t d over the step [t0, t1] (km). The curtain coordinates are found
 // once, at the step's midpoint t_m, and the footprint's motion is linear over the step:
 // u(t) = u_m + u' (t − t_m), s(t) = s_m + s' (t − t_m). The step is cut into sub-steps over which
-// the altitude and the position along the curtain each change by at most uAuroraResolveKm; on each
+// the altitude changes by at most uAuroraResolveKm and the position along the curtain by at most that
+// and uAuroraResolveAlongCells of the detail's cells; on each
 // the emission is integrated across the curtain in closed form,
 //   ∫ flux(s, u(t)) E(h(t)) dt ≈ E(h(t̄)) · (1/u') ∫_{u(ta)}^{u(tb)} flux(s_mid, u) du,
 // with t̄ the flux-weighted mean position of the sub-step, from the column's first moment
@@ -127,6 +129,10 @@ CurtainStep integrateCurtains(vec3 o, vec3 d, float t0, float t1)
     float hRate = dot(n, d);
     // The nearest curtain, and where curtains overlap the nearest point of another one: the
     // fluxes of overlapping curtains add (the map's fourth channel, src/components/aurora/physics/footprint_map.h).
+    // Sub-steps resolve the altitude to uAuroraResolveKm and the position along the curtain to that
+    // or, finer, to uAuroraResolveAlongCells of the detail's cells along: a sub-step reads the flux at
+    // one position along.
+    float alongResolveKm = min(uAuroraResolveKm, uAuroraResolveAlongCells * fluxCellAlongKm());
     vec4 candidates = vec4(nearest.x, nearest.y, -1.0, -1.0);
     if (nearest.w >= 0.0) {
         float second = floor(nearest.w / 65536.0);
@@ -147,7 +153,7 @@ CurtainStep integrateCurtains(vec3 o, vec3 d, float t0, float t1)
         float scale = uPlanetRadiusKm * inversesqrt(max(1.0 - across * across, 1e-12));
         float uRate = scale * dot(cc.normal, footprintRate);
         float sRate = scale * dot(cross(cc.normal, n), footprintRate);
-        int parts = int(clamp(ceil(max(abs(hRate), abs(sRate)) * len / uAuroraResolveKm), 1.0, 64.0));
+        int parts = int(clamp(ceil(max(abs(hRate) / uAuroraResolveKm, abs(sRate) / alongResolveKm) * len), 1.0, 64.0));
         // Where the altitude changes by less than uAuroraResolveKm over the whole step, one emission
         // at the step's flux-weighted mean position serves all its sub-steps.
         bool emissionPerPart = abs(hRate) * len > uAuroraResolveKm;

@@ -50,3 +50,15 @@ vec3 curtainColumn(int c, float s, float u0, float u1)
                 0.5 * (exp(-0.5 * a0 * a0) + exp(-0.5 * a1 * a1)));
 #endif
 }
+
+// The length along the curtain over which its flux is resolved (km): the frames' cell along (the
+// texture interpolates linearly between cells); unbounded for the smooth Gaussian, which does not
+// change along the curtain.
+float fluxCellAlongKm()
+{
+#if defined(HAS_FLUID_DETAIL) || defined(HAS_PLASMA)
+    return uFluxStrip.x / float(textureSize(uFluxColumns, 0).x);
+#else
+    return 1.0e30;
+#endif
+}
