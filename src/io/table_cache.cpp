@@ -13,6 +13,10 @@
 #include <stdexcept>
 #include <utility>
 
+#include <fcntl.h>
+#include <sys/file.h>
+#include <unistd.h>
+
 namespace aurorawall::io {
 
 namespace {
@@ -112,9 +116,36 @@ void removeOldFiles(const std::string& directory, const std::string& name)
     if (files.size() <= kKeptPerName)
         return;
     std::sort(files.begin(), files.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
-    for (std::size_t i = kKeptPerName; i < files.size(); ++i)
+    for (std::size_t i = kKeptPerName; i < files.size(); ++i) {
         fs::remove(files[i].second, error);
+        fs::remove(files[i].second.string() + ".lock", error);
+    }
 }
+
+// An exclusive advisory lock (flock) on a file beside the table, held while one process builds it:
+// the other ranks of a node wait, then read what it wrote, instead of all building the same table
+// on shared cores. Where locks are not available (a file system without them), it holds nothing and
+// every process builds, as without it.
+class BuildLock {
+public:
+    explicit BuildLock(const std::string& path) : fd_(::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644))
+    {
+        if (fd_ >= 0 && ::flock(fd_, LOCK_EX) != 0) {
+            ::close(fd_);
+            fd_ = -1;
+        }
+    }
+    BuildLock(const BuildLock&) = delete;
+    BuildLock& operator=(const BuildLock&) = delete;
+    ~BuildLock()
+    {
+        if (fd_ >= 0)
+            ::close(fd_); // releases the lock
+    }
+
+private:
+    int fd_;
+};
 
 std::string hex16(std::uint64_t value)
 {
@@ -171,13 +202,26 @@ CachedTable cachedTable(const std::string& directory, const std::string& name, c
     }
     const std::string path = cachedTablePath(directory, name, key);
     bool corrupt = false;
-    if (const std::optional<std::vector<char>> file = readFile(path)) {
-        const Decoded decoded = decode(*file, key, result.bytes);
-        if (decoded == Decoded::Table) {
-            result.outcome = "read from cache";
-            return result;
+    // Returns whether a good table was read.
+    const auto read = [&] {
+        if (const std::optional<std::vector<char>> file = readFile(path)) {
+            const Decoded decoded = decode(*file, key, result.bytes);
+            if (decoded == Decoded::Table)
+                return true;
+            corrupt = decoded == Decoded::Corrupt;
         }
-        corrupt = decoded == Decoded::Corrupt;
+        return false;
+    };
+    if (read()) {
+        result.outcome = "read from cache";
+        return result;
+    }
+    std::error_code error;
+    std::filesystem::create_directories(directory, error);
+    const BuildLock lock(path + ".lock");
+    if (read()) { // another process built it while this one waited
+        result.outcome = "read from cache, built by another process";
+        return result;
     }
     result.bytes = build();
     result.outcome = corrupt ? "cache corrupt, rebuilt" : "built, cached";

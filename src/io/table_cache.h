@@ -2,9 +2,12 @@
 // Precomputed tables kept on disk between runs, so that a costly start-up computation (the
 // fluid_detail simulation) is done once per input and build. A file holds its key in full, the
 // table's bytes and a checksum over both: a file whose checksum, size or key does not match is
-// never trusted but rebuilt. Files are written atomically (temporary name, then rename), so ranks
-// that build the same table at once each rename a complete file over the same name: the last rename
-// wins, every reader sees one complete file, and all hold the same bytes.
+// never trusted but rebuilt. One process builds a missing table while the others that want it wait
+// (an advisory lock on "<file>.lock"; the ranks of a node share its cores, so building it once is
+// faster than building it in each) and then read it. Files are written atomically (temporary name,
+// then rename), so where locks are not available, ranks that build the same table at once each rename
+// a complete file over the same name: every reader sees one complete file, and all hold the same
+// bytes.
 #include <cstdint>
 #include <functional>
 #include <string>
@@ -24,8 +27,8 @@ std::uint64_t fnv1a64(const void* data, std::size_t size, std::uint64_t hash = 0
 
 struct CachedTable {
     std::vector<char> bytes;
-    // For the precomputation log line: "read from cache", "built, cached", "cache corrupt, rebuilt",
-    // or "built, not cached (reason)".
+    // For the precomputation log line: "read from cache", "read from cache, built by another
+    // process", "built, cached", "cache corrupt, rebuilt", or "built, not cached (reason)".
     std::string outcome;
 };
 

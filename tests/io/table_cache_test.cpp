@@ -8,6 +8,7 @@
 #include <fstream>
 #include <iterator>
 #include <string>
+#include <thread>
 #include <sys/wait.h>
 #include <unistd.h>
 #include <vector>
@@ -141,20 +142,25 @@ TEST(TableCache, KeepsTheNewestEightFilesOfAName)
         // Older write times than the ones that follow, whatever the file system's clock resolution.
         fs::last_write_time(path, fs::file_time_type::clock::now() - std::chrono::hours(12 - k));
     }
-    int tests = 0;
-    for (const auto& entry : fs::directory_iterator(folder))
-        tests += entry.path().filename().string().rfind("test-", 0) == 0;
+    int tests = 0, locks = 0;
+    for (const auto& entry : fs::directory_iterator(folder)) {
+        const std::string file = entry.path().filename().string();
+        tests += file.rfind("test-", 0) == 0 && entry.path().extension() == ".table";
+        locks += file.rfind("test-", 0) == 0 && entry.path().extension() == ".lock";
+    }
     EXPECT_EQ(tests, 8);
+    EXPECT_EQ(locks, 8); // the build locks of the removed files went with them
     EXPECT_TRUE(fs::exists(cachedTablePath(folder, "other", "key 0")));
     EXPECT_TRUE(fs::exists(cachedTablePath(folder, "test", "key 11")));
     EXPECT_TRUE(fs::exists(cachedTablePath(folder, "test", "key 4")));
     EXPECT_FALSE(fs::exists(cachedTablePath(folder, "test", "key 3")));
+    EXPECT_FALSE(fs::exists(cachedTablePath(folder, "test", "key 3") + ".lock"));
 }
 
-// Ranks are processes: several that build the same table at once each rename a complete file over
-// the same name (temporary names carry the process id). Every one ends with the table, none sees a
-// partial file, and the file left is good.
-TEST(TableCache, ProcessesRacingToWriteLeaveOneGoodFile)
+// Ranks are processes: of several that want the same missing table at once (a build that takes
+// 300 ms, so that they overlap), one builds it while the others wait and then read it. Every one
+// ends with the table, none sees a partial file, and the file left is good.
+TEST(TableCache, ProcessesWantingTheSameTableBuildItOnce)
 {
     TempDir dir;
     const std::string folder = dir.path().string();
@@ -163,20 +169,31 @@ TEST(TableCache, ProcessesRacingToWriteLeaveOneGoodFile)
         const pid_t pid = ::fork();
         ASSERT_GE(pid, 0);
         if (pid == 0) {
-            const CachedTable t = cachedTable(folder, "test", "key A", [] { return table(1); });
-            const bool good = t.bytes == table(1) && (t.outcome == "built, cached" || t.outcome == "read from cache");
-            ::_exit(good ? 0 : 1);
+            const CachedTable t = cachedTable(folder, "test", "key A", [] {
+                std::this_thread::sleep_for(std::chrono::milliseconds(300));
+                return table(1);
+            });
+            if (t.bytes != table(1))
+                ::_exit(1);
+            if (t.outcome == "built, cached")
+                ::_exit(10);
+            ::_exit(t.outcome == "read from cache, built by another process" || t.outcome == "read from cache" ? 0 : 1);
         }
         children.push_back(pid);
     }
+    int builds = 0;
     for (const pid_t pid : children) {
         int status = 0;
         ASSERT_EQ(::waitpid(pid, &status, 0), pid);
-        EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0);
+        ASSERT_TRUE(WIFEXITED(status));
+        EXPECT_NE(WEXITSTATUS(status), 1);
+        builds += WEXITSTATUS(status) == 10;
     }
+    EXPECT_EQ(builds, 1);
     Counted c;
     EXPECT_EQ(c.get(folder, "key A").outcome, "read from cache");
-    EXPECT_EQ(dir.entries().size(), 1u); // no temporary left behind
+    EXPECT_EQ(c.builds, 0);
+    EXPECT_EQ(dir.entries().size(), 2u); // the table and its build lock; no temporary left behind
 }
 
 TEST(TableCache, NoFolderMeansNoCache)
