@@ -86,6 +86,12 @@ CurtainCoordinates curtainCoordinates(int c, int i, vec3 n)
     return best;
 }
 
+// Linear sRGB emitted per km of path per unit of curtain c's flux profile at the point o + t d.
+vec3 curtainEmissionAt(vec3 o, vec3 d, float t, int c)
+{
+    return auroraEmissionRgbPerKm(length(o + t * d) - uPlanetRadiusKm, uCurtainState[c].y);
+}
+
 struct CurtainStep {
     float skipKm;   // from the step's midpoint, a distance within which no curtain emits
     vec3 radiance;  // linear sRGB radiance the step adds
@@ -178,15 +184,14 @@ CurtainStep integrateCurtains(vec3 o, vec3 d, float t0, float t1)
                 continue;
             float tMean = alongCurtain ? tMid : clamp(tMid + (column.y / column.x - u) / uRate, ta, ta + part);
             if (emissionPerPart) {
-                energy += mass * auroraEmissionRgbPerKm(length(o + tMean * d) - uPlanetRadiusKm, uCurtainState[c].y);
+                energy += mass * curtainEmissionAt(o, d, tMean, c);
             } else {
                 stepMass += mass;
                 stepMoment += mass * tMean;
             }
         }
         if (stepMass > 0.0)
-            energy += stepMass * auroraEmissionRgbPerKm(length(o + (stepMoment / stepMass) * d) - uPlanetRadiusKm,
-                                                        uCurtainState[c].y);
+            energy += stepMass * curtainEmissionAt(o, d, stepMoment / stepMass, c);
         step.radiance += uCurtainState[c].x * energy;
     }
     return step;
