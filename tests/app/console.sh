@@ -7,7 +7,7 @@
 source "$(dirname "$0")/lib.sh"
 client=(python3 "$SRC_DIR/launch/wall-control")
 
-run_under_xvfb "1280x1024x24 -noreset" "$@"
+run_under_xvfb "1280x1024x24" "$@"
 
 status=0
 "$AW" render --wall "$DATA/hud-1x1.toml" --scene "$SCENE" --console > "$WORK/egl.log" 2>&1 || status=$?

@@ -36,7 +36,7 @@ aw_mpirun 4 "${args[@]}" --backend egl --quiet --out "$WORK/egl"
 note "egl rendered in $(elapsed "$t0") s"
 t0=$(now)
 mkdir -p "$WORK/glfw"
-"$XVFB_RUN" -a -s "-screen 0 1280x1024x24" bash "$0" --inside-x "$WORK/glfw"
+"$XVFB_RUN" -a -s "-screen 0 1280x1024x24 $XVFB_OPTIONS" bash "$0" --inside-x "$WORK/glfw"
 note "glfw rendered in $(elapsed "$t0") s"
 grep -q "backend glfw on " "$WORK/glfw.log" || fail "the start-up line does not name the glfw backend"
 if command -v xwininfo >/dev/null; then

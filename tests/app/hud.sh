@@ -7,7 +7,7 @@
 source "$(dirname "$0")/lib.sh"
 client=(python3 "$SRC_DIR/launch/wall-control")
 
-run_under_xvfb "1280x1024x24 -noreset" "$@"
+run_under_xvfb "1280x1024x24" "$@"
 
 aw_mpirun 1 render --wall "$DATA/hud-1x1.toml" --scene "$SCENE" --backend glfw --frames 0 --control-port 0 \
     --quiet > "$WORK/log" 2>&1 &
