@@ -5,7 +5,7 @@
 // any point, the nearest curtain point and a conservative distance to it; the shader refines on
 // the segments around that point to exact curtain coordinates (s along, u across), so detail is
 // not limited by the map's texels. Emission = peak energy flux x profile(s, u) x the tabulated
-// line emission of the curtain's electrons at this altitude (aurora/deposition.glsl).
+// line emission of the curtain's electrons at this altitude (aurora/curtain_emission.glsl).
 uniform float uAuroraBottomKm;
 uniform float uAuroraTopKm;
 uniform float uAuroraStepKm;
@@ -14,7 +14,7 @@ uniform float uAuroraResolveAlongCells; // and the position along by at most thi
 uniform int uSkipEmptySpace;         // 0: the naive fine march everywhere (the reference)
 uniform int uCurtainCount;
 uniform sampler2D uCurtainPolylines; // RGBA32F, row c: xyz unit vector, w arclength km
-uniform vec4 uCurtainState[MAX_CURTAINS];  // peak energy flux erg cm^-2 s^-1, energy keV, point count, -
+uniform vec4 uCurtainState[MAX_CURTAINS];  // peak energy flux erg cm^-2 s^-1, energy keV (the emission rows' key), point count, -
 uniform float uCurtainReachKm;       // beyond this distance from its centre line no curtain emits
 
 uniform sampler2D uFootprintMap;     // RGBA32F, nearest: curtain id, point index, distance km, other curtain
@@ -89,7 +89,7 @@ CurtainCoordinates curtainCoordinates(int c, int i, vec3 n)
 // Linear sRGB emitted per km of path per unit of curtain c's flux profile at the point o + t d.
 vec3 curtainEmissionAt(vec3 o, vec3 d, float t, int c)
 {
-    return auroraEmissionRgbPerKm(length(o + t * d) - uPlanetRadiusKm, uCurtainState[c].y);
+    return curtainEmissionRgbPerKm(length(o + t * d) - uPlanetRadiusKm, c);
 }
 
 struct CurtainStep {

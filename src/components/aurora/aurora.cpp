@@ -30,6 +30,7 @@ public:
         program.set("uAuroraResolveAlongCells", static_cast<float>(s_.resolveAlongCells));
         program.set("uSkipEmptySpace", s_.skipEmptySpace ? 1 : 0);
         field_.update(frame.timeS, frame.nextTimeS);
+        tables_.update(field_.energiesKeV());
     }
     void bind(gl::Program& program) const override
     {
@@ -125,7 +126,7 @@ public:
     }
     std::vector<std::string> shaderModules() const override
     {
-        return {"render/angle.glsl", "components/aurora/deposition_coords.glsl", "components/aurora/deposition.glsl",
+        return {"render/angle.glsl", "components/aurora/deposition_coords.glsl", "components/aurora/curtain_emission.glsl",
                 "components/aurora/footprint_map.glsl", "components/aurora/gaussian_column.glsl",
                 "components/aurora/flux_column.glsl",
                 "components/aurora/curtain_profile.glsl",

@@ -92,7 +92,7 @@ double AuroraReference::profile(const Curtain& c, double sKm, double uKm) const
     return shape_->peakScale * fluid::sampleFlux(*frames_, sKm + c.state.detailOffsetKm, across, c.state.detailPhase);
 }
 
-// auroraEmissionRgbPerKm of deposition.glsl without tables: 1 photon cm^-3 s^-1 over 1 km is
+// curtainEmissionRgbPerKm of curtain_emission.glsl without tables: 1 photon cm^-3 s^-1 over 1 km is
 // 0.1 R, so the radiance per km per erg cm^-2 s^-1 is
 // sum over lines of 0.1 depositionRate(z, E) lineYield(line, z) lineRgb(line).
 glm::dvec3 AuroraReference::emissionRgbPerKm(double altitudeKm, double energyKeV) const

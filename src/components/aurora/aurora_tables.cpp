@@ -1,9 +1,5 @@
 #include "components/aurora/aurora_tables.h"
 
-#include "components/aurora/physics/colour.h"
-#include "components/aurora/physics/deposition_table.h"
-#include "components/aurora/physics/emission.h"
-
 #include <chrono>
 #include <cstdio>
 
@@ -20,43 +16,53 @@ physics::DepositionTableSpec specFor(const Settings& a)
     return spec;
 }
 
+// A layer of nodes × 1 texels per curtain (at least one layer), filtered along the altitude only.
+gl::Texture emissionTexture(int nodes, int curtains)
+{
+    return gl::Texture::create2DArray(nodes, 1, std::max(curtains, 1), gl::TexelFormat::RGBA32F, gl::Filter::Linear,
+                                      gl::Wrap::Clamp);
+}
+
 } // namespace
 
-AuroraTables::AuroraTables(const Settings& a)
-    : deposition_(gl::Texture::create2D(1, 1, gl::TexelFormat::R32F, gl::Filter::Linear, gl::Wrap::Clamp)),
-      lineYield_(gl::Texture::create2D(1, 1, gl::TexelFormat::RGBA32F, gl::Filter::Linear, gl::Wrap::Clamp))
+AuroraTables::AuroraTables(const Settings& a) : emission_(emissionTexture(1, 1))
 {
     const auto start = std::chrono::steady_clock::now();
-    const physics::DepositionTableSpec spec = specFor(a);
-    const physics::DepositionTable table = physics::buildDepositionTable(spec);
-    deposition_ = gl::Texture::create2D(table.altitudeCount, table.energyCount, gl::TexelFormat::R32F,
-                                        gl::Filter::Linear, gl::Wrap::Clamp);
-    deposition_.upload(table.decibels);
-    const std::vector<glm::vec4> yields = physics::buildLineYieldTable(spec);
-    lineYield_ = gl::Texture::create2D(static_cast<int>(yields.size()), 1, gl::TexelFormat::RGBA32F,
-                                       gl::Filter::Linear, gl::Wrap::Clamp);
-    lineYield_.upload(std::vector<float>(&yields[0].x, &yields[0].x + 4 * yields.size()));
-    axes_ = table.axes();
-    size_ = table.size();
-    for (int line = 0; line < physics::kLineCount; ++line)
-        lineRgb_.emplace_back(physics::lineLinearSrgbPerRayleigh(static_cast<physics::EmissionLine>(line)));
+    tables_ = physics::buildEmissionTables(specFor(a));
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     char text[160];
     std::snprintf(text, sizeof text, "aurora deposition table %d x %d (%s), line yields %zu: %.1f ms",
-                  table.altitudeCount, table.energyCount,
-                  a.spectrum == physics::Spectrum::Maxwellian ? "maxwellian" : "monoenergetic", yields.size(),
-                  ms);
+                  tables_.deposition.altitudeCount, tables_.deposition.energyCount,
+                  a.spectrum == physics::Spectrum::Maxwellian ? "maxwellian" : "monoenergetic",
+                  tables_.lineYields.size(), ms);
     summary_ = text;
+}
+
+void AuroraTables::update(const std::vector<float>& energiesKeV)
+{
+    const size_t nodes = static_cast<size_t>(tables_.nodeCount());
+    const bool resized = energiesKeV.size() != energiesKeV_.size() || rows_.empty();
+    if (resized) {
+        energiesKeV_.assign(energiesKeV.size(), -1.0f); // no energy: every row is built
+        rows_.assign(4 * nodes * std::max<size_t>(energiesKeV.size(), 1), 0.0f);
+        emission_ = emissionTexture(static_cast<int>(nodes), static_cast<int>(energiesKeV.size()));
+    }
+    bool changed = resized;
+    for (size_t c = 0; c < energiesKeV.size(); ++c) {
+        if (energiesKeV[c] == energiesKeV_[c])
+            continue;
+        physics::emissionRow(tables_, energiesKeV[c], &rows_[4 * nodes * c]);
+        energiesKeV_[c] = energiesKeV[c];
+        changed = true;
+    }
+    if (changed)
+        emission_.upload(rows_);
 }
 
 void AuroraTables::bind(gl::Program& program) const
 {
-    program.bindTexture("uAuroraDeposition", 0, deposition_.id());
-    program.bindTexture("uAuroraLineYield", 1, lineYield_.id());
-    program.set("uAuroraDepositionAxes", axes_);
-    program.set("uAuroraDepositionSize", size_);
-    for (size_t line = 0; line < lineRgb_.size(); ++line)
-        program.set("uAuroraLineRgb[" + std::to_string(line) + "]", lineRgb_[line]);
+    program.bindTexture("uCurtainEmission", 0, emission_.id());
+    program.set("uCurtainEmissionAxes", tables_.axes());
 }
 
 } // namespace aurorawall::components::aurora

@@ -1,13 +1,12 @@
 #pragma once
-// The aurora component's precomputed tables on the GPU: Lazarev deposition over altitude and
-// electron energy (in decibels) and the emission-line yields over altitude (src/components/aurora/physics), sampled
-// by shaders/components/aurora/deposition.glsl. Built once per rank at start-up, deterministically, so every
-// rank holds the same bytes.
+// The aurora component's emission tables: Lazarev deposition over altitude and electron energy (in decibels)
+// and the emission-line yields over altitude, built once per rank at start-up, deterministically
+// (src/components/aurora/physics), and from them, each frame, one row per curtain of its electrons' emission
+// over altitude, the texture shaders/components/aurora/curtain_emission.glsl reads.
 #include "gl/shader_program.h"
 #include "gl/texture.h"
 #include "components/aurora/aurora.h"
-
-#include <glm/glm.hpp>
+#include "components/aurora/physics/emission_table.h"
 
 #include <string>
 #include <vector>
@@ -18,19 +17,21 @@ class AuroraTables {
 public:
     explicit AuroraTables(const Settings& aurora);
 
-    // Binds the tables to texture units 0 and 1 and sets their uniforms (per context: texture
-    // bindings are not shared between the GLFW windows' contexts).
+    // Rebuilds the rows of the curtains whose energy (keV) differs from the last update's, and uploads.
+    void update(const std::vector<float>& energiesKeV);
+
+    // Binds the rows to texture unit 0 and sets their uniforms (per context: texture bindings are not
+    // shared between the GLFW windows' contexts).
     void bind(gl::Program& program) const;
 
     // "aurora deposition table 1081 x 128 (maxwellian), line yields 1081: 12.3 ms"
     const std::string& summary() const { return summary_; }
 
 private:
-    gl::Texture deposition_;
-    gl::Texture lineYield_;
-    glm::vec4 axes_{0.0f};
-    glm::vec2 size_{0.0f};
-    std::vector<glm::vec3> lineRgb_; // linear sRGB of one rayleigh of each line
+    physics::EmissionTables tables_;
+    std::vector<float> energiesKeV_; // of the rows built
+    std::vector<float> rows_;        // RGBA, one row of tables_.nodeCount() texels per curtain
+    gl::Texture emission_;
     std::string summary_;
 };
 

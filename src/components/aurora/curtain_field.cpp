@@ -62,6 +62,14 @@ void CurtainField::update(double timeS, double nextTimeS)
     summary_ = text;
 }
 
+std::vector<float> CurtainField::energiesKeV() const
+{
+    std::vector<float> energies;
+    for (const glm::vec4& s : state_)
+        energies.push_back(s.y);
+    return energies;
+}
+
 void CurtainField::buildAhead(double nextTimeS)
 {
     if (std::isnan(nextTimeS))

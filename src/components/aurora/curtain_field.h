@@ -34,6 +34,9 @@ public:
     // Texture units 4 and 5 and the curtain uniforms of shaders/components/aurora/aurora_curtains.glsl.
     void bind(gl::Program& program) const;
 
+    // Each curtain's electron energy (keV) at the last update's time.
+    std::vector<float> energiesKeV() const;
+
     // The uploaded polylines and footprint map (valid after the first update).
     const gl::Texture& polylines() const { return *polylines_; }
     const gl::Texture& footprintMap() const { return *footprint_; }

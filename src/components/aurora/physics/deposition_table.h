@@ -1,5 +1,5 @@
 #pragma once
-// The aurora tables the shader samples (shaders/components/aurora/deposition.glsl): deposition over altitude ×
+// The aurora tables the per-curtain emission rows are built from (emission_table.h): deposition over altitude ×
 // ln energy in decibels, and the per-altitude line yields. See docs/aurora-physics.md, "Tables".
 #include "components/aurora/physics/lazarev.h"
 
@@ -30,7 +30,7 @@ struct DepositionTable {
     // floored at the spec's floorDecibels; row-major, one row per energy: [j·altitudeCount + i].
     std::vector<float> decibels;
 
-    // The uniforms uAuroraDepositionAxes and uAuroraDepositionSize.
+    // (z_0 km, Δz km, ln E_0, Δln E) and (altitude count, energy count), as depositionTexCoord takes them.
     glm::vec4 axes() const;
     glm::vec2 size() const;
 };
@@ -40,8 +40,9 @@ DepositionTable buildDepositionTable(const DepositionTableSpec& spec);
 // The rate the table stores at (z, E), in double: depositionPerEnergyFlux(z, E, spectrum)·kKeVPerErg.
 double depositionRate(double altitudeKm, double energyKeV, Spectrum spectrum);
 
-// What the GPU returns for (z, E): the shared texture-coordinate mapping in float, GL_LINEAR filtering
-// of the float texels with clamp-to-edge (OpenGL 4.6 §8.14.2), then decibelsToValue in float.
+// The table's lookup at (z, E), as a GPU texture would filter it: the shared texture-coordinate mapping in
+// float, GL_LINEAR filtering of the float texels with clamp-to-edge (OpenGL 4.6 §8.14.2), then
+// decibelsToValue in float. The lookup error of docs/aurora-physics.md, "Tables".
 float sampleDepositionTable(const DepositionTable& table, float altitudeKm, float energyKeV);
 
 // Per-altitude yields, photons per keV deposited, of the four emissions (aurora/emission.h) on the
