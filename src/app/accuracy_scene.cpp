@@ -138,7 +138,7 @@ void applyFinestSettings(scene::Scene& s)
 {
     s.settings<AuroraSettings>().stepKm = 0.25;
     s.settings<AuroraSettings>().resolveKm = 0.125;
-    s.settings<AuroraSettings>().resolveAlongCells = 0.5;
+    s.settings<AuroraSettings>().resolveCells = 0.5;
     s.settings<AuroraSettings>().skipEmptySpace = false;
     s.settings<AuroraSettings>().footprintMapSize = 1024;
     s.settings<AuroraSettings>().tableAltitudeStepKm = 0.25;
@@ -188,8 +188,8 @@ std::vector<Variant> knobVariants()
     for (double resolve : {0.25, 0.5, 1.0, 2.0, 100.0})
         v.push_back({"resolve_km", number(resolve), [resolve](scene::Scene& s) { s.settings<AuroraSettings>().resolveKm = resolve; }});
     for (double cells : {0.5, 1.0, 1.5, 2.0, 4.0})
-        v.push_back({"resolve_along_cells", number(cells),
-                     [cells](scene::Scene& s) { s.settings<AuroraSettings>().resolveAlongCells = cells; }});
+        v.push_back({"resolve_cells", number(cells),
+                     [cells](scene::Scene& s) { s.settings<AuroraSettings>().resolveCells = cells; }});
     for (bool skip : {true, false})
         v.push_back({"skip_empty_space", skip ? "yes" : "no", [skip](scene::Scene& s) { s.settings<AuroraSettings>().skipEmptySpace = skip; }});
     for (int size : {128, 256, 512, 1024})

@@ -6,8 +6,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
+#include <utility>
 
 namespace aurorawall::f64 {
 AURORAWALL_GLSL_PRECISION(double)
@@ -65,6 +67,35 @@ glm::dvec2 columnAt(const FluxColumns& c, const FluxFrames& f, int frame, int al
     return f64::fluxColumnValue(texel, centre, u - centre, du);
 }
 
+// ∫ F(s', u) ds' and ∫ s' F(s', u) ds' from the strip's start to s (which may lie beyond the strip:
+// F is periodic along), by Simpson's rule on panels that end at every cell centre along.
+glm::dvec2 integrateAlong(const FluxFrames& f, double u, double s, double phase)
+{
+    const double ds = f.texelKmX;
+    glm::dvec2 sum(0.0);
+    double a = 0.0;
+    while (a < s) {
+        const double nextCentre = (std::floor(a / ds - 0.5 + 1e-9) + 1.5) * ds;
+        const double b = std::min(s, nextCentre);
+        const double m = 0.5 * (a + b);
+        const double fa = sampleFlux(f, a, u, phase), fm = sampleFlux(f, m, u, phase), fb = sampleFlux(f, b, u, phase);
+        sum += (b - a) / 6.0 * glm::dvec2(fa + 4.0 * fm + fb, a * fa + 4.0 * m * fm + b * fb);
+        a = b;
+    }
+    return sum;
+}
+
+// The shader's lookup along in double, without the texture's filtering: the entry at the centre below s.
+glm::dvec2 rowAt(const FluxRows& r, const FluxFrames& f, int frame, int across, double s)
+{
+    const double ds = f.texelKmX;
+    const double below = std::clamp(std::floor(s / ds - 0.5), -1.0, double(r.entries - 2));
+    const std::size_t at = 4 * ((std::size_t(below + 1.0) * r.frames + std::size_t(frame)) * r.ny + across);
+    const glm::dvec4 texel(r.texels[at], r.texels[at + 1], r.texels[at + 2], r.texels[at + 3]);
+    const double centre = (below + 0.5) * ds;
+    return f64::fluxColumnValue(texel, centre, s - centre, ds);
+}
+
 } // namespace
 
 TEST(FluxColumns, EqualTheIntegralsOfTheBilinearFluxAnywhereAcross)
@@ -102,5 +133,82 @@ TEST(FluxColumns, ShortIntervalsSeeTheLocalFlux)
         const double u = across(rng), h = 1e-4;
         const double mass = columnAt(c, f, 1, 2, u + h).x - columnAt(c, f, 1, 2, u).x;
         EXPECT_NEAR(mass / h, sampleFlux(f, 2.5 * f.texelKmX, u + 0.5 * h, 1.0), 2e-3) << u;
+    }
+}
+
+TEST(FluxRows, EqualTheIntegralsOfTheBilinearFluxAnywhereAlong)
+{
+    const FluxFrames f = randomFrames(7, 5, 3, 13);
+    const FluxRows r = fluxRows(f);
+    ASSERT_EQ(r.ny, 5);
+    ASSERT_EQ(r.entries, 8);
+    ASSERT_EQ(r.frames, 3);
+    ASSERT_EQ(r.texels.size(), std::size_t(4 * 5 * 8 * 3));
+    const double length = f.nx * f.texelKmX, halfWidth = 0.5 * f.ny * f.texelKmY;
+    std::mt19937 rng(17);
+    std::uniform_real_distribution<double> along(0.0, length);
+    for (int k = 0; k < f.frames; ++k)
+        for (int j = 0; j < f.ny; ++j)
+            for (int n = 0; n < 40; ++n) {
+                // Row j sits at the cell centre across; frame k is phase k / (frames − 1).
+                const double s = n == 0 ? 0.0 : n == 1 ? length : along(rng);
+                const double u = (j + 0.5) * f.texelKmY - halfWidth;
+                const glm::dvec2 exact = integrateAlong(f, u, s, double(k) / (f.frames - 1));
+                const glm::dvec2 table = rowAt(r, f, k, j, s);
+                EXPECT_NEAR(table.x, exact.x, 2e-6 * (1.0 + std::abs(exact.x))) << k << " " << j << " " << s;
+                EXPECT_NEAR(table.y, exact.y, 2e-6 * (1.0 + std::abs(exact.y))) << k << " " << j << " " << s;
+            }
+}
+
+// Over a short interval the row's mass is the flux there times its length.
+TEST(FluxRows, ShortIntervalsSeeTheLocalFlux)
+{
+    const FluxFrames f = randomFrames(16, 4, 2, 19);
+    const FluxRows r = fluxRows(f);
+    const double u = 2.5 * f.texelKmY - 0.5 * f.ny * f.texelKmY;
+    std::mt19937 rng(23);
+    std::uniform_real_distribution<double> along(0.0, f.nx * f.texelKmX - 1e-3);
+    for (int n = 0; n < 200; ++n) {
+        const double s = along(rng), h = 1e-4;
+        const double mass = rowAt(r, f, 1, 2, s + h).x - rowAt(r, f, 1, 2, s).x;
+        EXPECT_NEAR(mass / h, sampleFlux(f, s + 0.5 * h, u, 1.0), 2e-3) << s;
+    }
+}
+
+// The packed texture holds every entry of both tables at its documented place, with the periodic
+// neighbours as ghosts at either end, whichever axis is longer.
+TEST(FluxTables, HoldEveryEntryOfBothTablesWithPeriodicGhosts)
+{
+    for (auto [nx, ny] : {std::pair{20, 4}, std::pair{3, 11}, std::pair{6, 6}}) {
+        const FluxFrames f = randomFrames(nx, ny, 2, 29);
+        const FluxColumns columns = fluxColumns(f);
+        const FluxRows rows = fluxRows(f);
+        const FluxTables t = packFluxTables(columns, rows);
+        ASSERT_EQ(t.width, std::max(nx, ny) + 2);
+        ASSERT_EQ(t.texels.size(), std::size_t(4) * t.width * t.frames * t.layers);
+        const auto texel = [&](int layer, int k, int x, int channel) {
+            return t.texels[4 * ((std::size_t(layer) * t.frames + k) * t.width + x) + channel];
+        };
+        for (int k = 0; k < f.frames; ++k)
+            for (int channel = 0; channel < 4; ++channel) {
+                for (int r = 0; r < columns.rows; ++r) {
+                    const int layer = r / t.columnTiles, x0 = (r % t.columnTiles) * (nx + 2);
+                    for (int x = 0; x < nx + 2; ++x) {
+                        const int i = (x - 1 + nx) % nx;
+                        EXPECT_EQ(texel(layer, k, x0 + x, channel),
+                                  columns.texels[4 * ((std::size_t(r) * f.frames + k) * nx + i) + channel]);
+                    }
+                }
+                for (int e = 0; e < rows.entries; ++e) {
+                    const int layer = t.firstRowLayer + e / t.rowTiles, x0 = (e % t.rowTiles) * (ny + 2);
+                    ASSERT_LT(layer, t.layers);
+                    for (int x = 0; x < ny + 2; ++x) {
+                        const int j = (x - 1 + ny) % ny;
+                        EXPECT_EQ(texel(layer, k, x0 + x, channel),
+                                  rows.texels[4 * ((std::size_t(e) * f.frames + k) * ny + j) + channel]);
+                    }
+                }
+            }
+        EXPECT_GE(t.firstRowLayer * t.columnTiles, columns.rows);
     }
 }

@@ -80,7 +80,7 @@ TEST(SceneErrors, NameFileAndLine)
         {"unknown_key.toml", ":7: ", "unknown key 'planet.raduis_km'"},
         {"nan_value.toml", ":6: ", "atmosphere.scale_height_km: must be a finite number"},
         {"absurd_value.toml", ":8: ", "aurora.step_km: must be a finite number in [0.05, 100]"},
-        {"absurd_resolve_along.toml", ":9: ", "aurora.resolve_along_cells: must be a finite number in [0.05, 100]"},
+        {"absurd_resolve_cells.toml", ":9: ", "aurora.resolve_cells: must be a finite number in [0.05, 100]"},
         {"unknown_component.toml", ":3: ", "unknown component 'rainbow'"},
         {"unlisted_table.toml", ":5: ", "unknown key 'stars'"},
     };

@@ -10,7 +10,7 @@ uniform float uAuroraBottomKm;
 uniform float uAuroraTopKm;
 uniform float uAuroraStepKm;
 uniform float uAuroraResolveKm;      // sub-steps (at most 64 a step): altitude and position along a curtain change by at most this
-uniform float uAuroraResolveAlongCells; // and the position along by at most this many of the detail's cells along
+uniform float uAuroraResolveCells;   // and the coordinate not integrated over by at most this many of the detail's cells
 uniform int uSkipEmptySpace;         // 0: the naive fine march everywhere (the reference)
 uniform int uCurtainCount;
 uniform sampler2D uCurtainPolylines; // RGBA32F, row c: xyz unit vector, w arclength km
@@ -26,20 +26,17 @@ uniform float uFootprintMarginKm;
 
 int gAuroraSamples = 0; // steps this pixel's ray has taken in auroraSegment: its work (main.frag)
 
-// Where n projects along segment j of curtain c: (km along from the segment's start, segment
-// length km, signed lateral distance km, distance beyond the segment's ends km).
-vec4 segmentProjection(int c, int j, vec3 n)
+// Point j of curtain c's polyline: unit vector, arclength km.
+vec4 polylinePoint(int c, int j)
 {
-    vec4 a = texelFetch(uCurtainPolylines, ivec2(j, c), 0);
-    vec4 b = texelFetch(uCurtainPolylines, ivec2(j + 1, c), 0);
-    return projectOnSegment(a.xyz, b.xyz, b.w - a.w, n, uPlanetRadiusKm);
+    return texelFetch(uCurtainPolylines, ivec2(j, c), 0);
 }
 
 // Curtain coordinates of direction n relative to curtain c, starting from polyline point i (the
 // footprint map's nearest point, which can be a few texels of arclength away from the true
 // nearest one): jump along the polyline by the projected along-track offset until n projects
 // inside the segment or the jumps turn back (n lies off a corner's outer side, between two
-// segments' ends), then take the closest of that segment and its neighbours.
+// segments' ends), then take the closest of that segment and its neighbours. Each point is read once.
 struct CurtainCoordinates {
     float s;        // km along the curtain (beyond its ends: negative, or more than its length)
     float u;        // km across it (signed)
@@ -51,7 +48,10 @@ CurtainCoordinates curtainCoordinates(int c, int i, vec3 n)
 {
     int last = int(uCurtainState[c].z) - 2; // index of the last segment
     int j = clamp(i, 0, last);
-    vec4 p = segmentProjection(c, j, n);
+    vec4 a = polylinePoint(c, j);
+    vec4 b = polylinePoint(c, j + 1);
+    vec3 normal = segmentNormal(a.xyz, b.xyz);
+    vec4 p = projectOnSegmentWithNormal(a.xyz, normal, b.w - a.w, n, uPlanetRadiusKm);
     int direction = 0;
     for (int jump = 0; jump < 6; ++jump) {
         int step = int(floor(p.x / max(p.y, 1e-6)));
@@ -60,29 +60,34 @@ CurtainCoordinates curtainCoordinates(int c, int i, vec3 n)
             break;
         direction = step;
         j = next;
-        p = segmentProjection(c, j, n);
+        a = polylinePoint(c, j);
+        b = polylinePoint(c, j + 1);
+        normal = segmentNormal(a.xyz, b.xyz);
+        p = projectOnSegmentWithNormal(a.xyz, normal, b.w - a.w, n, uPlanetRadiusKm);
     }
     CurtainCoordinates best;
     best.distance = length(vec2(p.z, p.w));
     best.u = p.z;
-    best.s = texelFetch(uCurtainPolylines, ivec2(j, c), 0).w + p.x;
-    int closest = j;
-    for (int side = -1; side <= 1; side += 2) {
-        int k = j + side;
-        if (k < 0 || k > last)
+    best.s = a.w + p.x;
+    best.normal = normal;
+    // The segments before (point j − 1 to a) and after (b to point j + 2), where they exist.
+    vec4 before = polylinePoint(c, max(j - 1, 0));
+    vec4 after = polylinePoint(c, min(j + 2, last + 1));
+    for (int side = 0; side < 2; ++side) {
+        if (side == 0 ? j == 0 : j == last)
             continue;
-        vec4 q = segmentProjection(c, k, n);
+        vec4 start = side == 0 ? before : b;
+        vec4 end = side == 0 ? a : after;
+        vec3 sideNormal = segmentNormal(start.xyz, end.xyz);
+        vec4 q = projectOnSegmentWithNormal(start.xyz, sideNormal, end.w - start.w, n, uPlanetRadiusKm);
         float distance = length(vec2(q.z, q.w));
         if (distance < best.distance) {
-            best.s = texelFetch(uCurtainPolylines, ivec2(k, c), 0).w + q.x;
+            best.s = start.w + q.x;
             best.u = q.z;
             best.distance = distance;
-            closest = k;
+            best.normal = sideNormal;
         }
     }
-    vec3 a = texelFetch(uCurtainPolylines, ivec2(closest, c), 0).xyz;
-    vec3 b = texelFetch(uCurtainPolylines, ivec2(closest + 1, c), 0).xyz;
-    best.normal = normalize(cross(a, b - a));
     return best;
 }
 
@@ -100,13 +105,14 @@ struct CurtainStep {
 // The emission of the ray o + t d over the step [t0, t1] (km). The curtain coordinates are found
 // once, at the step's midpoint t_m, and the footprint's motion is linear over the step:
 // u(t) = u_m + u' (t − t_m), s(t) = s_m + s' (t − t_m). The step is cut into sub-steps over which
-// the altitude changes by at most uAuroraResolveKm and the position along the curtain by at most that
-// and uAuroraResolveAlongCells of the detail's cells; on each
-// the emission is integrated across the curtain in closed form,
+// the altitude changes by at most uAuroraResolveKm; on each the emission is integrated in closed form
+// over the coordinate that changes through more of the detail's cells, across the curtain,
 //   ∫ flux(s, u(t)) E(h(t)) dt ≈ E(h(t̄)) · (1/u') ∫_{u(ta)}^{u(tb)} flux(s_mid, u) du,
-// with t̄ the flux-weighted mean position of the sub-step, from the column's first moment
-// (curtain_profile.glsl, curtainColumn). A sub-step running along the curtain (|Δu| below 1 m)
-// takes the midpoint rule. The step's midpoint decides which curtains are near, as a point sample did.
+// or along it (s and u exchanged), and the other coordinate changes by at most uAuroraResolveCells of
+// the detail's cells (along, also by at most uAuroraResolveKm). t̄ is the flux-weighted mean position of
+// the sub-step, from the first moment (curtain_profile.glsl, curtainIntegral). A sub-step that changes
+// the integrated coordinate by less than 1 m takes the midpoint rule. The step's midpoint decides which
+// curtains are near, as a point sample did.
 CurtainStep integrateCurtains(vec3 o, vec3 d, float t0, float t1)
 {
     CurtainStep step;
@@ -135,10 +141,9 @@ CurtainStep integrateCurtains(vec3 o, vec3 d, float t0, float t1)
     float hRate = dot(n, d);
     // The nearest curtain, and where curtains overlap the nearest point of another one: the
     // fluxes of overlapping curtains add (the map's fourth channel, src/components/aurora/physics/footprint_map.h).
-    // Sub-steps resolve the altitude to uAuroraResolveKm and the position along the curtain to that
-    // or, finer, to uAuroraResolveAlongCells of the detail's cells along: a sub-step reads the flux at
-    // one position along.
-    float alongResolveKm = min(uAuroraResolveKm, uAuroraResolveAlongCells * fluxCellAlongKm());
+    // Integrated across, a sub-step reads the flux at one position along: the sub-steps resolve it to
+    // uAuroraResolveKm or, finer, to uAuroraResolveCells of the detail's cells along.
+    float alongResolveKm = min(uAuroraResolveKm, uAuroraResolveCells * fluxCellAlongKm());
     vec4 candidates = vec4(nearest.x, nearest.y, -1.0, -1.0);
     if (nearest.w >= 0.0) {
         float second = floor(nearest.w / 65536.0);
@@ -159,12 +164,24 @@ CurtainStep integrateCurtains(vec3 o, vec3 d, float t0, float t1)
         float scale = uPlanetRadiusKm * inversesqrt(max(1.0 - across * across, 1e-12));
         float uRate = scale * dot(cc.normal, footprintRate);
         float sRate = scale * dot(cross(cc.normal, n), footprintRate);
-        int parts = int(clamp(ceil(max(abs(hRate) / uAuroraResolveKm, abs(sRate) / alongResolveKm) * len), 1.0, 64.0));
+        // A step that moves through more of the detail's cells along than across (and stays between the
+        // curtain's ends) is integrated along in closed form, with sub-steps that bound the change across;
+        // any other, across, with sub-steps that bound the change along.
+        float alongParts = abs(sRate) / alongResolveKm;
+        float acrossParts = abs(uRate) / (uAuroraResolveCells * fluxCellAcrossKm(c));
+        float sStart = cc.s + sRate * (t0 - tm);
+        float sEnd = cc.s + sRate * (t1 - tm);
+        bool alongMode = kProfileVariesAlong && acrossParts < alongParts && min(sStart, sEnd) >= 0.0 &&
+                         max(sStart, sEnd) <= lengthKm;
+        float resolveParts = alongMode ? acrossParts : alongParts;
+        int parts = int(clamp(ceil(max(abs(hRate) / uAuroraResolveKm, resolveParts) * len), 1.0, 64.0));
         // Where the altitude changes by less than uAuroraResolveKm over the whole step, one emission
         // at the step's flux-weighted mean position serves all its sub-steps.
         bool emissionPerPart = abs(hRate) * len > uAuroraResolveKm;
         float part = len / float(parts);
-        float du = uRate * part;
+        // The sub-step's change in the coordinate integrated in closed form, and its rate per km of ray.
+        float rate = alongMode ? sRate : uRate;
+        float change = rate * part;
         vec3 energy = vec3(0.0);
         float stepMass = 0.0;
         float stepMoment = 0.0; // ∫ t profile dt, km²
@@ -177,12 +194,15 @@ CurtainStep integrateCurtains(vec3 o, vec3 d, float t0, float t1)
             float beyondEnds = max(max(-s, s - lengthKm), 0.0);
             if (length(vec2(u, beyondEnds)) > uCurtainReachKm)
                 continue;
-            vec3 column = curtainColumn(c, clamp(s, 0.0, lengthKm), u - 0.5 * du, u + 0.5 * du);
-            bool alongCurtain = abs(du) < 1e-3;
-            float mass = alongCurtain ? column.z * part : column.x / uRate; // ∫ profile dt over the sub-step, km
+            // (∫ profile, ∫ offset from the sub-step's start × profile, mean profile at its ends) over the
+            // integrated coordinate.
+            vec3 column = curtainIntegral(c, alongMode, alongMode ? u : clamp(s, 0.0, lengthKm),
+                                          (alongMode ? s : u) - 0.5 * change, change);
+            bool pointLike = abs(change) < 1e-3;
+            float mass = pointLike ? column.z * part : column.x / rate; // ∫ profile dt over the sub-step, km
             if (mass <= 0.0)
                 continue;
-            float tMean = alongCurtain ? tMid : clamp(tMid + (column.y / column.x - u) / uRate, ta, ta + part);
+            float tMean = pointLike ? tMid : clamp(ta + column.y / column.x / rate, ta, ta + part);
             if (emissionPerPart) {
                 energy += mass * curtainEmissionAt(o, d, tMean, c);
             } else {

@@ -1,13 +1,25 @@
 // Where the footprint direction n projects on the great-circle segment from a to b (unit vectors
 // from the planet's centre, `length` km of arclength apart on the sphere of radius R). Shared by
-// the shader and the CPU reference (src/common/glsl.h). Returns (km along from a, length, signed
-// lateral distance km, distance beyond the segment's ends km).
-vec4 projectOnSegment(vec3 a, vec3 b, real length, vec3 n, real R)
+// the shader and the CPU reference (src/common/glsl.h).
+
+// The unit normal of the segment's great circle, pointing to the side where the lateral distance is
+// positive. cross(a, b - a), not cross(a, b): for points kilometres apart the latter cancels to about 4
+// digits in float and tilts the great circle by up to a kilometre at the segment's end.
+vec3 segmentNormal(vec3 a, vec3 b)
 {
-    // cross(a, b - a), not cross(a, b): for points kilometres apart the latter cancels to about 4
-    // digits in float and tilts the great circle by up to a kilometre at the segment's end.
-    vec3 normal = normalize(cross(a, b - a));
+    return normalize(cross(a, b - a));
+}
+
+// With the segment's normal already known: (km along from a, length, signed lateral distance km,
+// distance beyond the segment's ends km).
+vec4 projectOnSegmentWithNormal(vec3 a, vec3 normal, real length, vec3 n, real R)
+{
     real along = R * atan(dot(cross(a, n), normal), dot(a, n));
     real lateral = R * asin(clamp(dot(n, normal), real(-1.0), real(1.0)));
     return vec4(along, length, lateral, max(max(-along, along - length), real(0.0)));
+}
+
+vec4 projectOnSegment(vec3 a, vec3 b, real length, vec3 n, real R)
+{
+    return projectOnSegmentWithNormal(a, segmentNormal(a, b), length, n, R);
 }

@@ -27,7 +27,7 @@ public:
         program.set("uAuroraTopKm", static_cast<float>(s_.topKm));
         program.set("uAuroraStepKm", static_cast<float>(s_.stepKm));
         program.set("uAuroraResolveKm", static_cast<float>(s_.resolveKm));
-        program.set("uAuroraResolveAlongCells", static_cast<float>(s_.resolveAlongCells));
+        program.set("uAuroraResolveCells", static_cast<float>(s_.resolveCells));
         program.set("uSkipEmptySpace", s_.skipEmptySpace ? 1 : 0);
         field_.update(frame.timeS, frame.nextTimeS);
         tables_.update(field_.energiesKeV());
@@ -108,7 +108,7 @@ public:
             t.fail("bottom_km", "must not be below atmosphere.top_km (the layers are composited in order)");
         a.stepKm = t.number("step_km", 0.05, 100.0, a.stepKm);
         a.resolveKm = t.number("resolve_km", 0.01, 100.0, a.resolveKm);
-        a.resolveAlongCells = t.number("resolve_along_cells", 0.05, 100.0, a.resolveAlongCells);
+        a.resolveCells = t.number("resolve_cells", 0.05, 100.0, a.resolveCells);
         a.polylineSpacingKm = t.number("polyline_spacing_km", 0.1, 100.0, a.polylineSpacingKm);
         a.footprintMapSize = static_cast<int>(t.number("footprint_map_size", 16, 8192, a.footprintMapSize));
         if (a.footprintMapSize & (a.footprintMapSize - 1))

@@ -2,36 +2,38 @@
 
 #include "components/fluid_detail/simulation/flux_columns.h"
 
-#include <glm/glm.hpp>
-
 namespace aurorawall::components::fluid_detail {
 
 namespace {
 
-// A layer per entry across: filtered along and between frames, never between entries.
-gl::Texture columnTexture(int nx, int frames, int rows)
+// Filtered within a layer (along an entry's cells and between frames), never between layers; the ghost
+// texels make the interpolation periodic, so the edges clamp.
+gl::Texture tableTexture(int width, int frames, int layers)
 {
-    return gl::Texture::create2DArray(nx, frames, rows, gl::TexelFormat::RGBA32F, gl::Filter::Linear, gl::Wrap::Repeat);
+    return gl::Texture::create2DArray(width, frames, layers, gl::TexelFormat::RGBA32F, gl::Filter::Linear,
+                                      gl::Wrap::Clamp);
 }
 
 } // namespace
 
-FluxColumnTexture::FluxColumnTexture() : columns_(columnTexture(1, 1, 2))
+FluxColumnTexture::FluxColumnTexture() : tables_(tableTexture(1, 1, 1))
 {
 }
 
 void FluxColumnTexture::upload(const fluid::FluxFrames& f)
 {
-    const fluid::FluxColumns c = fluid::fluxColumns(f);
-    if (columns_.width() != c.nx || columns_.height() != c.frames || columns_.depth() != c.rows)
-        columns_ = columnTexture(c.nx, c.frames, c.rows);
-    columns_.upload(c.texels);
+    const fluid::FluxTables t = fluid::packFluxTables(fluid::fluxColumns(f), fluid::fluxRows(f));
+    if (tables_.width() != t.width || tables_.height() != t.frames || tables_.depth() != t.layers)
+        tables_ = tableTexture(t.width, t.frames, t.layers);
+    tables_.upload(t.texels);
+    layout_ = glm::vec4(t.nx, t.ny, t.columnTiles, t.rowTiles);
 }
 
 void FluxColumnTexture::bind(gl::Program& program, double stripLengthKm, double stripWidthKm, double peakScale) const
 {
-    program.bindTexture("uFluxColumns", 3, columns_.id());
-    program.set("uFluxStrip", glm::vec4(stripLengthKm, stripWidthKm, columns_.height(), peakScale));
+    program.bindTexture("uFluxTables", 3, tables_.id());
+    program.set("uFluxStrip", glm::vec4(stripLengthKm, stripWidthKm, tables_.height(), peakScale));
+    program.set("uFluxLayout", layout_);
 }
 
 } // namespace aurorawall::components::fluid_detail

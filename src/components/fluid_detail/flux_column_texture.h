@@ -1,12 +1,15 @@
 #pragma once
 // The curtain flux frames on the GPU, as shaders/components/aurora/curtain_profile.glsl reads them
 // (fluid_detail's simulated frames, the plasma's electron strip): their running integrals across the
-// strip (fluid::fluxColumns; unit 3, uFluxColumns: a 2D array, x along, y frame, a layer per entry
-// across; linear along and between frames, periodic along), from which the shader takes both the flux
-// and its integral over a ray step. Bilinear within a layer reads 4 texels where a 3D texture read 8.
+// strip (fluid::fluxColumns), for a ray step that crosses a curtain, and along it (fluid::fluxRows), for
+// one that runs along a curtain, packed into one 2D array texture (fluid::packFluxTables; unit 3,
+// uFluxTables: x through an entry's cells, y frame, linear within a layer) so that the shader reads both
+// through one code path. Bilinear within a layer reads 4 texels where a 3D texture read 8.
 #include "components/fluid_detail/simulation/curtain_detail.h"
 #include "gl/shader_program.h"
 #include "gl/texture.h"
+
+#include <glm/glm.hpp>
 
 namespace aurorawall::components::fluid_detail {
 
@@ -14,13 +17,15 @@ class FluxColumnTexture {
 public:
     FluxColumnTexture();
 
-    // The table of these frames (a new texture when a size changes, else rewritten in place).
+    // The tables of these frames (a new texture when a size changes, else rewritten in place).
     void upload(const fluid::FluxFrames& frames);
-    // The texture and uFluxStrip = (strip length km, strip width km, frame count, peak scale).
+    // The texture, uFluxStrip = (strip length km, strip width km, frame count, peak scale) and
+    // uFluxLayout = (cells along, cells across, column entries per layer, row entries per layer).
     void bind(gl::Program& program, double stripLengthKm, double stripWidthKm, double peakScale) const;
 
 private:
-    gl::Texture columns_;
+    gl::Texture tables_;
+    glm::vec4 layout_{0.0f};
 };
 
 } // namespace aurorawall::components::fluid_detail

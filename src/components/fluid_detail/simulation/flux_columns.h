@@ -27,4 +27,40 @@ struct FluxColumns {
 
 FluxColumns fluxColumns(const FluxFrames& frames);
 
+// The same running integrals along the strip, for a ray step that runs along a curtain: at each cell
+// centre across, A(s) = ∫_0^s F ds' and B(s) = ∫_0^s s' F ds' (s along from the strip's start), from the
+// entry at the centre below s: (A(c), B(c), F(c), F(c + Δ) − F(c)), evaluated by the same fluxColumnValue.
+// The entries sit at the centres c_i = (i + ½)Δs for i = −1 … nx − 1 (the first half a cell before the
+// strip's start, where the periodic flux still rises toward its first centre); across, the texture
+// interpolates A, B and F linearly between cell centres (periodic), which is exactly the integral along of
+// the flux as the renderer interpolates it there.
+struct FluxRows {
+    int ny = 0;      // cells across, as the frames
+    int entries = 0; // nx + 1 entries along: entry e holds centre i = e − 1
+    int frames = 0;
+    // (A, B, F, ΔF) in 1, km, 1/km, 1/km: texels[4·((e·frames + k)·ny + j) + {0, 1, 2, 3}] (an entry along
+    // is a layer of a 2D array texture whose x runs across and y through the frames).
+    std::vector<float> texels;
+};
+
+FluxRows fluxRows(const FluxFrames& frames);
+
+// Both tables in one 2D array texture, so that a shader reads either through one sampler and one code path
+// (a GPU runs both sides of a branch that differs between neighbouring pixels). Each entry (a column's
+// entry across, or a row's entry along) is a strip of its cells with a ghost texel at either end holding
+// the periodic neighbour (the last cell before the first, the first after the last), so GL_LINEAR with
+// clamp-to-edge interpolates periodically; as many strips as fit side by side share a layer.
+//   width = max(nx, ny) + 2, height = frames;
+//   column entry r (0 … ny): layer r / columnTiles, texels from x = (r mod columnTiles)·(nx + 2);
+//   row entry e (0 … nx):    layer firstRowLayer + e / rowTiles, texels from x = (e mod rowTiles)·(ny + 2);
+//   texel x0 + 1 + i holds cell i, x0 the cell n − 1, x0 + n + 1 the cell 0 (n = nx or ny).
+struct FluxTables {
+    int nx = 0, ny = 0, frames = 0;
+    int width = 0, layers = 0;
+    int columnTiles = 0, rowTiles = 0, firstRowLayer = 0;
+    std::vector<float> texels; // RGBA: texels[4·((layer·frames + k)·width + x)]
+};
+
+FluxTables packFluxTables(const FluxColumns& columns, const FluxRows& rows);
+
 } // namespace aurorawall::fluid
