@@ -27,7 +27,7 @@ public:
     std::string precomputationLog() const override { return summary_; }
     // device = "gpu": steps the live run to this frame's step and uploads its frame, waited for.
     void setFrame(gl::Program&, const cluster::FrameState& frame) override;
-    // Texture unit 3: uFluxColumns and uFluxStrip.
+    // Texture unit 3: uFluxTables, with uFluxStrip and uFluxLayout.
     void bind(gl::Program& program) const override;
 
     const fluid_detail::DetailShape& shape() const { return shape_; }
