@@ -175,16 +175,17 @@ CurtainStep integrateCurtains(vec3 o, vec3 d, float t0, float t1)
                          max(sStart, sEnd) <= lengthKm;
         float resolveParts = alongMode ? acrossParts : alongParts;
         int parts = int(clamp(ceil(max(abs(hRate) / uAuroraResolveKm, resolveParts) * len), 1.0, 64.0));
-        // Where the altitude changes by less than uAuroraResolveKm over the whole step, one emission
-        // at the step's flux-weighted mean position serves all its sub-steps.
-        bool emissionPerPart = abs(hRate) * len > uAuroraResolveKm;
         float part = len / float(parts);
+        // Runs of sub-steps over which the altitude changes by at most uAuroraResolveKm share one emission,
+        // at their flux-weighted mean position (where it changes less than that over the whole step, all
+        // the step's sub-steps do).
+        int run = int(clamp(floor(uAuroraResolveKm / max(abs(hRate) * part, 1e-6)), 1.0, 64.0));
         // The sub-step's change in the coordinate integrated in closed form, and its rate per km of ray.
         float rate = alongMode ? sRate : uRate;
         float change = rate * part;
         vec3 energy = vec3(0.0);
-        float stepMass = 0.0;
-        float stepMoment = 0.0; // ∫ t profile dt, km²
+        float runMass = 0.0;
+        float runMoment = 0.0; // ∫ t profile dt, km²
         for (int i = 0; i < parts; ++i) {
             float ta = t0 + float(i) * part;
             float tMid = ta + 0.5 * part;
@@ -192,26 +193,26 @@ CurtainStep integrateCurtains(vec3 o, vec3 d, float t0, float t1)
             float s = cc.s + sRate * (tMid - tm);
             // Beyond its reach (across, or around the curtain's ends) a curtain does not emit.
             float beyondEnds = max(max(-s, s - lengthKm), 0.0);
-            if (length(vec2(u, beyondEnds)) > uCurtainReachKm)
-                continue;
-            // (∫ profile, ∫ offset from the sub-step's start × profile, mean profile at its ends) over the
-            // integrated coordinate.
-            vec3 column = curtainIntegral(c, alongMode, alongMode ? u : clamp(s, 0.0, lengthKm),
-                                          (alongMode ? s : u) - 0.5 * change, change);
-            bool pointLike = abs(change) < 1e-3;
-            float mass = pointLike ? column.z * part : column.x / rate; // ∫ profile dt over the sub-step, km
-            if (mass <= 0.0)
-                continue;
-            float tMean = pointLike ? tMid : clamp(ta + column.y / column.x / rate, ta, ta + part);
-            if (emissionPerPart) {
-                energy += mass * curtainEmissionAt(o, d, tMean, c);
-            } else {
-                stepMass += mass;
-                stepMoment += mass * tMean;
+            if (length(vec2(u, beyondEnds)) <= uCurtainReachKm) {
+                // (∫ profile, ∫ offset from the sub-step's start × profile, mean profile at its ends) over
+                // the integrated coordinate.
+                vec3 column = curtainIntegral(c, alongMode, alongMode ? u : clamp(s, 0.0, lengthKm),
+                                              (alongMode ? s : u) - 0.5 * change, change);
+                bool pointLike = abs(change) < 1e-3;
+                float mass = pointLike ? column.z * part : column.x / rate; // ∫ profile dt over the sub-step, km
+                if (mass > 0.0) {
+                    float tMean = pointLike ? tMid : clamp(ta + column.y / column.x / rate, ta, ta + part);
+                    runMass += mass;
+                    runMoment += mass * tMean;
+                }
+            }
+            if ((i + 1) % run == 0 || i == parts - 1) {
+                if (runMass > 0.0)
+                    energy += runMass * curtainEmissionAt(o, d, runMoment / runMass, c);
+                runMass = 0.0;
+                runMoment = 0.0;
             }
         }
-        if (stepMass > 0.0)
-            energy += stepMass * curtainEmissionAt(o, d, stepMoment / stepMass, c);
         step.radiance += uCurtainState[c].x * energy;
     }
     return step;
