@@ -183,11 +183,11 @@ std::vector<Variant> knobVariants()
 {
     std::vector<Variant> v;
     v.push_back({"default", "-", [](scene::Scene&) {}});
-    for (double step : {0.5, 1.0, 2.0, 4.0, 8.0})
+    for (double step : {0.5, 1.0, 2.0, 4.0, 8.0, 16.0, 32.0})
         v.push_back({"step_km", number(step), [step](scene::Scene& s) { s.settings<AuroraSettings>().stepKm = step; }});
     for (double resolve : {0.25, 0.5, 1.0, 2.0, 100.0})
         v.push_back({"resolve_km", number(resolve), [resolve](scene::Scene& s) { s.settings<AuroraSettings>().resolveKm = resolve; }});
-    for (double cells : {0.5, 1.0, 1.5, 2.0, 4.0})
+    for (double cells : {0.5, 0.75, 1.0, 1.5, 2.0, 4.0})
         v.push_back({"resolve_cells", number(cells),
                      [cells](scene::Scene& s) { s.settings<AuroraSettings>().resolveCells = cells; }});
     for (bool skip : {true, false})
