@@ -97,6 +97,17 @@ vec3 curtainEmissionAt(vec3 o, vec3 d, float t, int c)
     return curtainEmissionRgbPerKm(length(o + t * d) - uPlanetRadiusKm, c);
 }
 
+// The part of the interval [range.x, range.y] of t where x(t) = x_m + rate (t − t_m) lies within
+// [lo, hi] (empty: x ≥ y).
+vec2 intersectLinearBand(vec2 range, float xm, float rate, float tm, float lo, float hi)
+{
+    if (abs(rate) < 1e-9)
+        return xm >= lo && xm <= hi ? range : vec2(range.y, range.y);
+    float ta = tm + (lo - xm) / rate;
+    float tb = tm + (hi - xm) / rate;
+    return vec2(max(range.x, min(ta, tb)), min(range.y, max(ta, tb)));
+}
+
 struct CurtainStep {
     float skipKm;   // from the step's midpoint, a distance within which no curtain emits
     vec3 radiance;  // linear sRGB radiance the step adds
@@ -164,18 +175,27 @@ CurtainStep integrateCurtains(vec3 o, vec3 d, float t0, float t1)
         float scale = uPlanetRadiusKm * inversesqrt(max(1.0 - across * across, 1e-12));
         float uRate = scale * dot(cc.normal, footprintRate);
         float sRate = scale * dot(cross(cc.normal, n), footprintRate);
+        // Only the part of the step within the curtain's reach, |u| ≤ reach and −reach ≤ s ≤ length + reach
+        // (u and s linear over the step), can emit: the sub-steps cover that part alone.
+        vec2 within = vec2(t0, t1);
+        within = intersectLinearBand(within, cc.u, uRate, tm, -uCurtainReachKm, uCurtainReachKm);
+        within = intersectLinearBand(within, cc.s, sRate, tm, -uCurtainReachKm, lengthKm + uCurtainReachKm);
+        if (within.x >= within.y)
+            continue;
+        float start = within.x;
+        float span = within.y - within.x;
         // A step that moves through more of the detail's cells along than across (and stays between the
         // curtain's ends) is integrated along in closed form, with sub-steps that bound the change across;
         // any other, across, with sub-steps that bound the change along.
         float alongParts = abs(sRate) / alongResolveKm;
         float acrossParts = abs(uRate) / (uAuroraResolveCells * fluxCellAcrossKm(c));
-        float sStart = cc.s + sRate * (t0 - tm);
-        float sEnd = cc.s + sRate * (t1 - tm);
+        float sStart = cc.s + sRate * (within.x - tm);
+        float sEnd = cc.s + sRate * (within.y - tm);
         bool alongMode = kProfileVariesAlong && acrossParts < alongParts && min(sStart, sEnd) >= 0.0 &&
                          max(sStart, sEnd) <= lengthKm;
         float resolveParts = alongMode ? acrossParts : alongParts;
-        int parts = int(clamp(ceil(max(abs(hRate) / uAuroraResolveKm, resolveParts) * len), 1.0, 64.0));
-        float part = len / float(parts);
+        int parts = int(clamp(ceil(max(abs(hRate) / uAuroraResolveKm, resolveParts) * span), 1.0, 64.0));
+        float part = span / float(parts);
         // Runs of sub-steps over which the altitude changes by at most uAuroraResolveKm share one emission,
         // at their flux-weighted mean position (where it changes less than that over the whole step, all
         // the step's sub-steps do).
@@ -187,7 +207,7 @@ CurtainStep integrateCurtains(vec3 o, vec3 d, float t0, float t1)
         float runMass = 0.0;
         float runMoment = 0.0; // ∫ t profile dt, km²
         for (int i = 0; i < parts; ++i) {
-            float ta = t0 + float(i) * part;
+            float ta = start + float(i) * part;
             float tMid = ta + 0.5 * part;
             float u = cc.u + uRate * (tMid - tm);
             float s = cc.s + sRate * (tMid - tm);
