@@ -115,7 +115,8 @@ struct CurtainStep {
 
 // The emission of the ray o + t d over the step [t0, t1] (km). The curtain coordinates are found
 // once, at the step's midpoint t_m, and the footprint's motion is linear over the step:
-// u(t) = u_m + u' (t − t_m), s(t) = s_m + s' (t − t_m). The step is cut into sub-steps over which
+// u(t) = u_m + u' (t − t_m), s(t) = s_m + s' (t − t_m). The part of the step within a curtain's reach
+// (of its centre line, and of its ends) is cut into sub-steps over which
 // the altitude changes by at most uAuroraResolveKm; on each the emission is integrated in closed form
 // over the coordinate that changes through more of the detail's cells, across the curtain,
 //   ∫ flux(s, u(t)) E(h(t)) dt ≈ E(h(t̄)) · (1/u') ∫_{u(ta)}^{u(tb)} flux(s_mid, u) du,
