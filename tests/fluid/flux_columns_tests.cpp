@@ -37,63 +37,36 @@ FluxFrames randomFrames(int nx, int ny, int frames, unsigned seed)
     return f;
 }
 
-// ∫ F(s, u') du' and ∫ u' F(s, u') du' from the strip's lower edge to u, by Simpson's rule on panels
-// that end at every cell centre (F is linear between them, so the rule is exact).
-glm::dvec2 integrateAcross(const FluxFrames& f, double s, double u, double phase)
+// ∫ F dq and ∫ q F dq over q (across: q = u from the strip's lower edge; along: q = s from the strip's
+// start, beyond it periodic) up to `to`, at the fixed other coordinate, by Simpson's rule on panels that
+// end at every cell centre (F is linear between them, so the rule is exact).
+glm::dvec2 integrateLine(const FluxFrames& f, bool along, double fixed, double to, double phase)
 {
-    const double du = f.texelKmY, lower = -0.5 * f.ny * du;
+    const double delta = along ? f.texelKmX : f.texelKmY, origin = along ? 0.0 : -0.5 * f.ny * f.texelKmY;
+    const auto flux = [&](double q) { return along ? sampleFlux(f, q, fixed, phase) : sampleFlux(f, fixed, q, phase); };
     glm::dvec2 sum(0.0);
-    double a = lower;
-    while (a < u) {
-        const double nextCentre = lower + (std::floor((a - lower) / du - 0.5 + 1e-9) + 1.5) * du;
-        const double b = std::min(u, nextCentre);
+    double a = origin;
+    while (a < to) {
+        const double nextCentre = origin + (std::floor((a - origin) / delta - 0.5 + 1e-9) + 1.5) * delta;
+        const double b = std::min(to, nextCentre);
         const double m = 0.5 * (a + b);
-        const double fa = sampleFlux(f, s, a, phase), fm = sampleFlux(f, s, m, phase), fb = sampleFlux(f, s, b, phase);
+        const double fa = flux(a), fm = flux(m), fb = flux(b);
         sum += (b - a) / 6.0 * glm::dvec2(fa + 4.0 * fm + fb, a * fa + 4.0 * m * fm + b * fb);
         a = b;
     }
     return sum;
 }
 
-// The shader's lookup in double, without the texture's filtering: the entry at the centre below u.
-glm::dvec2 columnAt(const FluxColumns& c, const FluxFrames& f, int frame, int along, double u)
+// The shader's lookup in double, without the texture's filtering: the entry of table t at the centre below
+// q, at cell p of the other axis.
+glm::dvec2 tableAt(const FluxIntegrals& t, const FluxFrames& f, bool along, int frame, int p, double q)
 {
-    const double du = f.texelKmY, halfWidth = 0.5 * f.ny * du;
-    const double position = (u + halfWidth) / du - 0.5;
-    const double below = std::clamp(std::floor(position), -1.0, double(c.rows - 2));
-    const std::size_t at = 4 * ((std::size_t(below + 1.0) * c.frames + std::size_t(frame)) * c.nx + along);
-    const glm::dvec4 texel(c.texels[at], c.texels[at + 1], c.texels[at + 2], c.texels[at + 3]);
-    const double centre = (below + 0.5) * du - halfWidth;
-    return f64::fluxColumnValue(texel, centre, u - centre, du);
-}
-
-// ∫ F(s', u) ds' and ∫ s' F(s', u) ds' from the strip's start to s (which may lie beyond the strip:
-// F is periodic along), by Simpson's rule on panels that end at every cell centre along.
-glm::dvec2 integrateAlong(const FluxFrames& f, double u, double s, double phase)
-{
-    const double ds = f.texelKmX;
-    glm::dvec2 sum(0.0);
-    double a = 0.0;
-    while (a < s) {
-        const double nextCentre = (std::floor(a / ds - 0.5 + 1e-9) + 1.5) * ds;
-        const double b = std::min(s, nextCentre);
-        const double m = 0.5 * (a + b);
-        const double fa = sampleFlux(f, a, u, phase), fm = sampleFlux(f, m, u, phase), fb = sampleFlux(f, b, u, phase);
-        sum += (b - a) / 6.0 * glm::dvec2(fa + 4.0 * fm + fb, a * fa + 4.0 * m * fm + b * fb);
-        a = b;
-    }
-    return sum;
-}
-
-// The shader's lookup along in double, without the texture's filtering: the entry at the centre below s.
-glm::dvec2 rowAt(const FluxRows& r, const FluxFrames& f, int frame, int across, double s)
-{
-    const double ds = f.texelKmX;
-    const double below = std::clamp(std::floor(s / ds - 0.5), -1.0, double(r.entries - 2));
-    const std::size_t at = 4 * ((std::size_t(below + 1.0) * r.frames + std::size_t(frame)) * r.ny + across);
-    const glm::dvec4 texel(r.texels[at], r.texels[at + 1], r.texels[at + 2], r.texels[at + 3]);
-    const double centre = (below + 0.5) * ds;
-    return f64::fluxColumnValue(texel, centre, s - centre, ds);
+    const double delta = along ? f.texelKmX : f.texelKmY, origin = along ? 0.0 : -0.5 * f.ny * f.texelKmY;
+    const double below = std::clamp(std::floor((q - origin) / delta - 0.5), -1.0, double(t.entries - 2));
+    const std::size_t at = 4 * ((std::size_t(below + 1.0) * t.frames + std::size_t(frame)) * t.cells + p);
+    const glm::dvec4 texel(t.texels[at], t.texels[at + 1], t.texels[at + 2], t.texels[at + 3]);
+    const double centre = origin + (below + 0.5) * delta;
+    return f64::fluxColumnValue(texel, centre, q - centre, delta);
 }
 
 } // namespace
@@ -101,9 +74,9 @@ glm::dvec2 rowAt(const FluxRows& r, const FluxFrames& f, int frame, int across, 
 TEST(FluxColumns, EqualTheIntegralsOfTheBilinearFluxAnywhereAcross)
 {
     const FluxFrames f = randomFrames(6, 8, 3, 7);
-    const FluxColumns c = fluxColumns(f);
-    ASSERT_EQ(c.nx, 6);
-    ASSERT_EQ(c.rows, 9);
+    const FluxIntegrals c = fluxColumns(f);
+    ASSERT_EQ(c.cells, 6);
+    ASSERT_EQ(c.entries, 9);
     ASSERT_EQ(c.frames, 3);
     ASSERT_EQ(c.texels.size(), std::size_t(4 * 6 * 9 * 3));
     const double halfWidth = 0.5 * f.ny * f.texelKmY;
@@ -114,8 +87,8 @@ TEST(FluxColumns, EqualTheIntegralsOfTheBilinearFluxAnywhereAcross)
             for (int n = 0; n < 40; ++n) {
                 // Column i sits at the cell centre along; frame k is phase k / (frames − 1).
                 const double u = n == 0 ? -halfWidth : n == 1 ? halfWidth : across(rng);
-                const glm::dvec2 exact = integrateAcross(f, (i + 0.5) * f.texelKmX, u, double(k) / (f.frames - 1));
-                const glm::dvec2 table = columnAt(c, f, k, i, u);
+                const glm::dvec2 exact = integrateLine(f, false, (i + 0.5) * f.texelKmX, u, double(k) / (f.frames - 1));
+                const glm::dvec2 table = tableAt(c, f, false, k, i, u);
                 EXPECT_NEAR(table.x, exact.x, 2e-6 * (1.0 + std::abs(exact.x))) << k << " " << i << " " << u;
                 EXPECT_NEAR(table.y, exact.y, 2e-6 * (1.0 + std::abs(exact.y))) << k << " " << i << " " << u;
             }
@@ -126,12 +99,12 @@ TEST(FluxColumns, EqualTheIntegralsOfTheBilinearFluxAnywhereAcross)
 TEST(FluxColumns, ShortIntervalsSeeTheLocalFlux)
 {
     const FluxFrames f = randomFrames(4, 16, 2, 11);
-    const FluxColumns c = fluxColumns(f);
+    const FluxIntegrals c = fluxColumns(f);
     std::mt19937 rng(5);
     std::uniform_real_distribution<double> across(-1.9, 1.9);
     for (int n = 0; n < 200; ++n) {
         const double u = across(rng), h = 1e-4;
-        const double mass = columnAt(c, f, 1, 2, u + h).x - columnAt(c, f, 1, 2, u).x;
+        const double mass = tableAt(c, f, false, 1, 2, u + h).x - tableAt(c, f, false, 1, 2, u).x;
         EXPECT_NEAR(mass / h, sampleFlux(f, 2.5 * f.texelKmX, u + 0.5 * h, 1.0), 2e-3) << u;
     }
 }
@@ -139,8 +112,8 @@ TEST(FluxColumns, ShortIntervalsSeeTheLocalFlux)
 TEST(FluxRows, EqualTheIntegralsOfTheBilinearFluxAnywhereAlong)
 {
     const FluxFrames f = randomFrames(7, 5, 3, 13);
-    const FluxRows r = fluxRows(f);
-    ASSERT_EQ(r.ny, 5);
+    const FluxIntegrals r = fluxRows(f);
+    ASSERT_EQ(r.cells, 5);
     ASSERT_EQ(r.entries, 8);
     ASSERT_EQ(r.frames, 3);
     ASSERT_EQ(r.texels.size(), std::size_t(4 * 5 * 8 * 3));
@@ -153,8 +126,8 @@ TEST(FluxRows, EqualTheIntegralsOfTheBilinearFluxAnywhereAlong)
                 // Row j sits at the cell centre across; frame k is phase k / (frames − 1).
                 const double s = n == 0 ? 0.0 : n == 1 ? length : along(rng);
                 const double u = (j + 0.5) * f.texelKmY - halfWidth;
-                const glm::dvec2 exact = integrateAlong(f, u, s, double(k) / (f.frames - 1));
-                const glm::dvec2 table = rowAt(r, f, k, j, s);
+                const glm::dvec2 exact = integrateLine(f, true, u, s, double(k) / (f.frames - 1));
+                const glm::dvec2 table = tableAt(r, f, true, k, j, s);
                 EXPECT_NEAR(table.x, exact.x, 2e-6 * (1.0 + std::abs(exact.x))) << k << " " << j << " " << s;
                 EXPECT_NEAR(table.y, exact.y, 2e-6 * (1.0 + std::abs(exact.y))) << k << " " << j << " " << s;
             }
@@ -164,13 +137,13 @@ TEST(FluxRows, EqualTheIntegralsOfTheBilinearFluxAnywhereAlong)
 TEST(FluxRows, ShortIntervalsSeeTheLocalFlux)
 {
     const FluxFrames f = randomFrames(16, 4, 2, 19);
-    const FluxRows r = fluxRows(f);
+    const FluxIntegrals r = fluxRows(f);
     const double u = 2.5 * f.texelKmY - 0.5 * f.ny * f.texelKmY;
     std::mt19937 rng(23);
     std::uniform_real_distribution<double> along(0.0, f.nx * f.texelKmX - 1e-3);
     for (int n = 0; n < 200; ++n) {
         const double s = along(rng), h = 1e-4;
-        const double mass = rowAt(r, f, 1, 2, s + h).x - rowAt(r, f, 1, 2, s).x;
+        const double mass = tableAt(r, f, true, 1, 2, s + h).x - tableAt(r, f, true, 1, 2, s).x;
         EXPECT_NEAR(mass / h, sampleFlux(f, s + 0.5 * h, u, 1.0), 2e-3) << s;
     }
 }
@@ -181,8 +154,8 @@ TEST(FluxTables, HoldEveryEntryOfBothTablesWithPeriodicGhosts)
 {
     for (auto [nx, ny] : {std::pair{20, 4}, std::pair{3, 11}, std::pair{6, 6}}) {
         const FluxFrames f = randomFrames(nx, ny, 2, 29);
-        const FluxColumns columns = fluxColumns(f);
-        const FluxRows rows = fluxRows(f);
+        const FluxIntegrals columns = fluxColumns(f);
+        const FluxIntegrals rows = fluxRows(f);
         const FluxTables t = packFluxTables(columns, rows);
         ASSERT_EQ(t.width, std::max(nx, ny) + 2);
         ASSERT_EQ(t.texels.size(), std::size_t(4) * t.width * t.frames * t.layers);
@@ -191,7 +164,7 @@ TEST(FluxTables, HoldEveryEntryOfBothTablesWithPeriodicGhosts)
         };
         for (int k = 0; k < f.frames; ++k)
             for (int channel = 0; channel < 4; ++channel) {
-                for (int r = 0; r < columns.rows; ++r) {
+                for (int r = 0; r < columns.entries; ++r) {
                     const int layer = r / t.columnTiles, x0 = (r % t.columnTiles) * (nx + 2);
                     for (int x = 0; x < nx + 2; ++x) {
                         const int i = (x - 1 + nx) % nx;
@@ -209,6 +182,6 @@ TEST(FluxTables, HoldEveryEntryOfBothTablesWithPeriodicGhosts)
                     }
                 }
             }
-        EXPECT_GE(t.firstRowLayer * t.columnTiles, columns.rows);
+        EXPECT_GE(t.firstRowLayer * t.columnTiles, columns.entries);
     }
 }

@@ -36,72 +36,70 @@ void runningIntegrals(const std::vector<double>& values, double delta, double or
 
 } // namespace
 
-FluxColumns fluxColumns(const FluxFrames& f)
+namespace {
+
+// The running integrals over q (across when along is false, else along) of every line of cells along q,
+// at every cell of p and every frame.
+FluxIntegrals fluxIntegrals(const FluxFrames& f, bool along)
 {
-    FluxColumns c;
-    c.nx = f.nx;
-    c.rows = f.ny + 1;
-    c.frames = f.frames;
-    c.texels.assign(std::size_t(4) * c.nx * c.rows * c.frames, 0.0f);
-    std::vector<double> column(f.ny);
+    FluxIntegrals t;
+    t.cells = along ? f.ny : f.nx;
+    const int cellsQ = along ? f.nx : f.ny;
+    t.entries = cellsQ + 1;
+    t.frames = f.frames;
+    t.texels.assign(std::size_t(4) * t.cells * t.entries * t.frames, 0.0f);
+    const double delta = along ? f.texelKmX : f.texelKmY;
+    const double origin = along ? 0.0 : -0.5 * f.ny * double(f.texelKmY);
+    std::vector<double> line(cellsQ);
     for (int k = 0; k < f.frames; ++k)
-        for (int i = 0; i < f.nx; ++i) {
-            for (int j = 0; j < f.ny; ++j)
-                column[j] = f.at(k, i, j);
-            runningIntegrals(column, f.texelKmY, -0.5 * f.ny * double(f.texelKmY),
-                             &c.texels[4 * (std::size_t(k) * c.nx + i)], 4 * std::size_t(c.nx) * c.frames);
+        for (int p = 0; p < t.cells; ++p) {
+            for (int q = 0; q < cellsQ; ++q)
+                line[q] = along ? f.at(k, q, p) : f.at(k, p, q);
+            runningIntegrals(line, delta, origin, &t.texels[4 * (std::size_t(k) * t.cells + p)],
+                             4 * std::size_t(t.cells) * t.frames);
         }
-    return c;
+    return t;
 }
 
-FluxRows fluxRows(const FluxFrames& f)
+} // namespace
+
+FluxIntegrals fluxColumns(const FluxFrames& f)
 {
-    FluxRows r;
-    r.ny = f.ny;
-    r.entries = f.nx + 1;
-    r.frames = f.frames;
-    r.texels.assign(std::size_t(4) * r.ny * r.entries * r.frames, 0.0f);
-    std::vector<double> row(f.nx);
-    for (int k = 0; k < f.frames; ++k)
-        for (int j = 0; j < f.ny; ++j) {
-            for (int i = 0; i < f.nx; ++i)
-                row[i] = f.at(k, i, j);
-            runningIntegrals(row, f.texelKmX, 0.0, &r.texels[4 * (std::size_t(k) * r.ny + j)],
-                             4 * std::size_t(r.ny) * r.frames);
-        }
-    return r;
+    return fluxIntegrals(f, false);
 }
 
-FluxTables packFluxTables(const FluxColumns& columns, const FluxRows& rows)
+FluxIntegrals fluxRows(const FluxFrames& f)
+{
+    return fluxIntegrals(f, true);
+}
+
+FluxTables packFluxTables(const FluxIntegrals& columns, const FluxIntegrals& rows)
 {
     FluxTables t;
-    t.nx = columns.nx;
-    t.ny = rows.ny;
+    t.nx = columns.cells;
+    t.ny = rows.cells;
     t.frames = columns.frames;
     t.width = std::max(t.nx, t.ny) + 2;
     t.columnTiles = t.width / (t.nx + 2);
     t.rowTiles = t.width / (t.ny + 2);
-    t.firstRowLayer = (columns.rows + t.columnTiles - 1) / t.columnTiles;
+    t.firstRowLayer = (columns.entries + t.columnTiles - 1) / t.columnTiles;
     t.layers = t.firstRowLayer + (rows.entries + t.rowTiles - 1) / t.rowTiles;
     t.texels.assign(std::size_t(4) * t.width * t.frames * t.layers, 0.0f);
-    // Entry e of a table whose entries hold n cells (source texel of cell i, frame k: from(e, k, i)).
-    const auto place = [&](int entries, int n, int tiles, int firstLayer, auto from) {
-        for (int e = 0; e < entries; ++e)
+    // Every entry of a table as a strip of its cells between the periodic ghosts, `tiles` strips a layer.
+    const auto place = [&](const FluxIntegrals& table, int tiles, int firstLayer) {
+        const int n = table.cells;
+        for (int e = 0; e < table.entries; ++e)
             for (int k = 0; k < t.frames; ++k) {
                 const int layer = firstLayer + e / tiles, x0 = (e % tiles) * (n + 2);
                 float* out = &t.texels[4 * ((std::size_t(layer) * t.frames + k) * t.width + x0)];
                 for (int x = 0; x < n + 2; ++x) {
-                    const float* in = from(e, k, (x - 1 + n) % n);
+                    const float* in = &table.texels[4 * ((std::size_t(e) * t.frames + k) * n + (x - 1 + n) % n)];
                     std::copy(in, in + 4, out + 4 * x);
                 }
             }
     };
-    place(columns.rows, t.nx, t.columnTiles, 0, [&](int r, int k, int i) {
-        return &columns.texels[4 * ((std::size_t(r) * columns.frames + k) * columns.nx + i)];
-    });
-    place(rows.entries, t.ny, t.rowTiles, t.firstRowLayer, [&](int e, int k, int j) {
-        return &rows.texels[4 * ((std::size_t(e) * rows.frames + k) * rows.ny + j)];
-    });
+    place(columns, t.columnTiles, 0);
+    place(rows, t.rowTiles, t.firstRowLayer);
     return t;
 }
 

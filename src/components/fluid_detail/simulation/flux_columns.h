@@ -16,34 +16,28 @@
 
 namespace aurorawall::fluid {
 
-struct FluxColumns {
-    int nx = 0;      // cells along, as the frames
-    int rows = 0;    // ny + 1 entries across: row r holds centre j = r − 1
+// A table of running integrals over one axis of the strip (q), at every cell centre of the other axis
+// (p) and every frame: entries at the centres of q's cells, from half a cell before the strip's start.
+struct FluxIntegrals {
+    int cells = 0;   // cells along p, as the frames
+    int entries = 0; // cells along q + 1: entry e holds centre e − 1
     int frames = 0;
-    // (C, M, F, ΔF) in 1, km, 1/km, 1/km: texels[4·((r·frames + k)·nx + i) + {0, 1, 2, 3}] (a row
-    // across is a layer of a 2D array texture whose x runs along and y through the frames).
+    // (integral, first moment, F, ΔF) in 1, km, 1/km, 1/km: texels[4·((e·frames + k)·cells + p) + {0, 1, 2, 3}]
+    // (an entry is a layer of a 2D array texture whose x runs along p and y through the frames).
     std::vector<float> texels;
 };
 
-FluxColumns fluxColumns(const FluxFrames& frames);
+// Across (q = u, p along: C and M above; entries at c_j for j = −1 … ny − 1, cells = nx).
+FluxIntegrals fluxColumns(const FluxFrames& frames);
 
 // The same running integrals along the strip, for a ray step that runs along a curtain: at each cell
 // centre across, A(s) = ∫_0^s F ds' and B(s) = ∫_0^s s' F ds' (s along from the strip's start), from the
 // entry at the centre below s: (A(c), B(c), F(c), F(c + Δ) − F(c)), evaluated by the same fluxColumnValue.
 // The entries sit at the centres c_i = (i + ½)Δs for i = −1 … nx − 1 (the first half a cell before the
-// strip's start, where the periodic flux still rises toward its first centre); across, the texture
-// interpolates A, B and F linearly between cell centres (periodic), which is exactly the integral along of
-// the flux as the renderer interpolates it there.
-struct FluxRows {
-    int ny = 0;      // cells across, as the frames
-    int entries = 0; // nx + 1 entries along: entry e holds centre i = e − 1
-    int frames = 0;
-    // (A, B, F, ΔF) in 1, km, 1/km, 1/km: texels[4·((e·frames + k)·ny + j) + {0, 1, 2, 3}] (an entry along
-    // is a layer of a 2D array texture whose x runs across and y through the frames).
-    std::vector<float> texels;
-};
-
-FluxRows fluxRows(const FluxFrames& frames);
+// strip's start, where the periodic flux still rises toward its first centre); cells = ny. Across, the
+// texture interpolates A, B and F linearly between cell centres (periodic), which is exactly the integral
+// along of the flux as the renderer interpolates it there.
+FluxIntegrals fluxRows(const FluxFrames& frames);
 
 // Both tables in one 2D array texture, so that a shader reads either through one sampler and one code path
 // (a GPU runs both sides of a branch that differs between neighbouring pixels). Each entry (a column's
@@ -61,6 +55,6 @@ struct FluxTables {
     std::vector<float> texels; // RGBA: texels[4·((layer·frames + k)·width + x)]
 };
 
-FluxTables packFluxTables(const FluxColumns& columns, const FluxRows& rows);
+FluxTables packFluxTables(const FluxIntegrals& columns, const FluxIntegrals& rows);
 
 } // namespace aurorawall::fluid
