@@ -24,6 +24,10 @@ public:
     // shared between the GLFW windows' contexts).
     void bind(gl::Program& program) const;
 
+    // The rows as uploaded (a layer per curtain) and the tables they are built from.
+    const gl::Texture& emission() const { return emission_; }
+    const physics::EmissionTables& tables() const { return tables_; }
+
     // "aurora deposition table 1081 x 128 (maxwellian), line yields 1081: 12.3 ms"
     const std::string& summary() const { return summary_; }
 
