@@ -69,6 +69,27 @@ glm::dvec2 tableAt(const FluxIntegrals& t, const FluxFrames& f, bool along, int 
     return f64::fluxColumnValue(texel, centre, q - centre, delta);
 }
 
+// The table over q (across, or along when `along`) against integrateLine at every cell centre p of the
+// other axis, every frame and 40 places q between the strip's ends (both ends included).
+void expectTheQuadratureEverywhere(const FluxFrames& f, const FluxIntegrals& t, bool along, unsigned seed)
+{
+    const double halfWidth = 0.5 * f.ny * f.texelKmY;
+    const double lo = along ? 0.0 : -halfWidth, hi = along ? f.nx * f.texelKmX : halfWidth;
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> place(lo, hi);
+    for (int k = 0; k < f.frames; ++k)
+        for (int p = 0; p < t.cells; ++p)
+            for (int n = 0; n < 40; ++n) {
+                // Cell p's centre on the other axis; frame k is phase k / (frames − 1).
+                const double q = n == 0 ? lo : n == 1 ? hi : place(rng);
+                const double fixed = along ? (p + 0.5) * f.texelKmY - halfWidth : (p + 0.5) * f.texelKmX;
+                const glm::dvec2 exact = integrateLine(f, along, fixed, q, double(k) / (f.frames - 1));
+                const glm::dvec2 table = tableAt(t, f, along, k, p, q);
+                EXPECT_NEAR(table.x, exact.x, 2e-6 * (1.0 + std::abs(exact.x))) << k << " " << p << " " << q;
+                EXPECT_NEAR(table.y, exact.y, 2e-6 * (1.0 + std::abs(exact.y))) << k << " " << p << " " << q;
+            }
+}
+
 } // namespace
 
 TEST(FluxColumns, EqualTheIntegralsOfTheBilinearFluxAnywhereAcross)
@@ -79,19 +100,7 @@ TEST(FluxColumns, EqualTheIntegralsOfTheBilinearFluxAnywhereAcross)
     ASSERT_EQ(c.entries, 9);
     ASSERT_EQ(c.frames, 3);
     ASSERT_EQ(c.texels.size(), std::size_t(4 * 6 * 9 * 3));
-    const double halfWidth = 0.5 * f.ny * f.texelKmY;
-    std::mt19937 rng(3);
-    std::uniform_real_distribution<double> across(-halfWidth, halfWidth);
-    for (int k = 0; k < f.frames; ++k)
-        for (int i = 0; i < f.nx; ++i)
-            for (int n = 0; n < 40; ++n) {
-                // Column i sits at the cell centre along; frame k is phase k / (frames − 1).
-                const double u = n == 0 ? -halfWidth : n == 1 ? halfWidth : across(rng);
-                const glm::dvec2 exact = integrateLine(f, false, (i + 0.5) * f.texelKmX, u, double(k) / (f.frames - 1));
-                const glm::dvec2 table = tableAt(c, f, false, k, i, u);
-                EXPECT_NEAR(table.x, exact.x, 2e-6 * (1.0 + std::abs(exact.x))) << k << " " << i << " " << u;
-                EXPECT_NEAR(table.y, exact.y, 2e-6 * (1.0 + std::abs(exact.y))) << k << " " << i << " " << u;
-            }
+    expectTheQuadratureEverywhere(f, c, false, 3);
 }
 
 // Over a short interval the column's mass is the flux there times its width: the table has the
@@ -117,20 +126,7 @@ TEST(FluxRows, EqualTheIntegralsOfTheBilinearFluxAnywhereAlong)
     ASSERT_EQ(r.entries, 8);
     ASSERT_EQ(r.frames, 3);
     ASSERT_EQ(r.texels.size(), std::size_t(4 * 5 * 8 * 3));
-    const double length = f.nx * f.texelKmX, halfWidth = 0.5 * f.ny * f.texelKmY;
-    std::mt19937 rng(17);
-    std::uniform_real_distribution<double> along(0.0, length);
-    for (int k = 0; k < f.frames; ++k)
-        for (int j = 0; j < f.ny; ++j)
-            for (int n = 0; n < 40; ++n) {
-                // Row j sits at the cell centre across; frame k is phase k / (frames − 1).
-                const double s = n == 0 ? 0.0 : n == 1 ? length : along(rng);
-                const double u = (j + 0.5) * f.texelKmY - halfWidth;
-                const glm::dvec2 exact = integrateLine(f, true, u, s, double(k) / (f.frames - 1));
-                const glm::dvec2 table = tableAt(r, f, true, k, j, s);
-                EXPECT_NEAR(table.x, exact.x, 2e-6 * (1.0 + std::abs(exact.x))) << k << " " << j << " " << s;
-                EXPECT_NEAR(table.y, exact.y, 2e-6 * (1.0 + std::abs(exact.y))) << k << " " << j << " " << s;
-            }
+    expectTheQuadratureEverywhere(f, r, true, 17);
 }
 
 // Over a short interval the row's mass is the flux there times its length.

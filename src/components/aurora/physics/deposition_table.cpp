@@ -20,12 +20,7 @@ int altitudeCountOf(const DepositionTableSpec& spec)
     return static_cast<int>(std::lround((spec.maxAltitudeKm - spec.minAltitudeKm) / spec.altitudeStepKm)) + 1;
 }
 
-// GL_LINEAR along one axis with clamp-to-edge: texel coordinate x = u·n − 1/2, neighbours
-// floor(x) and floor(x) + 1 clamped to [0, n − 1], weight fract(x).
-struct LinearTaps {
-    int i0, i1;
-    float weight;
-};
+} // namespace
 
 LinearTaps linearTaps(float u, int n)
 {
@@ -34,8 +29,6 @@ LinearTaps linearTaps(float u, int n)
     int i = static_cast<int>(base);
     return {std::clamp(i, 0, n - 1), std::clamp(i + 1, 0, n - 1), x - base};
 }
-
-} // namespace
 
 glm::vec4 DepositionTable::axes() const
 {

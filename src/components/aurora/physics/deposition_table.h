@@ -40,6 +40,15 @@ DepositionTable buildDepositionTable(const DepositionTableSpec& spec);
 // The rate the table stores at (z, E), in double: depositionPerEnergyFlux(z, E, spectrum)·kKeVPerErg.
 double depositionRate(double altitudeKm, double energyKeV, Spectrum spectrum);
 
+// GL_LINEAR along one axis of n texels with clamp-to-edge (OpenGL 4.6 §8.14.2), for CPU twins of table
+// lookups: texel coordinate x = u·n − 1/2, neighbours floor(x) and floor(x) + 1 clamped to [0, n − 1],
+// weight fract(x).
+struct LinearTaps {
+    int i0, i1;
+    float weight;
+};
+LinearTaps linearTaps(float u, int n);
+
 // The table's lookup at (z, E), as a GPU texture would filter it: the shared texture-coordinate mapping in
 // float, GL_LINEAR filtering of the float texels with clamp-to-edge (OpenGL 4.6 §8.14.2), then
 // decibelsToValue in float. The lookup error of docs/aurora-physics.md, "Tables".

@@ -72,14 +72,9 @@ void emissionRow(const EmissionTables& tables, double energyKeV, float* out)
 
 glm::vec3 sampleEmissionRow(const EmissionTables& tables, const std::vector<float>& row, float altitudeKm)
 {
-    const int n = tables.nodeCount();
-    const float x = emissionTexCoord(altitudeKm, tables.axes()) * static_cast<float>(n) - 0.5f;
-    const float base = std::floor(x);
-    const int i0 = std::clamp(static_cast<int>(base), 0, n - 1);
-    const int i1 = std::clamp(static_cast<int>(base) + 1, 0, n - 1);
-    const float weight = x - base;
+    const LinearTaps x = linearTaps(emissionTexCoord(altitudeKm, tables.axes()), tables.nodeCount());
     auto node = [&](int i) { return glm::vec3(row[4 * i], row[4 * i + 1], row[4 * i + 2]); };
-    return node(i0) + weight * (node(i1) - node(i0));
+    return node(x.i0) + x.weight * (node(x.i1) - node(x.i0));
 }
 
 } // namespace aurorawall::aurora
