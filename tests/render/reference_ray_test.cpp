@@ -14,6 +14,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 
 using namespace aurorawall;
 
@@ -187,4 +189,74 @@ TEST_F(ReferenceRay, SmoothCurtainsIntegratedAcrossStayNearTheReference)
                 e.pixels, e.rms, e.max);
     EXPECT_EQ(e.pixels, pixels.size());
     EXPECT_LT(e.rms, 1e-3);
+}
+
+// A curtain emits within its own reach of its centre line and of its ends (4 sigma for the smooth
+// profile), whatever other curtains the scene holds: a 2 km curtain's end, seen from above, is the same
+// with or without a 10 km curtain 2000 km away, on the GPU and in the CPU reference. When the reach was
+// the largest of the scene's, the thick curtain widened the thin one's rounded end from 4 km to 20 km.
+TEST_F(ReferenceRay, EachCurtainEmitsWithinItsOwnReach)
+{
+    const std::string thin = R"(
+[scene]
+name = "curtain end"
+components = ["planet", "atmosphere", "aurora"]
+exposure = 600.0
+[atmosphere]
+top_km = 75.0
+scale_height_km = 8.0
+[aurora]
+step_km = 2.0
+[[aurora.curtain]]
+thickness_km = 2.0
+points_lat_lon_deg = [[66.0, 10.0], [66.0, 20.0]]
+energy_flux_erg_cm2_s = 5.0
+energy_kev = 3.0
+[camera]
+latitude_deg = 66.0
+longitude_deg = 20.0
+altitude_km = 600.0
+heading_deg = 270.0
+elevation_deg = -80.0
+)";
+    const std::string thick = R"(
+[[aurora.curtain]]
+thickness_km = 10.0
+points_lat_lon_deg = [[60.0, -25.0], [60.0, -20.0]]
+energy_flux_erg_cm2_s = 5.0
+energy_kev = 3.0
+)";
+    const std::filesystem::path dir = std::filesystem::temp_directory_path() / "aurorawall-own-reach";
+    std::filesystem::create_directories(dir);
+    auto load = [&](const std::string& name, const std::string& text) {
+        std::ofstream(dir / name) << text;
+        return components::loadScene((dir / name).string());
+    };
+    const scene::Scene alone = load("alone.toml", thin);
+    const scene::Scene withThick = load("with-thick.toml", thin + thick);
+    std::filesystem::remove_all(dir);
+
+    const app::SceneView view = app::sceneView(alone, kSource + "/config/walls/single.toml", {64, 36});
+    const double floor = 1.0 / (255.0 * alone.exposure);
+    const io::Image a = app::renderView(alone, view, kSource + "/shaders", 0).image;
+    const io::Image b = app::renderView(withThick, view, kSource + "/shaders", 0).image;
+    std::vector<glm::dvec3> valuesA, valuesB;
+    for (int y = 0; y < 36; ++y)
+        for (int x = 0; x < 64; ++x) {
+            valuesA.push_back(app::pixelRadiance(a, x, y));
+            valuesB.push_back(app::pixelRadiance(b, x, y));
+        }
+    const app::RelativeError gpu = app::relativeError(valuesB, valuesA, floor);
+    const std::vector<glm::ivec2> pixels = litPixels(a, floor, 8);
+    const app::RelativeError cpu =
+        app::relativeError(app::referencePixels(render::ReferenceModel(withThick, view.frame.timeS, nullptr), view, pixels, 2),
+                           app::referencePixels(render::ReferenceModel(alone, view.frame.timeS, nullptr), view, pixels, 2),
+                           floor);
+    std::printf("thin curtain's end with a thick one far away against alone: GPU %zu pixels, max %.3g; "
+                "CPU reference %zu pixels, max %.3g\n",
+                gpu.pixels, gpu.max, cpu.pixels, cpu.max);
+    EXPECT_GT(gpu.pixels, 100u);
+    EXPECT_LT(gpu.max, 1e-4);
+    EXPECT_EQ(cpu.pixels, pixels.size());
+    EXPECT_LT(cpu.max, 1e-9);
 }

@@ -14,8 +14,9 @@ uniform float uAuroraResolveCells;   // and the coordinate not integrated over b
 uniform int uSkipEmptySpace;         // 0: the naive fine march everywhere (the reference)
 uniform int uCurtainCount;
 uniform sampler2D uCurtainPolylines; // RGBA32F, row c: xyz unit vector, w arclength km
-uniform vec4 uCurtainState[MAX_CURTAINS];  // peak energy flux erg cm^-2 s^-1, energy keV (the emission rows' key), point count, -
-uniform float uCurtainReachKm;       // beyond this distance from its centre line no curtain emits
+uniform vec4 uCurtainState[MAX_CURTAINS];  // peak energy flux erg cm^-2 s^-1, energy keV (the emission rows' key), point count,
+                                           // reach km: beyond it from its centre line and its ends the curtain does not emit
+uniform float uCurtainReachKm;       // the largest reach: beyond it from every centre line nothing emits
 
 uniform sampler2D uFootprintMap;     // RGBA32F, nearest: curtain id, point index, distance km, other curtain
 uniform vec3 uFootprintCentre;
@@ -144,7 +145,7 @@ CurtainStep integrateCurtains(vec3 o, vec3 d, float t0, float t1)
                                    uFootprintSize);
     vec4 nearest = texelFetch(uFootprintMap, ivec2(texel), 0);
     float lowerKm = footprintConservativeKm(nearest.z, uFootprintMarginKm);
-    // A step whose midpoint lies farther than reach + step/2 from every curtain emits nothing.
+    // A step whose midpoint lies farther than the largest reach + step/2 from every curtain emits nothing.
     step.skipKm = lowerKm - uCurtainReachKm - 0.5 * uAuroraStepKm;
     if (step.skipKm > 0.0)
         return step;
@@ -166,8 +167,12 @@ CurtainStep integrateCurtains(vec3 o, vec3 d, float t0, float t1)
         if (candidate.x < 0.0)
             continue;
         int c = int(candidate.x);
+        float reach = uCurtainState[c].w;
+        // A curtain without flux (e.g. before it switches on) emits nothing.
+        if (uCurtainState[c].x <= 0.0)
+            continue;
         CurtainCoordinates cc = curtainCoordinates(c, int(candidate.y), n);
-        if (cc.distance - 0.5 * len > uCurtainReachKm)
+        if (cc.distance - 0.5 * len > reach)
             continue;
         float lengthKm = texelFetch(uCurtainPolylines, ivec2(int(uCurtainState[c].z) - 1, c), 0).w;
         // u = R asin(n·normal), so du/dt = R (normal·dn/dt) / √(1 − (n·normal)²); s runs along
@@ -179,8 +184,8 @@ CurtainStep integrateCurtains(vec3 o, vec3 d, float t0, float t1)
         // Only the part of the step within the curtain's reach, |u| ≤ reach and −reach ≤ s ≤ length + reach
         // (u and s linear over the step), can emit: the sub-steps cover that part alone.
         vec2 within = vec2(t0, t1);
-        within = intersectLinearBand(within, cc.u, uRate, tm, -uCurtainReachKm, uCurtainReachKm);
-        within = intersectLinearBand(within, cc.s, sRate, tm, -uCurtainReachKm, lengthKm + uCurtainReachKm);
+        within = intersectLinearBand(within, cc.u, uRate, tm, -reach, reach);
+        within = intersectLinearBand(within, cc.s, sRate, tm, -reach, lengthKm + reach);
         if (within.x >= within.y)
             continue;
         float start = within.x;
@@ -214,7 +219,7 @@ CurtainStep integrateCurtains(vec3 o, vec3 d, float t0, float t1)
             float s = cc.s + sRate * (tMid - tm);
             // Beyond its reach (across, or around the curtain's ends) a curtain does not emit.
             float beyondEnds = max(max(-s, s - lengthKm), 0.0);
-            if (length(vec2(u, beyondEnds)) <= uCurtainReachKm) {
+            if (length(vec2(u, beyondEnds)) <= reach) {
                 // (∫ profile, ∫ offset from the sub-step's start × profile, mean profile at its ends) over
                 // the integrated coordinate.
                 vec3 column = curtainIntegral(c, alongMode, alongMode ? u : clamp(s, 0.0, lengthKm),
@@ -244,7 +249,7 @@ CurtainStep integrateCurtains(vec3 o, vec3 d, float t0, float t1)
 // by integrateCurtains. With skipping, long jumps where the footprint map proves no curtain is near
 // (moving s km changes the footprint position by at most s km above the ground) go over whole
 // steps only, landing on the same grid: the skipping march evaluates a subset of the naive march's
-// steps, and every step it leaves out has its midpoint farther than reach + step/2 from every
+// steps, and every step it leaves out has its midpoint farther than the largest reach + step/2 from every
 // curtain, where integrateCurtains adds nothing, so both give the same sum
 // (tests/render/skipping_test.cpp).
 vec3 auroraSegment(vec3 o, vec3 d, vec2 seg)

@@ -34,6 +34,7 @@ AuroraReference::AuroraReference(const Settings& aurora, double planetRadiusKm, 
             c.maxSegmentKm = std::max(c.maxSegmentKm, planetRadiusKm * f64::angleBetween(c.points[j], c.points[j + 1]));
         c.state = now.state;
         c.lateralScale = now.lateralScale;
+        c.reachKm = now.reachKm;
         curtains_.push_back(std::move(c));
     }
     for (int line = 0; line < physics::kLineCount; ++line)
@@ -106,9 +107,9 @@ glm::dvec3 AuroraReference::emissionRgbPerKm(double altitudeKm, double energyKeV
 }
 
 // Integral of the emission over [t0, t1] of the ray o + t d (|d| = 1): the midpoint rule with
-// steps of stepKm_ where a curtain is within reach, and jumps of (distance - reach) elsewhere: a
-// km along the ray moves the footprint by at most R / |p| <= 1 km on the planet (|p| >= R in the
-// shell), so the jump ends at or before the first point within reach.
+// steps of stepKm_ where a curtain is within the largest reach, and jumps of (distance - that reach)
+// elsewhere: a km along the ray moves the footprint by at most R / |p| <= 1 km on the planet
+// (|p| >= R in the shell), so the jump ends at or before the first point within reach.
 glm::dvec3 AuroraReference::segment(glm::dvec3 o, glm::dvec3 d, double t0, double t1) const
 {
     const double reach = model_->reachKm();
@@ -125,7 +126,7 @@ glm::dvec3 AuroraReference::segment(glm::dvec3 o, glm::dvec3 d, double t0, doubl
         // Every curtain within its reach emits: overlapping curtains add.
         for (const Curtain& c : curtains_) {
             const Nearest n = nearestOn(c, glm::normalize(p));
-            if (n.distanceKm > reach)
+            if (n.distanceKm > c.reachKm)
                 continue;
             const double flux = c.state.energyFluxErgPerCm2S * profile(c, n.sKm, n.uKm);
             if (flux > 0.0)

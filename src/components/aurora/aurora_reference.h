@@ -3,7 +3,7 @@
 // computes, without its approximations:
 //   - the same curtain model (curtain_model.h): keyframes, dense polylines, lateral scale and reach;
 //   - curtain coordinates (s, u) on EVERY curtain by exact projection on its segments (no
-//     footprint map); each curtain emits within the model's reach of its centre line, and
+//     footprint map); each curtain emits within its own reach of its centre line and ends, and
 //     overlapping curtains add (the shader sees the two nearest curtains at a point);
 //   - emission: flux x profile(s, u) x the line emission of aurora::depositionRate,
 //     aurora::lineYield and aurora::lineLinearSrgbPerRayleigh in double (no decibel tables); the
@@ -38,6 +38,7 @@ private:
         double maxSegmentKm = 0.0;       // longest segment (great-circle km on the planet)
         CurtainState state;
         double lateralScale = 0.0;
+        double reachKm = 0.0;
     };
     struct Nearest {
         double distanceKm = 1e300; // to the polyline, great-circle km on the planet

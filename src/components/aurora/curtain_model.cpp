@@ -13,7 +13,8 @@ CurtainModel::CurtainModel(const Settings& aurora, double planetRadiusKm, const 
         const double sigma = 0.5 * c.thicknessKm;
         const double scale = detail ? detail->fluxWidthKm / sigma : 1.0 / sigma;
         lateralScale_.push_back(scale);
-        reachKm_ = std::max(reachKm_, detail ? detail->reachKm / scale : 4.0 * sigma);
+        reach_.push_back(detail ? detail->reachKm / scale : 4.0 * sigma);
+        reachKm_ = std::max(reachKm_, reach_.back());
     }
 }
 
@@ -40,6 +41,7 @@ std::vector<CurtainNow> CurtainModel::at(double timeS) const
         c.polyline = footprint(states[i]);
         c.state = std::move(states[i]);
         c.lateralScale = lateralScale_[i];
+        c.reachKm = reach_[i];
         now.push_back(std::move(c));
     }
     return now;
