@@ -7,7 +7,8 @@
 # when steps running along a curtain began to be integrated along it, and all when the emission
 # began to be read from one row per curtain and shared by runs of sub-steps (at most 3 half-float
 # steps each), and all with curtains when the default step became 16 km with finer sub-steps and
-# again when the sub-steps came to cover only the part of a step within a curtain's reach; their
+# again when the sub-steps came to cover only the part of a step within a curtain's reach, and
+# those with curtains of several thicknesses when each curtain came to emit within its own reach; their
 # accuracy tests/render/reference_ray_test.cpp checks against the CPU reference). Float
 # reordering inside a component may move a value by one half-float step, so HALF_ULPS (default 2)
 # are allowed.
