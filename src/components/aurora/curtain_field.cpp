@@ -48,7 +48,7 @@ void CurtainField::update(double timeS, double nextTimeS)
     for (size_t i = 0; i < states.size(); ++i) {
         const CurtainState& s = states[i];
         state_[i] = glm::vec4(s.energyFluxErgPerCm2S, s.energyKeV, static_cast<float>(pointCounts_[i]),
-                              static_cast<float>(model_.reachKm(i)));
+                              static_cast<float>(model_.reachKm(i, s.detailPhase)));
         detailUniform_[i] = glm::vec4(s.detailOffsetKm, s.detailPhase, model_.lateralScale(i), 0.0f);
     }
     buildAhead(nextTimeS);

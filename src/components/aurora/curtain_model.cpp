@@ -13,9 +13,15 @@ CurtainModel::CurtainModel(const Settings& aurora, double planetRadiusKm, const 
         const double sigma = 0.5 * c.thicknessKm;
         const double scale = detail ? detail->fluxWidthKm / sigma : 1.0 / sigma;
         lateralScale_.push_back(scale);
-        reach_.push_back(detail ? detail->reachKm / scale : 4.0 * sigma);
-        reachKm_ = std::max(reachKm_, reach_.back());
+        reachKm_ = std::max(reachKm_, detail ? detail->reachKm / scale : 4.0 * sigma);
     }
+}
+
+double CurtainModel::reachKm(size_t i, double detailPhase) const
+{
+    if (detail_)
+        return detail_->reachAtPhaseKm(detailPhase) / lateralScale_[i];
+    return 4.0 / lateralScale_[i];
 }
 
 std::vector<CurtainState> CurtainModel::statesAt(double timeS) const
@@ -41,7 +47,7 @@ std::vector<CurtainNow> CurtainModel::at(double timeS) const
         c.polyline = footprint(states[i]);
         c.state = std::move(states[i]);
         c.lateralScale = lateralScale_[i];
-        c.reachKm = reach_[i];
+        c.reachKm = reachKm(i, c.state.detailPhase);
         now.push_back(std::move(c));
     }
     return now;

@@ -4,9 +4,9 @@
 // a dense polyline on the sphere, its peak flux, electron energy and fluid-detail offset and phase;
 // and each curtain's lateral shape: how the profile is scaled across it and how far from its centre
 // line it emits (its reach, also the radius of the rounded cap beyond each end). With fluid detail the
-// strip is sampled at u * sigma_sim / sigma_curtain and emits within the frames' reach, scaled the same
-// way; without, the profile is a Gaussian exp(-(u / sigma)^2 / 2), cut off at 4 sigma
-// (sigma = thickness / 2).
+// strip is sampled at u * sigma_sim / sigma_curtain and emits within the reach of the frames its detail
+// phase blends, scaled the same way; without, the profile is a Gaussian exp(-(u / sigma)^2 / 2), cut off
+// at 4 sigma (sigma = thickness / 2).
 #include "components/aurora/physics/curtain_geometry.h"
 #include "components/aurora/aurora.h"
 #include "components/aurora/curtain_frames.h"
@@ -37,10 +37,11 @@ public:
     physics::CurtainPolyline footprint(const CurtainState& state) const;
     // Profile coordinate per km across curtain i.
     double lateralScale(size_t i) const { return lateralScale_[i]; }
-    // Beyond this distance from its centre line and its ends (km on the ground) curtain i does not emit.
-    double reachKm(size_t i) const { return reach_[i]; }
+    // Beyond this distance from its centre line and its ends (km on the ground) curtain i does not emit
+    // at detail phase detailPhase.
+    double reachKm(size_t i, double detailPhase) const;
 
-    // The largest reach of any curtain: beyond it from every centre line nothing emits.
+    // The largest reach of any curtain at any phase: beyond it from every centre line nothing emits.
     double reachKm() const { return reachKm_; }
     const fluid_detail::DetailShape* detail() const { return detail_ ? &*detail_ : nullptr; }
     const Settings& settings() const { return aurora_; }
@@ -51,7 +52,6 @@ private:
     double planetRadiusKm_;
     std::optional<fluid_detail::DetailShape> detail_;
     std::vector<double> lateralScale_;
-    std::vector<double> reach_;
     double reachKm_ = 0.0;
 };
 

@@ -4,6 +4,7 @@
 #include "components/fluid_detail/cached_flux_frames.h"
 #include "io/table_cache.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -23,25 +24,37 @@ fluid::CurtainDetailSpec curtainDetailSpec(const Settings& detail)
     return spec;
 }
 
-double lateralReachKm(const fluid::FluxFrames& f, double stripWidthKm)
+std::vector<double> frameReachesKm(const fluid::FluxFrames& f, double stripWidthKm)
 {
     float peak = 0.0f;
     for (float v : f.flux)
         peak = std::max(peak, v);
-    double reach = 0.0;
+    std::vector<double> reach(size_t(f.frames), 0.0);
     for (int k = 0; k < f.frames; ++k)
         for (int iy = 0; iy < f.ny; ++iy)
             for (int ix = 0; ix < f.nx; ++ix)
                 if (f.at(k, ix, iy) > 1e-3f * peak)
-                    reach = std::max(reach, std::abs((iy + 0.5) * f.texelKmY - 0.5 * stripWidthKm) + f.texelKmY);
+                    reach[k] = std::max(reach[k], std::abs((iy + 0.5) * f.texelKmY - 0.5 * stripWidthKm) + f.texelKmY);
     return reach;
+}
+
+double DetailShape::reachAtPhaseKm(double phase) const
+{
+    if (frameReachKm.empty())
+        return reachKm;
+    const int last = static_cast<int>(frameReachKm.size()) - 1;
+    const double p = std::clamp(phase, 0.0, 1.0) * last;
+    const int first = std::clamp(static_cast<int>(std::floor(p - 1e-3)), 0, last);
+    const int end = std::clamp(static_cast<int>(std::ceil(p + 1e-3)), 0, last);
+    return *std::max_element(frameReachKm.begin() + first, frameReachKm.begin() + end + 1);
 }
 
 DetailShape detailShape(const fluid::CurtainDetailSpec& spec, const fluid::FluxFrames& frames)
 {
     DetailShape d;
     d.fluxWidthKm = spec.fluxWidthKm;
-    d.reachKm = lateralReachKm(frames, spec.stripWidthKm);
+    d.frameReachKm = frameReachesKm(frames, spec.stripWidthKm);
+    d.reachKm = *std::max_element(d.frameReachKm.begin(), d.frameReachKm.end());
     d.stripLengthKm = spec.stripLengthKm;
     d.peakScale = spec.fluxWidthKm * std::sqrt(2.0 * kPi);
     return d;

@@ -10,17 +10,24 @@
 #include "scene/component.h"
 
 #include <string>
+#include <vector>
 
 namespace aurorawall::components::fluid_detail {
 
 // How the frames shape a curtain across and along it: what the aurora's curtain model needs.
 struct DetailShape {
-    double fluxWidthKm = 0.0;   // standard deviation of the flux across the strip at frame 0 (km)
-    double reachKm = 0.0;       // lateralReachKm of the frames (strip km)
-    double stripLengthKm = 0.0; // the pattern's period along the curtain
+    double fluxWidthKm = 0.0;          // standard deviation of the flux across the strip at frame 0 (km)
+    double reachKm = 0.0;              // the largest reach of any frame (strip km)
+    std::vector<double> frameReachKm;  // each frame's (frameReachesKm); empty: reachKm for every frame
+    double stripLengthKm = 0.0;        // the pattern's period along the curtain
     // Frame 0 is a Gaussian of unit integral across: its peak is 1/(sigma sqrt(2 pi)); scaling by
     // sigma sqrt(2 pi) makes the smooth curtain's peak 1.
     double peakScale = 1.0;
+
+    // The reach (strip km) of the frames blended at detail phase `phase` (0 ... 1, frame
+    // phase * (frames - 1)): the larger of the two, and of a neighbour where the phase lies within
+    // rounding of a frame (the shader computes the blend in float).
+    double reachAtPhaseKm(double phase) const;
 };
 DetailShape detailShape(const fluid::CurtainDetailSpec& spec, const fluid::FluxFrames& frames);
 
@@ -45,8 +52,8 @@ private:
 // The simulation parameters for a scene's fluid_detail table (docs/fluid.md).
 fluid::CurtainDetailSpec curtainDetailSpec(const Settings& detail);
 
-// Beyond this lateral distance from the strip's centre line (strip km) no frame holds more than
-// 1e-3 of the peak flux: the largest |u| + one texel of any such cell.
-double lateralReachKm(const fluid::FluxFrames& frames, double stripWidthKm);
+// For each frame: beyond this lateral distance from the strip's centre line (strip km) the frame
+// holds no more than 1e-3 of the peak flux of all frames: the largest |u| + one texel of any such cell.
+std::vector<double> frameReachesKm(const fluid::FluxFrames& frames, double stripWidthKm);
 
 } // namespace aurorawall::components::fluid_detail

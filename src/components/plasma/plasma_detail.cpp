@@ -49,6 +49,7 @@ PlasmaDetail::PlasmaDetail(const Settings& plasma, const aurora::Settings& auror
     // strip's box across (the shader samples nothing beyond it).
     if (live_) {
         shape_.reachKm = 0.5 * spec_.sheet.widthM * 1e-3;
+        shape_.frameReachKm.clear();
         liveFrame_ = f;
     }
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();

@@ -6,6 +6,7 @@
 #include "components/plasma/simulation/plasma_parameters.h"
 #include "io/table_cache.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -80,7 +81,8 @@ fluid_detail::DetailShape sheetDetailShape(const SheetFramesSpec& spec, const fl
     }
     fluid_detail::DetailShape d;
     d.fluxWidthKm = std::sqrt(second / integral);
-    d.reachKm = fluid_detail::lateralReachKm(f, widthKm);
+    d.frameReachKm = fluid_detail::frameReachesKm(f, widthKm);
+    d.reachKm = *std::max_element(d.frameReachKm.begin(), d.frameReachKm.end());
     d.stripLengthKm = spec.sheet.lengthM * 1e-3;
     d.peakScale = 1.0 / peak;
     return d;
