@@ -8,7 +8,8 @@
 # began to be read from one row per curtain and shared by runs of sub-steps (at most 3 half-float
 # steps each), and all with curtains when the default step became 16 km with finer sub-steps and
 # again when the sub-steps came to cover only the part of a step within a curtain's reach, and
-# those with curtains of several thicknesses when each curtain came to emit within its own reach; their
+# those with curtains of several thicknesses when each curtain came to emit within its own reach, and
+# all with detail when that reach came to follow the detail phase; their
 # accuracy tests/render/reference_ray_test.cpp checks against the CPU reference). Float
 # reordering inside a component may move a value by one half-float step, so HALF_ULPS (default 2)
 # are allowed.
