@@ -78,7 +78,7 @@ fluid::FluxFrames* ReferenceRay::frames_ = nullptr;
 } // namespace
 
 // Tolerance: the GPU's own discretization (0.25 km steps over a fluid flux bilinear between texels
-// 0.25 km apart) and float round-off. Measured here: RMS 4.2e-4, max 1.7e-3 over 16 pixels (before
+// 0.25 km apart) and float round-off. Measured here: RMS 4.0e-5, max 1.2e-4 over 16 pixels (before
 // the curtain-normal fix of aurora_curtains.glsl it was RMS 1.7e-2: the test caught the float bug).
 // Held to RMS 2e-3 and max 1e-2: about five times the measured error.
 TEST_F(ReferenceRay, GpuAtItsFinestSettingsAgreesWithTheReference)
@@ -136,8 +136,8 @@ TEST_F(ReferenceRay, RejectsWhatItDoesNotModel)
 // or along the curtain) and the same steps with 0.25 km sub-steps in altitude, against the CPU reference
 // at views along the paper's benchmark path: at the start (70 km up), inside the aurora layer (frame
 // 28, 144 km up) and above it (frame 60, 251 km up). Point samples every 2 km were 4-8% RMS off at
-// these views. Measured here: RMS 0.48%, 1.9%, 0.42% with the defaults and 0.41%, 1.9%, 0.42% with
-// 0.25 km sub-steps (at frame 28 one pixel stays 7.5% off until the step itself is 1 km). Held to 2.5%.
+// these views. Measured here: RMS 0.10%, 2.2%, 0.41% with the defaults and the same with 0.25 km
+// sub-steps (at frame 28 one pixel stays 8.6% off until the step itself is 1 km). Held to 2.5%.
 TEST_F(ReferenceRay, CoarseStepsIntegratedAcrossTheCurtainStayNearTheReference)
 {
     for (long long frame : {0LL, 28LL, 60LL}) {
