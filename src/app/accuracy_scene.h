@@ -62,8 +62,11 @@ std::vector<glm::dvec3> referencePixels(const render::ReferenceModel& model, con
 // The scene without the components the CPU reference does not model (stars, planet_texture, sky).
 scene::Scene withoutUnmodelled(scene::Scene scene);
 
-// The GPU reference's settings: 0.25 km steps everywhere, no skipping, the
-// finest tables, footprint map and polylines of the knob ranges, 16 steps per cell in the plasma box.
+// The GPU reference's settings: 0.25 km steps, the finest tables, footprint map and polylines of the
+// knob ranges, 16 steps per cell in the plasma box. With empty-space skipping, which gives the naive
+// march's image (tests/render/skipping_test.cpp) in a fraction of its loop iterations: llvmpipe ends
+// every loop of a shader invocation after 65535 iterations of all its loops together, which the naive
+// 0.25 km march reaches on long rays near curtains.
 void applyFinestSettings(scene::Scene& scene);
 
 // Opens the headless EGL context of the accuracy runs and prints "renderer: NAME, GL VERSION".
