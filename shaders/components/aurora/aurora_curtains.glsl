@@ -145,7 +145,7 @@ StepCandidates stepCandidates(vec3 o, vec3 d, float t0, float t1)
     if (step.skipKm > 0.0)
         return step;
     // lowerKm bounds the distance to every curtain from below, so it tests each candidate's own reach.
-    if (canReachStep(int(nearest.x), lowerKm, len))
+    if (nearest.x >= 0.0 && canReachStep(int(nearest.x), lowerKm, len))
         step.candidates.xy = nearest.xy;
     if (nearest.w >= 0.0) {
         float second = floor(nearest.w / 65536.0); // the map packs curtain · 65536 + point
