@@ -8,6 +8,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <utility>
 
 namespace aurorawall::components::fluid_detail {
 
@@ -49,12 +50,17 @@ double DetailShape::reachAtPhaseKm(double phase) const
     return *std::max_element(frameReachKm.begin() + first, frameReachKm.begin() + end + 1);
 }
 
+void DetailShape::setFrameReaches(std::vector<double> reachesKm)
+{
+    frameReachKm = std::move(reachesKm);
+    reachKm = *std::max_element(frameReachKm.begin(), frameReachKm.end());
+}
+
 DetailShape detailShape(const fluid::CurtainDetailSpec& spec, const fluid::FluxFrames& frames)
 {
     DetailShape d;
     d.fluxWidthKm = spec.fluxWidthKm;
-    d.frameReachKm = frameReachesKm(frames, spec.stripWidthKm);
-    d.reachKm = *std::max_element(d.frameReachKm.begin(), d.frameReachKm.end());
+    d.setFrameReaches(frameReachesKm(frames, spec.stripWidthKm));
     d.stripLengthKm = spec.stripLengthKm;
     d.peakScale = spec.fluxWidthKm * std::sqrt(2.0 * kPi);
     return d;

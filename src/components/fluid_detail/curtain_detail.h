@@ -28,6 +28,8 @@ struct DetailShape {
     // phase * (frames - 1)): the larger of the two, and of a neighbour where the phase lies within
     // rounding of a frame (the shader computes the blend in float).
     double reachAtPhaseKm(double phase) const;
+    // Sets frameReachKm to these (one per frame, at least one) and reachKm to the largest.
+    void setFrameReaches(std::vector<double> reachesKm);
 };
 DetailShape detailShape(const fluid::CurtainDetailSpec& spec, const fluid::FluxFrames& frames);
 

@@ -81,8 +81,7 @@ fluid_detail::DetailShape sheetDetailShape(const SheetFramesSpec& spec, const fl
     }
     fluid_detail::DetailShape d;
     d.fluxWidthKm = std::sqrt(second / integral);
-    d.frameReachKm = fluid_detail::frameReachesKm(f, widthKm);
-    d.reachKm = *std::max_element(d.frameReachKm.begin(), d.frameReachKm.end());
+    d.setFrameReaches(fluid_detail::frameReachesKm(f, widthKm));
     d.stripLengthKm = spec.sheet.lengthM * 1e-3;
     d.peakScale = 1.0 / peak;
     return d;
