@@ -1,4 +1,5 @@
 #include "gl/functions.h"
+#include "gl/debug_layer.h"
 #include "gl/loader.h"
 
 #include <stdexcept>
@@ -28,6 +29,8 @@ void loadFunctions(ProcAddressFunction getProcAddress)
 #undef AURORAWALL_GL_LOAD
     if (!missing.empty())
         throw std::runtime_error("OpenGL loader: the context lacks " + missing);
+    if (debugModes().any())
+        installDebugLayer(debugModes());
     loadedFrom = getProcAddress;
 }
 

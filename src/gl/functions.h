@@ -45,6 +45,8 @@
     X(PFNGLGETPROGRAMINFOLOGPROC, glGetProgramInfoLog)                              \
     X(PFNGLUSEPROGRAMPROC, glUseProgram)                                            \
     X(PFNGLDELETEPROGRAMPROC, glDeleteProgram)                                      \
+    X(PFNGLGETPROGRAMINTERFACEIVPROC, glGetProgramInterfaceiv)                      \
+    X(PFNGLGETPROGRAMRESOURCEIVPROC, glGetProgramResourceiv)                        \
     /* uniforms */                                                                  \
     X(PFNGLGETUNIFORMLOCATIONPROC, glGetUniformLocation)                            \
     X(PFNGLUNIFORM1FPROC, glUniform1f)                                              \
@@ -103,6 +105,7 @@
     X(PFNGLTEXTURESUBIMAGE2DPROC, glTextureSubImage2D)                              \
     X(PFNGLTEXTURESUBIMAGE3DPROC, glTextureSubImage3D)                              \
     X(PFNGLGETTEXTUREIMAGEPROC, glGetTextureImage)                                  \
+    X(PFNGLCLEARTEXIMAGEPROC, glClearTexImage)                                      \
     /* buffer objects */                                                            \
     X(PFNGLCREATEBUFFERSPROC, glCreateBuffers)                                      \
     X(PFNGLBINDBUFFERPROC, glBindBuffer)                                            \
@@ -111,6 +114,7 @@
     X(PFNGLNAMEDBUFFERSUBDATAPROC, glNamedBufferSubData)                            \
     X(PFNGLNAMEDBUFFERSTORAGEPROC, glNamedBufferStorage)                            \
     X(PFNGLGETNAMEDBUFFERSUBDATAPROC, glGetNamedBufferSubData)                      \
+    X(PFNGLCLEARNAMEDBUFFERDATAPROC, glClearNamedBufferData)                        \
     X(PFNGLDELETEBUFFERSPROC, glDeleteBuffers)                                      \
     /* compute */                                                                   \
     X(PFNGLDISPATCHCOMPUTEPROC, glDispatchCompute)                                  \

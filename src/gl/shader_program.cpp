@@ -1,6 +1,7 @@
 #include "gl/shader_program.h"
 
 #include "common/input_error.h"
+#include "gl/debug_layer.h"
 #include "gl/functions.h"
 
 #include <glm/gtc/type_ptr.hpp>
@@ -17,10 +18,25 @@ namespace {
 // survives drivers that drop the source-string number (Mesa 22 reports every string as 0).
 constexpr int kLineStride = 100000;
 
+// A compute shader's index of its invocation in the dispatch: gl_GlobalInvocationID, or with the
+// debug mode reverse-workgroups (debug_layer.h) the same with the workgroups numbered from the last.
+// A macro, since gl_WorkGroupSize may be used only after the shader's local_size layout.
+const char* const kDispatchInvocation = R"(#ifdef AURORAWALL_REVERSE_WORKGROUPS
+#define DISPATCH_INVOCATION ((gl_NumWorkGroups - 1u - gl_WorkGroupID) * gl_WorkGroupSize + gl_LocalInvocationID)
+#else
+#define DISPATCH_INVOCATION gl_GlobalInvocationID
+#endif
+)";
+
 // Source string 0 is the preamble; module k is string k.
-std::vector<std::string> assemble(const ShaderSource& source)
+std::vector<std::string> assemble(GLenum stage, const ShaderSource& source)
 {
     std::string preamble = "#version 450 core\n#define real float\n";
+    if (stage == GL_COMPUTE_SHADER) {
+        if (installedDebugModes().reverseWorkgroups)
+            preamble += "#define AURORAWALL_REVERSE_WORKGROUPS\n";
+        preamble += kDispatchInvocation;
+    }
     for (const std::string& define : source.defines)
         preamble += "#define " + define + "\n";
     std::vector<std::string> strings{preamble};
@@ -88,7 +104,7 @@ std::string stageName(GLenum stage)
 
 GLuint compile(GLenum stage, const ShaderSource& source)
 {
-    const std::vector<std::string> strings = assemble(source);
+    const std::vector<std::string> strings = assemble(stage, source);
     std::vector<const GLchar*> pointers;
     for (const std::string& s : strings)
         pointers.push_back(s.c_str());

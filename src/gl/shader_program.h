@@ -6,6 +6,9 @@
 // Module k (1-based) starts with "#line k*100000+1 k": the line number alone identifies the module,
 // because Mesa 22 reports every source string as 0. The assembler maps driver locations
 // ("0:100012(3)" Mesa, "1(12)" NVIDIA, "ERROR: 1:12:" others) back to "file:line".
+// A compute shader's preamble also defines DISPATCH_INVOCATION, the invocation's index in the
+// dispatch (uvec3): compute shaders use it instead of gl_GlobalInvocationID, so that the debug mode
+// reverse-workgroups (debug_layer.h) can renumber the workgroups.
 #include <glm/glm.hpp>
 
 #include <GL/glcorearb.h>

@@ -122,12 +122,12 @@ void s11OfAngle(int angle, int chunk)
 
 void main()
 {
-    int i = int(gl_GlobalInvocationID.x);
+    int i = int(DISPATCH_INVOCATION.x);
 #if MIE_TABLE_PASS == 1
     if (i < uNodeCount)
         coefficientsOfNode(i);
 #else
     if (i < uAngleCount)
-        s11OfAngle(i, int(gl_GlobalInvocationID.y));
+        s11OfAngle(i, int(DISPATCH_INVOCATION.y));
 #endif
 }
