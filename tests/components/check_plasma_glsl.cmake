@@ -33,7 +33,7 @@ function(check_every_pass name text pass_define)
     foreach(pass ${ARGN})
       set(file ${WORK_DIR}/${name}_${dimension}_${pass}.comp)
       file(WRITE ${file} "#version 450 core\n#define real float\n#define PLASMA_DIMENSION ${dimension}\n"
-           "#define ${pass_define} ${pass}\n${text}")
+           "#define ${pass_define} ${pass}\n#define DISPATCH_INVOCATION gl_GlobalInvocationID\n${text}")
       execute_process(COMMAND ${VALIDATOR} ${file} RESULT_VARIABLE result OUTPUT_VARIABLE output ERROR_VARIABLE output)
       if(NOT result EQUAL 0)
         message(FATAL_ERROR "${name}.comp (dimension ${dimension}, pass ${pass}) does not compile as GLSL:\n${output}")

@@ -264,12 +264,12 @@ std::vector<double> solveOnGpu(const PeriodicGrid& grid, GpuPoissonMethod method
 
 } // namespace
 
-// Red-black SOR with ω = 2/(1 + √(1 − μ₁²)) shrinks the slowest error by about ω − 1 per sweep:
-// picSorSweeps (10^-6) is 100 sweeps on 64² and 61 on 32³. Twice that many reach float round-off
-// (measured, llvmpipe): the potential within 3.7e-7 of the FFT's on 64² and 1.9e-7 on 32³, the
-// Poisson residual of the float potential 6.3e-5 and 2.1e-5 (the (2d+1)-point sum of float values
-// cancels to a few ulps of φ/Δ², a large multiple of ρ/ε₀ for the longest wave). Held to 2e-6 and
-// 3e-4. Half as many sweeps left 1.4e-5 on both.
+// Red-black SOR with ω = 2/(1 + √(1 − μ₁²)) shrinks the slowest error by about ω − 1 per sweep
+// (0.87 on 64², 0.80 on 32³): picSorSweeps (10^-6) is 100 sweeps on 64² and 61 on 32³. Twice that
+// many reach float rounding: the potential and the residual within floatPoissonBounds (measured on
+// llvmpipe: 3.7e-7 and 1.9e-7 against bounds near 1e-3; NVIDIA H200: 4.8e-6 on 32³). The rate is
+// checked only where the error is far above that bound: 10 and 20 sweeps from φ = 0, whose ratio
+// (ω − 1)^10 is 0.25 and 0.10 once the slowest mode dominates; held below 0.5.
 TEST(PlasmaPoissonOnTheGpu, RedBlackSorConvergesToTheFftPotential)
 {
     const auto context = gl::createContext(gl::Backend::Egl);
@@ -277,19 +277,20 @@ TEST(PlasmaPoissonOnTheGpu, RedBlackSorConvergesToTheFftPotential)
          {PeriodicGrid(2, {64, 64, 1}, {1.0, 1.0, 1.0}), PeriodicGrid(3, {32, 32, 32}, {1.0, 1.0, 1.0})}) {
         const std::vector<double> rho = modesAndNoise(grid);
         const std::vector<double> exact = FftPoissonSolver(grid).solve(rho);
+        const test::FloatPoissonBounds bounds = test::floatPoissonBounds(grid, rho, exact);
         const int sweeps = 2 * picSorSweeps(grid);
         const std::vector<double> phi = solveOnGpu(grid, GpuPoissonMethod::RedBlackSor, rho, sweeps);
         const double error = relativePotentialError(phi, exact), residual = poissonResidual(grid, rho, phi);
-        std::printf("%dD, %d cells per axis, omega %.4f, %d sweeps: potential error %.3g, residual %.3g\n",
-                    grid.dimension, grid.cells[0], sorOverRelaxation(grid), sweeps, error, residual);
-        EXPECT_LT(error, 2e-6);
-        EXPECT_LT(residual, 3e-4);
-        // Half as many sweeps leave an error near 10^-6 · (the start's error, 1): the rate holds.
-        const double half = relativePotentialError(
-            solveOnGpu(grid, GpuPoissonMethod::RedBlackSor, rho, sweeps / 2), exact);
-        std::printf("  %d sweeps: potential error %.3g\n", sweeps / 2, half);
-        EXPECT_GT(half, 10.0 * error);
-        EXPECT_LT(half, 1e-4);
+        const double ten = relativePotentialError(solveOnGpu(grid, GpuPoissonMethod::RedBlackSor, rho, 10), exact);
+        const double twenty = relativePotentialError(solveOnGpu(grid, GpuPoissonMethod::RedBlackSor, rho, 20), exact);
+        std::printf("%dD, %d cells per axis, omega %.4f, %d sweeps: potential error %.3g (bound %.3g), residual %.3g "
+                    "(bound %.3g); 10 and 20 sweeps: %.3g, %.3g\n",
+                    grid.dimension, grid.cells[0], sorOverRelaxation(grid), sweeps, error, bounds.potential, residual,
+                    bounds.residual, ten, twenty);
+        EXPECT_LT(error, bounds.potential);
+        EXPECT_LT(residual, bounds.residual);
+        ASSERT_GT(twenty, 10.0 * bounds.potential);
+        EXPECT_LT(twenty, 0.5 * ten);
     }
 }
 
@@ -405,18 +406,23 @@ TEST(PlasmaPoissonOnTheGpu, SorFieldFromTheDepositAgreesWithTheFftField)
 }
 
 // Multigrid V-cycles (red-black Gauss–Seidel 2 + 2, full weighting, linear prolongation; 5 levels
-// on 64², 4 on 32³) from φ = 0 (measured, llvmpipe): the potential error 3.3e-2, 1.1e-3, 3.8e-5,
-// 1.3e-6, 6.7e-8 after 1–5 cycles on 64² (a factor of about 30 per cycle) and 6.2e-2, 3.8e-3,
-// 2.3e-4, 1.5e-5, 9.1e-7, 8.8e-8 after 1–6 on 32³ (about 16), then float round-off: 5–6e-8, the
-// residual 1.2e-5 and 5.8e-6. kPicMultigridCycles = 6 are held to 3e-7 and 5e-5, two cycles to a
-// factor 10 per cycle.
+// on 64², 4 on 32³, 7 on 256², 5 on 64³) from φ = 0 shrink the error by a factor of about 30 (2D)
+// and 16 (3D) a cycle (measured, llvmpipe: 3.3e-2, 1.1e-3, 3.8e-5 after 1–3 cycles on 64²) until
+// float rounding. kPicMultigridCycles = 6 reach floatPoissonBounds. The rate is checked only while
+// the error is far above the bound: the first cycle takes the error from 1 (φ = 0) below 0.1 (on
+// 256² the bound, 7e-3, is within a factor 10 of that, so there only below 10 bounds). The cycles
+// run once read back after each and once in one batch, bit-identically: on NVIDIA, where commands
+// run asynchronously, the batch stalled at 4.1e-3 (64³) and grew from 3.4e-2 to 9.3e-2 (256²) while
+// the coarse corrections were cleared by an upload unordered with the shaders.
 TEST(PlasmaPoissonOnTheGpu, MultigridConvergesToTheFftPotential)
 {
     const auto context = gl::createContext(gl::Backend::Egl);
     for (const PeriodicGrid& grid :
-         {PeriodicGrid(2, {64, 64, 1}, {1.0, 1.0, 1.0}), PeriodicGrid(3, {32, 32, 32}, {1.0, 1.0, 1.0})}) {
+         {PeriodicGrid(2, {64, 64, 1}, {1.0, 1.0, 1.0}), PeriodicGrid(3, {32, 32, 32}, {1.0, 1.0, 1.0}),
+          PeriodicGrid(2, {256, 256, 1}, {1.0, 1.0, 1.0}), PeriodicGrid(3, {64, 64, 64}, {1.0, 1.0, 1.0})}) {
         const std::vector<double> rho = modesAndNoise(grid);
         const std::vector<double> exact = FftPoissonSolver(grid).solve(rho);
+        const test::FloatPoissonBounds bounds = test::floatPoissonBounds(grid, rho, exact);
         GpuPoisson gpu(grid, GpuPoissonMethod::Multigrid, kShaders);
         gpu.setChargeDensity(rho);
         std::vector<double> errors;
@@ -424,16 +430,17 @@ TEST(PlasmaPoissonOnTheGpu, MultigridConvergesToTheFftPotential)
             gpu.solve(1);
             const std::vector<double> phi = gpu.potential();
             errors.push_back(relativePotentialError(phi, exact));
-            std::printf("%dD, %d cells per axis, %d levels, %d V-cycles: potential error %.3g, residual %.3g\n",
-                        grid.dimension, grid.cells[0], gpu.levelCount(), cycle, errors.back(),
-                        poissonResidual(grid, rho, phi));
+            std::printf("%dD, %d cells per axis, %d levels, %d V-cycles: potential error %.3g (bound %.3g), "
+                        "residual %.3g (bound %.3g)\n",
+                        grid.dimension, grid.cells[0], gpu.levelCount(), cycle, errors.back(), bounds.potential,
+                        poissonResidual(grid, rho, phi), bounds.residual);
         }
-        EXPECT_LT(errors[1], 1e-2);
-        EXPECT_LT(errors.back(), 3e-7);
-        EXPECT_LT(poissonResidual(grid, rho, gpu.potential()), 5e-5);
-        const std::vector<double> again = solveOnGpu(grid, GpuPoissonMethod::Multigrid, rho, kPicMultigridCycles);
+        EXPECT_LT(errors[0], std::max(0.1, 10.0 * bounds.potential));
+        EXPECT_LT(errors.back(), bounds.potential);
+        EXPECT_LT(poissonResidual(grid, rho, gpu.potential()), bounds.residual);
+        const std::vector<double> batch = solveOnGpu(grid, GpuPoissonMethod::Multigrid, rho, kPicMultigridCycles);
         const std::vector<double> phi = gpu.potential();
-        EXPECT_EQ(std::memcmp(again.data(), phi.data(), phi.size() * sizeof(double)), 0);
+        EXPECT_EQ(std::memcmp(batch.data(), phi.data(), phi.size() * sizeof(double)), 0);
     }
 }
 

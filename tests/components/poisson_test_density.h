@@ -5,6 +5,7 @@
 #include "components/plasma/simulation/periodic_grid.h"
 #include "components/plasma/simulation/plasma_parameters.h"
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <vector>
@@ -42,6 +43,49 @@ inline double relativePotentialError(const std::vector<double>& a, const std::ve
         norm += b[i] * b[i];
     }
     return std::sqrt(difference / norm);
+}
+
+// What float arithmetic allows a Poisson solver on the GPU, from the unit roundoff u = 2^-24 and
+// the problem's condition, not from any device's output. A solver that has converged in float stops
+// where each node's update is exact within its own rounding: c = 2d + 2 roundings (the 2d
+// neighbours summed, the source added, the division), a backward error |δ_i| ≤ c·u·(λ_max·max|φ| +
+// max|s|) in the equation Aφ = s (A = −∇², λ_max = Σ_d 4/Δ_d² its largest eigenvalue on an even grid;
+// s = ρ/ε₀). That moves φ by A⁻¹δ, at most |δ|₂/λ_min with λ_min = min_d 4 sin²(π/n_d)/Δ_d², the
+// longest wave's: relative to φ (RMS) the potential bound c·u·(λ_max·max|φ| + max|s|)/(λ_min·rms φ),
+// about c·u·κ with κ = λ_max/λ_min. The residual of the float φ, relative to s (RMS), also carries
+// the rounding of φ itself, one more u·λ_max·max|φ|: the residual bound
+// (c + 1)·u·(λ_max·max|φ| + max|s|)/rms s. φ is the exact (double) solution.
+struct FloatPoissonBounds {
+    double potential, residual;
+};
+
+inline FloatPoissonBounds floatPoissonBounds(const plasma::PeriodicGrid& grid, const std::vector<double>& rho,
+                                             const std::vector<double>& exactPotential)
+{
+    const double u = std::ldexp(1.0, -24), c = 2.0 * grid.dimension + 2.0;
+    double largest = 0.0, smallest = HUGE_VAL;
+    for (int d = 0; d < grid.dimension; ++d) {
+        const double inverseSquare = 1.0 / (grid.spacing[d] * grid.spacing[d]);
+        largest += 4.0 * inverseSquare;
+        if (grid.cells[d] > 1)
+            smallest = std::min(smallest, 4.0 * std::pow(std::sin(M_PI / grid.cells[d]), 2) * inverseSquare);
+    }
+    double mean = 0.0;
+    for (double r : rho)
+        mean += r;
+    mean /= double(rho.size());
+    double maxPotential = 0.0, squaredPotential = 0.0, maxSource = 0.0, squaredSource = 0.0;
+    for (std::size_t i = 0; i < rho.size(); ++i) {
+        const double s = (rho[i] - mean) / plasma::kVacuumPermittivity;
+        maxPotential = std::max(maxPotential, std::abs(exactPotential[i]));
+        squaredPotential += exactPotential[i] * exactPotential[i];
+        maxSource = std::max(maxSource, std::abs(s));
+        squaredSource += s * s;
+    }
+    const double n = double(rho.size());
+    const double backward = u * (largest * maxPotential + maxSource);
+    return {c * backward / (smallest * std::sqrt(squaredPotential / n)),
+            (c + 1.0) * backward / std::sqrt(squaredSource / n)};
 }
 
 } // namespace aurorawall::test

@@ -27,11 +27,13 @@ uniform float uChargeOverMass; // C/kg
 uniform float uDt;             // s
 uniform int uMovePositions;
 
-// The node (i, j, k) of PeriodicGrid::index: wrapped into the box, x fastest.
+// The node (i, j, k) of PeriodicGrid::index: wrapped into the box, x fastest. Every node asked for
+// lies within one box of it (−n ≤ node < 2n), and n is added before % because GLSL leaves % of a
+// negative operand undefined.
 int nodeIndex(ivec3 node)
 {
     ivec3 n = ivec3(uCells);
-    ivec3 wrapped = ((node % n) + n) % n;
+    ivec3 wrapped = (node + n) % n;
     return wrapped.x + n.x * (wrapped.y + n.y * wrapped.z);
 }
 
@@ -44,7 +46,7 @@ const int kCorners = 1 << PLASMA_DIMENSION;
 
 void main()
 {
-    int id = int(gl_GlobalInvocationID.x);
+    int id = int(DISPATCH_INVOCATION.x);
     if (id >= uCount)
         return;
 #if PLASMA_PASS == 2

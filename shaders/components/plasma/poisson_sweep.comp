@@ -13,7 +13,10 @@
 //   4 residual: r = s + ∇²φ (V/m², so that ∇²e = −r for the error e), into potentialOut.
 //   5 restriction by full weighting, one invocation per coarse node: the coarse source is the fine
 //     residual (read from potentialOut) at the nodes 2c + o, o ∈ {−1, 0, 1}^d, weighted Π_d (1/2 for
-//     o_d = 0, 1/4 otherwise) (Trottenberg, Oosterlee & Schüller 2001, "Multigrid", §2.3).
+//     o_d = 0, 1/4 otherwise) (Trottenberg, Oosterlee & Schüller 2001, "Multigrid", §2.3); the coarse
+//     correction (potentialIn) starts at 0. Zeroing it here, in a shader, keeps it in the order of
+//     the dispatches: a buffer update from the CPU is not ordered after earlier shader accesses
+//     without GL_BUFFER_UPDATE_BARRIER_BIT, and on NVIDIA it overtook the previous V-cycle's.
 //   6 prolongation, one invocation per fine node: φ += the coarse correction (coarsePotential)
 //     interpolated linearly along each axis (ibid.).
 // Passes 4–6 make a geometric multigrid V-cycle with pass 3 at ω = 1 (red-black Gauss–Seidel) as
@@ -36,9 +39,11 @@ uniform int uColour;         // 0 or 1
 uniform float uOverRelaxation; // ω
 uniform vec3 uOtherCells;      // the fine grid's cells (pass 5) or the coarse grid's (pass 6)
 
+// The index of a node on the periodic grid with n cells per axis, for −n ≤ node < 2n (GLSL leaves %
+// of a negative operand undefined, so n is added first).
 int nodeIndexOn(ivec3 node, ivec3 n)
 {
-    ivec3 wrapped = ((node % n) + n) % n;
+    ivec3 wrapped = (node + n) % n;
     return wrapped.x + n.x * (wrapped.y + n.y * wrapped.z);
 }
 
@@ -68,7 +73,7 @@ float jacobiValue(ivec3 node, int id)
 
 void main()
 {
-    int id = int(gl_GlobalInvocationID.x);
+    int id = int(DISPATCH_INVOCATION.x);
     if (id >= uCount)
         return;
     ivec3 n = ivec3(uCells);
@@ -100,6 +105,7 @@ void main()
             sum += weight * potentialOut[nodeIndexOn(2 * node + o, fine)];
     }
     source[id] = sum;
+    potentialIn[id] = 0.0;
 #elif POISSON_PASS == 6
     ivec3 coarse = ivec3(uOtherCells);
     ivec3 base = node / 2;

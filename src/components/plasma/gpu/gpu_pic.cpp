@@ -155,11 +155,14 @@ void GpuPic::push(double dt, bool movePositions)
 void GpuPic::deposit()
 {
     bindBuffers();
+    // The upload waits for the last step's shader accesses of the sums, and the sums' readers (the
+    // GPU solvers' source pass, or chargeDensity's read-back) for the deposit's atomics.
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
     glNamedBufferSubData(buffers_[ChargeQuanta], 0, GLsizeiptr(zeroQuanta_.size() * sizeof(std::int32_t)),
                          zeroQuanta_.data());
     programs_->deposit.use();
     glDispatchCompute(groups(particleCount_), 1, 1);
-    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
 }
 
 const std::vector<double>& GpuPic::chargeDensity() const
@@ -192,6 +195,7 @@ void GpuPic::solvePotential()
     }
     const std::vector<double> potential = poisson_.solve(chargeDensity());
     const std::vector<float> potentialFloat(potential.begin(), potential.end());
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT); // after the last field pass read φ
     glNamedBufferSubData(buffers_[Potential], 0, GLsizeiptr(potentialFloat.size() * sizeof(float)),
                          potentialFloat.data());
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);

@@ -113,8 +113,6 @@ GpuPoisson::GpuPoisson(const PeriodicGrid& grid, GpuPoissonMethod method, const 
         levels_.push_back({coarse, floatBuffer(coarse.nodeCount()), floatBuffer(coarse.nodeCount()),
                            floatBuffer(coarse.nodeCount())});
     }
-    if (levels_.size() > 1)
-        coarseZeros_.assign(levels_[1].grid.nodeCount(), 0.0f);
 }
 
 GpuPoisson::~GpuPoisson()
@@ -169,10 +167,10 @@ void GpuPoisson::vCycle(int level) const
     setGrid(level + 1);
     programs_->restriction.set("uOtherCells", glm::vec3(fine.grid.cells[0], fine.grid.cells[1], fine.grid.cells[2]));
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SourceBinding, coarse.source);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, PotentialBinding, coarse.potential); // set to 0 there
     programs_->restriction.use();
     glDispatchCompute(groupsFor(coarse.grid), 1, 1);
-    glNamedBufferSubData(coarse.potential, 0, GLsizeiptr(coarse.grid.nodeCount() * sizeof(float)), coarseZeros_.data());
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
     vCycle(level + 1);
 
     setGrid(level);
@@ -195,6 +193,7 @@ void GpuPoisson::setChargeDensity(const std::vector<double>& chargeDensity)
     std::vector<float> source(chargeDensity.size());
     for (std::size_t i = 0; i < source.size(); ++i)
         source[i] = float((chargeDensity[i] - mean) / kVacuumPermittivity);
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT); // after the last solve's reads of the source
     glNamedBufferSubData(buffers_[1], 0, GLsizeiptr(source.size() * sizeof(float)), source.data());
 }
 
@@ -216,6 +215,7 @@ void GpuPoisson::setChargeFromQuanta(unsigned quantaBuffer, std::size_t particle
 void GpuPoisson::clearPotential()
 {
     const std::vector<float> zeros(grid_.nodeCount(), 0.0f);
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT); // after the last solve's accesses of φ
     glNamedBufferSubData(buffers_[0], 0, GLsizeiptr(zeros.size() * sizeof(float)), zeros.data());
 }
 

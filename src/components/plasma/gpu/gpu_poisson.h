@@ -20,6 +20,12 @@
 // count or 4 cells along some axis, solved there by kCoarsestSweeps Gauss–Seidel sweeps. Needs even
 // cell counts, as red-black SOR.
 //
+// Every pass is a compute dispatch ordered by glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT); the
+// coarse corrections start at 0 in the restriction pass, not by an upload from the CPU, which a
+// driver that runs commands asynchronously may order before the previous V-cycle's shader accesses.
+// Uploads and read-backs (setChargeDensity, clearPotential, potential) follow
+// GL_BUFFER_UPDATE_BARRIER_BIT.
+//
 // None of them pins the mean of φ (Gauss–Seidel moves it, and on the coarse grids the restricted
 // source sums to zero only up to rounding, the mean of the correction drifting by that much): the
 // field E = −∇φ does not see the mean.
@@ -83,7 +89,6 @@ private:
     std::unique_ptr<Programs> programs_;
     unsigned buffers_[3] = {}; // potential, source, Jacobi's second potential or the residual
     std::vector<Level> levels_;
-    std::vector<float> coarseZeros_; // to clear a coarse level's correction
 };
 
 } // namespace aurorawall::plasma
