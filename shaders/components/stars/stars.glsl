@@ -1,9 +1,19 @@
 // Stars: a fixed random field on the celestial sphere, a function of direction only, so every
 // tile of the wall sees the same sky. Directions are binned into longitude/latitude cells; a
 // cell holds a star with probability uStarDensity, placed in the inner part of the cell and
-// drawn as a Gaussian about one pixel wide (uPixelAngle, radians).
+// drawn as a Gaussian about one pixel wide (uPixelAngle, radians) whose integral, the star's flux,
+// is the same at every resolution: its peak is uStarBrightness at kStarReferenceWidth radians per
+// pixel and scales as (kStarReferenceWidth/σ)², so a coarse view, whose pixels hold several stars,
+// shows their summed light, and every view shows the same stars. A pixel adds up the stars of
+// every cell near enough for their Gaussian to reach it (3σ), not only of its own cell: the
+// radiance is then a smooth function of the direction, and a last-bit difference in the ray (one
+// GPU against another) moves a star's light between neighbouring pixels by as little, instead of
+// switching the star on or off where its Gaussian crossed a cell's edge. Gaussians are sampled at
+// the pixel centres, at least one pixel wide: the sum over a star's neighbourhood keeps its flux
+// within 2·exp(−π²) (Poisson summation) whatever its position within a pixel.
 uniform float uStarDensity;
-uniform float uStarBrightness; // cd/m^2 at the centre of the brightest star
+uniform float uStarBrightness; // cd/m^2 at the centre of the brightest star at kStarReferenceWidth
+const float kStarReferenceWidth = 1e-3; // radians per pixel: about a 1280-pixel 70° view
 
 float starHash(vec2 cell, float salt)
 {
@@ -18,21 +28,43 @@ float starHash(vec2 cell, float salt)
     return float(v.x & 0xffffffu) / 16777216.0;
 }
 
+// Cells: 2·kStarCells in longitude over 2π (π/kStarCells radians each, times cos(latitude) on the
+// sky), kStarCells/2 in latitude over π (2π/kStarCells radians each).
+const float kStarCells = 1024.0;
+
+// The light of the star of cell `cell` (wrapped in longitude; none beyond the poles) at the point
+// `grid` of the cell grid, at latitude angle `latitude` (radians), Gaussian width sigma (radians).
+vec3 starOfCell(vec2 cell, vec2 grid, float latitude, float sigma)
+{
+    const float pi = 3.14159265358979;
+    vec2 wrapped = vec2(mod(cell.x, 2.0 * kStarCells), cell.y);
+    if (cell.y < 0.0 || cell.y >= 0.5 * kStarCells || starHash(wrapped, 0.0) > uStarDensity)
+        return vec3(0.0);
+    vec2 centre = cell + 0.25 + 0.5 * vec2(starHash(wrapped, 1.0), starHash(wrapped, 2.0));
+    vec2 offsetRad = (grid - centre) * vec2(pi / kStarCells * cos(latitude), 2.0 * pi / kStarCells);
+    float magnitude = pow(starHash(wrapped, 3.0), 4.0); // few bright stars, many faint ones
+    vec3 tint = mix(vec3(1.0, 0.8, 0.6), vec3(0.7, 0.8, 1.0), starHash(wrapped, 4.0));
+    float peak = uStarBrightness * (kStarReferenceWidth / sigma) * (kStarReferenceWidth / sigma);
+    return peak * magnitude * tint * exp(-dot(offsetRad, offsetRad) / (sigma * sigma));
+}
+
 vec3 starRadiance(vec3 d)
 {
-    const float cells = 1024.0;
     const float pi = 3.14159265358979;
     vec2 angles = vec2(atan(d.y, d.x) + pi, asin(clamp(d.z, -1.0, 1.0)) + 0.5 * pi) / pi; // [0,2] x [0,1]
-    vec2 grid = angles * vec2(cells, 0.5 * cells);
+    vec2 grid = angles * vec2(kStarCells, 0.5 * kStarCells);
     vec2 cell = floor(grid);
-    if (starHash(cell, 0.0) > uStarDensity)
-        return vec3(0.0);
-    vec2 centre = cell + 0.25 + 0.5 * vec2(starHash(cell, 1.0), starHash(cell, 2.0));
-    vec2 offsetRad = (grid - centre) * vec2(pi / cells * cos(angles.y * pi - 0.5 * pi), pi / (0.5 * cells));
+    float latitude = angles.y * pi - 0.5 * pi;
     float sigma = max(uPixelAngle, 2e-4);
-    float magnitude = pow(starHash(cell, 3.0), 4.0); // few bright stars, many faint ones
-    vec3 tint = mix(vec3(1.0, 0.8, 0.6), vec3(0.7, 0.8, 1.0), starHash(cell, 4.0));
-    return uStarBrightness * magnitude * tint * exp(-dot(offsetRad, offsetRad) / (sigma * sigma));
+    // The cells within 3σ, at most 4 each way (beyond, near the poles, where longitude cells narrow,
+    // or at pixels wider than a cell, a star's light is cut at 4 cells).
+    int reachLat = min(4, 1 + int(3.0 * sigma / (2.0 * pi / kStarCells)));
+    int reachLon = min(4, 1 + int(3.0 * sigma / (pi / kStarCells * max(cos(latitude), 1e-3))));
+    vec3 radiance = vec3(0.0);
+    for (int j = -reachLat; j <= reachLat; ++j)
+        for (int i = -reachLon; i <= reachLon; ++i)
+            radiance += starOfCell(cell + vec2(i, j), grid, latitude, sigma);
+    return radiance;
 }
 
 // The stars close a ray that nothing opaque ends, seen through the lower atmosphere.
