@@ -1,10 +1,9 @@
 // Stars: a fixed random field on the celestial sphere, a function of direction only, so every
 // tile of the wall sees the same sky. Directions are binned into longitude/latitude cells; a
 // cell holds a star with probability uStarDensity, placed in the inner part of the cell and
-// drawn as a Gaussian about one pixel wide (uPixelAngle, radians) whose integral, the star's flux,
-// is the same at every resolution: its peak is uStarBrightness at kStarReferenceWidth radians per
-// pixel and scales as (kStarReferenceWidth/σ)², so a coarse view, whose pixels hold several stars,
-// shows their summed light, and every view shows the same stars. A pixel adds up the stars of
+// drawn as a Gaussian about one pixel wide (uPixelAngle, radians), the same peak at every
+// resolution; a coarse view, whose pixels hold several stars, shows their summed light, and every
+// view shows the same stars. A pixel adds up the stars of
 // every cell near enough for their Gaussian to reach it (3σ), not only of its own cell: the
 // radiance is then a smooth function of the direction, and a last-bit difference in the ray (one
 // GPU against another) moves a star's light between neighbouring pixels by as little, instead of
@@ -12,8 +11,7 @@
 // the pixel centres, at least one pixel wide: the sum over a star's neighbourhood keeps its flux
 // within 2·exp(−π²) (Poisson summation) whatever its position within a pixel.
 uniform float uStarDensity;
-uniform float uStarBrightness; // cd/m^2 at the centre of the brightest star at kStarReferenceWidth
-const float kStarReferenceWidth = 1e-3; // radians per pixel: about a 1280-pixel 70° view
+uniform float uStarBrightness; // cd/m^2 at the centre of the brightest star
 
 float starHash(vec2 cell, float salt)
 {
@@ -44,8 +42,7 @@ vec3 starOfCell(vec2 cell, vec2 grid, float latitude, float sigma)
     vec2 offsetRad = (grid - centre) * vec2(pi / kStarCells * cos(latitude), 2.0 * pi / kStarCells);
     float magnitude = pow(starHash(wrapped, 3.0), 4.0); // few bright stars, many faint ones
     vec3 tint = mix(vec3(1.0, 0.8, 0.6), vec3(0.7, 0.8, 1.0), starHash(wrapped, 4.0));
-    float peak = uStarBrightness * (kStarReferenceWidth / sigma) * (kStarReferenceWidth / sigma);
-    return peak * magnitude * tint * exp(-dot(offsetRad, offsetRad) / (sigma * sigma));
+    return uStarBrightness * magnitude * tint * exp(-dot(offsetRad, offsetRad) / (sigma * sigma));
 }
 
 vec3 starRadiance(vec3 d)
