@@ -386,7 +386,8 @@ std::unique_ptr<gl::Context> openAccuracyContext(std::ostream& out)
 {
     auto context = gl::createContext(gl::Backend::Egl);
     const char* threads = std::getenv("LP_NUM_THREADS");
-    out << "renderer: " << context->rendererName() << ", " << context->glVersion()
+    out << "renderer: " << context->rendererName() << ", " << context->glVersion() << ", vendor "
+        << context->vendorName()
         << (threads ? ", LP_NUM_THREADS=" + std::string(threads) : std::string()) << "\n";
     return context;
 }

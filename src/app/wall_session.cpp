@@ -162,9 +162,11 @@ int setUpWallSession(const cluster::MpiWorld& world, int argc, char** argv, Wall
         std::fflush(stdout);
     }
     if (world.isMaster() && !session.options.quiet) {
-        std::printf("aurorawall: %d ranks, %zu screens, canvas %dx%d, backend %s on %s\n", world.size(),
-                    session.wall.screens.size(), session.wall.canvasSizePx.x, session.wall.canvasSizePx.y,
-                    gl::backendName(session.options.backend).c_str(), session.context->rendererName().c_str());
+        std::printf("aurorawall: %d ranks, %zu screens, canvas %dx%d, backend %s on %s (vendor %s, OpenGL %s)\n",
+                    world.size(), session.wall.screens.size(), session.wall.canvasSizePx.x,
+                    session.wall.canvasSizePx.y, gl::backendName(session.options.backend).c_str(),
+                    session.context->rendererName().c_str(), session.context->vendorName().c_str(),
+                    session.context->glVersion().c_str());
         for (const std::string& line : session.renderer->precomputationLog())
             std::printf("precomputed %s\n", line.c_str());
     }

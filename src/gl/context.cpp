@@ -29,6 +29,8 @@ std::string Context::rendererName() const { return glString(GL_RENDERER); }
 
 std::string Context::glVersion() const { return glString(GL_VERSION); }
 
+std::string Context::vendorName() const { return glString(GL_VENDOR); }
+
 std::unique_ptr<Context> createContext(Backend backend, const std::vector<WindowSpec>& windowsForGlfw)
 {
     switch (backend) {

@@ -83,6 +83,7 @@ public:
     virtual bool gamepad(GamepadState& /*state*/) const { return false; }
 
     // GL_RENDERER and GL_VERSION of the current context, for logs (e.g. "llvmpipe (LLVM 15.0.6, 256 bits)").
+    std::string vendorName() const; // GL_VENDOR, e.g. "NVIDIA Corporation" or "Mesa"
     std::string rendererName() const;
     std::string glVersion() const;
 

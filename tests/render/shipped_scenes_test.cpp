@@ -1,0 +1,103 @@
+// Every shipped scene rendered on this GL device with its defaults, against the double-precision
+// CPU reference (render/reference_ray.h) at sampled pixels: the test that vouches for a GPU's
+// images (launch/gpu-check runs it on each device). The components the reference does not model
+// (stars, planet_texture, sky) are left out of both.
+#include "app/accuracy_scene.h"
+#include "components/registry.h"
+#include "gl/context.h"
+#include "render/reference_ray.h"
+#include "scene/scene.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+using namespace aurorawall;
+
+namespace {
+
+const std::string kSource = AURORAWALL_SOURCE_DIR;
+
+std::vector<std::string> shippedScenes()
+{
+    std::vector<std::string> names;
+    for (const auto& entry : std::filesystem::directory_iterator(kSource + "/config/scenes"))
+        if (entry.path().extension() == ".toml")
+            names.push_back(entry.path().stem().string());
+    std::sort(names.begin(), names.end());
+    return names;
+}
+
+// `count` pixels spread evenly over those at or above the floor.
+std::vector<glm::ivec2> litPixels(const io::Image& image, double floor, int count)
+{
+    std::vector<glm::ivec2> lit, chosen;
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x)
+            if (glm::length(app::pixelRadiance(image, x, y)) >= floor)
+                lit.emplace_back(x, y);
+    for (int i = 0; i < count && !lit.empty(); ++i)
+        chosen.push_back(lit[size_t(i) * lit.size() / size_t(count)]);
+    return chosen;
+}
+
+class ShippedScene : public ::testing::TestWithParam<std::string> {
+protected:
+    static void SetUpTestSuite() { context_ = gl::createContext(gl::Backend::Egl); }
+    static void TearDownTestSuite() { context_.reset(); }
+    static std::unique_ptr<gl::Context> context_;
+};
+std::unique_ptr<gl::Context> ShippedScene::context_;
+
+} // namespace
+
+// The tolerance is the accuracy the defaults are chosen for (docs/ACCURACY.md): 1% RMS of the
+// radiance over the sampled lit pixels, whatever the device; float rounding is far below it (a
+// march of at most a few hundred steps: (n + 16)·2^-24 < 3e-5). One pixel may be further off where a
+// curtain's edge falls within it (the known 9% pixel of the benchmark path's frame 28): the maximum
+// is held to 15%. Pixels darker than one 8-bit step of the preview at the scene's exposure are
+// not compared.
+TEST_P(ShippedScene, DefaultsAgreeWithTheCpuReference)
+{
+    scene::Scene s = app::withoutUnmodelled(components::loadScene(kSource + "/config/scenes/" + GetParam() + ".toml"));
+    const app::SceneView view = app::sceneView(s, kSource + "/config/walls/single.toml", {64, 36});
+    const io::Image gpu = app::renderView(s, view, kSource + "/shaders", 0).image;
+    const double floor = 1.0 / (255.0 * s.exposure);
+    const std::vector<glm::ivec2> pixels = litPixels(gpu, floor, 12);
+    if (pixels.empty())
+        GTEST_SKIP() << GetParam() << ": no lit pixel once stars, sky and night lights are left out";
+    std::shared_ptr<const fluid::FluxFrames> frames;
+    for (const scene::Component* c : s.components())
+        if (!frames)
+            frames = c->referenceFrames(s);
+    std::unique_ptr<render::ReferenceModel> model;
+    try {
+        model = std::make_unique<render::ReferenceModel>(s, view.frame.timeS, frames.get());
+    } catch (const std::invalid_argument& e) {
+        GTEST_SKIP() << GetParam() << ": the CPU reference does not model it (" << e.what() << ")";
+    }
+    const std::vector<glm::dvec3> reference = app::referencePixels(*model, view, pixels, 2);
+    std::vector<glm::dvec3> values;
+    for (const glm::ivec2& p : pixels)
+        values.push_back(app::pixelRadiance(gpu, p.x, p.y));
+    const app::RelativeError e = app::relativeError(values, reference, floor);
+    std::printf("%s: GPU defaults vs CPU reference at %zu lit pixels: rms %.3g, max %.3g\n", GetParam().c_str(),
+                e.pixels, e.rms, e.max);
+    EXPECT_LT(e.rms, 1e-2);
+    EXPECT_LT(e.max, 0.15);
+}
+
+INSTANTIATE_TEST_SUITE_P(Config, ShippedScene, ::testing::ValuesIn(shippedScenes()),
+                         [](const ::testing::TestParamInfo<std::string>& info) {
+                             std::string name = info.param;
+                             for (char& c : name)
+                                 if (c == '-')
+                                     c = '_';
+                             return name;
+                         });
