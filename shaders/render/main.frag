@@ -1,25 +1,10 @@
-// Entry point: one fragment = one pixel's ray, relative to the camera.
-// Radiance is written linear (RGB in the scene's radiance unit, alpha 1) to attachment 0 of the float
-// target; the ray's work (1 + its aurora samples) to attachment 1, with which the load balancer
-// shares the measured time of a draw among the bands it covered (src/gl/float_target.h).
-uniform vec3 uCameraPositionKm; // camera relative to the planet centre, planet frame
-
+// Entry point of the march as a fragment shader over a full-screen triangle: one fragment = one
+// pixel's ray, written to the float target's attachments 0 (radiance) and 1 (work).
 layout(location = 0) out vec4 fragRadiance;
 layout(location = 1) out float fragWork;
 
 void main()
 {
-    if (!fragmentInImage()) {
-        fragRadiance = vec4(0.0, 0.0, 0.0, 1.0);
-        fragWork = 1.0;
-        return;
-    }
-    vec3 direction = fragmentRayDirection();
-    vec3 radiance = shadeRay(uCameraPositionKm, direction);
-    fragRadiance = vec4(radiance, 1.0);
-#ifdef HAS_AURORA
-    fragWork = 1.0 + float(gAuroraSamples);
-#else
-    fragWork = 1.0;
-#endif
+    gPixelCentre = gl_FragCoord.xy;
+    shadePixel(fragRadiance, fragWork);
 }

@@ -24,10 +24,13 @@ uniform vec3 uDomeAxis;    // planet frame, orthonormal
 uniform vec3 uDomeRight;
 uniform vec3 uDomeDown;
 
-// gl_FragCoord is bottom-up with centres at +0.5; canvas rows run top-down.
+// The centre of this invocation's pixel in the tile, bottom-up with centres at +0.5 (gl_FragCoord.xy
+// of the fragment march), set by the entry point; canvas rows run top-down.
+vec2 gPixelCentre;
+
 vec2 fragmentCanvasPosition()
 {
-    return uPixelOffset + vec2(gl_FragCoord.x, float(uTileHeight) - gl_FragCoord.y);
+    return uPixelOffset + vec2(gPixelCentre.x, float(uTileHeight) - gPixelCentre.y);
 }
 
 // False for the pixels of a dome master outside its image circle, which stay black.

@@ -64,8 +64,14 @@ glm::dvec3 pixelDirection(const SceneView& view, int x, int y)
 
 TimedRender renderView(const scene::Scene& scene, const SceneView& view, const std::string& shaderDir, int runs)
 {
+    return renderView(scene, view, shaderDir, runs, render::preferredMarchStage(gl::currentRendererName()));
+}
+
+TimedRender renderView(const scene::Scene& scene, const SceneView& view, const std::string& shaderDir, int runs,
+                       render::MarchStage stage)
+{
     using Clock = std::chrono::steady_clock;
-    render::TileRenderer renderer(scene, shaderDir);
+    render::TileRenderer renderer(scene, shaderDir, stage);
     const glm::ivec2 size(view.wall.screens.front().widthPx, view.wall.screens.front().heightPx);
     gl::FloatTarget target(size.x, size.y);
     gl::FullScreenTriangle triangle;

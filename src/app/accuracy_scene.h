@@ -6,6 +6,7 @@
 #include "cluster/frame_state.h"
 #include "gl/context.h"
 #include "io/image.h"
+#include "render/march_shader.h"
 #include "render/reference_ray.h"
 #include "scene/scene.h"
 #include "wall/tile_rays.h"
@@ -43,6 +44,9 @@ struct TimedRender {
     double msPerFrame = 0.0;
 };
 TimedRender renderView(const scene::Scene& scene, const SceneView& view, const std::string& shaderDir, int runs);
+// The same with the march in the given shader stage (the one above: the device's preferred stage).
+TimedRender renderView(const scene::Scene& scene, const SceneView& view, const std::string& shaderDir, int runs,
+                       render::MarchStage stage);
 
 // Per-pixel relative error e = |a - r| / |r| (Euclidean norm of linear RGB) over the pixels whose
 // reference radiance |r| is at least `floor`: RMS and maximum of e, and how many pixels.

@@ -12,6 +12,8 @@ namespace {
 
 const cli::Choices<gl::Backend> kBackends = {
     {"egl", gl::Backend::Egl}, {"osmesa", gl::Backend::Osmesa}, {"glfw", gl::Backend::Glfw}};
+const cli::Choices<MarchChoice> kMarches = {
+    {"auto", MarchChoice::Auto}, {"compute", MarchChoice::Compute}, {"fragment", MarchChoice::Fragment}};
 const cli::Choices<io::ToneMap::Curve> kToneMaps = {
     {"aces", io::ToneMap::Curve::AcesFilmic}, {"magnitude-gamma", io::ToneMap::Curve::MagnitudeGamma}};
 const cli::Choices<Balance> kBalance = {{"on", Balance::On}, {"off", Balance::Off}, {"auto", Balance::Auto}};
@@ -34,6 +36,10 @@ RenderOptions parseRenderOptions(int argc, char** argv)
         ("scene", po::value(&o.sceneFile)->required(), "scene file (config/scenes/*.toml): components and parameters");
     cli.addChoice("backend", &o.backend, kBackends,
                   "OpenGL backend: egl (headless; GPU or Mesa llvmpipe), osmesa (headless), glfw (one window per screen)");
+    cli.addChoice("march", &o.march, kMarches,
+                  "shader stage of the raymarcher: compute (8x4-pixel workgroups; on GPUs every multiprocessor "
+                  "runs them), fragment (a full-screen triangle), or auto (the faster on this device: fragment "
+                  "on Mesa's CPU renderers, compute elsewhere); the same image either way");
     cli.add()
         ("frames", po::value(&o.frames)->default_value(o.frames),
          "number of frames to render; 0 = until a window is closed (glfw) or the wall is told to quit "

@@ -11,10 +11,15 @@ namespace aurorawall::app {
 // --balance: whether ranks share their screens' bands; Auto: when more than one rank renders.
 enum class Balance { On, Off, Auto };
 
+// --march: the shader stage of the raymarcher (render/march_shader.h); Auto: chosen for the device
+// (render::preferredMarchStage).
+enum class MarchChoice { Auto, Compute, Fragment };
+
 struct RenderOptions {
     std::string wallFile;
     std::string sceneFile;
     gl::Backend backend = gl::Backend::Egl;
+    MarchChoice march = MarchChoice::Auto;
     std::string outDir = "out";
     std::string statsFile;
     std::string costMapFile; // --cost-map; empty: none

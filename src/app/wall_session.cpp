@@ -5,7 +5,7 @@
 #include "common/data_dir.h"
 #include "common/input_error.h"
 #include "io/directory.h"
-#include "render/fragment_shader.h"
+#include "render/march_shader.h"
 #include "wall/wall_file.h"
 
 #include <cstdio>
@@ -61,7 +61,7 @@ void configure(const cluster::MpiWorld& world, int argc, char** argv, WallSessio
                          std::to_string(world.size()) + " (use mpirun -n " + std::to_string(s.wall.rankCount) + ")");
     s.scene = components::loadScene(options.sceneFile);
     s.shaderDir = (options.dataDir.empty() ? dataDirectory() : options.dataDir) + "/shaders";
-    render::fragmentShaderSource(s.scene, s.shaderDir); // every module readable before any window opens
+    render::marchShaderSource(s.scene, s.shaderDir); // every module readable before any window opens
     if (options.gather || options.tiles)
         io::ensureWritableDirectory(options.outDir, "--out");
     if (!options.movieDir.empty())
@@ -96,7 +96,10 @@ void openGraphics(const cluster::MpiWorld& world, WallSession& s)
         windows.push_back(spec);
     }
     s.context = gl::createContext(backend, windows);
-    s.renderer = std::make_unique<render::TileRenderer>(s.scene, s.shaderDir);
+    const render::MarchStage stage = s.options.march == MarchChoice::Compute    ? render::MarchStage::Compute
+                                     : s.options.march == MarchChoice::Fragment ? render::MarchStage::Fragment
+                                                                                : render::preferredMarchStage(s.context->rendererName());
+    s.renderer = std::make_unique<render::TileRenderer>(s.scene, s.shaderDir, stage);
     if (backend == gl::Backend::Glfw)
         s.presenter = std::make_unique<render::WindowPresenter>(s.shaderDir, s.toneMap);
     for (size_t i = 0; i < myScreens.size(); ++i) {
@@ -162,11 +165,13 @@ int setUpWallSession(const cluster::MpiWorld& world, int argc, char** argv, Wall
         std::fflush(stdout);
     }
     if (world.isMaster() && !session.options.quiet) {
-        std::printf("aurorawall: %d ranks, %zu screens, canvas %dx%d, backend %s on %s (vendor %s, OpenGL %s)\n",
+        std::printf("aurorawall: %d ranks, %zu screens, canvas %dx%d, backend %s on %s (vendor %s, OpenGL %s), "
+                    "march as a %s shader\n",
                     world.size(), session.wall.screens.size(), session.wall.canvasSizePx.x,
                     session.wall.canvasSizePx.y, gl::backendName(session.options.backend).c_str(),
                     session.context->rendererName().c_str(), session.context->vendorName().c_str(),
-                    session.context->glVersion().c_str());
+                    session.context->glVersion().c_str(),
+                    session.renderer->stage() == render::MarchStage::Compute ? "compute" : "fragment");
         for (const std::string& line : session.renderer->precomputationLog())
             std::printf("precomputed %s\n", line.c_str());
     }

@@ -27,6 +27,8 @@ static std::string glString(GLenum name)
 
 std::string Context::rendererName() const { return glString(GL_RENDERER); }
 
+std::string currentRendererName() { return glString(GL_RENDERER); }
+
 std::string Context::glVersion() const { return glString(GL_VERSION); }
 
 std::string Context::vendorName() const { return glString(GL_VENDOR); }

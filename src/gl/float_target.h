@@ -1,10 +1,11 @@
 #pragma once
 // A framebuffer where the raymarcher draws a tile, with two float colour textures:
 //   attachment 0, GL_RGBA32F: the radiance (linear RGB in the scene's radiance unit), alpha 1;
-//   attachment 1, GL_R32F: the ray's work, 1 + its aurora samples (shaders/render/main.frag), with
+//   attachment 1, GL_R32F: the ray's work, 1 + its aurora samples (shaders/render/pixel.glsl), with
 //   which the load balancer shares a draw's measured time among the bands it covered.
 // A shader that writes only location 0 leaves attachment 1 undefined.
 // Rows are GL's, bottom-up: row 0 is the bottom one (gl_FragCoord.y = 0.5).
+// The compute march writes the same two textures as images instead (render/tile_renderer.h).
 // Framebuffers are not shared between contexts: create it with the context that draws into it.
 #include "gl/texture.h"
 
@@ -46,6 +47,7 @@ public:
     int height() const { return texture_.height(); }
     GLuint framebuffer() const { return framebuffer_; }
     const Texture& texture() const { return texture_; } // the radiance
+    const Texture& work() const { return work_; }
 
 private:
     void checkRows(int firstRow, int rows) const;

@@ -65,6 +65,7 @@
     X(PFNGLPROGRAMUNIFORM3FVPROC, glProgramUniform3fv)                              \
     X(PFNGLPROGRAMUNIFORM4FVPROC, glProgramUniform4fv)                              \
     X(PFNGLPROGRAMUNIFORM1IVPROC, glProgramUniform1iv)                              \
+    X(PFNGLPROGRAMUNIFORM2IVPROC, glProgramUniform2iv)                              \
     X(PFNGLPROGRAMUNIFORMMATRIX3FVPROC, glProgramUniformMatrix3fv)                  \
     X(PFNGLPROGRAMUNIFORMMATRIX4FVPROC, glProgramUniformMatrix4fv)                  \
     /* vertex arrays */                                                             \

@@ -217,6 +217,11 @@ void Program::set(const std::string& name, const glm::vec2& value)
     glProgramUniform2fv(id_, location(name), 1, glm::value_ptr(value));
 }
 
+void Program::set(const std::string& name, const glm::ivec2& value)
+{
+    glProgramUniform2iv(id_, location(name), 1, glm::value_ptr(value));
+}
+
 void Program::set(const std::string& name, const glm::vec3& value)
 {
     glProgramUniform3fv(id_, location(name), 1, glm::value_ptr(value));

@@ -61,6 +61,7 @@ public:
     void set(const std::string& name, float value);
     void set(const std::string& name, int value);
     void set(const std::string& name, const glm::vec2& value);
+    void set(const std::string& name, const glm::ivec2& value);
     void set(const std::string& name, const glm::vec3& value);
     void set(const std::string& name, const glm::vec4& value);
     void set(const std::string& name, const glm::mat3& value);

@@ -1,6 +1,6 @@
 #pragma once
 // A double-precision CPU reference of the renderer's model for single rays: the radiance the
-// generated shadeRay (render/fragment_shader.h) computes, without the shader's approximations.
+// generated shadeRay (render/march_shader.h) computes, without the shader's approximations.
 // Each listed component contributes its own part (scene::Component::makeReference): the same
 // geometry steps (the shared modules render/ray_sphere.glsl and layers.glsl compiled in double),
 // then the shading steps in the same compositing order, each evaluated exactly (exact airmass,

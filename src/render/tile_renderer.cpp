@@ -1,14 +1,33 @@
 #include "render/tile_renderer.h"
 
-#include "render/fragment_shader.h"
+#include "gl/context.h"
+#include "gl/functions.h"
+#include "render/march_shader.h"
 
 #include <chrono>
 
 namespace aurorawall::render {
 
+namespace {
+
+constexpr int kGroupWidth = 8, kGroupHeight = 4; // main.comp's local size: 32 neighbouring pixels
+
+gl::Program marchProgram(const scene::Scene& scene, const std::string& shaderDir, MarchStage stage)
+{
+    if (stage == MarchStage::Compute)
+        return gl::Program::compute(marchShaderSource(scene, shaderDir, stage));
+    return gl::Program::graphics(gl::fullScreenTriangleVertexShader(), marchShaderSource(scene, shaderDir, stage));
+}
+
+} // namespace
+
 TileRenderer::TileRenderer(const scene::Scene& scene, const std::string& shaderDir)
-    : scene_(scene),
-      program_(gl::Program::graphics(gl::fullScreenTriangleVertexShader(), fragmentShaderSource(scene, shaderDir)))
+    : TileRenderer(scene, shaderDir, preferredMarchStage(gl::currentRendererName()))
+{
+}
+
+TileRenderer::TileRenderer(const scene::Scene& scene, const std::string& shaderDir, MarchStage stage)
+    : scene_(scene), stage_(stage), program_(marchProgram(scene, shaderDir, stage))
 {
     // A component finds the GPU parts of those made before it (registry order).
     const scene::FindRenderer find = [&](const std::string& name) -> scene::ComponentRenderer* {
@@ -78,9 +97,21 @@ void TileRenderer::renderTile(const wall::TileRays& rays, gl::FloatTarget& targe
     // Texture bindings belong to the current context: bind every time.
     for (const auto& c : components_)
         c->bind(program_);
-    target.bind();
     program_.use();
-    triangle.draw();
+    if (stage_ == MarchStage::Fragment) {
+        target.bind();
+        triangle.draw();
+        return;
+    }
+    program_.set("uTileSize", glm::ivec2(target.width(), target.height()));
+    gl::glBindImageTexture(0, target.texture().id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    gl::glBindImageTexture(1, target.work().id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
+    gl::glDispatchCompute(GLuint((target.width() + kGroupWidth - 1) / kGroupWidth),
+                      GLuint((target.height() + kGroupHeight - 1) / kGroupHeight), 1);
+    // The image stores before whatever reads the target next: read-backs, blits, texture fetches and
+    // uploads of exchanged bands.
+    gl::glMemoryBarrier(GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT |
+                    GL_PIXEL_BUFFER_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
 }
 
 } // namespace aurorawall::render

@@ -1,11 +1,13 @@
 #pragma once
-// Draws tiles of the wall: for each tile, one full-screen pass of the raymarcher into a float
-// target. The program is compiled, and the tables of the scene's components precomputed, once
+// Draws tiles of the wall: for each tile, one pass of the raymarcher into a float target, as a
+// compute dispatch of 8x4-pixel workgroups or a fragment shader over a full-screen triangle
+// (march_shader.h; the same image either way). The program is compiled, and the tables of the scene's components precomputed, once
 // per rank; everything that changes per frame comes from the master's FrameState only.
 #include "cluster/frame_state.h"
 #include "gl/float_target.h"
 #include "gl/full_screen_triangle.h"
 #include "gl/shader_program.h"
+#include "render/march_shader.h"
 #include "scene/scene.h"
 #include "wall/tile_rays.h"
 
@@ -20,6 +22,8 @@ public:
     // Compiles the raymarcher and precomputes the tables of the scene's components (needs a
     // current context). Throws InputError for unreadable shader files and gl::ShaderError for
     // compile errors.
+    TileRenderer(const scene::Scene& scene, const std::string& shaderDir, MarchStage stage);
+    // The same in the stage preferred for the current context's renderer (preferredMarchStage).
     TileRenderer(const scene::Scene& scene, const std::string& shaderDir);
 
     // Once per frame, before its tiles: the uniforms shared by every tile and the per-frame
@@ -32,6 +36,8 @@ public:
     // zoom (cluster::wallToPlanet), the dome master's without.
     void renderTile(const wall::TileRays& rays, gl::FloatTarget& target, const gl::FullScreenTriangle& triangle);
 
+    MarchStage stage() const { return stage_; }
+
     // One line per table precomputed at start-up for the scene's components; empty when none is needed.
     const std::vector<std::string>& precomputationLog() const { return precomputationLog_; }
     // The components' GPU parts, in registry order.
@@ -43,6 +49,7 @@ public:
 
 private:
     const scene::Scene& scene_;
+    MarchStage stage_;
     gl::Program program_;
     glm::dmat3 wallToPlanet_{1.0}; // with the frame's zoom (cluster::wallToPlanet)
     glm::dmat3 domeToPlanet_{1.0}; // the camera's axes alone

@@ -4,7 +4,7 @@
 #include "airglow_columns.h"
 #include "components/airglow/airglow.h"
 #include "components/registry.h"
-#include "render/fragment_shader.h"
+#include "render/march_shader.h"
 
 #include <gtest/gtest.h>
 
@@ -172,7 +172,7 @@ TEST(Airglow, OnlyScenesThatListItCarryItsCode)
 {
     const std::string scenes = std::string(AURORAWALL_SOURCE_DIR) + "/config/scenes/";
     const gl::ShaderSource without =
-        render::fragmentShaderSource(components::loadScene(scenes + "quiet-arc.toml"), std::string(AURORAWALL_SOURCE_DIR) + "/shaders");
+        render::marchShaderSource(components::loadScene(scenes + "quiet-arc.toml"), std::string(AURORAWALL_SOURCE_DIR) + "/shaders");
     for (const gl::ShaderModule& m : without.modules) {
         EXPECT_EQ(m.file.find("airglow"), std::string::npos) << m.file;
         EXPECT_EQ(m.text.find("uAirglow"), std::string::npos) << m.file;
@@ -184,7 +184,7 @@ TEST(Airglow, OnlyScenesThatListItCarryItsCode)
     const std::string code = render::compositingSource(with);
     EXPECT_LT(code.find("shadeAtmosphere("), code.find("shadeAirglow("));
     EXPECT_LT(code.find("shadeAirglow("), code.find("shadeAurora("));
-    const std::vector<std::string> names = render::fragmentModuleNames(with);
+    const std::vector<std::string> names = render::marchModuleNames(with);
     EXPECT_EQ(std::count(names.begin(), names.end(), "atmosphere/airmass_chapman.glsl"), 1);
     EXPECT_EQ(std::count(names.begin(), names.end(), "components/airglow/airglow.glsl"), 1);
 }

@@ -1,4 +1,4 @@
-#include "render/fragment_shader.h"
+#include "render/march_shader.h"
 #include "components/planet/planet.h"
 #include "components/registry.h"
 #include "components/stars/stars.h"
@@ -24,7 +24,7 @@ TEST(FragmentShader, CompilesOnlyTheListedComponents)
     scene::Scene s;
     s.add(components::planet::component());
     s.add(components::stars::component());
-    const gl::ShaderSource source = render::fragmentShaderSource(s, kShaders);
+    const gl::ShaderSource source = render::marchShaderSource(s, kShaders);
     EXPECT_TRUE(contains(source.defines, "HAS_PLANET"));
     EXPECT_TRUE(contains(source.defines, "HAS_STARS"));
     EXPECT_FALSE(contains(source.defines, "HAS_AURORA"));
@@ -38,10 +38,11 @@ TEST(FragmentShader, CompilesOnlyTheListedComponents)
 TEST(FragmentShader, FullSceneHasEveryModule)
 {
     const scene::Scene s = components::loadScene(std::string(AURORAWALL_SOURCE_DIR) + "/config/scenes/substorm.toml");
-    const std::vector<std::string> names = render::fragmentModuleNames(s);
+    const std::vector<std::string> names = render::marchModuleNames(s);
     EXPECT_TRUE(contains(names, "components/aurora/aurora_curtains.glsl"));
     EXPECT_TRUE(contains(names, "components/atmosphere/atmosphere.glsl"));
     EXPECT_EQ(names.back(), "render/main.frag");
+    EXPECT_EQ(render::marchModuleNames(s, render::MarchStage::Compute).back(), "render/main.comp");
 }
 
 TEST(FragmentShader, MissingShaderFolderNamesTheFile)
@@ -49,7 +50,7 @@ TEST(FragmentShader, MissingShaderFolderNamesTheFile)
     scene::Scene s;
     s.add(components::planet::component());
     try {
-        render::fragmentShaderSource(s, "/nonexistent/shaders");
+        render::marchShaderSource(s, "/nonexistent/shaders");
         FAIL() << "no error";
     } catch (const std::exception& e) {
         EXPECT_EQ(std::string(e.what()).rfind("/nonexistent/shaders/render/ray_sphere.glsl: ", 0), 0u) << e.what();
@@ -85,11 +86,11 @@ TEST(FragmentShader, GloryOnlyWhereListed)
     EXPECT_LT(code.find("boundByGround("), code.find("boundByCloudDeck("));
     EXPECT_LT(code.find("shadeAurora("), code.find("shadeGlory("));
     EXPECT_LT(code.find("shadeGlory("), code.find("shadeGround("));
-    EXPECT_TRUE(contains(render::fragmentModuleNames(lunar), "components/glory/glory.glsl"));
+    EXPECT_TRUE(contains(render::marchModuleNames(lunar), "components/glory/glory.glsl"));
 
     for (const char* file : {"quiet-arc.toml", "substorm.toml", "airglow-limb.toml"}) {
         const scene::Scene s = components::loadScene(dir + file);
-        const gl::ShaderSource source = render::fragmentShaderSource(s, kShaders);
+        const gl::ShaderSource source = render::marchShaderSource(s, kShaders);
         EXPECT_FALSE(contains(source.defines, "HAS_GLORY")) << file;
         for (const gl::ShaderModule& m : source.modules) {
             EXPECT_EQ(m.file.find("glory"), std::string::npos) << file << ": " << m.file;
@@ -105,12 +106,12 @@ TEST(FragmentShader, PlasmaOnlyWhereListed)
 {
     const std::string dir = std::string(AURORAWALL_SOURCE_DIR) + "/config/scenes/";
     const gl::ShaderSource curls =
-        render::fragmentShaderSource(components::loadScene(dir + "plasma-curls.toml"), kShaders);
+        render::marchShaderSource(components::loadScene(dir + "plasma-curls.toml"), kShaders);
     EXPECT_TRUE(contains(curls.defines, "HAS_PLASMA"));
     EXPECT_FALSE(contains(curls.defines, "HAS_FLUID_DETAIL"));
     for (const char* file : {"quiet-arc.toml", "substorm.toml", "airglow-limb.toml", "lunar-glory.toml"}) {
         const scene::Scene s = components::loadScene(dir + file);
-        const gl::ShaderSource source = render::fragmentShaderSource(s, kShaders);
+        const gl::ShaderSource source = render::marchShaderSource(s, kShaders);
         EXPECT_FALSE(contains(source.defines, "HAS_PLASMA")) << file;
         for (const gl::ShaderModule& m : source.modules)
             EXPECT_EQ(m.file.find("components/plasma"), std::string::npos) << file << ": " << m.file;
