@@ -7,6 +7,9 @@ layout(local_size_x = 8, local_size_y = 4) in;
 layout(rgba32f, binding = 0) writeonly uniform image2D uRadianceImage;
 layout(r32f, binding = 1) writeonly uniform image2D uWorkImage;
 uniform ivec2 uTileSize; // pixels
+#ifdef AURORAWALL_WORK_STATS
+layout(rgba32f, binding = 2) writeonly uniform image2D uWorkCountsImage; // work_counts.glsl's counts
+#endif
 
 void main()
 {
@@ -19,4 +22,7 @@ void main()
     shadePixel(radiance, work);
     imageStore(uRadianceImage, pixel, radiance);
     imageStore(uWorkImage, pixel, vec4(work));
+#ifdef AURORAWALL_WORK_STATS
+    imageStore(uWorkCountsImage, pixel, vec4(gWork));
+#endif
 }

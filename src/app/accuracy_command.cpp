@@ -19,13 +19,15 @@ namespace po = boost::program_options;
 // The options of each kind of run; giving one to the other kind is a usage error.
 const std::vector<std::string> kShaderOptions = {"repeat", "copies", "view-steps", "light-steps"};
 const std::vector<std::string> kSceneOptions = {"wall", "size", "pixels", "frame", "runs",
-                                                "threads", "reference-step-km", "feature-costs"};
+                                                "threads", "reference-step-km", "feature-costs", "work-stats"};
 // The --scene options that --glory does not take (it compares every pixel with a GPU render).
-const std::vector<std::string> kAuroraOnlyOptions = {"pixels", "threads", "reference-step-km", "feature-costs"};
+const std::vector<std::string> kAuroraOnlyOptions = {"pixels", "threads", "reference-step-km", "feature-costs",
+                                                     "work-stats"};
 
 const char* kUsage =
     "Usage: aurorawall accuracy --airmass | --sky [options]\n"
     "       aurorawall accuracy --scene FILE [--wall FILE] [--size WxH] [--pixels N] [--frame K] [--feature-costs]\n"
+    "       aurorawall accuracy --scene FILE --work-stats [--wall FILE] [--size WxH] [--frame K]\n"
     "       aurorawall accuracy --glory FILE [--wall FILE] [--size WxH] [--runs N]\n"
     "Error against cost of the approximations (docs/ACCURACY.md), on one headless EGL context in one\n"
     "process (no mpirun).\n"
@@ -40,7 +42,10 @@ const char* kUsage =
     "finest settings (every pixel) and the double-precision CPU reference (N sampled pixels). Stars,\n"
     "planet_texture and sky are removed (the CPU reference does not model them). --feature-costs: instead,\n"
     "the frame time of each\n"
-    "feature toggled alone, the full scene (the paper's table 2).\n"
+    "feature toggled alone, the full scene (the paper's table 2). --work-stats: instead, the work of the\n"
+    "march per pixel, counted on the GPU: march steps, curtains evaluated, sub-steps and texture fetches, as\n"
+    "the mean per pixel and the mean over 8x4-pixel blocks of each block's largest (what a 32-lane warp\n"
+    "waits for), for the full scene with its defaults (CSV).\n"
     "--glory: error against cost of the glory's knobs on a scene that lists it: the table's resolution (glory\n"
     "angles, wavelengths, size-parameter step) against the error of its colour per angle and the time to build\n"
     "it, compared with the finer table of the CPU reference; then the colour per pixel (the colour table, or 1\n"
@@ -95,7 +100,9 @@ int runAccuracyCommand(int argc, char** argv, std::ostream& out, std::ostream& e
             ("reference-step-km", po::value(&scene.referenceStepKm)->default_value(scene.referenceStepKm),
              "--scene: CPU reference step where a curtain is in reach")
             ("feature-costs", po::bool_switch(&scene.featureCosts),
-             "--scene: the paper's table 2 (frame time of each feature) instead of the knobs");
+             "--scene: the paper's table 2 (frame time of each feature) instead of the knobs")
+            ("work-stats", po::bool_switch(&scene.workStats),
+             "--scene: the march's work per pixel and per 8x4-pixel block instead of the knobs (CSV)");
         if (!cli.parse(argc, argv)) {
             out << cli.help();
             return;

@@ -388,6 +388,28 @@ void printFeatureCosts(const scene::Scene& base, const SceneView& view, const st
 
 } // namespace
 
+namespace {
+
+// The work counts of one frame of the view (render/work_counts.h, the compute march counting): per
+// quantity the mean per pixel and the mean over 8x4-pixel blocks of the block's largest count.
+void printWorkStats(const scene::Scene& scene, const SceneView& view, const std::string& shaderDir, std::ostream& out)
+{
+    render::TileRenderer renderer(scene, shaderDir, render::MarchStage::Compute, render::CountWork::Yes);
+    const glm::ivec2 size(view.wall.screens.front().widthPx, view.wall.screens.front().heightPx);
+    gl::FloatTarget target(size.x, size.y);
+    gl::FullScreenTriangle triangle;
+    renderer.setFrame(view.frame);
+    renderer.renderTile(view.rays, target, triangle);
+    const render::WorkSummary work = render::summarizeWork(renderer.workCounts(size), size);
+    out << "work of the march per pixel (mean over the " << size.x * size.y
+        << " pixels) and per 8x4-pixel block (mean over the blocks of each block's largest)\n"
+        << "quantity,mean_per_pixel,mean_block_max\n";
+    for (int q = 0; q < render::kWorkQuantities; ++q)
+        out << render::kWorkQuantityNames[q] << "," << work.meanPerPixel[q] << "," << work.meanBlockMax[q] << "\n";
+}
+
+} // namespace
+
 std::unique_ptr<gl::Context> openAccuracyContext(std::ostream& out)
 {
     auto context = gl::createContext(gl::Backend::Egl);
@@ -403,7 +425,7 @@ void runSceneAccuracy(const SceneAccuracySettings& settings, std::ostream& out)
     const std::string dataDir = dataDirectory();
     const std::string wallFile = settings.wallFile.empty() ? dataDir + "/config/walls/single.toml" : settings.wallFile;
     scene::Scene scene = components::loadScene(settings.sceneFile);
-    if (!settings.featureCosts)
+    if (!settings.featureCosts && !settings.workStats)
         scene = withoutUnmodelled(scene);
     const SceneView view = sceneView(scene, wallFile, settings.sizePx, settings.frame);
     const auto context = openAccuracyContext(out);
@@ -415,6 +437,8 @@ void runSceneAccuracy(const SceneAccuracySettings& settings, std::ostream& out)
         << " frames (setFrame + renderTile + glFinish, CPU clock) after one warm-up\n";
     if (settings.featureCosts)
         printFeatureCosts(scene, view, dataDir + "/shaders", settings, out);
+    else if (settings.workStats)
+        printWorkStats(scene, view, dataDir + "/shaders", out);
     else
         printKnobTable(scene, view, dataDir + "/shaders", settings, out);
 }

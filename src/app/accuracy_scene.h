@@ -86,9 +86,10 @@ struct SceneAccuracySettings {
     int threads = 2;              // CPU reference threads
     double referenceStepKm = 0.05; // CPU reference step where a curtain is in reach
     bool featureCosts = false;    // the frame time of each feature toggled alone instead of the knobs
+    bool workStats = false;       // the march's work per pixel and per 8x4 block instead of the knobs
 };
 
-// The knob table (or, with featureCosts, the feature costs) on `out`. Throws when a file cannot be
+// The knob table (or, with featureCosts, the feature costs; with workStats, the work counts) on `out`. Throws when a file cannot be
 // read or is malformed, and when no GL context or shader can be made.
 void runSceneAccuracy(const SceneAccuracySettings& settings, std::ostream& out);
 

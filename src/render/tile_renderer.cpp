@@ -5,6 +5,7 @@
 #include "render/march_shader.h"
 
 #include <chrono>
+#include <stdexcept>
 
 namespace aurorawall::render {
 
@@ -12,8 +13,16 @@ namespace {
 
 constexpr int kGroupWidth = 8, kGroupHeight = 4; // main.comp's local size: 32 neighbouring pixels
 
-gl::Program marchProgram(const scene::Scene& scene, const std::string& shaderDir, MarchStage stage)
+gl::Program marchProgram(const scene::Scene& scene, const std::string& shaderDir, MarchStage stage,
+                         CountWork countWork)
 {
+    if (countWork == CountWork::Yes) {
+        if (stage != MarchStage::Compute)
+            throw std::invalid_argument("TileRenderer: work is counted by the compute march only");
+        gl::ShaderSource source = marchShaderSource(scene, shaderDir, stage);
+        source.defines.push_back("AURORAWALL_WORK_STATS");
+        return gl::Program::compute(source);
+    }
     if (stage == MarchStage::Compute)
         return gl::Program::compute(marchShaderSource(scene, shaderDir, stage));
     return gl::Program::graphics(gl::fullScreenTriangleVertexShader(), marchShaderSource(scene, shaderDir, stage));
@@ -26,8 +35,9 @@ TileRenderer::TileRenderer(const scene::Scene& scene, const std::string& shaderD
 {
 }
 
-TileRenderer::TileRenderer(const scene::Scene& scene, const std::string& shaderDir, MarchStage stage)
-    : scene_(scene), stage_(stage), program_(marchProgram(scene, shaderDir, stage))
+TileRenderer::TileRenderer(const scene::Scene& scene, const std::string& shaderDir, MarchStage stage,
+                           CountWork countWork)
+    : scene_(scene), stage_(stage), countWork_(countWork), program_(marchProgram(scene, shaderDir, stage, countWork))
 {
     // A component finds the GPU parts of those made before it (registry order).
     const scene::FindRenderer find = [&](const std::string& name) -> scene::ComponentRenderer* {
@@ -106,12 +116,27 @@ void TileRenderer::renderTile(const wall::TileRays& rays, gl::FloatTarget& targe
     program_.set("uTileSize", glm::ivec2(target.width(), target.height()));
     gl::glBindImageTexture(0, target.texture().id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
     gl::glBindImageTexture(1, target.work().id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
+    if (countWork_ == CountWork::Yes) {
+        if (!workCounts_ || workCounts_->width() != target.width() || workCounts_->height() != target.height())
+            workCounts_ = std::make_unique<gl::Texture>(gl::Texture::create2D(
+                target.width(), target.height(), gl::TexelFormat::RGBA32F, gl::Filter::Nearest, gl::Wrap::Clamp));
+        gl::glBindImageTexture(2, workCounts_->id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    }
     gl::glDispatchCompute(GLuint((target.width() + kGroupWidth - 1) / kGroupWidth),
                       GLuint((target.height() + kGroupHeight - 1) / kGroupHeight), 1);
     // The image stores before whatever reads the target next: read-backs, blits, texture fetches and
     // uploads of exchanged bands.
     gl::glMemoryBarrier(GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT |
                     GL_PIXEL_BUFFER_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+}
+
+std::vector<float> TileRenderer::workCounts(glm::ivec2 size) const
+{
+    if (!workCounts_ || workCounts_->width() != size.x || workCounts_->height() != size.y)
+        throw std::logic_error("TileRenderer::workCounts: no counts of a tile of that size");
+    std::vector<float> counts(std::size_t(size.x) * std::size_t(size.y) * kWorkQuantities);
+    gl::glGetTextureImage(workCounts_->id(), 0, GL_RGBA, GL_FLOAT, GLsizei(counts.size() * sizeof(float)), counts.data());
+    return counts;
 }
 
 } // namespace aurorawall::render

@@ -8,6 +8,7 @@
 #include "gl/full_screen_triangle.h"
 #include "gl/shader_program.h"
 #include "render/march_shader.h"
+#include "render/work_counts.h"
 #include "scene/scene.h"
 #include "wall/tile_rays.h"
 
@@ -22,7 +23,10 @@ public:
     // Compiles the raymarcher and precomputes the tables of the scene's components (needs a
     // current context). Throws InputError for unreadable shader files and gl::ShaderError for
     // compile errors.
-    TileRenderer(const scene::Scene& scene, const std::string& shaderDir, MarchStage stage);
+    // With CountWork::Yes (compute stage only, else std::invalid_argument) every tile also counts
+    // its work per pixel (work_counts.h), read with workCounts.
+    TileRenderer(const scene::Scene& scene, const std::string& shaderDir, MarchStage stage,
+                 CountWork countWork = CountWork::No);
     // The same in the stage preferred for the current context's renderer (preferredMarchStage).
     TileRenderer(const scene::Scene& scene, const std::string& shaderDir);
 
@@ -38,6 +42,10 @@ public:
 
     MarchStage stage() const { return stage_; }
 
+    // The last tile's work counts (CountWork::Yes): kWorkQuantities floats per pixel, rows bottom-up.
+    // Throws std::logic_error without counting or for another size than the last tile's.
+    std::vector<float> workCounts(glm::ivec2 size) const;
+
     // One line per table precomputed at start-up for the scene's components; empty when none is needed.
     const std::vector<std::string>& precomputationLog() const { return precomputationLog_; }
     // The components' GPU parts, in registry order.
@@ -50,7 +58,9 @@ public:
 private:
     const scene::Scene& scene_;
     MarchStage stage_;
+    CountWork countWork_;
     gl::Program program_;
+    std::unique_ptr<gl::Texture> workCounts_; // RGBA32F, the last tile's size
     glm::dmat3 wallToPlanet_{1.0}; // with the frame's zoom (cluster::wallToPlanet)
     glm::dmat3 domeToPlanet_{1.0}; // the camera's axes alone
     double zoom_ = 1.0;

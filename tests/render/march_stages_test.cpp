@@ -3,6 +3,10 @@
 #include "app/accuracy_scene.h"
 #include "components/registry.h"
 #include "gl/context.h"
+#include "gl/float_target.h"
+#include "gl/full_screen_triangle.h"
+#include "render/tile_renderer.h"
+#include "render/work_counts.h"
 #include "scene/scene.h"
 
 #include <gtest/gtest.h>
@@ -12,6 +16,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <stdexcept>
 
 using namespace aurorawall;
 
@@ -76,3 +81,50 @@ INSTANTIATE_TEST_SUITE_P(Config, MarchStages, ::testing::ValuesIn(shippedScenes(
                              std::replace(name.begin(), name.end(), '-', '_');
                              return name;
                          });
+
+namespace {
+
+struct CountedFrame {
+    std::vector<float> counts, work;
+    glm::ivec2 size;
+};
+
+CountedFrame countedFrame(const std::string& sceneName)
+{
+    const scene::Scene s = components::loadScene(kSource + "/config/scenes/" + sceneName + ".toml");
+    const app::SceneView view = app::sceneView(s, kSource + "/config/walls/single.toml", {48, 27});
+    render::TileRenderer renderer(s, kSource + "/shaders", render::MarchStage::Compute, render::CountWork::Yes);
+    const glm::ivec2 size(48, 27);
+    gl::FloatTarget target(size.x, size.y);
+    gl::FullScreenTriangle triangle;
+    renderer.setFrame(view.frame);
+    renderer.renderTile(view.rays, target, triangle);
+    return {renderer.workCounts(size), target.readbackWork(0, size.y), size};
+}
+
+} // namespace
+
+// The counted march steps are the work the load balancer reads (1 + the aurora's steps), pixel by
+// pixel; at most two curtains are evaluated a step; a scene without the aurora counts nothing; and
+// a block's largest count is at least its mean.
+TEST(WorkCounts, AgreeWithTheWorkTheBalancerReads)
+{
+    const auto context = gl::createContext(gl::Backend::Egl);
+    const CountedFrame f = countedFrame("benchmark-view");
+    double steps = 0.0;
+    for (int i = 0; i < f.size.x * f.size.y; ++i) {
+        EXPECT_EQ(f.counts[4 * i], f.work[i] - 1.0f) << i;
+        EXPECT_LE(f.counts[4 * i + 1], 2.0f * f.counts[4 * i]) << i; // at most two candidates a step
+        steps += f.counts[4 * i];
+    }
+    EXPECT_GT(steps, 0.0);
+    const render::WorkSummary summary = render::summarizeWork(f.counts, f.size);
+    for (int q = 0; q < render::kWorkQuantities; ++q)
+        EXPECT_GE(summary.meanBlockMax[q], summary.meanPerPixel[q]) << render::kWorkQuantityNames[q];
+    const CountedFrame none = countedFrame("airglow-limb");
+    for (float c : none.counts)
+        EXPECT_EQ(c, 0.0f);
+    EXPECT_THROW(render::TileRenderer(components::loadScene(kSource + "/config/scenes/twilight.toml"),
+                                      kSource + "/shaders", render::MarchStage::Fragment, render::CountWork::Yes),
+                 std::invalid_argument);
+}

@@ -30,6 +30,7 @@ int gAuroraSamples = 0; // steps this pixel's ray has taken in auroraSegment: it
 // Point j of curtain c's polyline: unit vector, arclength km.
 vec4 polylinePoint(int c, int j)
 {
+    COUNT_WORK(w, 1);
     return texelFetch(uCurtainPolylines, ivec2(j, c), 0);
 }
 
@@ -47,6 +48,7 @@ struct CurtainCoordinates {
 
 CurtainCoordinates curtainCoordinates(int c, int i, vec3 n)
 {
+    COUNT_WORK(y, 1);
     int last = int(uCurtainState[c].z) - 2; // index of the last segment
     int j = clamp(i, 0, last);
     vec4 a = polylinePoint(c, j);
@@ -95,6 +97,7 @@ CurtainCoordinates curtainCoordinates(int c, int i, vec3 n)
 // Linear sRGB emitted per km of path per unit of curtain c's flux profile at the point o + t d.
 vec3 curtainEmissionAt(vec3 o, vec3 d, float t, int c)
 {
+    COUNT_WORK(w, 1);
     return curtainEmissionRgbPerKm(length(o + t * d) - uPlanetRadiusKm, c);
 }
 
@@ -139,6 +142,7 @@ StepCandidates stepCandidates(vec3 o, vec3 d, float t0, float t1)
     vec2 texel = footprintMapTexel(footprintMapCoord(n, uFootprintCentre, uFootprintEast, uFootprintAngularRadius),
                                    uFootprintSize);
     vec4 nearest = texelFetch(uFootprintMap, ivec2(texel), 0);
+    COUNT_WORK(w, 1);
     float lowerKm = footprintConservativeKm(nearest.z, uFootprintMarginKm);
     // A step whose midpoint lies farther than the largest reach + step/2 from every curtain emits nothing.
     step.skipKm = lowerKm - uCurtainReachKm - 0.5 * uAuroraStepKm;
@@ -193,6 +197,7 @@ vec3 integrateCurtains(vec3 o, vec3 d, float t0, float t1, vec4 candidates)
         if (cc.distance - 0.5 * len > reach)
             continue;
         float lengthKm = texelFetch(uCurtainPolylines, ivec2(int(uCurtainState[c].z) - 1, c), 0).w;
+        COUNT_WORK(w, 1);
         // u = R asin(n·normal), so du/dt = R (normal·dn/dt) / √(1 − (n·normal)²); s runs along
         // cross(normal, n), the direction from the segment's start to its end.
         float across = dot(n, cc.normal);
@@ -220,6 +225,7 @@ vec3 integrateCurtains(vec3 o, vec3 d, float t0, float t1, vec4 candidates)
         float resolveParts = alongMode ? acrossParts : alongParts;
         int parts = int(clamp(ceil(max(abs(hRate) / uAuroraResolveKm, resolveParts) * span), 1.0, 64.0));
         float part = span / float(parts);
+        COUNT_WORK(z, parts);
         // Runs of sub-steps over which the altitude changes by at most uAuroraResolveKm share one emission,
         // at their flux-weighted mean position (where it changes less than that over the whole step, all
         // the step's sub-steps do).
@@ -290,6 +296,7 @@ vec3 auroraSegment(vec3 o, vec3 d, vec2 seg)
             t1 = min(t0 + uAuroraStepKm, seg.y);
             step = stepCandidates(o, d, t0, t1);
             ++gAuroraSamples;
+            COUNT_WORK(x, 1);
             if (step.candidates.x >= 0.0 || step.candidates.z >= 0.0)
                 break;
         }

@@ -54,6 +54,7 @@ vec3 fluxTableAt(FluxTable t, float p, float frameY, float q)
     float x = (entry - tile * t.tiles) * (t.cells + 2.0) + p + 1.5; // the ghost texel, then cell p
     float width = max(uFluxLayout.x, uFluxLayout.y) + 2.0;
     vec4 texel = textureLod(uFluxTables, vec3(x / width, frameY, t.firstLayer + tile), 0.0);
+    COUNT_WORK(w, 1);
     float centre = t.originKm + (below + 0.5) * t.cellKm;
     return vec3(fluxColumnValue(texel, centre, q - centre, t.cellKm), texel.z + texel.w * (q - centre) / t.cellKm);
 }

@@ -1,0 +1,11 @@
+// The march's work per pixel, counted only when the program is built with AURORAWALL_WORK_STATS
+// (accuracy --work-stats; src/render/work_counts.h), so that counting costs the march nothing
+// otherwise: x the march's steps (footprint map reads), y the curtains evaluated near a step,
+// z the sub-steps integrated, w the texture fetches of the aurora's march (footprint map, polylines,
+// flux tables, emission table).
+#ifdef AURORAWALL_WORK_STATS
+ivec4 gWork = ivec4(0);
+#define COUNT_WORK(field, n) (gWork.field += (n))
+#else
+#define COUNT_WORK(field, n)
+#endif
