@@ -746,3 +746,13 @@ TEST(PlasmaLive, RenderAgreesWithTheReference)
     EXPECT_GT(wrong.rms, 0.1);
 }
 
+
+// A live simulation solves with the multigrid on a GPU where the cell counts are even, with the FFT
+// on the CPU otherwise and on Mesa's CPU renderers (where the multigrid's small dispatches cost more).
+TEST(PlasmaOnTheGpu, LiveSolverIsChosenForTheGridAndDevice)
+{
+    const PeriodicGrid even(2, {128, 32, 1}, {1.0, 1.0, 1.0}), odd(2, {128, 33, 1}, {1.0, 1.0, 1.0});
+    EXPECT_EQ(preferredGpuPicSolver(even, "NVIDIA H200/PCIe/SSE2"), GpuPicSolver::Multigrid);
+    EXPECT_EQ(preferredGpuPicSolver(odd, "NVIDIA H200/PCIe/SSE2"), GpuPicSolver::FftCpu);
+    EXPECT_EQ(preferredGpuPicSolver(even, "llvmpipe (LLVM 15.0.6, 256 bits)"), GpuPicSolver::FftCpu);
+}

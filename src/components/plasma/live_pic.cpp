@@ -1,5 +1,6 @@
 #include "components/plasma/live_pic.h"
 
+#include "gl/context.h"
 #include "gl/functions.h"
 
 #include <stdexcept>
@@ -13,7 +14,8 @@ LivePic::LivePic(const pic::PeriodicGrid& grid, pic::Particles electrons, glm::d
                  FrameDensity frameDensity, std::string shaderDir)
     : grid_(grid), start_(std::move(electrons)), magneticField_(magneticField), dt_(dt),
       frameDensity_(std::move(frameDensity)), shaderDir_(std::move(shaderDir)),
-      gpu_(std::make_unique<pic::GpuPic>(grid_, start_, magneticField_, dt_, shaderDir_))
+      gpu_(std::make_unique<pic::GpuPic>(grid_, start_, magneticField_, dt_, shaderDir_, glm::dvec3(0.0),
+                                         pic::preferredGpuPicSolver(grid_, gl::currentRendererName())))
 {
 }
 
@@ -25,7 +27,8 @@ bool LivePic::advanceTo(long n)
         return false;
     if (!gpu_ || n < gpu_->stepCount()) { // behind, or a restart that failed before
         gpu_.reset(); // its buffers freed before the new one's are made
-        gpu_ = std::make_unique<pic::GpuPic>(grid_, start_, magneticField_, dt_, shaderDir_);
+        gpu_ = std::make_unique<pic::GpuPic>(grid_, start_, magneticField_, dt_, shaderDir_, glm::dvec3(0.0),
+                                             pic::preferredGpuPicSolver(grid_, gl::currentRendererName()));
     }
     while (gpu_->stepCount() < n)
         gpu_->step();

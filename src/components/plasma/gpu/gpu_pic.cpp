@@ -67,6 +67,16 @@ int depositQuantumBits(std::size_t particleCount, int dimension)
                                 std::to_string(dimension) + "D (32-bit node sums at 2^-8 of a particle)");
 }
 
+GpuPicSolver preferredGpuPicSolver(const PeriodicGrid& grid, const std::string& rendererName)
+{
+    if (rendererName.rfind("llvmpipe", 0) == 0 || rendererName.rfind("softpipe", 0) == 0)
+        return GpuPicSolver::FftCpu;
+    for (int d = 0; d < grid.dimension; ++d)
+        if (grid.cells[d] % 2 != 0)
+            return GpuPicSolver::FftCpu;
+    return GpuPicSolver::Multigrid;
+}
+
 int picSorSweeps(const PeriodicGrid& grid)
 {
     return int(std::ceil(std::log(1e-6) / std::log(sorOverRelaxation(grid) - 1.0)));

@@ -44,6 +44,13 @@ inline constexpr int kPicMultigridCycles = 6;
 // The red-black SOR sweeps that shrink the slowest error by 10^-6 at the rate ω − 1 per sweep.
 int picSorSweeps(const PeriodicGrid& grid);
 
+// The solver of a live simulation on this grid and renderer (GL_RENDERER): on a GPU, Multigrid,
+// exact to float (its error after kPicMultigridCycles from the previous step's φ is float rounding,
+// docs/PLASMA.md) with nothing read back, where every axis of the dimension has an even cell count;
+// FftCpu otherwise, and on Mesa's CPU renderers, where the multigrid's many small dispatches cost
+// more than the FFT in double (the live strip of tests/components/plasma_gpu_test.cpp: 5-20 times).
+GpuPicSolver preferredGpuPicSolver(const PeriodicGrid& grid, const std::string& rendererName);
+
 // The wall-clock time (ms) of each phase of one step, each waited for with glFinish.
 struct StepTimes {
     double pushMs = 0.0;    // gather and Boris push, all particles
