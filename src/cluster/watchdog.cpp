@@ -14,6 +14,7 @@ namespace {
 
 constexpr int kHeartbeatTag = 1;
 constexpr int kHeartbeatValues = 4;
+constexpr int kMasterBeatTag = 2; // the master's heartbeat to each worker: one int64, 1 while it runs, 0 when done
 
 double secondsNow()
 {
@@ -104,6 +105,13 @@ void Watchdog::sendHeartbeats()
     const auto period = std::chrono::duration<double>(std::clamp(timeoutS_ / 5.0, 0.05, 1.0));
     const auto tick = std::chrono::milliseconds(10); // how soon the thread notices it should stop
     auto next = std::chrono::steady_clock::now();
+    // The master's heartbeats: a master silent for longer than the timeout (stopped, frozen, cut off)
+    // ends the job, as the master does for a silent worker; its last beat says it has finished.
+    std::int64_t masterBeat = 1;
+    MPI_Request fromMaster;
+    MPI_Irecv(&masterBeat, 1, MPI_INT64_T, 0, kMasterBeatTag, comm_, &fromMaster);
+    double masterHeardS = secondsNow();
+    bool masterFinished = false;
     while (true) {
         const bool last = stop_;
         if (last || std::chrono::steady_clock::now() >= next) {
@@ -117,9 +125,33 @@ void Watchdog::sendHeartbeats()
             next = std::chrono::steady_clock::now() +
                    std::chrono::duration_cast<std::chrono::steady_clock::duration>(period);
         }
+        int arrived = 1;
+        while (!masterFinished && arrived) {
+            MPI_Test(&fromMaster, &arrived, MPI_STATUS_IGNORE);
+            if (arrived) {
+                masterHeardS = secondsNow();
+                masterFinished = masterBeat == 0;
+                if (!masterFinished)
+                    MPI_Irecv(&masterBeat, 1, MPI_INT64_T, 0, kMasterBeatTag, comm_, &fromMaster);
+            }
+        }
         if (last)
-            return;
+            break;
+        if (!masterFinished && secondsNow() - masterHeardS > timeoutS_) {
+            const MainThreadProgress::Snapshot p = progress();
+            std::fprintf(stderr,
+                         "aurorawall render: rank %d: no heartbeat for more than --rank-timeout %g s from the master "
+                         "(rank 0: stopped, frozen or unreachable); this rank was in %s; ending the job (exit "
+                         "status %d)\n",
+                         rank_, timeoutS_, describePhase(p.phase, p.frame).c_str(), kRankSilentExitStatus);
+            std::fflush(stderr);
+            MPI_Abort(MPI_COMM_WORLD, kRankSilentExitStatus);
+        }
         std::this_thread::sleep_for(tick);
+    }
+    if (!masterFinished) {
+        MPI_Cancel(&fromMaster);
+        MPI_Wait(&fromMaster, MPI_STATUS_IGNORE);
     }
 }
 
@@ -129,7 +161,18 @@ void Watchdog::watchRanks()
     std::int64_t beat[kHeartbeatValues] = {};
     MPI_Request request;
     MPI_Irecv(beat, kHeartbeatValues, MPI_INT64_T, MPI_ANY_SOURCE, kHeartbeatTag, comm_, &request);
+    // The master's own heartbeat to every worker, at the workers' period (eager: MPI_Send returns).
+    const double beatPeriodS = std::clamp(timeoutS_ / 5.0, 0.05, 1.0);
+    double nextBeatS = 0.0;
+    const auto beatWorkers = [this](std::int64_t running) {
+        for (int r = 1; r < size_; ++r)
+            MPI_Send(&running, 1, MPI_INT64_T, r, kMasterBeatTag, comm_);
+    };
     while (!stop_) {
+        if (secondsNow() >= nextBeatS) {
+            beatWorkers(1);
+            nextBeatS = secondsNow() + beatPeriodS;
+        }
         int arrived = 0;
         MPI_Status status;
         MPI_Test(&request, &arrived, &status);
@@ -166,6 +209,7 @@ void Watchdog::watchRanks()
         }
         std::this_thread::sleep_for(std::chrono::milliseconds(20));
     }
+    beatWorkers(0); // finished: the workers stop watching
     MPI_Cancel(&request);
     MPI_Wait(&request, MPI_STATUS_IGNORE);
 }

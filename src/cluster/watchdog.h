@@ -12,7 +12,10 @@
 // A thread of its own measures the silence of the process, not the frame time: a rank busy in a
 // long draw, or starved of CPU on an oversubscribed machine, still sends its heartbeats, and the
 // hung-rank rule allows for frames that all slow down. A rank that dies ends the job through Open MPI
-// itself. The master is not watched (the other ranks wait for it in the frame's broadcast).
+// itself. The master is watched too: its thread sends every worker a heartbeat at the same period
+// (and a last one when it finishes), and a worker that hears none for longer than the timeout (the
+// master stopped, frozen or cut off, while the workers wait for it in the frame's broadcast) prints
+// one line naming the master and itself and ends the job with MPI_Abort(kRankSilentExitStatus).
 //
 // Test hook: the environment variable AURORAWALL_TEST_HANG_MAIN_THREAD=RANK:FRAME makes rank RANK's
 // main thread sleep for ever when it starts drawing frame FRAME, as a driver call that never returns

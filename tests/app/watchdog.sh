@@ -1,6 +1,6 @@
 #!/bin/bash
 # Never hang: a rank stopped with SIGSTOP is named by the master within --rank-timeout (+ 5 s) and the
-# job exits 3; a rank whose main thread hangs while its heartbeat thread runs (the test hook
+# job exits 3; a stopped master is named by the workers likewise; a rank whose main thread hangs while its heartbeat thread runs (the test hook
 # AURORAWALL_TEST_HANG_MAIN_THREAD) likewise; a rank killed with SIGKILL ends the job (through Open
 # MPI) within a few seconds; a 4-rank wall on 2 cores at --rank-timeout 2 raises no false alarm.
 # Movies: 3 frames give 3 PNGs, 3 EXRs and frames.csv with each frame's exact time, and the last
@@ -63,6 +63,18 @@ grep -q "no heartbeat for more than --rank-timeout $timeout_s s from rank 2 (las
 grep -q "rank 1 (" "$WORK/stop.err" && fail "stop: rank 1 was named too"
 for _ in $(seq 50); do kill -0 "$victim" 2>/dev/null || break; sleep 0.1; done
 kill -0 "$victim" 2>/dev/null && { kill -KILL "$victim"; fail "stop: the stopped rank's process is left behind"; }
+
+note "SIGSTOP the master (rank 0) at --rank-timeout $timeout_s"
+start_long_run stopmaster
+victim=$(rank_pid stopmaster 0)
+kill -STOP "$victim"
+wait_end stopmaster $(( timeout_s + 5 ))
+cat "$WORK/stopmaster.err" >&2
+[ "$status" -eq 3 ] || fail "stopped master: exit status $status, expected 3"
+grep -q "no heartbeat for more than --rank-timeout $timeout_s s from the master (rank 0" "$WORK/stopmaster.err" ||
+    fail "stopped master: stderr does not name the master"
+for _ in $(seq 50); do kill -0 "$victim" 2>/dev/null || break; sleep 0.1; done
+kill -0 "$victim" 2>/dev/null && { kill -KILL "$victim"; fail "stopped master: its process is left behind"; }
 
 note "rank 2's main thread hangs drawing frame 3, --rank-timeout $timeout_s"
 AURORAWALL_TEST_HANG_MAIN_THREAD=2:3 start_long_run hang
