@@ -51,30 +51,27 @@ wait_frame() {
     fail "$1: no frame $2"
 }
 
+# stop_case NAME RANK EXPECTED: SIGSTOP rank RANK of a long run; the job must end with status 3 within
+# --rank-timeout + 5 s, its stderr must say EXPECTED, and the stopped process must be gone.
+stop_case() {
+    start_long_run "$1"
+    victim=$(rank_pid "$1" "$2")
+    kill -STOP "$victim"
+    wait_end "$1" $(( timeout_s + 5 ))
+    cat "$WORK/$1.err" >&2
+    [ "$status" -eq 3 ] || fail "$1: exit status $status, expected 3"
+    grep -q "$3" "$WORK/$1.err" || fail "$1: stderr does not say '$3'"
+    for _ in $(seq 50); do kill -0 "$victim" 2>/dev/null || break; sleep 0.1; done
+    kill -0 "$victim" 2>/dev/null && { kill -KILL "$victim"; fail "$1: the stopped process is left behind"; }
+    return 0
+}
+
 note "SIGSTOP rank 2 at --rank-timeout $timeout_s"
-start_long_run stop
-victim=$(rank_pid stop 2)
-kill -STOP "$victim"
-wait_end stop $(( timeout_s + 5 ))
-cat "$WORK/stop.err" >&2
-[ "$status" -eq 3 ] || fail "stop: exit status $status, expected 3"
-grep -q "no heartbeat for more than --rank-timeout $timeout_s s from rank 2 (last heard: " "$WORK/stop.err" ||
-    fail "stop: stderr does not name rank 2"
+stop_case stop 2 "no heartbeat for more than --rank-timeout $timeout_s s from rank 2 (last heard: "
 grep -q "rank 1 (" "$WORK/stop.err" && fail "stop: rank 1 was named too"
-for _ in $(seq 50); do kill -0 "$victim" 2>/dev/null || break; sleep 0.1; done
-kill -0 "$victim" 2>/dev/null && { kill -KILL "$victim"; fail "stop: the stopped rank's process is left behind"; }
 
 note "SIGSTOP the master (rank 0) at --rank-timeout $timeout_s"
-start_long_run stopmaster
-victim=$(rank_pid stopmaster 0)
-kill -STOP "$victim"
-wait_end stopmaster $(( timeout_s + 5 ))
-cat "$WORK/stopmaster.err" >&2
-[ "$status" -eq 3 ] || fail "stopped master: exit status $status, expected 3"
-grep -q "no heartbeat for more than --rank-timeout $timeout_s s from the master (rank 0" "$WORK/stopmaster.err" ||
-    fail "stopped master: stderr does not name the master"
-for _ in $(seq 50); do kill -0 "$victim" 2>/dev/null || break; sleep 0.1; done
-kill -0 "$victim" 2>/dev/null && { kill -KILL "$victim"; fail "stopped master: its process is left behind"; }
+stop_case stopmaster 0 "no heartbeat for more than --rank-timeout $timeout_s s from the master (rank 0"
 
 note "rank 2's main thread hangs drawing frame 3, --rank-timeout $timeout_s"
 AURORAWALL_TEST_HANG_MAIN_THREAD=2:3 start_long_run hang

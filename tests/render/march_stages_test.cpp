@@ -8,13 +8,13 @@
 #include "render/tile_renderer.h"
 #include "render/work_counts.h"
 #include "scene/scene.h"
+#include "scene_samples.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
 #include <memory>
 #include <stdexcept>
 
@@ -23,16 +23,6 @@ using namespace aurorawall;
 namespace {
 
 const std::string kSource = AURORAWALL_SOURCE_DIR;
-
-std::vector<std::string> shippedScenes()
-{
-    std::vector<std::string> names;
-    for (const auto& entry : std::filesystem::directory_iterator(kSource + "/config/scenes"))
-        if (entry.path().extension() == ".toml")
-            names.push_back(entry.path().stem().string());
-    std::sort(names.begin(), names.end());
-    return names;
-}
 
 class MarchStages : public ::testing::TestWithParam<std::string> {
 protected:
@@ -75,12 +65,8 @@ TEST_P(MarchStages, ComputeAndFragmentGiveTheSameImage)
     EXPECT_LE(e.max, 10.0 * bound);
 }
 
-INSTANTIATE_TEST_SUITE_P(Config, MarchStages, ::testing::ValuesIn(shippedScenes()),
-                         [](const ::testing::TestParamInfo<std::string>& info) {
-                             std::string name = info.param;
-                             std::replace(name.begin(), name.end(), '-', '_');
-                             return name;
-                         });
+INSTANTIATE_TEST_SUITE_P(Config, MarchStages, ::testing::ValuesIn(test::shippedScenes(kSource)),
+                         [](const ::testing::TestParamInfo<std::string>& info) { return test::testName(info.param); });
 
 namespace {
 

@@ -8,6 +8,7 @@
 #include "components/aurora/aurora.h"
 #include "components/registry.h"
 #include "render/reference_ray.h"
+#include "scene_samples.h"
 #include "scene/scene.h"
 
 #include <gtest/gtest.h>
@@ -18,6 +19,7 @@
 #include <fstream>
 
 using namespace aurorawall;
+using aurorawall::test::litPixels;
 
 namespace {
 
@@ -30,19 +32,6 @@ scene::Scene finestSubstorm()
     scene::Scene s = app::withoutUnmodelled(components::loadScene(kSource + "/config/scenes/substorm.toml"));
     app::applyFinestSettings(s);
     return s;
-}
-
-// `count` pixels evenly spaced in row-major order among those at or above `floor`.
-std::vector<glm::ivec2> litPixels(const io::Image& image, double floor, int count)
-{
-    std::vector<glm::ivec2> lit, chosen;
-    for (int y = 0; y < image.height; ++y)
-        for (int x = 0; x < image.width; ++x)
-            if (glm::length(app::pixelRadiance(image, x, y)) >= floor)
-                lit.emplace_back(x, y);
-    for (int i = 0; i < count; ++i)
-        chosen.push_back(lit[size_t(i) * lit.size() / size_t(count)]);
-    return chosen;
 }
 
 class ReferenceRay : public ::testing::Test {

@@ -7,13 +7,13 @@
 #include "gl/context.h"
 #include "render/reference_ray.h"
 #include "scene/scene.h"
+#include "scene_samples.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
 #include <memory>
 #include <string>
 #include <vector>
@@ -23,29 +23,6 @@ using namespace aurorawall;
 namespace {
 
 const std::string kSource = AURORAWALL_SOURCE_DIR;
-
-std::vector<std::string> shippedScenes()
-{
-    std::vector<std::string> names;
-    for (const auto& entry : std::filesystem::directory_iterator(kSource + "/config/scenes"))
-        if (entry.path().extension() == ".toml")
-            names.push_back(entry.path().stem().string());
-    std::sort(names.begin(), names.end());
-    return names;
-}
-
-// `count` pixels spread evenly over those at or above the floor.
-std::vector<glm::ivec2> litPixels(const io::Image& image, double floor, int count)
-{
-    std::vector<glm::ivec2> lit, chosen;
-    for (int y = 0; y < image.height; ++y)
-        for (int x = 0; x < image.width; ++x)
-            if (glm::length(app::pixelRadiance(image, x, y)) >= floor)
-                lit.emplace_back(x, y);
-    for (int i = 0; i < count && !lit.empty(); ++i)
-        chosen.push_back(lit[size_t(i) * lit.size() / size_t(count)]);
-    return chosen;
-}
 
 class ShippedScene : public ::testing::TestWithParam<std::string> {
 protected:
@@ -69,7 +46,7 @@ TEST_P(ShippedScene, DefaultsAgreeWithTheCpuReference)
     const app::SceneView view = app::sceneView(s, kSource + "/config/walls/single.toml", {64, 36});
     const io::Image gpu = app::renderView(s, view, kSource + "/shaders", 0).image;
     const double floor = 1.0 / (255.0 * s.exposure);
-    const std::vector<glm::ivec2> pixels = litPixels(gpu, floor, 12);
+    const std::vector<glm::ivec2> pixels = test::litPixels(gpu, floor, 12);
     if (pixels.empty())
         GTEST_SKIP() << GetParam() << ": no lit pixel once stars, sky and night lights are left out";
     std::shared_ptr<const fluid::FluxFrames> frames;
@@ -93,11 +70,5 @@ TEST_P(ShippedScene, DefaultsAgreeWithTheCpuReference)
     EXPECT_LT(e.max, 0.15);
 }
 
-INSTANTIATE_TEST_SUITE_P(Config, ShippedScene, ::testing::ValuesIn(shippedScenes()),
-                         [](const ::testing::TestParamInfo<std::string>& info) {
-                             std::string name = info.param;
-                             for (char& c : name)
-                                 if (c == '-')
-                                     c = '_';
-                             return name;
-                         });
+INSTANTIATE_TEST_SUITE_P(Config, ShippedScene, ::testing::ValuesIn(test::shippedScenes(kSource)),
+                         [](const ::testing::TestParamInfo<std::string>& info) { return test::testName(info.param); });

@@ -1,0 +1,44 @@
+#pragma once
+// What the render tests sample: the shipped scenes, and lit pixels of an image.
+#include "app/accuracy_scene.h"
+#include "io/image.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace aurorawall::test {
+
+// The names of config/scenes/*.toml under sourceDir, without the extension, sorted.
+inline std::vector<std::string> shippedScenes(const std::string& sourceDir)
+{
+    std::vector<std::string> names;
+    for (const auto& entry : std::filesystem::directory_iterator(sourceDir + "/config/scenes"))
+        if (entry.path().extension() == ".toml")
+            names.push_back(entry.path().stem().string());
+    std::sort(names.begin(), names.end());
+    return names;
+}
+
+// A scene's name as a test's name ('-' becomes '_').
+inline std::string testName(std::string scene)
+{
+    std::replace(scene.begin(), scene.end(), '-', '_');
+    return scene;
+}
+
+// `count` pixels evenly spaced in row-major order among those at or above `floor` (none if none is).
+inline std::vector<glm::ivec2> litPixels(const io::Image& image, double floor, int count)
+{
+    std::vector<glm::ivec2> lit, chosen;
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x)
+            if (glm::length(app::pixelRadiance(image, x, y)) >= floor)
+                lit.emplace_back(x, y);
+    for (int i = 0; i < count && !lit.empty(); ++i)
+        chosen.push_back(lit[std::size_t(i) * lit.size() / std::size_t(count)]);
+    return chosen;
+}
+
+} // namespace aurorawall::test
