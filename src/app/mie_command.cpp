@@ -18,6 +18,10 @@ namespace {
 
 namespace po = boost::program_options;
 
+// Below x = 1e-4 the exact series loses its small terms to cancellation, about 2^-53/x² of the
+// scattering efficiency (1e-4 off at x = 1e-6, the asymmetry's sign wrong at 1e-8, NaN below 1e-154;
+// tests/components/mie_test.cpp, against the Rayleigh limit): x is held to [1e-4, 1e5].
+constexpr double kMinSizeParameter = 1e-4;
 constexpr double kMaxSizeParameter = 1e5;
 constexpr double kMaxRealPart = 10.0;
 constexpr double kMaxAbsorption = 100.0;
@@ -78,14 +82,15 @@ int runMieCommand(int argc, char** argv, std::ostream& out, std::ostream& err)
         cli.add()("n", po::value<double>(&n)->required(), "real part of the refractive index, 1 to 10 (tested 1-3)")(
             "k", po::value<double>(&k)->required(),
             "absorption: minus the imaginary part of m = n - ik, 0 to 100 (tested 0-10)")(
-            "x", po::value<double>(&x)->required(), "size parameter 2 pi r / lambda, above 0 to 1e5 (tested 1e-3 to 2e4)")(
+            "x", po::value<double>(&x)->required(), "size parameter 2 pi r / lambda, 1e-4 to 1e5 (tested 1e-4 to 2e4; below 1e-4 the series "
+                                               "cancels: use the Rayleigh limit)")(
             "angles-deg", po::value<std::string>(&angleList),
             "scattering angles in degrees, comma-separated, each in [0, 180] (e.g. 0,1,2.5,180)");
         if (!cli.parse(argc, argv)) {
             out << cli.help();
             return;
         }
-        checkRange(cli, "x", x, 0.0, false, kMaxSizeParameter);
+        checkRange(cli, "x", x, kMinSizeParameter, true, kMaxSizeParameter);
         checkRange(cli, "n", n, 1.0, true, kMaxRealPart);
         checkRange(cli, "k", k, 0.0, true, kMaxAbsorption);
         const std::vector<double> angles = cli.given("angles-deg") ? parseAngles(angleList, cli) : std::vector<double>{};

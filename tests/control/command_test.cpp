@@ -22,6 +22,8 @@ TEST(Command, NumbersAreParsedExactly)
     EXPECT_EQ(speed.kind, CommandKind::Speed);
     EXPECT_EQ(speed.values[0], 2.5);
     EXPECT_EQ(parseCommand("time -1e3").values[0], -1000.0);
+    EXPECT_EQ(parseCommand("time +.5").values[0], 0.5);
+    EXPECT_EQ(parseCommand("time 7.").values[0], 7.0);
     EXPECT_EQ(parseCommand("time 0.1").values[0], 0.1); // strtod: the nearest double, as the C++ literal
     const Command go = parseCommand("goto 65.5 -25 200");
     EXPECT_EQ(go.kind, CommandKind::Goto);
@@ -79,6 +81,9 @@ TEST(Command, RefusedLinesSayWhy)
         {"speed 2x", "'2x' is not a finite number"},
         {"speed nan", "not a finite number"},
         {"speed inf", "not a finite number"},
+        {"time 0x10", "'0x10' is not a finite number"}, // decimals only, as documented
+        {"speed 1e", "not a finite number"},
+        {"speed .", "not a finite number"},
         {"speed 0.09", "[0.1, 1000]"},
         {"speed 1000.5", "[0.1, 1000]"},
         {"speed -1", "[0.1, 1000]"},

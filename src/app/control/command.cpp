@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <regex>
 #include <sstream>
 #include <vector>
 
@@ -40,11 +41,19 @@ std::string knownWords()
     return words;
 }
 
+// A decimal number as the protocol has it: an optional sign, digits with an optional point, an
+// optional exponent (strtod alone would also take hexadecimal, "inf" and "nan").
+bool isDecimal(const std::string& word)
+{
+    static const std::regex decimal(R"([+-]?([0-9]+\.?[0-9]*|\.[0-9]+)([eE][+-]?[0-9]+)?)");
+    return std::regex_match(word, decimal);
+}
+
 double number(const std::string& word, const Grammar& g)
 {
     char* end = nullptr;
     const double value = std::strtod(word.c_str(), &end);
-    if (word.empty() || *end != '\0' || !std::isfinite(value))
+    if (!isDecimal(word) || *end != '\0' || !std::isfinite(value))
         throw CommandError(std::string(g.word) + ": '" + word + "' is not a finite number (usage: " + g.usage + ")");
     return value;
 }
