@@ -101,7 +101,7 @@ grep -Eq "^ +mie " <<<"$top" || fail "aurorawall --help does not list the comman
 expect 0 "--angles-deg" mie --help
 expect 2 "^aurorawall mie: unrecognised option '--bogus'" mie --n 1.33 --k 0 --x 1 --bogus
 expect 2 "^aurorawall mie: --x must be in \[0.0001, " mie --n 1.33 --k 0 --x 0
-expect 2 "^aurorawall mie: --x must be in \[0.0001, 100000\] (got 1e-160)" mie --n 1.33 --k 0 --x 1e-160
+expect 2 "^aurorawall mie: --x must be in \[0.0001, 100000\] \(got 1e-160\)" mie --n 1.33 --k 0 --x 1e-160
 expect 2 "^aurorawall mie: --n must be in \[1, " mie --n 0.5 --k 0 --x 1
 expect 2 "^aurorawall mie: --k must be in \[0, " mie --n 1.33 --k -1 --x 1
 expect 2 "^aurorawall mie: --n must be in .*got nan" mie --n nan --k 0 --x 1
