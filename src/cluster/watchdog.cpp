@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <string>
+#include <vector>
 
 namespace aurorawall::cluster {
 
@@ -21,29 +22,30 @@ double secondsNow()
     return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
 
-// "rank 2 (last heard: drawing frame 12, 10.0 s ago)", joined by "; ".
-std::string describeSilent(const std::vector<SilenceWatch::Silent>& silent)
+// "rank 2 on node7 (last heard: drawing frame 12, 10.0 s ago)", joined by "; ".
+std::string describeSilent(const std::vector<SilenceWatch::Silent>& silent, const std::vector<std::string>& hosts)
 {
     std::string text;
     for (const SilenceWatch::Silent& s : silent) {
         char ago[32];
         std::snprintf(ago, sizeof ago, "%.1f", s.silentS);
-        text += (text.empty() ? "" : "; ") + std::string("rank ") + std::to_string(s.rank) +
-                " (last heard: " + describePhase(s.phase, s.frame) + ", " + ago + " s ago)";
+        text += (text.empty() ? "" : "; ") + std::string("rank ") + std::to_string(s.rank) + " on " +
+                hosts[std::size_t(s.rank)] + " (last heard: " + describePhase(s.phase, s.frame) + ", " + ago +
+                " s ago)";
     }
     return text;
 }
 
-// "rank 2 (drawing frame 3, its main thread without progress for 4.1 s)", joined by "; ".
-std::string describeHung(const std::vector<SilenceWatch::Hung>& hung)
+// "rank 2 on node7 (drawing frame 3, its main thread without progress for 4.1 s)", joined by "; ".
+std::string describeHung(const std::vector<SilenceWatch::Hung>& hung, const std::vector<std::string>& hosts)
 {
     std::string text;
     for (const SilenceWatch::Hung& h : hung) {
         char stalled[32];
         std::snprintf(stalled, sizeof stalled, "%.1f", h.beat.stalledS);
-        text += (text.empty() ? "" : "; ") + std::string("rank ") + std::to_string(h.rank) + " (" +
-                describePhase(h.beat.phase, h.beat.frame) + ", its main thread without progress for " + stalled +
-                " s)";
+        text += (text.empty() ? "" : "; ") + std::string("rank ") + std::to_string(h.rank) + " on " +
+                hosts[std::size_t(h.rank)] + " (" + describePhase(h.beat.phase, h.beat.frame) +
+                ", its main thread without progress for " + stalled + " s)";
     }
     return text;
 }
@@ -54,6 +56,15 @@ Watchdog::Watchdog(MPI_Comm comm, double timeoutS) : comm_(comm), timeoutS_(time
 {
     MPI_Comm_rank(comm_, &rank_);
     MPI_Comm_size(comm_, &size_);
+    // Every rank's host, for the messages that name a silent rank (collective: every rank makes its
+    // watchdog at the same point).
+    char name[MPI_MAX_PROCESSOR_NAME] = {};
+    int length = 0;
+    MPI_Get_processor_name(name, &length);
+    std::vector<char> names(std::size_t(size_) * MPI_MAX_PROCESSOR_NAME, '\0');
+    MPI_Allgather(name, MPI_MAX_PROCESSOR_NAME, MPI_CHAR, names.data(), MPI_MAX_PROCESSOR_NAME, MPI_CHAR, comm_);
+    for (int r = 0; r < size_; ++r)
+        hosts_.emplace_back(names.data() + std::size_t(r) * MPI_MAX_PROCESSOR_NAME);
     unsigned long long hangFrame = 0;
     if (const char* hang = std::getenv("AURORAWALL_TEST_HANG_MAIN_THREAD");
         hang && std::sscanf(hang, "%d:%llu", &hangRank_, &hangFrame) == 2)
@@ -140,10 +151,11 @@ void Watchdog::sendHeartbeats()
         if (!masterFinished && secondsNow() - masterHeardS > timeoutS_) {
             const MainThreadProgress::Snapshot p = progress();
             std::fprintf(stderr,
-                         "aurorawall render: rank %d: no heartbeat for more than --rank-timeout %g s from the master "
-                         "(rank 0: stopped, frozen or unreachable); this rank was in %s; ending the job (exit "
-                         "status %d)\n",
-                         rank_, timeoutS_, describePhase(p.phase, p.frame).c_str(), kRankSilentExitStatus);
+                         "aurorawall render: rank %d on %s: no heartbeat for more than --rank-timeout %g s from the "
+                         "master (rank 0 on %s: stopped, frozen or unreachable); this rank was in %s; ending the job "
+                         "(exit status %d)\n",
+                         rank_, hosts_[std::size_t(rank_)].c_str(), timeoutS_, hosts_[0].c_str(),
+                         describePhase(p.phase, p.frame).c_str(), kRankSilentExitStatus);
             std::fflush(stderr);
             MPI_Abort(MPI_COMM_WORLD, kRankSilentExitStatus);
         }
@@ -191,7 +203,7 @@ void Watchdog::watchRanks()
             std::fprintf(stderr,
                          "aurorawall render: no heartbeat for more than --rank-timeout %g s from %s; the master "
                          "was in %s; ending the job (exit status %d)\n",
-                         timeoutS_, describeSilent(silent).c_str(), masterPhase.c_str(), kRankSilentExitStatus);
+                         timeoutS_, describeSilent(silent, hosts_).c_str(), masterPhase.c_str(), kRankSilentExitStatus);
             std::fflush(stderr);
             MPI_Abort(MPI_COMM_WORLD, kRankSilentExitStatus);
         }
@@ -201,7 +213,7 @@ void Watchdog::watchRanks()
                          "aurorawall render: hung: %s, more than %.1f s = max(--rank-timeout %g s, %g x max(the "
                          "slowest frame %.2f s, the master's own work this frame %.2f s)); the master was waiting in "
                          "%s; ending the job (exit status %d)\n",
-                         describeHung(hung).c_str(), watch.stallLimitS(master), timeoutS_, kFramesBeforeHung,
+                         describeHung(hung, hosts_).c_str(), watch.stallLimitS(master), timeoutS_, kFramesBeforeHung,
                          master.slowestFrameS,
                          master.busyThisFrameS, masterPhase.c_str(), kRankSilentExitStatus);
             std::fflush(stderr);

@@ -27,7 +27,9 @@
 #include <atomic>
 #include <cstdint>
 #include <mutex>
+#include <string>
 #include <thread>
+#include <vector>
 
 namespace aurorawall::cluster {
 
@@ -36,8 +38,9 @@ constexpr int kRankSilentExitStatus = 3;
 
 class Watchdog {
 public:
-    // Starts the thread; `comm` is a communicator of its own (a duplicate of MPI_COMM_WORLD), so its
-    // messages never meet the frame's. Needs MPI_THREAD_MULTIPLE.
+    // Gathers every rank's host name (collective on `comm`: every rank makes its watchdog at once)
+    // and starts the thread; `comm` is a communicator of its own (a duplicate of MPI_COMM_WORLD), so
+    // its messages never meet the frame's. Needs MPI_THREAD_MULTIPLE.
     Watchdog(MPI_Comm comm, double timeoutS);
     // Tells the master this rank has finished (workers) or stops watching (master), and joins the thread.
     ~Watchdog();
@@ -57,6 +60,7 @@ private:
     MainThreadProgress::Snapshot progress();
 
     MPI_Comm comm_;
+    std::vector<std::string> hosts_; // each rank's host (MPI_Get_processor_name)
     int rank_ = 0;
     int size_ = 1;
     double timeoutS_;
