@@ -164,7 +164,8 @@ cluster::FrameStats runFrames(WallSession& session, const cluster::MpiWorld& wor
     control::WallStatus wallStatus;
     const control::WallFacts wallFacts{session.scene.planetRadiusKm,
                                        (session.options.dataDir.empty() ? dataDirectory() : session.options.dataDir) +
-                                           "/config/scenes"};
+                                           "/config/scenes",
+                                       session.options.outDir};
     std::vector<control::ScreenshotRequest> screenshots;
     std::optional<MovieWriter> movie;
     if (world.isMaster() && !session.options.movieDir.empty())

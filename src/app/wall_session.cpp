@@ -62,7 +62,7 @@ void configure(const cluster::MpiWorld& world, int argc, char** argv, WallSessio
     s.scene = components::loadScene(options.sceneFile);
     s.shaderDir = (options.dataDir.empty() ? dataDirectory() : options.dataDir) + "/shaders";
     render::marchShaderSource(s.scene, s.shaderDir); // every module readable before any window opens
-    if (options.gather || options.tiles)
+    if (options.gather || options.tiles || options.controlPort >= 0) // the control port's screenshots go there
         io::ensureWritableDirectory(options.outDir, "--out");
     if (!options.movieDir.empty())
         io::ensureWritableDirectory(options.movieDir, "--movie");
@@ -75,7 +75,8 @@ void configure(const cluster::MpiWorld& world, int argc, char** argv, WallSessio
     s.balanced = options.balance == Balance::On || (options.balance == Balance::Auto && world.size() > 1);
     s.bands = cluster::makeBands(s.wall, s.balanced ? options.balanceBands : 1);
     if (world.isMaster() && options.controlPort >= 0)
-        s.control = std::make_unique<control::ControlServer>(options.controlBind, options.controlPort);
+        s.control = std::make_unique<control::ControlServer>(options.controlBind, options.controlPort,
+                                                             control::readControlToken(options.controlTokenFile));
 }
 
 // A context per rank (a window per screen with glfw), the raymarcher, the screens' targets.

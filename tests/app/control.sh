@@ -12,7 +12,7 @@ wall="$WORK/tiny-2-ranks.toml"
 { cat "$DATA/tiny-2x2.toml"; printf '\n[ranks]\nscreens_per_rank = 2\n'; } > "$wall"
 
 aw_mpirun 2 render --wall "$wall" --scene "$SCENE" --frames 0 --control-port 0 --quiet \
-    --stats "$WORK/s.csv" > "$WORK/log" 2>&1 &
+    --out "$WORK" --stats "$WORK/s.csv" > "$WORK/log" 2>&1 &
 job=$!
 port=$(control_port "$WORK/log" "$job")
 note "wall on port $port"
@@ -33,11 +33,11 @@ number='-?[0-9.e+-]+'
 ask "^ok frame=[0-9]+ time_s=$number fps=$number playing speed=1 lat_deg=$number lon_deg=$number alt_km=$number heading_deg=$number pitch_deg=$number\$" status
 ask "^ok paused at time_s=$number\$" pause
 ask '^ok time_s=120$' "time 120"
-ask '^ok screenshot .*/before\.png$' "screenshot $WORK/before.png"
+ask '^ok screenshot .*/before\.png$' "screenshot before.png"
 ask ' time_s=120 fps=[0-9.e+-]+ paused ' status
 ask '^ok goto lat_deg=65 lon_deg=25 alt_km=200$' "goto 65 25 200"
 ask ' time_s=120 .* lat_deg=65\.000000 lon_deg=25\.000000 alt_km=200\.000000 ' status
-ask '^ok screenshot .*/after\.png$' "screenshot $WORK/after.png"
+ask '^ok screenshot .*/after\.png$' "screenshot after.png"
 # A preset moves the camera to its scene's (ground-65n: 65 N 20 E, 300 m up), by name or by file;
 # an unknown one is refused and the camera stays.
 ask '^ok preset ground-65n lat_deg=65\.000000 lon_deg=20\.000000 alt_km=0\.300000$' "preset ground-65n"
@@ -56,7 +56,10 @@ ask '^error orbit: the altitude must be in \[0, 1e6\] km$' "orbit 60 20 -5"
 ask "^error unknown command 'xyzzy' \(commands: .* preset orbit " "xyzzy 1 2 3"
 ask '^error speed: the factor must be in \[0\.1, 1000\]$' "speed 5000"
 ask '^error step: the clock is playing \(pause first\)$' play step
-ask '^error screenshot .*: the file name must end in \.png$' "screenshot $WORK/x.jpg"
+ask '^error screenshot .*: the file name must end in \.png$' "screenshot x.jpg"
+ask '^error screenshot /tmp/x\.png: an absolute path; give a path inside the output folder' "screenshot /tmp/x.png"
+ask "^error screenshot \.\./x\.png: '\.\.' would leave the output folder" "screenshot ../x.png"
+ask "^error screenshot a/\.\./\.\./x\.png: '\.\.' would leave the output folder" "screenshot a/../../x.png"
 ask '^ok paused' pause
 ask '^ok goto lat_deg=65 lon_deg=25 alt_km=200$' "goto 65 25 200"
 

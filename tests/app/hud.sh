@@ -10,7 +10,7 @@ client=(python3 "$SRC_DIR/launch/wall-control")
 run_under_xvfb "1280x1024x24" "$@"
 
 aw_mpirun 1 render --wall "$DATA/hud-1x1.toml" --scene "$SCENE" --backend glfw --frames 0 --control-port 0 \
-    --quiet > "$WORK/log" 2>&1 &
+    --out "$WORK" --quiet > "$WORK/log" 2>&1 &
 job=$!
 port=$(control_port "$WORK/log" "$job")
 ask() { "${client[@]}" --port "$port" "$@" || { kill $job; fail "'$*' was not answered ok"; }; }
@@ -24,7 +24,7 @@ compare() { python3 "$HERE/ppm_diff.py" "$WORK/$1.ppm" "$WORK/$2.ppm"; }
 ask pause >/dev/null
 sleep 1 # a few frames of the paused picture
 grab plain
-ask "screenshot $WORK/wall-plain.png" >/dev/null
+ask "screenshot wall-plain.png" >/dev/null
 
 xdotool windowfocus --sync "$window"
 xdotool key h
@@ -36,7 +36,7 @@ done
 sleep 0.5 # the text of a few more frames
 grab hud
 shown=$(compare plain hud)
-ask "screenshot $WORK/wall-hud.png" >/dev/null
+ask "screenshot wall-hud.png" >/dev/null
 xdotool key h
 sleep 1
 grab hidden

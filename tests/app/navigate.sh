@@ -12,7 +12,7 @@ run_under_xvfb "640x480x24" "$@"
 wall="$WORK/tiny-2-ranks.toml"
 { cat "$DATA/tiny-2x2.toml"; printf '\n[ranks]\nscreens_per_rank = 2\n'; } > "$wall"
 aw_mpirun 2 render --wall "$wall" --scene "$SCENE" --backend glfw --frames 0 --control-port 0 --quiet \
-    > "$WORK/log" 2>&1 &
+    --out "$WORK" > "$WORK/log" 2>&1 &
 job=$!
 port=$(control_port "$WORK/log" "$job")
 
@@ -22,7 +22,7 @@ ask() { "${client[@]}" --port "$port" "$@" || { kill $job; fail "'$*' was not an
 ask pause >/dev/null
 before=$(ask status)
 echo "before: $before"
-ask "screenshot $WORK/before.png" >/dev/null
+ask "screenshot before.png" >/dev/null
 
 # rank 1 drives the screens of row 1; the operator types into r1c0's window.
 window=$(xdotool search --name '^aurorawall r1c0$' | head -n 1)
@@ -45,7 +45,7 @@ echo "keys:   $keyed"
 xdotool mousemove --window "$window" 16 17 mousedown 1 mousemove --window "$window" 16 2 mouseup 1
 after=$(status_once_changed pitch_deg "$keyed")
 echo "drag:   $after"
-ask "screenshot $WORK/after.png" >/dev/null
+ask "screenshot after.png" >/dev/null
 
 # O, three Right and O: the camera orbits the point ahead of it about that point's zenith, an axis
 # through the planet's centre, so its altitude and pitch stay while it moves across the ground.

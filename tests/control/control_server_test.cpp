@@ -10,8 +10,11 @@
 #include <arpa/inet.h>
 #include <chrono>
 #include <netinet/in.h>
+#include <cstdio>
+#include <cstdlib>
 #include <poll.h>
 #include <sys/socket.h>
+#include <sys/stat.h>
 #include <thread>
 #include <unistd.h>
 
@@ -188,4 +191,73 @@ TEST(ControlServer, RefusesAddressesItCannotListenOn)
         EXPECT_NE(std::string(e.what()).find("--control-port " + std::to_string(first.port())), std::string::npos)
             << e.what();
     }
+}
+
+namespace {
+
+// Polls until the client's line comes back (the server answers auth lines itself).
+std::string answerOf(ControlServer& server, Client& client)
+{
+    std::string line;
+    std::thread reader([&] { line = client.readLine(); });
+    const auto end = std::chrono::steady_clock::now() + std::chrono::seconds(5);
+    while (std::chrono::steady_clock::now() < end) {
+        EXPECT_TRUE(server.poll(16).empty());
+        std::this_thread::sleep_for(std::chrono::milliseconds(2));
+        if (server.clientCount() == 0)
+            break;
+    }
+    reader.join();
+    return line;
+}
+
+} // namespace
+
+// With a token, a client's first line must be "auth TOKEN": a wrong token or a command first gets
+// one error line and the client is closed, and none of its lines reaches the wall; the right token
+// is answered "ok auth" and what follows is handed out.
+TEST(ControlServer, ClientsAuthenticateFirstWhenAskedTo)
+{
+    ControlServer server("127.0.0.1", 0, "s3cret");
+    for (const char* first : {"status\n", "auth wrong\nstatus\n", "auth s3cret extra\n"}) {
+        Client intruder(server.port());
+        intruder.send(first);
+        EXPECT_EQ(answerOf(server, intruder), "error authentication required: the first line must be auth TOKEN; closing")
+            << first;
+        EXPECT_EQ(intruder.readLine(), "") << first; // closed
+        EXPECT_EQ(server.clientCount(), 0u) << first;
+    }
+    Client operatorClient(server.port());
+    operatorClient.send("auth s3cret\r\nstatus\n");
+    const std::vector<ControlLine> lines = pollFor(server, 1);
+    ASSERT_EQ(lines.size(), 1u);
+    EXPECT_EQ(lines[0].text, "status");
+    EXPECT_EQ(operatorClient.readLine(), "ok auth");
+}
+
+// The secret's file: readable by its owner only, its first line not empty.
+TEST(ControlServer, TokenFileIsCheckedBeforeUse)
+{
+    char path[] = "/tmp/aw-token-XXXXXX";
+    const int fd = ::mkstemp(path);
+    ASSERT_GE(fd, 0);
+    ::close(fd);
+    EXPECT_EQ(readControlToken(""), "");
+    EXPECT_THROW(readControlToken(path), InputError); // empty
+    {
+        std::FILE* f = std::fopen(path, "w");
+        std::fputs("  tok en  \n second\n", f);
+        std::fclose(f);
+    }
+    ::chmod(path, 0600);
+    EXPECT_EQ(readControlToken(path), "  tok en");
+    ::chmod(path, 0644);
+    try {
+        readControlToken(path);
+        ADD_FAILURE() << "a file others may read was taken";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("chmod 600"), std::string::npos) << e.what();
+    }
+    ::unlink(path);
+    EXPECT_THROW(readControlToken(path), InputError); // gone
 }

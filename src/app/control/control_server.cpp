@@ -6,10 +6,13 @@
 #include <cerrno>
 #include <cstring>
 #include <fcntl.h>
+#include <fstream>
 #include <netinet/in.h>
 #include <poll.h>
 #include <sys/socket.h>
+#include <sys/stat.h>
 #include <unistd.h>
+#include <utility>
 
 namespace aurorawall::control {
 
@@ -23,7 +26,28 @@ void setNonBlocking(int fd)
 
 } // namespace
 
-ControlServer::ControlServer(const std::string& bindAddress, int port) : address_(bindAddress)
+std::string readControlToken(const std::string& file)
+{
+    if (file.empty())
+        return "";
+    struct stat status{};
+    if (::stat(file.c_str(), &status) != 0)
+        throw inputError(file, 0, std::string("--control-token-file: cannot read it: ") + std::strerror(errno));
+    if (status.st_mode & (S_IRWXG | S_IRWXO))
+        throw inputError(file, 0, "--control-token-file: others than its owner may read or write it (chmod 600)");
+    std::ifstream in(file);
+    std::string token;
+    if (!in || !std::getline(in, token))
+        throw inputError(file, 0, "--control-token-file: cannot read its first line");
+    while (!token.empty() && (token.back() == '\r' || token.back() == ' ' || token.back() == '\t'))
+        token.pop_back();
+    if (token.empty())
+        throw inputError(file, 1, "--control-token-file: the first line (the secret) is empty");
+    return token;
+}
+
+ControlServer::ControlServer(const std::string& bindAddress, int port, std::string token)
+    : address_(bindAddress), token_(std::move(token))
 {
     sockaddr_in addr{};
     addr.sin_family = AF_INET;
@@ -67,7 +91,9 @@ void ControlServer::accept()
             ::close(fd);
             continue;
         }
-        clients_[nextClient_++].fd = fd;
+        Client& c = clients_[nextClient_++];
+        c.fd = fd;
+        c.authenticated = token_.empty();
     }
 }
 
@@ -88,8 +114,10 @@ void ControlServer::read(Client& c)
     }
     for (ssize_t i = 0; i < n; ++i) {
         if (buffer[i] == '\n') {
-            c.lines.push_back(std::move(c.partial));
+            received(c, std::move(c.partial));
             c.partial.clear();
+            if (c.failed)
+                return;
         } else if (c.partial.size() >= kMaxLineBytes) {
             c.outgoing += "error line longer than " + std::to_string(kMaxLineBytes) + " bytes; closing\n";
             flush(c);
@@ -99,6 +127,24 @@ void ControlServer::read(Client& c)
             c.partial += buffer[i];
         }
     }
+}
+
+void ControlServer::received(Client& c, std::string line)
+{
+    if (c.authenticated) {
+        c.lines.push_back(std::move(line));
+        return;
+    }
+    if (!line.empty() && line.back() == '\r')
+        line.pop_back();
+    if (line == "auth " + token_) {
+        c.authenticated = true;
+        c.outgoing += "ok auth\n";
+    } else {
+        c.outgoing += "error authentication required: the first line must be auth TOKEN; closing\n";
+        c.failed = true;
+    }
+    flush(c);
 }
 
 void ControlServer::flush(Client& c)

@@ -6,6 +6,10 @@
 // kMaxQueuedLines waiting, its socket is not read, so a flood is held back by TCP itself.
 // A client may disconnect at any time: its unfinished line is dropped, its complete lines are still
 // carried out. IPv4; POSIX sockets.
+// With a token (a shared secret; required by the render command for any address but loopback),
+// a client's first line must be "auth TOKEN": it is answered "ok auth" and the client's later lines
+// are handed out; any other first line gets one error line and the client is closed, before any of
+// its lines reaches the wall.
 #include <cstddef>
 #include <cstdint>
 #include <map>
@@ -13,6 +17,11 @@
 #include <vector>
 
 namespace aurorawall::control {
+
+// The shared secret in the first line of `file` (empty for an empty file name: no token). Throws
+// InputError naming the file if it cannot be read, is readable or writable by anyone but its owner,
+// or its first line is empty.
+std::string readControlToken(const std::string& file);
 
 struct ControlLine {
     std::uint64_t client = 0; // who sent it, for the answer
@@ -26,9 +35,10 @@ public:
     static constexpr std::size_t kMaxClients = 16;       // more are told so and closed
     static constexpr std::size_t kMaxPendingAnswerBytes = 1 << 20; // a client that reads nothing is closed
 
-    // Listens on bindAddress (dotted IPv4) at port (0: a free port the system picks). Throws
-    // InputError naming --control-bind or --control-port if it cannot.
-    ControlServer(const std::string& bindAddress, int port);
+    // Listens on bindAddress (dotted IPv4) at port (0: a free port the system picks); with a
+    // non-empty token, clients authenticate first (above). Throws InputError naming --control-bind
+    // or --control-port if it cannot.
+    ControlServer(const std::string& bindAddress, int port, std::string token = "");
     ~ControlServer();
     ControlServer(const ControlServer&) = delete;
     ControlServer& operator=(const ControlServer&) = delete;
@@ -53,7 +63,11 @@ private:
         std::size_t awaiting = 0;      // lines handed out, not yet answered
         bool readClosed = false;       // the client sent end-of-file
         bool failed = false;           // the connection is broken or the client misbehaved
+        bool authenticated = false;    // its first line was "auth TOKEN" (or no token is asked)
     };
+    // A complete line from the client: queued, or, before it has authenticated, checked as its
+    // "auth TOKEN" line.
+    void received(Client& c, std::string line);
     void accept();
     void read(Client& c);
     void flush(Client& c);
@@ -62,6 +76,7 @@ private:
     int listenFd_ = -1;
     int port_ = 0;
     std::string address_;
+    std::string token_;
     std::uint64_t nextClient_ = 1;
     std::map<std::uint64_t, Client> clients_;
 };

@@ -109,11 +109,20 @@ std::string carryOut(const Command& command, std::uint64_t client, cluster::Mast
         requests.orbit = OrbitRequest::Stop;
         return "ok orbit off";
     case CommandKind::Screenshot: {
-        const std::filesystem::path parent = std::filesystem::path(command.path).parent_path();
+        // Only inside the output folder: a client must not write wherever the master's user may.
+        const std::filesystem::path relative(command.path);
+        if (relative.is_absolute())
+            throw CommandError("screenshot " + command.path + ": an absolute path; give a path inside the output "
+                               "folder (--out " + wall.outputDir + ")");
+        for (const std::filesystem::path& part : relative)
+            if (part == "..")
+                throw CommandError("screenshot " + command.path + ": '..' would leave the output folder (--out " +
+                                   wall.outputDir + ")");
+        const std::filesystem::path full = std::filesystem::path(wall.outputDir) / relative;
         std::error_code error;
-        if (!parent.empty() && !std::filesystem::is_directory(parent, error))
-            throw CommandError("screenshot " + command.path + ": " + parent.string() + " is not a folder");
-        requests.screenshots.push_back({client, command.path});
+        if (!std::filesystem::is_directory(full.parent_path(), error))
+            throw CommandError("screenshot " + command.path + ": " + full.parent_path().string() + " is not a folder");
+        requests.screenshots.push_back({client, full.string()});
         return "";
     }
     case CommandKind::Quit:

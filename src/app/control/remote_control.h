@@ -23,13 +23,14 @@ struct WallStatus {
 // A wall image asked for: written by the master after the next frame, then answered.
 struct ScreenshotRequest {
     std::uint64_t client = 0;
-    std::string path;
+    std::string path; // inside the output folder
 };
 
 // What the wall's commands need to know of it.
 struct WallFacts {
     double planetRadiusKm = 6371.0;
     std::string presetDir; // where `preset NAME` finds NAME.toml: config/scenes under the data directory
+    std::string outputDir; // --out: `screenshot PATH` writes outputDir/PATH, PATH relative and without ..
 };
 
 // The orbit the commands leave the navigation in (app/navigation.h).
