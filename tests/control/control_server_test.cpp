@@ -12,6 +12,7 @@
 #include <netinet/in.h>
 #include <cstdio>
 #include <cstdlib>
+#include <memory>
 #include <poll.h>
 #include <sys/socket.h>
 #include <sys/stat.h>
@@ -260,4 +261,46 @@ TEST(ControlServer, TokenFileIsCheckedBeforeUse)
     }
     ::unlink(path);
     EXPECT_THROW(readControlToken(path), InputError); // gone
+}
+
+// The operator is never locked out: with every slot taken by idle clients, a 17th connection gets in
+// and is served, and the longest idle client is told why it is closed.
+TEST(ControlServer, ANewClientClosesTheLongestIdleOneWhenFull)
+{
+    ControlServer server("127.0.0.1", 0);
+    std::vector<std::unique_ptr<Client>> idle;
+    for (std::size_t i = 0; i < ControlServer::kMaxClients; ++i) {
+        idle.push_back(std::make_unique<Client>(server.port()));
+        for (int k = 0; k < 100 && server.clientCount() < i + 1; ++k) {
+            server.poll(16);
+            std::this_thread::sleep_for(std::chrono::milliseconds(2));
+        }
+    }
+    ASSERT_EQ(server.clientCount(), ControlServer::kMaxClients);
+    Client newcomer(server.port());
+    newcomer.send("status\n");
+    const std::vector<ControlLine> lines = pollFor(server, 1);
+    ASSERT_EQ(lines.size(), 1u);
+    EXPECT_EQ(lines[0].text, "status");
+    server.answer(lines[0].client, "ok");
+    EXPECT_EQ(newcomer.readLine(), "ok");
+    EXPECT_EQ(idle.front()->readLine(), "error closing this connection, the longest idle of 16, to admit a new client");
+    EXPECT_EQ(server.clientCount(), ControlServer::kMaxClients);
+}
+
+// A client that sends nothing for the idle timeout is told so and closed; one that keeps talking is not.
+TEST(ControlServer, IdleClientsTimeOut)
+{
+    ControlServer server("127.0.0.1", 0, "", 0.3);
+    Client quiet(server.port()), talking(server.port());
+    const auto end = std::chrono::steady_clock::now() + std::chrono::milliseconds(800);
+    while (std::chrono::steady_clock::now() < end) {
+        talking.send("status\n");
+        for (const ControlLine& l : server.poll(16))
+            server.answer(l.client, "ok");
+        std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    }
+    EXPECT_EQ(quiet.readLine(), "error closing this connection: idle for more than 0.3 s");
+    EXPECT_EQ(quiet.readLine(), ""); // closed
+    EXPECT_EQ(server.clientCount(), 1u);
 }

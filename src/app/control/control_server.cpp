@@ -4,6 +4,8 @@
 
 #include <arpa/inet.h>
 #include <cerrno>
+#include <chrono>
+#include <cstdio>
 #include <cstring>
 #include <fcntl.h>
 #include <fstream>
@@ -22,6 +24,15 @@ void setNonBlocking(int fd)
 {
     const int flags = ::fcntl(fd, F_GETFL, 0);
     ::fcntl(fd, F_SETFL, flags | O_NONBLOCK);
+}
+
+} // namespace
+
+namespace {
+
+double secondsNow()
+{
+    return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
 
 } // namespace
@@ -46,8 +57,8 @@ std::string readControlToken(const std::string& file)
     return token;
 }
 
-ControlServer::ControlServer(const std::string& bindAddress, int port, std::string token)
-    : address_(bindAddress), token_(std::move(token))
+ControlServer::ControlServer(const std::string& bindAddress, int port, std::string token, double idleTimeoutS)
+    : address_(bindAddress), token_(std::move(token)), idleTimeoutS_(idleTimeoutS)
 {
     sockaddr_in addr{};
     addr.sin_family = AF_INET;
@@ -86,14 +97,21 @@ void ControlServer::accept()
         if (fd < 0)
             return; // EAGAIN: none left (or a client that gave up before being accepted)
         if (clients_.size() >= kMaxClients) {
-            const std::string busy = "error too many clients (at most " + std::to_string(kMaxClients) + ")\n";
-            ::send(fd, busy.data(), busy.size(), MSG_NOSIGNAL);
-            ::close(fd);
-            continue;
+            // The operator is never locked out: the longest idle client makes room.
+            auto idlest = clients_.begin();
+            for (auto it = clients_.begin(); it != clients_.end(); ++it)
+                if (it->second.lastHeardS < idlest->second.lastHeardS)
+                    idlest = it;
+            const std::string bye = "error closing this connection, the longest idle of " +
+                                    std::to_string(kMaxClients) + ", to admit a new client\n";
+            ::send(idlest->second.fd, bye.data(), bye.size(), MSG_NOSIGNAL);
+            ::close(idlest->second.fd);
+            clients_.erase(idlest);
         }
         Client& c = clients_[nextClient_++];
         c.fd = fd;
         c.authenticated = token_.empty();
+        c.lastHeardS = secondsNow();
     }
 }
 
@@ -112,6 +130,7 @@ void ControlServer::read(Client& c)
             c.failed = true;
         return;
     }
+    c.lastHeardS = secondsNow();
     for (ssize_t i = 0; i < n; ++i) {
         if (buffer[i] == '\n') {
             received(c, std::move(c.partial));
@@ -162,8 +181,16 @@ void ControlServer::flush(Client& c)
 
 void ControlServer::closeFinished()
 {
+    const double now = secondsNow();
     for (auto it = clients_.begin(); it != clients_.end();) {
         Client& c = it->second;
+        if (!c.failed && c.awaiting == 0 && c.lines.empty() && now - c.lastHeardS > idleTimeoutS_) {
+            char seconds[32];
+            std::snprintf(seconds, sizeof seconds, "%g", idleTimeoutS_);
+            c.outgoing += std::string("error closing this connection: idle for more than ") + seconds + " s\n";
+            flush(c);
+            c.failed = true;
+        }
         const bool done = c.readClosed && c.lines.empty() && c.awaiting == 0 && c.outgoing.empty();
         if (c.failed || done) {
             ::close(c.fd);

@@ -6,6 +6,10 @@
 // kMaxQueuedLines waiting, its socket is not read, so a flood is held back by TCP itself.
 // A client may disconnect at any time: its unfinished line is dropped, its complete lines are still
 // carried out. IPv4; POSIX sockets.
+// The operator is never locked out: when kMaxClients are connected, a new connection closes the
+// longest idle client (which gets one line saying so); a client that sends nothing for the idle
+// timeout (kIdleTimeoutS, 10 minutes) while nothing of its is pending is closed with one line; one
+// whose answers back up past kMaxPendingAnswerBytes (it never reads) is dropped.
 // With a token (a shared secret; required by the render command for any address but loopback),
 // a client's first line must be "auth TOKEN": it is answered "ok auth" and the client's later lines
 // are handed out; any other first line gets one error line and the client is closed, before any of
@@ -32,13 +36,15 @@ class ControlServer {
 public:
     static constexpr std::size_t kMaxLineBytes = 1024;   // a longer line is answered with an error, then the client closed
     static constexpr std::size_t kMaxQueuedLines = 64;   // per client
-    static constexpr std::size_t kMaxClients = 16;       // more are told so and closed
+    static constexpr std::size_t kMaxClients = 16;       // a 17th closes the longest idle one (told so)
+    static constexpr double kIdleTimeoutS = 600.0;       // a client silent this long is told so and closed
     static constexpr std::size_t kMaxPendingAnswerBytes = 1 << 20; // a client that reads nothing is closed
 
     // Listens on bindAddress (dotted IPv4) at port (0: a free port the system picks); with a
     // non-empty token, clients authenticate first (above). Throws InputError naming --control-bind
     // or --control-port if it cannot.
-    ControlServer(const std::string& bindAddress, int port, std::string token = "");
+    ControlServer(const std::string& bindAddress, int port, std::string token = "",
+                  double idleTimeoutS = kIdleTimeoutS);
     ~ControlServer();
     ControlServer(const ControlServer&) = delete;
     ControlServer& operator=(const ControlServer&) = delete;
@@ -64,6 +70,7 @@ private:
         bool readClosed = false;       // the client sent end-of-file
         bool failed = false;           // the connection is broken or the client misbehaved
         bool authenticated = false;    // its first line was "auth TOKEN" (or no token is asked)
+        double lastHeardS = 0.0;       // when it last sent bytes (steady clock, s)
     };
     // A complete line from the client: queued, or, before it has authenticated, checked as its
     // "auth TOKEN" line.
@@ -77,6 +84,7 @@ private:
     int port_ = 0;
     std::string address_;
     std::string token_;
+    double idleTimeoutS_;
     std::uint64_t nextClient_ = 1;
     std::map<std::uint64_t, Client> clients_;
 };
