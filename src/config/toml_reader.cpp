@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <memory>
 #include <sstream>
 
 namespace aurorawall::config {
@@ -31,31 +33,125 @@ std::string oneLine(const std::string& what)
 
 } // namespace
 
-TomlValue parseTomlFile(const std::string& path)
+namespace {
+
+// The text with a line break after every comma of an array (outside strings and comments, and not
+// in inline tables, where TOML allows none), and the file's line of each resulting line.
+std::string breakArraysAfterCommas(const std::string& text, std::vector<int>& lines)
+{
+    std::string out;
+    out.reserve(text.size() + text.size() / 8);
+    std::vector<char> open; // '[' or '{'
+    int line = 1;
+    lines.assign(1, 1);
+    enum class In { Code, Comment, Basic, Literal, MultiBasic, MultiLiteral } in = In::Code;
+    const std::string basic3 = "\"\"\"", literal3 = "'''";
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        const char c = text[i];
+        out += c;
+        if (c == '\n') {
+            lines.push_back(++line);
+            if (in == In::Comment || in == In::Basic || in == In::Literal)
+                in = In::Code;
+            continue;
+        }
+        switch (in) {
+        case In::Comment:
+            break;
+        case In::Basic:
+        case In::MultiBasic:
+            if (c == '\\' && i + 1 < text.size() && text[i + 1] != '\n')
+                out += text[++i];
+            else if (in == In::Basic && c == '"')
+                in = In::Code;
+            else if (in == In::MultiBasic && text.compare(i, 3, basic3) == 0) {
+                out += "\"\"";
+                i += 2;
+                in = In::Code;
+            }
+            break;
+        case In::Literal:
+            if (c == '\'')
+                in = In::Code;
+            break;
+        case In::MultiLiteral:
+            if (text.compare(i, 3, literal3) == 0) {
+                out += "''";
+                i += 2;
+                in = In::Code;
+            }
+            break;
+        case In::Code:
+            if (c == '#') {
+                in = In::Comment;
+            } else if (c == '"' || c == '\'') {
+                const bool triple = text.compare(i, 3, c == '"' ? basic3 : literal3) == 0;
+                in = c == '"' ? (triple ? In::MultiBasic : In::Basic) : (triple ? In::MultiLiteral : In::Literal);
+                if (triple) {
+                    out += std::string(2, c);
+                    i += 2;
+                }
+            } else if (c == '[' || c == '{') {
+                open.push_back(c);
+            } else if ((c == ']' || c == '}') && !open.empty()) {
+                open.pop_back();
+            } else if (c == ',' && !open.empty() && open.back() == '[') {
+                out += '\n';
+                lines.push_back(line);
+            }
+            break;
+        }
+    }
+    return out;
+}
+
+} // namespace
+
+TomlFile parseTomlFile(const std::string& path)
 {
     if (!std::filesystem::is_regular_file(path))
         throw inputError(path, 0, "scene file not found");
+    std::error_code error;
+    const std::uintmax_t bytes = std::filesystem::file_size(path, error);
+    if (!error && bytes > kMaxTomlFileBytes)
+        throw inputError(path, 0, "the file has " + std::to_string(bytes) + " bytes, more than the " +
+                                      std::to_string(kMaxTomlFileBytes >> 20) + " MiB a config file may have");
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream text;
+    if (!in || !(text << in.rdbuf()))
+        throw inputError(path, 0, "cannot read the file");
+    auto lines = std::make_shared<std::vector<int>>();
+    std::istringstream broken(breakArraysAfterCommas(text.str(), *lines));
+    const auto fileLine = [&lines](std::size_t parsed) {
+        return parsed >= 1 && parsed <= lines->size() ? (*lines)[parsed - 1] : int(parsed);
+    };
     try {
-        return toml::parse<toml::discard_comments>(path);
+        return {toml::parse<toml::discard_comments>(broken, path), lines};
     } catch (const toml::exception& e) {
-        throw inputError(path, static_cast<int>(e.location().line()), oneLine(e.what()));
+        throw inputError(path, fileLine(e.location().line()), oneLine(e.what()));
     } catch (const std::exception& e) {
         throw inputError(path, 0, e.what());
     }
 }
 
-TableReader::TableReader(const TomlValue& table, std::string file, std::string tableName)
-    : table_(table), file_(std::move(file)), name_(std::move(tableName))
+TableReader::TableReader(const TomlValue& table, std::string file, std::string tableName, LineMap lines)
+    : table_(table), file_(std::move(file)), name_(std::move(tableName)), lines_(std::move(lines))
 {
     if (!table_.is_table())
         throw inputError(file_, line(), "'" + name_ + "' must be a table");
 }
 
-int TableReader::line() const { return static_cast<int>(table_.location().line()); }
+int TableReader::fileLine(const TomlValue& value) const
+{
+    const std::size_t parsed = value.location().line();
+    return lines_ && parsed >= 1 && parsed <= lines_->size() ? (*lines_)[parsed - 1] : static_cast<int>(parsed);
+}
+
+int TableReader::line() const { return fileLine(table_); }
 
 int TableReader::lineOf(const std::string& key) const
 {
-    return has(key) ? static_cast<int>(table_.as_table().at(key).location().line()) : line();
+    return has(key) ? fileLine(table_.as_table().at(key)) : line();
 }
 
 std::string TableReader::qualified(const std::string& key) const
@@ -261,13 +357,13 @@ TableReader TableReader::table(const std::string& key) const
     const TomlValue& v = at(key);
     if (!v.is_table())
         fail(key, "expected a table");
-    return TableReader(v, file_, qualified(key));
+    return TableReader(v, file_, qualified(key), lines_);
 }
 
 TableReader TableReader::optionalTable(const std::string& key) const
 {
     static const TomlValue empty = TomlValue(TomlValue::table_type());
-    return has(key) ? table(key) : TableReader(empty, file_, qualified(key));
+    return has(key) ? table(key) : TableReader(empty, file_, qualified(key), lines_);
 }
 
 std::vector<TableReader> TableReader::arrayOfTables(const std::string& key) const
@@ -279,7 +375,7 @@ std::vector<TableReader> TableReader::arrayOfTables(const std::string& key) cons
     for (const auto& item : v.as_array()) {
         if (!item.is_table())
             fail(key, "expected an array of tables ([[" + qualified(key) + "]])");
-        out.emplace_back(item, file_, qualified(key));
+        out.emplace_back(item, file_, qualified(key), lines_);
     }
     return out;
 }
@@ -289,14 +385,14 @@ void TableReader::rejectKeysOutside(const std::vector<std::string>& known) const
     const std::pair<const std::string, TomlValue>* first = nullptr;
     for (const auto& entry : table_.as_table())
         if (std::find(known.begin(), known.end(), entry.first) == known.end() &&
-            (!first || entry.second.location().line() < first->second.location().line()))
+            (!first || fileLine(entry.second) < fileLine(first->second)))
             first = &entry;
     if (!first)
         return;
     std::string list;
     for (const std::string& k : known)
         list += (list.empty() ? "" : ", ") + k;
-    throw inputError(file_, static_cast<int>(first->second.location().line()),
+    throw inputError(file_, fileLine(first->second),
                      "unknown key '" + qualified(first->first) + "'; known keys: " + list);
 }
 
@@ -304,7 +400,7 @@ void TableReader::rejectUnknownKeys() const
 {
     for (const auto& [key, value] : table_.as_table())
         if (!read_.count(key))
-            throw inputError(file_, static_cast<int>(value.location().line()),
+            throw inputError(file_, fileLine(value),
                              "unknown key '" + qualified(key) + "'");
 }
 

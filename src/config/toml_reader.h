@@ -5,6 +5,7 @@
 #include <glm/glm.hpp>
 #include <toml.hpp>
 
+#include <memory>
 #include <optional>
 #include <set>
 #include <string>
@@ -14,12 +15,26 @@ namespace aurorawall::config {
 
 using TomlValue = toml::basic_value<toml::discard_comments>;
 
-// Parses a file; syntax errors become InputError "file:line: problem".
-TomlValue parseTomlFile(const std::string& path);
+// The line numbers of a parsed file: parsed line k (1-based) is line lines[k - 1] of the file.
+using LineMap = std::shared_ptr<const std::vector<int>>;
+
+struct TomlFile {
+    TomlValue root;
+    LineMap lines;
+};
+
+// The largest file read (a scene or wall file; past it one error line names the file).
+constexpr std::size_t kMaxTomlFileBytes = 16u << 20;
+
+// Parses a file; syntax errors become InputError "file:line: problem". Arrays are parsed with a
+// line break after each of their commas (toml11 scans a value's whole line for comments, which made
+// an array on one line cost the square of its length: 48 s for 40,000 points); the line numbers in
+// errors are the file's.
+TomlFile parseTomlFile(const std::string& path);
 
 class TableReader {
 public:
-    TableReader(const TomlValue& table, std::string file, std::string tableName);
+    TableReader(const TomlValue& table, std::string file, std::string tableName, LineMap lines = nullptr);
 
     bool has(const std::string& key) const;
     // Numbers must be finite and within [lo, hi]; integers are accepted where floats are asked for.
@@ -63,9 +78,12 @@ private:
     const TomlValue& at(const std::string& key) const;
     std::string qualified(const std::string& key) const;
 
+    int fileLine(const TomlValue& value) const; // the value's line in the file
+
     const TomlValue& table_;
     std::string file_;
     std::string name_;
+    LineMap lines_;
     mutable std::set<std::string> read_;
 };
 

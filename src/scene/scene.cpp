@@ -295,8 +295,8 @@ void SceneLoader::listComponents(Scene& s, const TableReader& meta, const Regist
 // depth counts the base scenes above this one (a guard against cycles).
 Scene SceneLoader::load(const std::string& path, const Registry& registry, int depth)
 {
-    const TomlValue root = parseTomlFile(path);
-    const TableReader top(root, path, "");
+    const config::TomlFile root = parseTomlFile(path);
+    const TableReader top(root.root, path, "", root.lines);
     const TableReader meta = top.table("scene");
     // A scene may start from another one ([scene] base = "file", relative to this file) and
     // change only what it gives: a camera preset over the substorm, say.

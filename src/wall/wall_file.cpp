@@ -92,8 +92,8 @@ std::string gapProblem(int missing, int above)
 // One parsed wall file: its tables, read once each through a TableReader, and the assembly of the wall.
 class WallFile {
 public:
-    WallFile(const TomlValue& root, const std::string& path)
-        : path_(path), top_(root, path, ""), ranks_(top_.optionalTable("ranks")), windows_(top_.optionalTable("windows"))
+    WallFile(const config::TomlFile& root, const std::string& path)
+        : path_(path), top_(root.root, path, "", root.lines), ranks_(top_.optionalTable("ranks")), windows_(top_.optionalTable("windows"))
     {
     }
     Wall load();
@@ -374,7 +374,7 @@ Wall loadWall(const std::string& path)
         throw inputError(path, 0, convertHint);
     if (const int line = oldIniLine(path))
         throw inputError(path, line, "old INI syntax: " + convertHint);
-    const TomlValue root = config::parseTomlFile(path);
+    const config::TomlFile root = config::parseTomlFile(path);
     return WallFile(root, path).load();
 }
 

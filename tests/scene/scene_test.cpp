@@ -8,6 +8,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
+#include <regex>
+#include <sstream>
 #include <string>
 
 using namespace aurorawall;
@@ -63,6 +66,27 @@ TEST(Scene, ComponentsNotListedAreLeftOut)
     EXPECT_NEAR(glm::length(s.camera.positionKm) - 6371.0, 0.001, 1e-9);
 }
 
+// Strings and comments with brackets and commas are read as written around a long one-line array.
+TEST(Scene, LongOneLineArraysAndBracketsInStrings)
+{
+    const std::string good = kData + "/long_array_then_typo.toml";
+    const std::string text = [&] {
+        std::ifstream in(good);
+        std::ostringstream s;
+        s << in.rdbuf();
+        return s.str();
+    }();
+    const std::string fixed = std::regex_replace(text, std::regex("energy_kev_typo"), "energy_kev");
+    const std::string path = testing::TempDir() + "/long_array.toml";
+    std::ofstream(path) << fixed;
+    const scene::Scene s = components::loadScene(path);
+    EXPECT_EQ(s.name, "arc [a, b], 'c' \"d, e\"");
+    const auto& curtains = s.settings<components::aurora::Settings>().curtains;
+    ASSERT_EQ(curtains.size(), 2u);
+    EXPECT_EQ(curtains[0].keys.front().pointsLatLonDeg.size(), 60u);
+    EXPECT_EQ(curtains[0].keys.front().pointsLatLonDeg[59], glm::dvec2(65.59, 19.5));
+}
+
 TEST(SceneErrors, MissingFile)
 {
     EXPECT_EQ(loadError(kData + "/nope.toml"), kData + "/nope.toml: scene file not found");
@@ -83,6 +107,9 @@ TEST(SceneErrors, NameFileAndLine)
         {"absurd_resolve_cells.toml", ":9: ", "aurora.resolve_cells: must be a finite number in [0.05, 100]"},
         {"unknown_component.toml", ":3: ", "unknown component 'rainbow'"},
         {"unlisted_table.toml", ":5: ", "unknown key 'stars'"},
+        // Arrays are parsed with a line break after each comma: the lines are still the file's.
+        {"long_array_then_typo.toml", ":19: ", "energy_kev_typo"},
+        {"long_array_then_syntax_error.toml", ":7: ", ""},
     };
     for (const Case& c : cases) {
         const std::string file = kData + "/" + c.file;
