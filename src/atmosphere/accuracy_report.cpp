@@ -20,7 +20,7 @@ namespace {
 int copiesOf(const AccuracyReportSettings& settings)
 {
     if (settings.copies > 0) return settings.copies;
-    return isSoftwareRenderer() ? 1 : 64;
+    return gl::isSoftwareRenderer(gl::currentRendererName()) ? 1 : 64;
 }
 
 std::string format(const char* pattern, double a)

@@ -112,11 +112,4 @@ gl::ShaderModule readShaderModule(const std::string& relativePath)
     return gl::readShaderModule(dataDirectory() + "/shaders/" + relativePath);
 }
 
-bool isSoftwareRenderer()
-{
-    const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
-    const std::string name = renderer ? renderer : "";
-    return name.rfind("llvmpipe", 0) == 0 || name.rfind("softpipe", 0) == 0;
-}
-
 } // namespace aurorawall

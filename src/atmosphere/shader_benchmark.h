@@ -53,7 +53,4 @@ double nanosecondsPerEvaluation(const ShaderBenchmarkResult& result, const Shade
 // Throws aurorawall::InputError naming the file when it cannot be read (gl::readShaderModule).
 gl::ShaderModule readShaderModule(const std::string& relativePath);
 
-// True on Mesa's CPU renderers (llvmpipe, softpipe); the current context's GL_RENDERER.
-bool isSoftwareRenderer();
-
 } // namespace aurorawall

@@ -29,6 +29,11 @@ std::string Context::rendererName() const { return glString(GL_RENDERER); }
 
 std::string currentRendererName() { return glString(GL_RENDERER); }
 
+bool isSoftwareRenderer(const std::string& rendererName)
+{
+    return rendererName.rfind("llvmpipe", 0) == 0 || rendererName.rfind("softpipe", 0) == 0;
+}
+
 std::string Context::glVersion() const { return glString(GL_VERSION); }
 
 std::string Context::vendorName() const { return glString(GL_VENDOR); }

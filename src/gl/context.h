@@ -94,6 +94,9 @@ protected:
 // GL_RENDERER of the current context (e.g. "llvmpipe (LLVM 15.0.6, 256 bits)"); empty without one.
 std::string currentRendererName();
 
+// True for Mesa's CPU renderers (llvmpipe, softpipe), by their GL_RENDERER.
+bool isSoftwareRenderer(const std::string& rendererName);
+
 // Throws std::runtime_error with one line saying why when no context can be made.
 // windowsForGlfw is used by Backend::Glfw only (at least one window).
 // EGL tries the device platform (device $AURORAWALL_EGL_DEVICE only, if set), then the surfaceless

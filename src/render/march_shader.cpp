@@ -1,5 +1,7 @@
 #include "render/march_shader.h"
 
+#include "gl/context.h"
+
 #include <algorithm>
 #include <cctype>
 
@@ -24,8 +26,7 @@ std::string defineOf(const scene::Component& c)
 
 MarchStage preferredMarchStage(const std::string& rendererName)
 {
-    const bool software = rendererName.rfind("llvmpipe", 0) == 0 || rendererName.rfind("softpipe", 0) == 0;
-    return software ? MarchStage::Fragment : MarchStage::Compute;
+    return gl::isSoftwareRenderer(rendererName) ? MarchStage::Fragment : MarchStage::Compute;
 }
 
 std::vector<std::string> marchModuleNames(const scene::Scene& scene, MarchStage stage)

@@ -2,6 +2,7 @@
 
 #include "components/plasma/gpu/gpu_limits.h"
 #include "components/plasma/simulation/plasma_parameters.h"
+#include "gl/context.h"
 #include "gl/functions.h"
 #include "gl/shader_program.h"
 
@@ -69,7 +70,7 @@ int depositQuantumBits(std::size_t particleCount, int dimension)
 
 GpuPicSolver preferredGpuPicSolver(const PeriodicGrid& grid, const std::string& rendererName)
 {
-    if (rendererName.rfind("llvmpipe", 0) == 0 || rendererName.rfind("softpipe", 0) == 0)
+    if (gl::isSoftwareRenderer(rendererName))
         return GpuPicSolver::FftCpu;
     for (int d = 0; d < grid.dimension; ++d)
         if (grid.cells[d] % 2 != 0)
