@@ -11,21 +11,17 @@ namespace aurorawall::render {
 
 namespace {
 
-constexpr int kGroupWidth = 8, kGroupHeight = 4; // main.comp's local size: 32 neighbouring pixels
-
 gl::Program marchProgram(const scene::Scene& scene, const std::string& shaderDir, MarchStage stage,
                          CountWork countWork)
 {
-    if (countWork == CountWork::Yes) {
-        if (stage != MarchStage::Compute)
-            throw std::invalid_argument("TileRenderer: work is counted by the compute march only");
-        gl::ShaderSource source = marchShaderSource(scene, shaderDir, stage);
+    if (countWork == CountWork::Yes && stage != MarchStage::Compute)
+        throw std::invalid_argument("TileRenderer: work is counted by the compute march only");
+    gl::ShaderSource source = marchShaderSource(scene, shaderDir, stage);
+    if (countWork == CountWork::Yes)
         source.defines.push_back("AURORAWALL_WORK_STATS");
-        return gl::Program::compute(source);
-    }
     if (stage == MarchStage::Compute)
-        return gl::Program::compute(marchShaderSource(scene, shaderDir, stage));
-    return gl::Program::graphics(gl::fullScreenTriangleVertexShader(), marchShaderSource(scene, shaderDir, stage));
+        return gl::Program::compute(source);
+    return gl::Program::graphics(gl::fullScreenTriangleVertexShader(), source);
 }
 
 } // namespace
@@ -122,8 +118,9 @@ void TileRenderer::renderTile(const wall::TileRays& rays, gl::FloatTarget& targe
                 target.width(), target.height(), gl::TexelFormat::RGBA32F, gl::Filter::Nearest, gl::Wrap::Clamp));
         gl::glBindImageTexture(2, workCounts_->id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
     }
-    gl::glDispatchCompute(GLuint((target.width() + kGroupWidth - 1) / kGroupWidth),
-                      GLuint((target.height() + kGroupHeight - 1) / kGroupHeight), 1);
+    // Workgroups of main.comp's local size, kWarpWidth x kWarpHeight pixels.
+    gl::glDispatchCompute(GLuint((target.width() + kWarpWidth - 1) / kWarpWidth),
+                          GLuint((target.height() + kWarpHeight - 1) / kWarpHeight), 1);
     // The image stores before whatever reads the target next: read-backs, blits, texture fetches and
     // uploads of exchanged bands.
     gl::glMemoryBarrier(GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT |

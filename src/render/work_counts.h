@@ -17,7 +17,7 @@ enum class CountWork { No, Yes };
 constexpr int kWorkQuantities = 4;
 inline constexpr const char* kWorkQuantityNames[kWorkQuantities] = {"march_steps", "curtain_evaluations",
                                                                    "sub_steps", "texture_fetches"};
-constexpr int kWarpWidth = 8, kWarpHeight = 4; // the compute march's workgroup: 32 pixels
+constexpr int kWarpWidth = 8, kWarpHeight = 4; // the compute march's workgroup (main.comp): 32 pixels
 
 struct WorkSummary {
     std::array<double, kWorkQuantities> meanPerPixel{};
