@@ -158,23 +158,30 @@ void APIENTRY checkedMemoryBarrier(GLbitfield barriers)
     driver.memoryBarrier(barriers);
 }
 
-// All bits set: NaN as float, −1 as int.
-std::vector<unsigned char> poison(GLsizeiptr size) { return std::vector<unsigned char>(std::size_t(size), 0xFF); }
+// The data a new buffer store starts with: the caller's, or with nan-fill and none given, all bits
+// set (NaN as float, −1 as int), held in `poison`.
+const void* initialData(GLsizeiptr size, const void* data, std::vector<unsigned char>& poison)
+{
+    if (data || !active.nanFill)
+        return data;
+    poison.assign(std::size_t(size), 0xFF);
+    return poison.data();
+}
 
 // A new store forgets the old one's uses (buffer names are reused, and each context has its own).
 void APIENTRY poisonedNamedBufferStorage(GLuint buffer, GLsizeiptr size, const void* data, GLbitfield flags)
 {
     hazards.buffers.erase(buffer);
-    const std::vector<unsigned char> nan = data || !active.nanFill ? std::vector<unsigned char>() : poison(size);
-    driver.namedBufferStorage(buffer, size, data || !active.nanFill ? data : nan.data(), flags);
+    std::vector<unsigned char> poison;
+    driver.namedBufferStorage(buffer, size, initialData(size, data, poison), flags);
 }
 
 void APIENTRY poisonedNamedBufferData(GLuint buffer, GLsizeiptr size, const void* data, GLenum usage)
 {
     checkUpdate("glNamedBufferData", buffer);
     hazards.buffers.erase(buffer);
-    const std::vector<unsigned char> nan = data || !active.nanFill ? std::vector<unsigned char>() : poison(size);
-    driver.namedBufferData(buffer, size, data || !active.nanFill ? data : nan.data(), usage);
+    std::vector<unsigned char> poison;
+    driver.namedBufferData(buffer, size, initialData(size, data, poison), usage);
 }
 
 bool isFloatFormat(GLenum format)
@@ -188,15 +195,21 @@ bool isFloatFormat(GLenum format)
     }
 }
 
+// One level of a float texture set to NaN.
+void poisonLevel(GLuint texture, GLint level)
+{
+    const float nan[4] = {std::numeric_limits<float>::quiet_NaN(), std::numeric_limits<float>::quiet_NaN(),
+                          std::numeric_limits<float>::quiet_NaN(), std::numeric_limits<float>::quiet_NaN()};
+    glClearTexImage(texture, level, GL_RGBA, GL_FLOAT, nan);
+}
+
 // Every level of a float texture set to NaN.
 void poisonTexture(GLuint texture, GLsizei levels, GLenum internalformat)
 {
-    if (!isFloatFormat(GLenum(internalformat)))
+    if (!isFloatFormat(internalformat))
         return;
-    const float nan[4] = {std::numeric_limits<float>::quiet_NaN(), std::numeric_limits<float>::quiet_NaN(),
-                          std::numeric_limits<float>::quiet_NaN(), std::numeric_limits<float>::quiet_NaN()};
     for (GLsizei level = 0; level < levels; ++level)
-        glClearTexImage(texture, level, GL_RGBA, GL_FLOAT, nan);
+        poisonLevel(texture, level);
 }
 
 void APIENTRY poisonedTextureStorage1D(GLuint texture, GLsizei levels, GLenum format, GLsizei width)
@@ -233,9 +246,7 @@ void poisonBoundLevel(GLenum target, GLint level, GLint format, const void* data
 {
     if (data || !isFloatFormat(GLenum(format)) || (target != GL_TEXTURE_1D && target != GL_TEXTURE_2D && target != GL_TEXTURE_3D))
         return;
-    const float nan[4] = {std::numeric_limits<float>::quiet_NaN(), std::numeric_limits<float>::quiet_NaN(),
-                          std::numeric_limits<float>::quiet_NaN(), std::numeric_limits<float>::quiet_NaN()};
-    glClearTexImage(boundTexture(target), level, GL_RGBA, GL_FLOAT, nan);
+    poisonLevel(boundTexture(target), level);
 }
 
 void APIENTRY poisonedTexImage1D(GLenum target, GLint level, GLint format, GLsizei width, GLint border,
