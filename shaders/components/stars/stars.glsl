@@ -29,17 +29,17 @@ float starHash(vec2 cell, float salt)
 // Cells: 2·kStarCells in longitude over 2π (π/kStarCells radians each, times cos(latitude) on the
 // sky), kStarCells/2 in latitude over π (2π/kStarCells radians each).
 const float kStarCells = 1024.0;
+const float kStarPi = 3.14159265358979;
 
 // The light of the star of cell `cell` (wrapped in longitude; none beyond the poles) at the point
 // `grid` of the cell grid, at latitude angle `latitude` (radians), Gaussian width sigma (radians).
 vec3 starOfCell(vec2 cell, vec2 grid, float latitude, float sigma)
 {
-    const float pi = 3.14159265358979;
     vec2 wrapped = vec2(mod(cell.x, 2.0 * kStarCells), cell.y);
     if (cell.y < 0.0 || cell.y >= 0.5 * kStarCells || starHash(wrapped, 0.0) > uStarDensity)
         return vec3(0.0);
     vec2 centre = cell + 0.25 + 0.5 * vec2(starHash(wrapped, 1.0), starHash(wrapped, 2.0));
-    vec2 offsetRad = (grid - centre) * vec2(pi / kStarCells * cos(latitude), 2.0 * pi / kStarCells);
+    vec2 offsetRad = (grid - centre) * vec2(kStarPi / kStarCells * cos(latitude), 2.0 * kStarPi / kStarCells);
     float magnitude = pow(starHash(wrapped, 3.0), 4.0); // few bright stars, many faint ones
     vec3 tint = mix(vec3(1.0, 0.8, 0.6), vec3(0.7, 0.8, 1.0), starHash(wrapped, 4.0));
     return uStarBrightness * magnitude * tint * exp(-dot(offsetRad, offsetRad) / (sigma * sigma));
@@ -47,16 +47,15 @@ vec3 starOfCell(vec2 cell, vec2 grid, float latitude, float sigma)
 
 vec3 starRadiance(vec3 d)
 {
-    const float pi = 3.14159265358979;
-    vec2 angles = vec2(atan(d.y, d.x) + pi, asin(clamp(d.z, -1.0, 1.0)) + 0.5 * pi) / pi; // [0,2] x [0,1]
+    vec2 angles = vec2(atan(d.y, d.x) + kStarPi, asin(clamp(d.z, -1.0, 1.0)) + 0.5 * kStarPi) / kStarPi; // [0,2] x [0,1]
     vec2 grid = angles * vec2(kStarCells, 0.5 * kStarCells);
     vec2 cell = floor(grid);
-    float latitude = angles.y * pi - 0.5 * pi;
+    float latitude = angles.y * kStarPi - 0.5 * kStarPi;
     float sigma = max(uPixelAngle, 2e-4);
     // The cells within 3σ, at most 4 each way (beyond, near the poles, where longitude cells narrow,
     // or at pixels wider than a cell, a star's light is cut at 4 cells).
-    int reachLat = min(4, 1 + int(3.0 * sigma / (2.0 * pi / kStarCells)));
-    int reachLon = min(4, 1 + int(3.0 * sigma / (pi / kStarCells * max(cos(latitude), 1e-3))));
+    int reachLat = min(4, 1 + int(3.0 * sigma / (2.0 * kStarPi / kStarCells)));
+    int reachLon = min(4, 1 + int(3.0 * sigma / (kStarPi / kStarCells * max(cos(latitude), 1e-3))));
     vec3 radiance = vec3(0.0);
     for (int j = -reachLat; j <= reachLat; ++j)
         for (int i = -reachLon; i <= reachLon; ++i)
