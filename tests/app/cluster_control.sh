@@ -5,12 +5,7 @@
 # sends the secret first steers the wall (status, pause, quit) and the job exits 0. Skipped (77) where
 # namespaces cannot be made.
 source "$(dirname "$0")/lib.sh"
-probe="awccprobe$$"
-if ! ip netns add "$probe" 2>/dev/null; then
-    echo "SKIPPED: network namespaces cannot be made here (needs root and ip netns)"
-    exit 77
-fi
-ip netns del "$probe"
+require_network_namespaces
 prefix="awcc$$"
 token="$WORK/token"
 echo "secret-$$-$RANDOM" > "$token"

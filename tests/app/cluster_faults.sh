@@ -5,12 +5,7 @@
 # the host; a remote rank stopped (SIGSTOP) ends it within 15 s with status 3, naming it. No case
 # leaves a process or a namespace behind. Skipped (77) where namespaces cannot be made.
 source "$(dirname "$0")/lib.sh"
-probe="awcfprobe$$"
-if ! ip netns add "$probe" 2>/dev/null; then
-    echo "SKIPPED: network namespaces cannot be made here (needs root and ip netns)"
-    exit 77
-fi
-ip netns del "$probe"
+require_network_namespaces
 timeout_s=3
 
 # start NAME: a 2 hosts x 2 ranks run that would last for hours, in the background (job=$!); its

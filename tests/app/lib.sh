@@ -79,3 +79,14 @@ status_once_changed() {
     sleep 1
     ask status
 }
+
+# For the scripts on launch/virtual-cluster: exits 77 (skipped) where network namespaces cannot be
+# made (not root, or no ip netns).
+require_network_namespaces() {
+    local probe="awprobe$$"
+    if ! ip netns add "$probe" 2>/dev/null; then
+        echo "SKIPPED: network namespaces cannot be made here (needs root and ip netns)"
+        exit 77
+    fi
+    ip netns del "$probe"
+}

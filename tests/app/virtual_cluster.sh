@@ -5,12 +5,7 @@
 # gives the image of the one-host run and of --single-screen on one rank bit for bit. No namespace is
 # left behind. Skipped (77) where namespaces cannot be made (not root, or no ip netns).
 source "$(dirname "$0")/lib.sh"
-probe="awvcprobe$$"
-if ! ip netns add "$probe" 2>/dev/null; then
-    echo "SKIPPED: network namespaces cannot be made here (needs root and ip netns)"
-    exit 77
-fi
-ip netns del "$probe"
+require_network_namespaces
 wall="$WALLS/desktop-2x2.toml"
 cluster() { AURORAWALL="$AW" VIRTUAL_CLUSTER_PREFIX="awvct$$" "$SRC_DIR/launch/virtual-cluster" "$@"; }
 
