@@ -1,6 +1,7 @@
-// The curtain field's per-frame rebuild (EGL; Mesa llvmpipe in CI): the polylines and the footprint map
-// are rebuilt exactly when the keyframed control points change, and the textures kept from earlier
-// frames then hold the same bytes as those of a field that saw only this frame.
+// The curtain field's per-frame rebuild (EGL; Mesa llvmpipe in CI), with the footprint map built on the
+// CPU and on the GPU: the polylines and the map are rebuilt exactly when the keyframed control points
+// change, and the textures kept from earlier frames then hold the same bytes as those of a field that
+// saw only this frame.
 #include "components/aurora/curtain_field.h"
 #include "gl/context.h"
 #include "gl/functions.h"
@@ -13,6 +14,7 @@
 
 using namespace aurorawall;
 using components::aurora::CurtainField;
+using components::aurora::MapBuilder;
 
 namespace {
 
@@ -47,18 +49,27 @@ std::vector<float> readBack(const gl::Texture& t)
     return texels;
 }
 
+const std::string kShaders = std::string(AURORAWALL_SOURCE_DIR) + "/shaders";
+
 constexpr double unknownNext = std::numeric_limits<double>::quiet_NaN(); // a lone frame: nothing built ahead
 
 bool rebuilt(const CurtainField& field) { return field.summary().find(", rebuilt:") != std::string::npos; }
 
+class CurtainFieldBuiltOn : public testing::TestWithParam<MapBuilder> {};
+
 } // namespace
 
-TEST(CurtainField, RebuildsExactlyWhenTheControlPointsChange)
+INSTANTIATE_TEST_SUITE_P(MapBuilders, CurtainFieldBuiltOn, testing::Values(MapBuilder::Cpu, MapBuilder::Gpu),
+                         [](const testing::TestParamInfo<MapBuilder>& info) {
+                             return std::string(info.param == MapBuilder::Cpu ? "Cpu" : "Gpu");
+                         });
+
+TEST_P(CurtainFieldBuiltOn, RebuildsExactlyWhenTheControlPointsChange)
 {
     const auto context = gl::createContext(gl::Backend::Egl);
     const components::aurora::Settings settings = movingArc();
     const components::aurora::CurtainModel model(settings, 6371.0, nullptr);
-    CurtainField field(model);
+    CurtainField field(model, GetParam(), kShaders);
     field.update(0.0, unknownNext);
     EXPECT_TRUE(rebuilt(field));
     field.update(5.0, unknownNext); // before the first key: held still
@@ -77,15 +88,15 @@ TEST(CurtainField, RebuildsExactlyWhenTheControlPointsChange)
     EXPECT_FALSE(rebuilt(field));
 }
 
-TEST(CurtainField, KeptTexturesHoldTheBytesOfAFreshBuild)
+TEST_P(CurtainFieldBuiltOn, KeptTexturesHoldTheBytesOfAFreshBuild)
 {
     const auto context = gl::createContext(gl::Backend::Egl);
     const components::aurora::Settings settings = movingArc();
     const components::aurora::CurtainModel model(settings, 6371.0, nullptr);
-    CurtainField running(model);
+    CurtainField running(model, GetParam(), kShaders);
     for (double t : {11.0, 13.0, 17.0, 25.0}) {
         running.update(t, unknownNext);
-        CurtainField fresh(model);
+        CurtainField fresh(model, GetParam(), kShaders);
         fresh.update(t, unknownNext);
         EXPECT_EQ(readBack(running.footprintMap()), readBack(fresh.footprintMap())) << "t = " << t;
         EXPECT_EQ(readBack(running.polylines()), readBack(fresh.polylines())) << "t = " << t;
@@ -96,20 +107,20 @@ TEST(CurtainField, KeptTexturesHoldTheBytesOfAFreshBuild)
 // at the uneven steps of a real-time clock: from the second frame on every rebuild takes the build
 // made ahead on the worker thread, and its textures hold the bytes of a field that built only this
 // frame itself.
-TEST(CurtainField, BuildAheadHoldsTheBytesOfTheFramesOwnBuild)
+TEST_P(CurtainFieldBuiltOn, BuildAheadHoldsTheBytesOfTheFramesOwnBuild)
 {
     const auto context = gl::createContext(gl::Backend::Egl);
     const components::aurora::Settings settings = movingArc();
     const components::aurora::CurtainModel model(settings, 6371.0, nullptr);
     for (const std::vector<double>& times : {std::vector<double>{12.0, 12.5, 13.0, 13.5, 14.0, 14.5},
                                              std::vector<double>{12.0, 12.031, 12.097, 12.112, 12.3, 13.9}}) {
-        CurtainField running(model);
+        CurtainField running(model, GetParam(), kShaders);
         for (size_t n = 0; n < times.size(); ++n) {
             const double t = times[n];
             running.update(t, n + 1 < times.size() ? times[n + 1] : unknownNext);
             EXPECT_EQ(running.rebuilds(), n + 1);
             EXPECT_EQ(running.rebuildsBuiltAhead(), n) << "t = " << t;
-            CurtainField fresh(model);
+            CurtainField fresh(model, GetParam(), kShaders);
             fresh.update(t, unknownNext);
             EXPECT_EQ(fresh.rebuildsBuiltAhead(), 0u);
             EXPECT_EQ(readBack(running.footprintMap()), readBack(fresh.footprintMap())) << "t = " << t;
@@ -121,18 +132,18 @@ TEST(CurtainField, BuildAheadHoldsTheBytesOfTheFramesOwnBuild)
 // A command changed the next frame's time (the master announced 16 s, then a new time of 15.7 s was
 // set): the build made ahead is dropped and the frame builds its own curtains, equal to a fresh
 // field's.
-TEST(CurtainField, WrongPredictionBuildsTheFrameItself)
+TEST_P(CurtainFieldBuiltOn, WrongPredictionBuildsTheFrameItself)
 {
     const auto context = gl::createContext(gl::Backend::Egl);
     const components::aurora::Settings settings = movingArc();
     const components::aurora::CurtainModel model(settings, 6371.0, nullptr);
-    CurtainField running(model);
+    CurtainField running(model, GetParam(), kShaders);
     running.update(15.0, 15.5);
     running.update(15.5, 16.0);
     EXPECT_EQ(running.rebuildsBuiltAhead(), 1u);
     running.update(15.7, 16.1);
     EXPECT_EQ(running.rebuildsBuiltAhead(), 1u);
-    CurtainField fresh(model);
+    CurtainField fresh(model, GetParam(), kShaders);
     fresh.update(15.7, unknownNext);
     EXPECT_EQ(readBack(running.footprintMap()), readBack(fresh.footprintMap()));
     EXPECT_EQ(readBack(running.polylines()), readBack(fresh.polylines()));
@@ -141,16 +152,16 @@ TEST(CurtainField, WrongPredictionBuildsTheFrameItself)
     EXPECT_EQ(running.rebuilds(), 4u);
 }
 
-// The unit-free half of the build: buildCurtains made on a worker thread equals the same call on
+// The GL-free half of the build: buildCurtains made on a worker thread equals the same call on
 // this thread, byte for byte (texels and polylines), at times where the curtains move.
 TEST(CurtainField, BuildOnAWorkerThreadEqualsTheSameBuildHere)
 {
     const components::aurora::Settings settings = movingArc();
     const components::aurora::CurtainModel model(settings, 6371.0, nullptr);
-    components::aurora::CurtainBuildAhead ahead(model);
+    components::aurora::CurtainBuildAhead ahead(model, MapBuilder::Cpu);
     for (double t : {11.0, 13.25, 19.5}) {
         const auto states = model.statesAt(t);
-        const components::aurora::CurtainBuild here = components::aurora::buildCurtains(model, states);
+        const components::aurora::CurtainBuild here = components::aurora::buildCurtains(model, states, MapBuilder::Cpu);
         ahead.start(states);
         const auto there = ahead.take(components::aurora::controlPointsOf(states));
         ASSERT_TRUE(there.has_value()) << "t = " << t;

@@ -2,6 +2,7 @@
 // skip_empty_space = yes equals the naive march (no) with the same step. A skip ends where the
 // footprint map's conservative distance allows, so it never crosses an emitting region, and it
 // jumps over whole steps of the naive march's grid, so the samples it takes are the naive march's.
+// So the image is also the same whether the CPU or the GPU built the map.
 #include "app/accuracy_scene.h"
 #include "gl/context.h"
 #include "components/aurora/aurora.h"
@@ -67,6 +68,27 @@ TEST_P(Skipping, EqualsTheNaiveMarch)
         EXPECT_GT(d.error.pixels, 0u);
         EXPECT_EQ(d.error.max, 0.0) << "step " << stepKm << " km";
     }
+}
+
+// Both maps are conservative and name a nearest point from which the march finds the same exact
+// curtain coordinates, so the march takes the same samples with either map: equal images.
+TEST_P(Skipping, MapBuiltOnTheGpuGivesTheSameImage)
+{
+    scene::Scene s = components::loadScene(kSource + "/config/scenes/" + GetParam());
+    const app::SceneView view = app::sceneView(s, kSource + "/config/walls/single.toml", {64, 36});
+    auto& aurora = s.settings<components::aurora::Settings>();
+    aurora.footprintMapBuild = components::aurora::MapBuilder::Cpu;
+    const app::TimedRender cpu = app::renderView(s, view, kSource + "/shaders", 0);
+    aurora.footprintMapBuild = components::aurora::MapBuilder::Gpu;
+    const app::TimedRender gpu = app::renderView(s, view, kSource + "/shaders", 0);
+    size_t lit = 0;
+    for (int y = 0; y < 36; ++y)
+        for (int x = 0; x < 64; ++x) {
+            const glm::dvec3 a = app::pixelRadiance(cpu.image, x, y), b = app::pixelRadiance(gpu.image, x, y);
+            ASSERT_EQ(a, b) << "pixel " << x << "," << y;
+            lit += a != glm::dvec3(0.0);
+        }
+    EXPECT_GT(lit, 0u);
 }
 
 INSTANTIATE_TEST_SUITE_P(Presets, Skipping,

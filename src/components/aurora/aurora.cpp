@@ -7,6 +7,8 @@
 #include "components/fluid_detail/curtain_detail.h"
 #include "components/plasma/plasma.h"
 #include "components/plasma/plasma_detail.h"
+#include "common/data_dir.h"
+#include "gl/context.h"
 #include "gl/shader_program.h"
 #include "scene/scene.h"
 
@@ -14,10 +16,19 @@ namespace aurorawall::components::aurora {
 
 namespace {
 
+// Auto resolved for the current context's renderer.
+MapBuilder resolvedMapBuilder(MapBuilder choice)
+{
+    if (choice != MapBuilder::Auto)
+        return choice;
+    return gl::isSoftwareRenderer(gl::currentRendererName()) ? MapBuilder::Cpu : MapBuilder::Gpu;
+}
+
 class Renderer : public scene::ComponentRenderer {
 public:
     Renderer(const Settings& s, double planetRadiusKm, const fluid_detail::DetailShape* detail)
-        : s_(s), tables_(s), model_(s, planetRadiusKm, detail), field_(model_)
+        : s_(s), tables_(s), model_(s, planetRadiusKm, detail),
+          field_(model_, resolvedMapBuilder(s.footprintMapBuild), dataDirectory() + "/shaders")
     {
     }
     std::string precomputationLog() const override { return tables_.summary(); }
@@ -113,6 +124,8 @@ public:
         a.footprintMapSize = static_cast<int>(t.number("footprint_map_size", 16, 8192, a.footprintMapSize));
         if (a.footprintMapSize & (a.footprintMapSize - 1))
             t.fail("footprint_map_size", "must be a power of two");
+        a.footprintMapBuild = static_cast<MapBuilder>(
+            t.choice("footprint_map_build", {"auto", "cpu", "gpu"}, static_cast<int>(a.footprintMapBuild)));
         a.skipEmptySpace = t.choice("skip_empty_space", {"no", "yes"}, a.skipEmptySpace) == 1;
         a.tableAltitudeStepKm = t.number("table_altitude_step_km", 0.05, 10.0, a.tableAltitudeStepKm);
         a.tableEnergyCount = static_cast<int>(t.number("table_energy_count", 2, 4096, a.tableEnergyCount));
@@ -121,8 +134,8 @@ public:
             for (const config::TableReader& c : t.arrayOfTables("curtain"))
                 a.curtains.push_back(readCurtain(c));
         }
-        if (a.curtains.size() > 16)
-            t.fail("curtain", "at most 16 curtains are supported");
+        if (a.curtains.size() > size_t(kMaxCurtains))
+            t.fail("curtain", "at most " + std::to_string(kMaxCurtains) + " curtains are supported");
     }
     std::vector<std::string> shaderModules() const override
     {

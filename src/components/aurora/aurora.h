@@ -33,6 +33,15 @@ struct Curtain {
     double pulsationDepth = 0.0;   // 0..1: fraction of the brightness that pulsates
 };
 
+// Where the footprint map is built: on the GPU in compute shaders (footprint_map_gpu.h), or on the
+// CPU on a worker thread and uploaded (curtain_build.h). Auto: the CPU on Mesa's CPU renderers,
+// whose "GPU" is the same CPU (there the compute build costs 50 ms a frame at 512², the worker
+// thread's build none of the frame's time), the GPU everywhere else.
+enum class MapBuilder { Auto, Cpu, Gpu };
+
+// The most curtains a scene may have (the shaders' uniform arrays).
+inline constexpr int kMaxCurtains = 16;
+
 struct Settings : scene::SettingsOf<Settings> {
     static constexpr const char* kComponent = "aurora";
     physics::Spectrum spectrum = physics::Spectrum::Maxwellian; // of the precipitating electrons
@@ -44,6 +53,7 @@ struct Settings : scene::SettingsOf<Settings> {
                                       // integrated over (along or across) by at most this many detail cells
     double polylineSpacingKm = 2.0;   // curtain splines are sampled this finely for the shader
     int footprintMapSize = 512;       // texels per side of the jump-flooded footprint map
+    MapBuilder footprintMapBuild = MapBuilder::Auto; // where the map is built each frame
     bool skipEmptySpace = true;       // long steps where the footprint map proves no curtain is near
     double tableAltitudeStepKm = 0.5; // deposition table resolution (src/components/aurora/physics/deposition_table.h)
     int tableEnergyCount = 128;

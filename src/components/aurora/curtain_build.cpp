@@ -43,12 +43,12 @@ ControlPoints controlPointsOf(const std::vector<CurtainState>& states)
     return points;
 }
 
-CurtainBuild buildCurtains(const CurtainModel& model, const std::vector<CurtainState>& states)
+CurtainBuild buildCurtains(const CurtainModel& model, const std::vector<CurtainState>& states, MapBuilder builder)
 {
     const Settings& aurora = model.settings();
     CurtainBuild build;
     build.controlPoints = controlPointsOf(states);
-    std::vector<physics::CurtainPolyline> polylines;
+    std::vector<physics::CurtainPolyline>& polylines = build.polylines;
     size_t widest = 1;
     for (const CurtainState& s : states) {
         polylines.push_back(model.footprint(s));
@@ -81,7 +81,8 @@ CurtainBuild buildCurtains(const CurtainModel& model, const std::vector<CurtainS
     const double extraKm = reachKm + 2.0 * aurora.polylineSpacingKm + 100.0;
     physics::FootprintMapSpec spec = capAround(polylines, extraKm, model.planetRadiusKm(), aurora.footprintMapSize);
     spec.reachKm = reachKm;
-    build.map = physics::buildFootprintMap(polylines, spec, model.planetRadiusKm());
+    build.map = builder == MapBuilder::Cpu ? physics::buildFootprintMap(polylines, spec, model.planetRadiusKm())
+                                           : physics::footprintMapFrame(polylines, spec, model.planetRadiusKm());
     return build;
 }
 

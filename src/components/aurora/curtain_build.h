@@ -1,8 +1,9 @@
 #pragma once
 // The CPU part of the curtain field's rebuild: each curtain's dense polyline (one texture row each)
-// and the footprint map (src/components/aurora/physics/footprint_map.h). A pure function of the
-// curtains' control points, with no GL, so that it can run on a worker thread ahead of the frame
-// that needs it and give the same bytes as a build on the frame's own thread.
+// and its footprint map (src/components/aurora/physics/footprint_map.h): the map's frame (projection,
+// margin, band) always, its texels when the CPU builds them (else the GPU does, footprint_map_gpu.h).
+// A pure function of the curtains' control points, with no GL, so that it can run on a worker thread
+// ahead of the frame that needs it and give the same bytes as a build on the frame's own thread.
 #include "components/aurora/curtain_model.h"
 #include "components/aurora/physics/footprint_map.h"
 
@@ -25,10 +26,12 @@ struct CurtainBuild {
     // padded with their last point.
     int polylineWidth = 1, polylineRows = 1;
     std::vector<float> polylineTexels;
-    physics::FootprintMap map;
+    std::vector<physics::CurtainPolyline> polylines; // in double: the reference map's input
+    physics::FootprintMap map;                       // without texels where the GPU builds them
 };
 
-// The polylines and the map of the curtains' states (only their control points are read).
-CurtainBuild buildCurtains(const CurtainModel& model, const std::vector<CurtainState>& states);
+// The polylines and the map of the curtains' states (only their control points are read); the map's
+// texels only with builder Cpu.
+CurtainBuild buildCurtains(const CurtainModel& model, const std::vector<CurtainState>& states, MapBuilder builder);
 
 } // namespace aurorawall::components::aurora

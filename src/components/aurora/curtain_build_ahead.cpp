@@ -24,7 +24,9 @@ void CurtainBuildAhead::start(std::vector<CurtainState> states)
     finish(dropped_);
     pendingControlPoints_ = controlPointsOf(states);
     pending_ = std::async(std::launch::async,
-                          [&model = model_, states = std::move(states)] { return buildCurtains(model, states); });
+                          [&model = model_, builder = builder_, states = std::move(states)] {
+                              return buildCurtains(model, states, builder);
+                          });
 }
 
 std::optional<CurtainBuild> CurtainBuildAhead::take(const ControlPoints& controlPoints)

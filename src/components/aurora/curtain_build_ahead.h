@@ -12,7 +12,7 @@ namespace aurorawall::components::aurora {
 
 class CurtainBuildAhead {
 public:
-    explicit CurtainBuildAhead(const CurtainModel& model) : model_(model) {}
+    CurtainBuildAhead(const CurtainModel& model, MapBuilder builder) : model_(model), builder_(builder) {}
     CurtainBuildAhead(const CurtainBuildAhead&) = delete;
     CurtainBuildAhead& operator=(const CurtainBuildAhead&) = delete;
     ~CurtainBuildAhead();
@@ -26,6 +26,7 @@ public:
 
 private:
     const CurtainModel& model_;
+    const MapBuilder builder_;
     std::future<CurtainBuild> pending_;
     std::future<CurtainBuild> dropped_; // a wrong prediction still finishing
     ControlPoints pendingControlPoints_;

@@ -20,7 +20,9 @@ void uploadInto(std::unique_ptr<gl::Texture>& texture, int width, int height, co
 
 } // namespace
 
-CurtainField::CurtainField(const CurtainModel& model) : model_(model), ahead_(model)
+CurtainField::CurtainField(const CurtainModel& model, MapBuilder builder, const std::string& shaderDir)
+    : model_(model), ahead_(model, builder),
+      gpuMap_(builder == MapBuilder::Gpu ? std::make_unique<FootprintMapGpu>(shaderDir) : nullptr)
 {
     reachKm_ = static_cast<float>(model.reachKm());
     state_.resize(model.settings().curtains.size());
@@ -42,7 +44,7 @@ void CurtainField::update(double timeS, double nextTimeS)
             ++rebuildsBuiltAhead_;
             upload(*ahead);
         } else {
-            upload(buildCurtains(model_, states));
+            upload(buildCurtains(model_, states, gpuMap_ ? MapBuilder::Gpu : MapBuilder::Cpu));
         }
     }
     for (size_t i = 0; i < states.size(); ++i) {
@@ -56,9 +58,10 @@ void CurtainField::update(double timeS, double nextTimeS)
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     char text[280];
     std::snprintf(text, sizeof text,
-                  "curtains: %zu, %zu points, footprint map %d^2 (radius %.1f deg, margin %.2f km), %s: %.1f ms, "
-                  "built ahead: %zu of %zu rebuilds",
-                  states.size(), pointTotal_, static_cast<int>(size_), angularRadiusDeg_, marginKm_,
+                  "curtains: %zu, %zu points, footprint map %d^2 on the %s (radius %.1f deg, margin %.2f km), %s: "
+                  "%.1f ms, built ahead: %zu of %zu rebuilds",
+                  states.size(), pointTotal_, static_cast<int>(size_), gpuMap_ ? "GPU" : "CPU", angularRadiusDeg_,
+                  marginKm_,
                   rebuilt ? "rebuilt" : "unchanged", ms, rebuildsBuiltAhead_, rebuilds_);
     summary_ = text;
 }
@@ -86,8 +89,16 @@ void CurtainField::upload(const CurtainBuild& build)
     pointCounts_ = build.pointCounts;
     pointTotal_ = build.pointTotal;
     uploadInto(polylines_, build.polylineWidth, build.polylineRows, build.polylineTexels);
-    const physics::FootprintMap& map = build.map;
-    uploadInto(footprint_, map.spec.size, map.spec.size, map.texels);
+    const physics::FootprintMap map = gpuMap_ ? FootprintMapGpu::gpuFrame(build.map) : build.map;
+    const int n = map.spec.size;
+    if (gpuMap_) {
+        if (!footprint_ || footprint_->width() != n)
+            footprint_ = std::make_unique<gl::Texture>(
+                gl::Texture::create2D(n, n, gl::TexelFormat::RGBA32F, gl::Filter::Nearest, gl::Wrap::Clamp));
+        gpuMap_->build(map, *polylines_, pointCounts_, *footprint_);
+    } else {
+        uploadInto(footprint_, n, n, map.texels);
+    }
     centre_ = glm::vec3(map.centre);
     east_ = glm::vec3(map.east);
     angularRadius_ = static_cast<float>(map.angularRadius);

@@ -1,9 +1,11 @@
 #pragma once
 // The aurora's curtains for one frame, on the GPU: each curtain's spline sampled into a dense
-// polyline (one texture row each) and the jump-flooded footprint map that finds the nearest
-// curtain point from anywhere (src/components/aurora/physics/footprint_map.h). Rebuilt on the CPU every frame from
-// the master's animation time, deterministically, so every rank uploads the same bytes; kept (with
-// their textures) while the curtains' control points stay exactly the same.
+// polyline (one texture row each) on the CPU, and the footprint map that finds the nearest curtain
+// point from anywhere (src/components/aurora/physics/footprint_map.h), built from the uploaded
+// polylines on the GPU (footprint_map_gpu.h) or on the CPU and uploaded (MapBuilder). Rebuilt every
+// frame from the master's animation time, deterministically, so every rank of a wall of like GPUs
+// holds the same bytes; kept (with their textures) while the curtains' control points stay exactly
+// the same.
 //
 // While a frame draws, the curtains of the next frame's time as the master announced it
 // (cluster::FrameState::nextTimeS) are built on a worker thread; the next update uploads that build
@@ -13,6 +15,7 @@
 #include "gl/texture.h"
 #include "components/aurora/curtain_build_ahead.h"
 #include "components/aurora/curtain_model.h"
+#include "components/aurora/footprint_map_gpu.h"
 
 #include <glm/glm.hpp>
 
@@ -24,7 +27,8 @@ namespace aurorawall::components::aurora {
 
 class CurtainField {
 public:
-    explicit CurtainField(const CurtainModel& model);
+    // builder: Cpu or Gpu (not Auto); shaderDir holds components/aurora/ (the GPU's map build).
+    CurtainField(const CurtainModel& model, MapBuilder builder, const std::string& shaderDir);
 
     // Evaluates the keyframes at timeS; rebuilds (or takes the build made ahead) and uploads the
     // polylines and the map when the control points differ from the last build's. Then starts
@@ -45,8 +49,8 @@ public:
     size_t rebuilds() const { return rebuilds_; }
     size_t rebuildsBuiltAhead() const { return rebuildsBuiltAhead_; }
 
-    // "curtains: 5, 2311 points, footprint map 512^2 (radius 21.3 deg, margin 2.9 km), rebuilt: 0.4 ms,
-    //  built ahead: 7 of 9 rebuilds"
+    // "curtains: 5, 2311 points, footprint map 512^2 on the GPU (radius 21.3 deg, margin 2.9 km), rebuilt:
+    //  0.4 ms, built ahead: 7 of 9 rebuilds"
     const std::string& summary() const { return summary_; }
 
 private:
@@ -55,6 +59,7 @@ private:
 
     const CurtainModel& model_;
     CurtainBuildAhead ahead_;
+    std::unique_ptr<FootprintMapGpu> gpuMap_; // null: the CPU builds the map
     size_t rebuilds_ = 0, rebuildsBuiltAhead_ = 0;
     ControlPoints controlPoints_; // of the last build
     std::vector<size_t> pointCounts_;

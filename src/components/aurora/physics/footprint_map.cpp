@@ -119,9 +119,8 @@ std::vector<int> jumpFlood(const Seeds& seeds, const std::vector<glm::dvec3>& te
 
 // The band: for every texel whose centre lies within `withinKm` of some seed, the exact nearest seed
 // and the exact nearest seed on another curtain (if that one is within withinKm too); `none` elsewhere.
-// Each seed visits the texels of a box around its own that holds every texel centre within withinKm of it:
-// a geodesic of length w from a seed in the cap stays within θ ≤ Θ + w/R, where the projection stretches
-// lengths by at most θ/sin θ, so the map distance is at most w·stretch. Seeds go in increasing order and
+// Each seed visits the texels of a box around its own that holds every texel centre within withinKm of it
+// (footprintBandBoxTexels). Seeds go in increasing order and
 // only a strictly larger dot product wins, so ties go to the smaller seed number, as in jumpFloodPass.
 struct Band {
     std::vector<int> first, second;
@@ -138,10 +137,7 @@ Band exactBand(const Seeds& seeds, const FootprintMap& map, double withinKm)
     const double R = map.planetRadiusKm;
     const double within = withinKm / R;
     const double cosWithin = std::cos(std::min(within, kPi));
-    const double thetaMax = map.angularRadius + within;
-    const double stretch = thetaMax < 3.0 ? thetaMax / std::sin(thetaMax) : 1e30;
-    const int box = static_cast<int>(std::min(std::ceil(within * stretch / (2.0 * map.angularRadius) * n) + 1.0,
-                                              static_cast<double>(n)));
+    const int box = footprintBandBoxTexels(map, withinKm);
     for (int s = 0; s < none; ++s) {
         const glm::dvec3& seed = seeds.direction[s];
         const glm::dvec2 texel =
@@ -183,7 +179,7 @@ glm::dvec3 footprintTexelDirection(const FootprintMap& map, int i, int j)
                                       map.angularRadius);
 }
 
-FootprintMap buildFootprintMap(const std::vector<CurtainPolyline>& curtains, const FootprintMapSpec& spec,
+FootprintMap footprintMapFrame(const std::vector<CurtainPolyline>& curtains, const FootprintMapSpec& spec,
                                double planetRadiusKm)
 {
     const int n = spec.size;
@@ -207,7 +203,6 @@ FootprintMap buildFootprintMap(const std::vector<CurtainPolyline>& curtains, con
     map.east = glm::dvec3(std::sin(lon), -std::cos(lon), 0.0);
     map.angularRadius = spec.angularRadiusDeg * kPi / 180.0;
 
-    Seeds seeds;
     double longestArc = 0.0; // radians between consecutive points of a curtain
     for (size_t c = 0; c < curtains.size(); ++c) {
         const std::vector<glm::dvec3>& points = curtains[c].points;
@@ -219,41 +214,76 @@ FootprintMap buildFootprintMap(const std::vector<CurtainPolyline>& curtains, con
                                             std::to_string(k) + " lies outside the map's cap");
             if (k > 0)
                 longestArc = std::max(longestArc, f64::angleBetween(points[k - 1], points[k]));
-            seeds.direction.push_back(points[k]);
-            seeds.curtain.push_back(static_cast<int>(c));
-            seeds.point.push_back(static_cast<int>(k));
+            ++map.seedCount;
         }
     }
-    const int none = static_cast<int>(seeds.direction.size());
-    seeds.direction.push_back(glm::dvec3(std::numeric_limits<double>::quiet_NaN()));
-
     const double R = planetRadiusKm;
     const double h = 2.0 * map.angularRadius / n;
     map.marginKm = R * (h * std::sqrt(0.5) + 0.5 * longestArc + 2.0 * map.angularRadius * 1e-6);
+    if (map.seedCount > 0)
+        map.exactWithinKm = spec.reachKm + map.marginKm + R * h;
+    return map;
+}
+
+int footprintBandBoxTexels(const FootprintMap& map, double withinKm)
+{
+    const int n = map.spec.size;
+    const double within = withinKm / map.planetRadiusKm;
+    const double thetaMax = map.angularRadius + within;
+    const double stretch = thetaMax < 3.0 ? thetaMax / std::sin(thetaMax) : 1e30;
+    return static_cast<int>(
+        std::min(std::ceil(within * stretch / (2.0 * map.angularRadius) * n) + 1.0, static_cast<double>(n)));
+}
+
+int footprintCoarseMapSize(const FootprintMap& map) { return std::min(map.spec.size, kCoarseMapSize); }
+
+double footprintCoarseSlackKm(const FootprintMap& map)
+{
+    const int k = map.spec.size / footprintCoarseMapSize(map);
+    const double h = 2.0 * map.angularRadius / map.spec.size;
+    return map.planetRadiusKm * h * (k * kJfaErrorTexels + (k - 1) * std::sqrt(0.5));
+}
+
+FootprintMap buildFootprintMap(const std::vector<CurtainPolyline>& curtains, const FootprintMapSpec& spec,
+                               double planetRadiusKm)
+{
+    FootprintMap map = footprintMapFrame(curtains, spec, planetRadiusKm);
+    const int n = spec.size;
+    const double R = planetRadiusKm;
+
+    Seeds seeds;
+    for (size_t c = 0; c < curtains.size(); ++c)
+        for (size_t k = 0; k < curtains[c].points.size(); ++k) {
+            seeds.direction.push_back(curtains[c].points[k]);
+            seeds.curtain.push_back(static_cast<int>(c));
+            seeds.point.push_back(static_cast<int>(k));
+        }
+    const int none = static_cast<int>(seeds.direction.size());
+    seeds.direction.push_back(glm::dvec3(std::numeric_limits<double>::quiet_NaN()));
+
     map.texels.assign(static_cast<size_t>(n) * n * 4, 0.0f);
     if (none == 0) {
         for (size_t t = 0; t < map.texels.size(); t += 4) {
             map.texels[t] = map.texels[t + 1] = map.texels[t + 3] = -1.0f;
-            map.texels[t + 2] = roundedDown(kPi * R);
+            map.texels[t + 2] = roundedDown(footprintNoCurtainKm(map));
         }
         return map;
     }
 
     // Near the curtains (where the shader reads the stored point): exact.
-    map.exactWithinKm = spec.reachKm + map.marginKm + R * h;
     const Band band = exactBand(seeds, map, map.exactWithinKm);
 
     // Elsewhere only a lower bound of the distance matters (for skipping): a coarse jump-flooded map
     // gives the distance from each coarse texel centre c to a seed, at most kJfaErrorTexels coarse texels
     // more than the nearest; a fine texel centre p in that coarse texel is within R·h·(k − 1)/√2 of c, so
     // distance(p) ≥ distance(c) − that. Every seed is also farther than exactWithinKm from p (p is not in the band).
-    const int coarse = std::min(n, kCoarseMapSize);
+    const int coarse = footprintCoarseMapSize(map);
     const int k = n / coarse;
     FootprintMap coarseFrame = map;
     coarseFrame.spec.size = coarse;
     const std::vector<glm::dvec3> coarseDirection = texelDirections(coarseFrame);
     const std::vector<int> coarseNearest = jumpFlood(seeds, coarseDirection, coarseFrame);
-    const double slackKm = R * h * (k * kJfaErrorTexels + (k - 1) * std::sqrt(0.5));
+    const double slackKm = footprintCoarseSlackKm(map);
     std::vector<float> coarseBound(coarseNearest.size());
     for (size_t t = 0; t < coarseNearest.size(); ++t)
         coarseBound[t] = roundedDown(std::max(

@@ -32,6 +32,7 @@
 // Outside the cap (θ > Θ) the map is not read: footprintMapOutsideKm = R(θ − Θ) > 0 is the bound, because
 // every curtain point lies inside the cap (the build checks this) and the cap is convex for Θ ≤ 90°.
 #include "components/aurora/physics/curtain_geometry.h"
+#include "common/constants.h"
 
 #include <glm/glm.hpp>
 
@@ -77,6 +78,7 @@ struct FootprintMap {
     double angularRadius = 0.0;
     double marginKm = 0.0;      // see the header comment; uniform for footprintConservativeKm
     double exactWithinKm = 0.0; // reach + margin + one texel: texels whose centre is that near a seed are exact
+    int seedCount = 0;          // curtain points (0: every texel says "no curtain")
     // RGBA32F, N × N, row-major, bottom row first: texel (i, j) at [4(jN + i)] holds (curtain id, point index,
     // distance km, second). In the band (the centre within exactWithinKm of a seed): the nearest seed, the
     // distance from the texel centre to it, and `second`, the nearest point of any OTHER curtain within
@@ -91,6 +93,22 @@ struct FootprintMap {
     // footprintMapTexel(footprintMapCoord(d)) and footprintConservativeKm(distance, marginKm).
     FootprintSample lookup(const glm::dvec3& unitDir) const;
 };
+
+// Everything of the map of these curtains but its texels: the projection's frame, the margin, the band's
+// radius (the uniforms, and the inputs of a build on the GPU, footprint_map_gpu.h). Throws as buildFootprintMap.
+FootprintMap footprintMapFrame(const std::vector<CurtainPolyline>& curtains, const FootprintMapSpec& spec,
+                               double planetRadiusKm);
+
+// Texels each way around a seed's own texel that hold every texel centre within withinKm of the seed:
+// a geodesic of length w from a seed in the cap stays within θ ≤ Θ + w/R, where the projection stretches
+// lengths by at most θ/sin θ.
+int footprintBandBoxTexels(const FootprintMap& map, double withinKm);
+// Side of the coarse jump-flooded map, and how much a fine texel's bound is lowered below its coarse
+// texel's seed distance: JFA's allowance plus the distance between the fine and coarse texel centres.
+int footprintCoarseMapSize(const FootprintMap& map);
+double footprintCoarseSlackKm(const FootprintMap& map);
+// The distance stored without curtains: half the circumference, nearer than any curtain could be.
+inline double footprintNoCurtainKm(const FootprintMap& map) { return kPi * map.planetRadiusKm; }
 
 // The map of the given curtains (all with planetRadiusKm). Throws std::invalid_argument for a bad spec,
 // a curtain point outside the cap, 256 curtains or more, or 65536 points or more in a curtain.
