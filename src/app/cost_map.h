@@ -2,11 +2,12 @@
 // `render --cost-map FILE.png`: the cost of every pixel of the last frame as a colour, with a scale
 // bar in nanoseconds per pixel (the per-pixel cost maps of Lawlor & Genetti's Figure 11).
 //
-// The cost of a pixel is its ray's work (1 + its aurora samples, written by the raymarcher to the
-// float target's second attachment) times its rank's time per unit of work in that frame:
+// The cost of a pixel is its ray's work, written by the raymarcher to the float target's second
+// attachment, times its rank's time per unit of work in that frame:
 //     ns per work unit = render_ms of the rank * 1e6 / the summed work of the pixels it drew.
-// It is an ESTIMATE: it assumes each unit of work costs the same, which ignores the fixed cost of a
-// ray and the ground, sky and stars.
+// The work is measured where the GPU has a clock: the cycles the pixel's ray took
+// (render::PixelWork::ShaderClock); elsewhere it is 1 + the ray's texture fetches (TextureFetches),
+// an estimate that gives every fetch the same cost and the rest of the ray none.
 #include "app/wall_session.h"
 #include "cluster/frame_stats.h"
 #include "cluster/mpi_world.h"

@@ -100,7 +100,14 @@ void openGraphics(const cluster::MpiWorld& world, WallSession& s)
     const render::MarchStage stage = s.options.march == MarchChoice::Compute    ? render::MarchStage::Compute
                                      : s.options.march == MarchChoice::Fragment ? render::MarchStage::Fragment
                                                                                 : render::preferredMarchStage(s.context->rendererName());
-    s.renderer = std::make_unique<render::TileRenderer>(s.scene, s.shaderDir, stage);
+    // The cost map measures each pixel's time with the GPU's clock where it has one, else counts its
+    // texture fetches (render/work_counts.h). Mesa's CPU renderers have a shader clock, but it is the
+    // CPU's time stamp, which counts whatever the operating system ran meanwhile.
+    const bool gpuClock = gl::hasExtension("GL_ARB_shader_clock") && !gl::isSoftwareRenderer(s.context->rendererName());
+    const render::PixelWork pixelWork = s.options.costMapFile.empty() ? render::PixelWork::Samples
+                                        : gpuClock                    ? render::PixelWork::ShaderClock
+                                                                      : render::PixelWork::TextureFetches;
+    s.renderer = std::make_unique<render::TileRenderer>(s.scene, s.shaderDir, stage, render::CountWork::No, pixelWork);
     if (backend == gl::Backend::Glfw)
         s.presenter = std::make_unique<render::WindowPresenter>(s.shaderDir, s.toneMap);
     for (size_t i = 0; i < myScreens.size(); ++i) {
@@ -173,6 +180,10 @@ int setUpWallSession(const cluster::MpiWorld& world, int argc, char** argv, Wall
                     session.context->rendererName().c_str(), session.context->vendorName().c_str(),
                     session.context->glVersion().c_str(),
                     session.renderer->stage() == render::MarchStage::Compute ? "compute" : "fragment");
+        if (session.renderer->pixelWork() != render::PixelWork::Samples)
+            std::printf("cost map: each pixel's %s\n", session.renderer->pixelWork() == render::PixelWork::ShaderClock
+                                                            ? "time on the GPU clock (GL_ARB_shader_clock)"
+                                                            : "texture fetches (no GPU clock)");
         for (const std::string& line : session.renderer->precomputationLog())
             std::printf("precomputed %s\n", line.c_str());
     }

@@ -29,6 +29,16 @@ std::string Context::rendererName() const { return glString(GL_RENDERER); }
 
 std::string currentRendererName() { return glString(GL_RENDERER); }
 
+bool hasExtension(const std::string& name)
+{
+    GLint count = 0;
+    glGetIntegerv(GL_NUM_EXTENSIONS, &count);
+    for (GLint i = 0; i < count; ++i)
+        if (name == reinterpret_cast<const char*>(glGetStringi(GL_EXTENSIONS, GLuint(i))))
+            return true;
+    return false;
+}
+
 bool isSoftwareRenderer(const std::string& rendererName)
 {
     return rendererName.rfind("llvmpipe", 0) == 0 || rendererName.rfind("softpipe", 0) == 0;

@@ -94,6 +94,9 @@ protected:
 // GL_RENDERER of the current context (e.g. "llvmpipe (LLVM 15.0.6, 256 bits)"); empty without one.
 std::string currentRendererName();
 
+// Whether the current context has the GL extension `name` (e.g. "GL_ARB_shader_clock").
+bool hasExtension(const std::string& name);
+
 // True for Mesa's CPU renderers (llvmpipe, softpipe), by their GL_RENDERER.
 bool isSoftwareRenderer(const std::string& rendererName);
 

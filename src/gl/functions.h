@@ -16,6 +16,7 @@
     /* state, errors, strings */                                                    \
     X(PFNGLGETERRORPROC, glGetError)                                                \
     X(PFNGLGETSTRINGPROC, glGetString)                                              \
+    X(PFNGLGETSTRINGIPROC, glGetStringi)                                            \
     X(PFNGLGETINTEGERVPROC, glGetIntegerv)                                          \
     X(PFNGLGETINTEGER64VPROC, glGetInteger64v)                                      \
     X(PFNGLGETINTEGERI_VPROC, glGetIntegeri_v)                                      \

@@ -31,7 +31,10 @@ const char* const kDispatchInvocation = R"(#ifdef AURORAWALL_REVERSE_WORKGROUPS
 // Source string 0 is the preamble; module k is string k.
 std::vector<std::string> assemble(GLenum stage, const ShaderSource& source)
 {
-    std::string preamble = "#version 450 core\n#define real float\n";
+    std::string preamble = "#version 450 core\n";
+    for (const std::string& extension : source.extensions)
+        preamble += "#extension " + extension + " : require\n";
+    preamble += "#define real float\n";
     if (stage == GL_COMPUTE_SHADER) {
         if (installedDebugModes().reverseWorkgroups)
             preamble += "#define AURORAWALL_REVERSE_WORKGROUPS\n";

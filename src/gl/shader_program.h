@@ -28,6 +28,7 @@ struct ShaderModule {
 struct ShaderSource {
     std::vector<std::string> defines; // "NAME" or "NAME VALUE", emitted as #define lines
     std::vector<ShaderModule> modules;
+    std::vector<std::string> extensions = {}; // "GL_ARB_shader_clock", emitted as #extension NAME : require
 };
 
 // A failed compile or link; what() starts with the stage and the first mapped location,

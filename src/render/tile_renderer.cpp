@@ -12,13 +12,22 @@ namespace aurorawall::render {
 namespace {
 
 gl::Program marchProgram(const scene::Scene& scene, const std::string& shaderDir, MarchStage stage,
-                         CountWork countWork)
+                         CountWork countWork, PixelWork pixelWork)
 {
     if (countWork == CountWork::Yes && stage != MarchStage::Compute)
         throw std::invalid_argument("TileRenderer: work is counted by the compute march only");
     gl::ShaderSource source = marchShaderSource(scene, shaderDir, stage);
     if (countWork == CountWork::Yes)
         source.defines.push_back("AURORAWALL_WORK_STATS");
+    if (pixelWork == PixelWork::ShaderClock) {
+        if (!gl::hasExtension("GL_ARB_shader_clock"))
+            throw std::invalid_argument("TileRenderer: the GPU clock needs GL_ARB_shader_clock, which " +
+                                        gl::currentRendererName() + " lacks");
+        source.extensions.push_back("GL_ARB_shader_clock");
+        source.defines.push_back("AURORAWALL_WORK_CLOCK");
+    }
+    if (pixelWork == PixelWork::TextureFetches)
+        source.defines.push_back("AURORAWALL_WORK_FETCHES");
     if (stage == MarchStage::Compute)
         return gl::Program::compute(source);
     return gl::Program::graphics(gl::fullScreenTriangleVertexShader(), source);
@@ -32,8 +41,9 @@ TileRenderer::TileRenderer(const scene::Scene& scene, const std::string& shaderD
 }
 
 TileRenderer::TileRenderer(const scene::Scene& scene, const std::string& shaderDir, MarchStage stage,
-                           CountWork countWork)
-    : scene_(scene), stage_(stage), countWork_(countWork), program_(marchProgram(scene, shaderDir, stage, countWork))
+                           CountWork countWork, PixelWork pixelWork)
+    : scene_(scene), stage_(stage), countWork_(countWork), pixelWork_(pixelWork),
+      program_(marchProgram(scene, shaderDir, stage, countWork, pixelWork))
 {
     // A component finds the GPU parts of those made before it (registry order).
     const scene::FindRenderer find = [&](const std::string& name) -> scene::ComponentRenderer* {

@@ -24,9 +24,10 @@ public:
     // current context). Throws InputError for unreadable shader files and gl::ShaderError for
     // compile errors.
     // With CountWork::Yes (compute stage only, else std::invalid_argument) every tile also counts
-    // its work per pixel (work_counts.h), read with workCounts.
+    // its work per pixel (work_counts.h), read with workCounts. pixelWork: what the target's work
+    // attachment holds (work_counts.h; ShaderClock needs GL_ARB_shader_clock, else std::invalid_argument).
     TileRenderer(const scene::Scene& scene, const std::string& shaderDir, MarchStage stage,
-                 CountWork countWork = CountWork::No);
+                 CountWork countWork = CountWork::No, PixelWork pixelWork = PixelWork::Samples);
     // The same in the stage preferred for the current context's renderer (preferredMarchStage).
     TileRenderer(const scene::Scene& scene, const std::string& shaderDir);
 
@@ -41,6 +42,7 @@ public:
     void renderTile(const wall::TileRays& rays, gl::FloatTarget& target, const gl::FullScreenTriangle& triangle);
 
     MarchStage stage() const { return stage_; }
+    PixelWork pixelWork() const { return pixelWork_; }
 
     // The last tile's work counts (CountWork::Yes): kWorkQuantities floats per pixel, rows bottom-up.
     // Throws std::logic_error without counting or for another size than the last tile's.
@@ -59,6 +61,7 @@ private:
     const scene::Scene& scene_;
     MarchStage stage_;
     CountWork countWork_;
+    PixelWork pixelWork_;
     gl::Program program_;
     std::unique_ptr<gl::Texture> workCounts_; // RGBA32F, the last tile's size
     glm::dmat3 wallToPlanet_{1.0}; // with the frame's zoom (cluster::wallToPlanet)

@@ -14,6 +14,15 @@ namespace aurorawall::render {
 
 enum class CountWork { No, Yes };
 
+// What a pixel's work, the float target's second attachment (gl/float_target.h), holds:
+//   Samples         1 + the ray's aurora samples: the load balancer's measure;
+//   ShaderClock     the GPU clock cycles the pixel's ray took (GL_ARB_shader_clock, clock2x32ARB
+//                   around the ray; on a GPU a warp's lanes finish together, so neighbours share the
+//                   slowest's time, which is what they cost);
+//   TextureFetches  1 + the march's texture fetches (the counters above): the dependent reads that
+//                   dominate a GPU's time per pixel, where there is no clock.
+enum class PixelWork { Samples, ShaderClock, TextureFetches };
+
 constexpr int kWorkQuantities = 4;
 inline constexpr const char* kWorkQuantityNames[kWorkQuantities] = {"march_steps", "curtain_evaluations",
                                                                    "sub_steps", "texture_fetches"};

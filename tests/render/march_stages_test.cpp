@@ -75,11 +75,12 @@ struct CountedFrame {
     glm::ivec2 size;
 };
 
-CountedFrame countedFrame(const std::string& sceneName)
+CountedFrame countedFrame(const std::string& sceneName, render::PixelWork pixelWork = render::PixelWork::Samples)
 {
     const scene::Scene s = components::loadScene(kSource + "/config/scenes/" + sceneName + ".toml");
     const app::SceneView view = app::sceneView(s, kSource + "/config/walls/single.toml", {48, 27});
-    render::TileRenderer renderer(s, kSource + "/shaders", render::MarchStage::Compute, render::CountWork::Yes);
+    render::TileRenderer renderer(s, kSource + "/shaders", render::MarchStage::Compute, render::CountWork::Yes,
+                                  pixelWork);
     const glm::ivec2 size(48, 27);
     gl::FloatTarget target(size.x, size.y);
     gl::FullScreenTriangle triangle;
@@ -113,4 +114,38 @@ TEST(WorkCounts, AgreeWithTheWorkTheBalancerReads)
     EXPECT_THROW(render::TileRenderer(components::loadScene(kSource + "/config/scenes/twilight.toml"),
                                       kSource + "/shaders", render::MarchStage::Fragment, render::CountWork::Yes),
                  std::invalid_argument);
+}
+
+// The cost map's measures of a pixel (render/work_counts.h, PixelWork): 1 + its counted texture
+// fetches, exactly; and where the context has GL_ARB_shader_clock, its clock cycles: positive and
+// finite on every pixel, and the median over the pixels that fetch nothing below the median over
+// those that fetch the most (medians: on Mesa's CPU renderers the clock also counts the time the
+// operating system took a core away).
+TEST(WorkCounts, CostMapMeasures)
+{
+    const auto context = gl::createContext(gl::Backend::Egl);
+    const CountedFrame fetches = countedFrame("benchmark-view", render::PixelWork::TextureFetches);
+    for (int i = 0; i < fetches.size.x * fetches.size.y; ++i)
+        ASSERT_EQ(fetches.work[i], 1.0f + fetches.counts[4 * i + 3]) << i;
+    if (!gl::hasExtension("GL_ARB_shader_clock")) {
+        EXPECT_THROW(countedFrame("benchmark-view", render::PixelWork::ShaderClock), std::invalid_argument);
+        GTEST_SKIP() << "no GL_ARB_shader_clock on " << gl::currentRendererName();
+    }
+    const CountedFrame clock = countedFrame("benchmark-view", render::PixelWork::ShaderClock);
+    std::vector<float> idle, busy;
+    const float most = *std::max_element(fetches.work.begin(), fetches.work.end());
+    for (int i = 0; i < clock.size.x * clock.size.y; ++i) {
+        ASSERT_TRUE(std::isfinite(clock.work[i]) && clock.work[i] > 0.0f) << i;
+        if (fetches.work[i] == 1.0f)
+            idle.push_back(clock.work[i]);
+        if (fetches.work[i] >= 0.5f * most)
+            busy.push_back(clock.work[i]);
+    }
+    ASSERT_FALSE(idle.empty());
+    ASSERT_FALSE(busy.empty());
+    const auto median = [](std::vector<float> v) {
+        std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
+        return v[v.size() / 2];
+    };
+    EXPECT_LT(median(idle), median(busy));
 }
