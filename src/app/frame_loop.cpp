@@ -167,6 +167,7 @@ cluster::FrameStats runFrames(WallSession& session, const cluster::MpiWorld& wor
                                            "/config/scenes",
                                        session.options.outDir};
     std::vector<control::ScreenshotRequest> screenshots;
+    control::PresetLoader presets;
     std::optional<MovieWriter> movie;
     if (world.isMaster() && !session.options.movieDir.empty())
         movie.emplace(session.options.movieDir, session.options.movieExr, session.toneMap);
@@ -195,7 +196,7 @@ cluster::FrameStats runFrames(WallSession& session, const cluster::MpiWorld& wor
             flyByGamepad(*session.context, *clock, navigation, gamepadBefore, stats.records().empty() ? 0.0 : lastFrameS);
             if (session.control) {
                 const control::FrameRequests requests =
-                    control::serveCommands(*session.control, *clock, wallStatus, wallFacts);
+                    control::serveCommands(*session.control, *clock, wallStatus, wallFacts, presets);
                 stopRequested = stopRequested || requests.quit;
                 screenshots = requests.screenshots;
                 if (requests.orbit == control::OrbitRequest::Start)

@@ -46,6 +46,28 @@ ask '^error preset nowhere: no such preset in .* \(presets: .*low-orbit.*\)$' "p
 ask '^ok preset .*/low-orbit\.toml lat_deg=58\.000000 lon_deg=20\.000000 alt_km=400\.000000$' \
     "preset $SRC_DIR/config/scenes/low-orbit.toml"
 ask ' lat_deg=58\.000000 lon_deg=20\.000000 alt_km=400\.000000 ' status
+# A large preset is read off the frame loop: while the 400,000 points of one curtain are read (seconds),
+# status answers and the frames go on, and a second preset is refused; then the big one is refused
+# for its size, and the camera stays.
+python3 - "$WORK/big.toml" <<'PY'
+import sys
+points = ", ".join(f"[{66 + (k % 100) / 200:.5f}, {-10 + 60 * k / 400000:.6f}]" for k in range(400000))
+open(sys.argv[1], "w").write(f'[scene]\nbase = "overhead.toml"\n\n[[aurora.curtain]]\npoints_lat_lon_deg = [{points}]\n')
+PY
+cp "$DATA/overhead.toml" "$WORK/overhead.toml"
+"${client[@]}" --port "$port" "preset $WORK/big.toml" > "$WORK/big.answer" &
+loader=$!
+sleep 0.5 # the preset has reached the wall
+frame_before=$(field frame "$("${client[@]}" --port "$port" status)")
+ask '^error preset ground-65n: another preset is still loading$' "preset ground-65n"
+frame_during=$(field frame "$(ask ' lat_deg=58\.000000 lon_deg=20\.000000 alt_km=400\.000000 ' status)")
+kill -0 $loader 2>/dev/null || fail "the big preset was answered before status: $(cat "$WORK/big.answer")"
+[ "$frame_during" -gt "$frame_before" ] || fail "no frame was drawn while the preset loaded ($frame_before, $frame_during)"
+wait $loader && fail "the big preset was accepted: $(cat "$WORK/big.answer")"
+grep -q '^error preset .*/big\.toml: .*points_lat_lon_deg: 400000 control points, more than the 16384' "$WORK/big.answer" ||
+    fail "the big preset answered '$(cat "$WORK/big.answer")'"
+note "status answered and frames $frame_before..$frame_during drawn while the big preset loaded"
+ask ' lat_deg=58\.000000 lon_deg=20\.000000 alt_km=400\.000000 ' status
 # Orbiting a point on the ground 2 degrees north of the camera: the camera stays, turns to look at it
 # (the heading north, the pitch down), at the chord's distance; orbit off keeps the pose.
 ask '^ok orbit lat_deg=60 lon_deg=20 alt_km=0 distance_km=[0-9.]+$' "orbit 60 20 0"

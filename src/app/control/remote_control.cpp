@@ -20,30 +20,9 @@ std::string format(const char* pattern, double a, double b = 0.0, double c = 0.0
     return text;
 }
 
-// The names of the presets in `presetDir`, blank-separated, sorted.
-std::string presetNames(const std::string& presetDir)
-{
-    std::vector<std::string> names;
-    std::error_code error;
-    for (const auto& entry : std::filesystem::directory_iterator(presetDir, error))
-        if (entry.path().extension() == ".toml")
-            names.push_back(entry.path().stem().string());
-    std::sort(names.begin(), names.end());
-    std::string text;
-    for (const std::string& n : names)
-        text += (text.empty() ? "" : " ") + n;
-    return text;
-}
-
-std::string oneLine(std::string text)
-{
-    std::replace(text.begin(), text.end(), '\n', ' ');
-    return text;
-}
-
 // Carries out one command; returns its answer ("" for a screenshot, answered once written).
 std::string carryOut(const Command& command, std::uint64_t client, cluster::MasterClock& clock,
-                     const WallStatus& status, const WallFacts& wall, FrameRequests& requests)
+                     const WallStatus& status, const WallFacts& wall, PresetLoader& presets, FrameRequests& requests)
 {
     const double planetRadiusKm = wall.planetRadiusKm;
     const double* v = command.values;
@@ -86,13 +65,9 @@ std::string carryOut(const Command& command, std::uint64_t client, cluster::Mast
         requests.orbit = OrbitRequest::Stop;
         return format("ok look heading_deg=%.9g pitch_deg=%.9g", v[0], v[1]);
     }
-    case CommandKind::Preset: {
-        clock.setCamera(presetCamera(command.path, wall.presetDir));
-        requests.orbit = OrbitRequest::Stop;
-        const GeographicPose p = poseOf(clock.camera(), planetRadiusKm);
-        return "ok preset " + command.path +
-               format(" lat_deg=%.6f lon_deg=%.6f alt_km=%.6f", p.latitudeDeg, p.longitudeDeg, p.altitudeKm);
-    }
+    case CommandKind::Preset:
+        presets.start(command.path, wall.presetDir, client);
+        return ""; // answered once loaded (applyLoadedPreset)
     case CommandKind::Orbit: {
         const glm::dvec3 pivot = scene::planetPoint(v[0], v[1], planetRadiusKm + v[2]);
         const scene::Camera now = clock.camera();
@@ -134,25 +109,6 @@ std::string carryOut(const Command& command, std::uint64_t client, cluster::Mast
 
 } // namespace
 
-scene::Camera presetCamera(const std::string& name, const std::string& presetDir)
-{
-    const bool file = name.size() > 5 && name.compare(name.size() - 5, 5, ".toml") == 0;
-    if (!file && name.find('/') != std::string::npos)
-        throw CommandError("preset " + name + ": a preset is a name (" + presetNames(presetDir) +
-                           ") or a scene file ending in .toml");
-    const std::string path = file ? name : presetDir + "/" + name + ".toml";
-    std::error_code error;
-    if (!std::filesystem::is_regular_file(path, error))
-        throw CommandError("preset " + name + ": " +
-                           (file ? path + " is not a readable file"
-                                 : "no such preset in " + presetDir + " (presets: " + presetNames(presetDir) + ")"));
-    try {
-        return components::loadScene(path).camera;
-    } catch (const std::exception& e) {
-        throw CommandError("preset " + name + ": " + oneLine(e.what()));
-    }
-}
-
 std::string statusLine(const cluster::MasterClock& clock, const WallStatus& status, double planetRadiusKm)
 {
     const GeographicPose p = poseOf(clock.camera(), planetRadiusKm);
@@ -162,16 +118,36 @@ std::string statusLine(const cluster::MasterClock& clock, const WallStatus& stat
            format(" heading_deg=%.6f pitch_deg=%.6f", p.headingDeg, p.pitchDeg);
 }
 
+// A preset whose load has finished: its camera applied and the command answered.
+void applyLoadedPreset(ControlServer& server, cluster::MasterClock& clock, PresetLoader& presets,
+                       double planetRadiusKm, FrameRequests& requests)
+{
+    std::optional<PresetLoader::Loaded> loaded = presets.poll();
+    if (!loaded)
+        return;
+    if (!loaded->camera) {
+        server.answer(loaded->client, "error " + loaded->error);
+        return;
+    }
+    clock.setCamera(*loaded->camera);
+    requests.orbit = OrbitRequest::Stop;
+    const GeographicPose p = poseOf(clock.camera(), planetRadiusKm);
+    server.answer(loaded->client, "ok preset " + loaded->name +
+                                      format(" lat_deg=%.6f lon_deg=%.6f alt_km=%.6f", p.latitudeDeg, p.longitudeDeg,
+                                             p.altitudeKm));
+}
+
 FrameRequests serveCommands(ControlServer& server, cluster::MasterClock& clock, const WallStatus& status,
-                            const WallFacts& wall)
+                            const WallFacts& wall, PresetLoader& presets)
 {
     FrameRequests requests;
+    applyLoadedPreset(server, clock, presets, wall.planetRadiusKm, requests);
     for (const ControlLine& line : server.poll(kCommandsPerFrame)) {
         std::string answer;
         try {
             if (requests.quit)
                 throw CommandError("the wall is quitting");
-            answer = carryOut(parseCommand(line.text), line.client, clock, status, wall, requests);
+            answer = carryOut(parseCommand(line.text), line.client, clock, status, wall, presets, requests);
         } catch (const CommandError& e) {
             answer = std::string("error ") + e.what();
         }

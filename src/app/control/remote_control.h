@@ -3,6 +3,7 @@
 // on the master's clock and camera (cluster/master_clock.h) before the next frame is decided, so
 // their effect reaches every rank in that frame's one broadcast. The protocol: docs/driving.md.
 #include "app/control/control_server.h"
+#include "app/control/preset_loader.h"
 #include "cluster/master_clock.h"
 
 #include <cstdint>
@@ -48,16 +49,11 @@ struct FrameRequests {
     glm::dvec3 pivotKm{0.0};
 };
 
-// Polls the server once, carries out up to kCommandsPerFrame commands and answers each (but the
-// screenshots, answered once written). A malformed or unknown line is answered "error REASON".
+// Applies a preset whose load has finished (answering its command), polls the server once, carries
+// out up to kCommandsPerFrame commands and answers each (but the screenshots, answered once written,
+// and the presets, once loaded). A malformed or unknown line is answered "error REASON".
 FrameRequests serveCommands(ControlServer& server, cluster::MasterClock& clock, const WallStatus& status,
-                            const WallFacts& wall);
-
-// The camera of the preset `name`: of presetDir/NAME.toml, or of the scene file `name` if it ends in
-// .toml (the camera that scene renders with: its [camera], or its base scene's). A keyed camera path
-// comes with it, so the camera follows the preset's flight at the wall's animation time. Throws
-// CommandError "preset NAME: REASON" for an unknown preset or a file that is no scene.
-scene::Camera presetCamera(const std::string& name, const std::string& presetDir);
+                            const WallFacts& wall, PresetLoader& presets);
 
 // The answer to `status`: the last frame drawn, and the time and camera the wall shows (those a command
 // has just set, if no frame has shown them yet).

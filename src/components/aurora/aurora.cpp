@@ -3,6 +3,7 @@
 #include "components/aurora/aurora_reference.h"
 #include "components/aurora/aurora_tables.h"
 #include "components/aurora/curtain_field.h"
+#include "components/aurora/physics/curtain_geometry.h"
 #include "components/atmosphere/atmosphere.h"
 #include "components/fluid_detail/curtain_detail.h"
 #include "components/plasma/plasma.h"
@@ -70,9 +71,28 @@ CurtainKey readCurtainKey(const config::TableReader& t, CurtainKey c)
     return c;
 }
 
+// A key's curtain, sampled as the renderer samples it, must fit one row of the polylines' texture.
+void checkPolylineFits(const config::TableReader& t, const CurtainKey& key, double planetRadiusKm, double spacingKm)
+{
+    // Every span between control points gives at least one point: a quick refusal of huge arrays.
+    if (key.pointsLatLonDeg.size() > size_t(kMaxPolylinePoints))
+        t.fail("points_lat_lon_deg", std::to_string(key.pointsLatLonDeg.size()) + " control points, more than the " +
+                                         std::to_string(kMaxPolylinePoints) + " points a curtain may have");
+    size_t points = 0;
+    try {
+        points = physics::sampleCurtain(key.pointsLatLonDeg, planetRadiusKm, spacingKm).points.size();
+    } catch (const std::invalid_argument& e) {
+        t.fail("points_lat_lon_deg", std::string(e.what()).substr(std::string("sampleCurtain: ").size()));
+    }
+    if (points > size_t(kMaxPolylinePoints))
+        t.fail("points_lat_lon_deg", "the curtain sampled every aurora.polyline_spacing_km has " +
+                                         std::to_string(points) + " points, more than the " +
+                                         std::to_string(kMaxPolylinePoints) + " a curtain may have");
+}
+
 // A curtain is either one state (its own keys) or a list of [[aurora.curtain.key]] tables, each
 // with time_s; a key leaves out what does not change from the key before it.
-Curtain readCurtain(const config::TableReader& t)
+Curtain readCurtain(const config::TableReader& t, double planetRadiusKm, double spacingKm)
 {
     Curtain c;
     c.thicknessKm = t.number("thickness_km", 0.01, 1000, c.thicknessKm);
@@ -81,6 +101,7 @@ Curtain readCurtain(const config::TableReader& t)
     c.pulsationDepth = t.number("pulsation_depth", 0, 1, c.pulsationDepth);
     if (!t.has("key")) {
         c.keys.push_back(readCurtainKey(t, CurtainKey{}));
+        checkPolylineFits(t, c.keys.back(), planetRadiusKm, spacingKm);
     } else {
         CurtainKey previous;
         for (const config::TableReader& k : t.arrayOfTables("key")) {
@@ -91,6 +112,7 @@ Curtain readCurtain(const config::TableReader& t)
             if (!c.keys.empty() && key.pointsLatLonDeg.size() != c.keys.front().pointsLatLonDeg.size())
                 k.fail("points_lat_lon_deg", "every key of a curtain needs the same number of points");
             k.rejectUnknownKeys();
+            checkPolylineFits(k, key, planetRadiusKm, spacingKm);
             c.keys.push_back(key);
             previous = key;
         }
@@ -132,7 +154,7 @@ public:
         if (t.has("curtain")) {
             a.curtains.clear(); // a derived scene's curtains replace its base's
             for (const config::TableReader& c : t.arrayOfTables("curtain"))
-                a.curtains.push_back(readCurtain(c));
+                a.curtains.push_back(readCurtain(c, scene.planetRadiusKm, a.polylineSpacingKm));
         }
         if (a.curtains.size() > size_t(kMaxCurtains))
             t.fail("curtain", "at most " + std::to_string(kMaxCurtains) + " curtains are supported");

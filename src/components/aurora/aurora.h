@@ -41,6 +41,10 @@ enum class MapBuilder { Auto, Cpu, Gpu };
 
 // The most curtains a scene may have (the shaders' uniform arrays).
 inline constexpr int kMaxCurtains = 16;
+// The most points of a curtain's sampled polyline: one texture row each, and every GL 4.5 device
+// holds rows of 16384 texels (GL_MAX_TEXTURE_SIZE ≥ 16384). At the default 2 km spacing a curtain
+// may be 32,768 km long.
+inline constexpr int kMaxPolylinePoints = 16384;
 
 struct Settings : scene::SettingsOf<Settings> {
     static constexpr const char* kComponent = "aurora";
