@@ -46,10 +46,16 @@ struct BoundedError {
     size_t pixels = 0;
     double rms = 0.0, max = 0.0; // the error, relative
     double rmsBound = 0.0;       // the bound's RMS, relative
-    double worstRatio = 0.0;     // the largest error / bound
+    double worstRatio = 0.0;     // the largest error / bound (infinite after a non-finite error)
+    bool finite = true;
     void add(double error, double bound)
     {
         ++pixels;
+        if (!std::isfinite(error)) {
+            finite = false;
+            worstRatio = INFINITY;
+            return;
+        }
         squares_ += error * error;
         boundSquares_ += bound * bound;
         max = std::max(max, error);
