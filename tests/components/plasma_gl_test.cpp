@@ -22,9 +22,10 @@ const std::string kSource = AURORAWALL_SOURCE_DIR;
 
 // Tolerance: as for fluid_detail's frames (tests/render/reference_ray_test.cpp), the GPU's 0.25 km
 // steps and float round-off; the electron strip's edges are one texel sharp, which the bilinear
-// lookup and the march resolve alike. Measured at the 16 brightest pixels: RMS 1.3e-3, max 3.0e-3;
-// held to RMS 6e-3 and max 1.5e-2, about five times. The frames of a strip with one more wave put
-// the reference off by RMS 3.2: the comparison sees the curls (held above 0.1).
+// lookup and the march resolve alike. Measured at the 16 brightest pixels: RMS 1.0e-3, max 3.0e-3;
+// held to RMS 6e-3 and max 1.5e-2, measured, not derived: as there, the worst cases of the march's
+// error formulas on one-texel edges lie far above the errors. The frames of a strip with one more
+// wave put the reference off by RMS 3.2: the comparison sees the curls (held above 0.1).
 TEST(PlasmaOnTheGpu, AgreesWithTheReference)
 {
     const std::unique_ptr<gl::Context> context = gl::createContext(gl::Backend::Egl);

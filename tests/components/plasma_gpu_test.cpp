@@ -10,6 +10,7 @@
 #include "components/plasma/plasma.h"
 #include "components/plasma/sheet_frames.h"
 #include "components/plasma/simulation/discrete_laplacian.h"
+#include "components/plasma/simulation/dispersion.h"
 #include "components/plasma/simulation/electron_sheet.h"
 #include "components/plasma/simulation/electrostatic_pic.h"
 #include "components/plasma/simulation/fft_poisson_solver.h"
@@ -27,7 +28,9 @@
 #include <cstdio>
 #include <cstring>
 #include <glm/geometric.hpp>
+#include <glm/mat2x2.hpp>
 #include <gtest/gtest.h>
+#include <memory>
 #include <random>
 #include <stdexcept>
 #include <string>
@@ -254,7 +257,21 @@ TEST(PlasmaOnTheGpu, RunsAreBitIdentical)
 // Measured (llvmpipe, ω_pΔt = 0.2, ω_cΔt = 1): langmuir 1.55e-5 (the CPU in double 4.7e-6: float
 // adds 1.1e-5), langmuir-2d on 64² 2.41e-3 (the grid's dispersion, as on the CPU), the Boris rotation
 // 1.4e-8 and the speed's largest change 5.3e-6 over 1000 steps (float rounding, a random walk of
-// ~6e-8 per step), the E×B drift 1.5e-8 and 1.1e-8 along E.
+// ~6e-8 per step), the E×B drift 1.5e-8 and 1.1e-8 along E. The test particle's bounds, from
+// borisVelocity's operations in float (u = 2^-24):
+// - t = B·(q/m·Δt/2) from three float inputs and two products, 5u; s = 2t/(1 + t²), 8u more. The
+//   rotation 2 atan|t| errs by at most 5u of itself (d ln θ/d ln t ≤ 1), s's mismatch by 8u, and each
+//   step's component roundings (vMinus, the two crosses and sums: within 6u of |v|) turn the stored
+//   velocity by at most 2·6u: the mean angle per step within (13 + 12/θ)u relative;
+// - |v|: the rotation keeps it exactly when s = 2t/(1 + t²); s's 8u moves it by 8u·2t/√(1 + t²) ≤ 8u,
+//   the roundings by 10u: 18u a step, over 1000 steps at most 18000u;
+// - the E×B drift, the centre of the velocities' circle: the fixed point moves with the inputs' and
+//   t's rounding (10u), and each circumcentre, from three velocities within 6u of their length (at
+//   most twice the drift) and θ ≈ 0.93 rad apart, by at most 4 times that: 58u of E/B, along E×B and
+//   along E.
+// The Langmuir frequencies are fits to an oscillation with the fixed-point deposit's noise and the
+// float positions in it, whose worst case says nothing of the fit: their tolerances (1e-4 of theory,
+// 15% of the dispersion) are measured, not derived.
 TEST(PlasmaOnTheGpu, VerifyCasesAgreeWithTheory)
 {
     const auto context = gl::createContext(gl::Backend::Egl);
@@ -280,10 +297,11 @@ TEST(PlasmaOnTheGpu, VerifyCasesAgreeWithTheory)
     const double kDx = std::sqrt(2.0) * 2.0 * 3.14159265358979 / 64.0;
     const double dispersion = -kDx * kDx / 8.0;
     EXPECT_NEAR((langmuir2D.measured - *langmuir2D.expected) / *langmuir2D.expected, dispersion, 0.15 * -dispersion);
-    EXPECT_LT(measured(boris, "rotation_per_step_rad").relativeError(), 1e-6);
-    EXPECT_LT(measured(boris, "max_relative_speed_change").relativeError(), 2e-5);
-    EXPECT_LT(measured(exb, "drift_along_ExB_over_E_over_B").relativeError(), 1e-6);
-    EXPECT_LT(measured(exb, "drift_along_E_over_E_over_B").relativeError(), 1e-6);
+    const double u = std::ldexp(1.0, -24), theta = borisRotationPerStep(1.0);
+    EXPECT_LT(measured(boris, "rotation_per_step_rad").relativeError(), (13.0 + 12.0 / theta) * u);
+    EXPECT_LT(measured(boris, "max_relative_speed_change").relativeError(), 1000 * 18.0 * u);
+    EXPECT_LT(measured(exb, "drift_along_ExB_over_E_over_B").relativeError(), 58.0 * u);
+    EXPECT_LT(measured(exb, "drift_along_E_over_E_over_B").relativeError(), 58.0 * u);
 }
 
 namespace {
@@ -403,8 +421,12 @@ TEST(PlasmaPoissonOnTheGpu, RedBlackSorAndMultigridNeedEvenCellCounts)
 
 // langmuir-2d on 32² with the step's multigrid (kPicMultigridCycles V-cycles per step from the
 // previous step's φ): the frequency's error is the grid's dispersion −(|k|Δx)²/8 = −9.64e-3 as with
-// the FFT, held to the same 15%; measured −9.6378e-3 against the FFT's −9.6385e-3, 7.5e-7 apart (and
-// red-black SOR, not run here for its cost, 1.6e-8 apart); held to 5e-6.
+// the FFT, held to the same 15%. Against the same run with fft-cpu, whose φ is exact but for its
+// rounding to float (u), only the solve differs: six V-cycles from the previous step's φ, which moves
+// by ω_pΔt = 0.2 of itself a step, reach float (a factor 30 a cycle), so the multigrid's φ is within
+// floatPoissonBounds of the exact one for the wave's density, a cosine along the diagonal. A relative
+// error ε of the field the wave feels moves ω² by ε at most, ω by ε/2. Measured −9.6378e-3 against
+// the FFT's −9.6385e-3, 7.5e-7 apart (red-black SOR, not run here for its cost, 1.6e-8).
 TEST(PlasmaPoissonOnTheGpu, LangmuirWithConvergingSolversAgreesWithTheory)
 {
     const auto context = gl::createContext(gl::Backend::Egl);
@@ -418,35 +440,169 @@ TEST(PlasmaPoissonOnTheGpu, LangmuirWithConvergingSolversAgreesWithTheory)
     const double fft = omega(GpuPicSolver::FftCpu);
     const double kDx = std::sqrt(2.0) * 2.0 * M_PI / 32.0;
     const double dispersion = -kDx * kDx / 8.0;
+    const PeriodicGrid grid(2, {32, 32, 1}, {1.0 / 32.0, 1.0 / 32.0, 1.0});
+    std::vector<double> wave(grid.nodeCount());
+    for (int j = 0; j < 32; ++j)
+        for (int i = 0; i < 32; ++i)
+            wave[grid.index(i, j, 0)] = kVacuumPermittivity * std::cos(2.0 * M_PI * (i + j) / 32.0);
+    const double bound = 0.5 * (test::floatPoissonBounds(grid, wave, FftPoissonSolver(grid).solve(wave)).potential +
+                                std::ldexp(1.0, -24));
     for (const GpuPicSolver solver : {GpuPicSolver::Multigrid}) {
         const double converged = omega(solver);
-        std::printf("langmuir-2d 32^2: relative frequency error %.6g, with fft-cpu %.6g, difference %.3g\n", converged,
-                    fft, converged - fft);
+        std::printf("langmuir-2d 32^2: relative frequency error %.6g, with fft-cpu %.6g, difference %.3g "
+                    "(bound %.3g)\n",
+                    converged, fft, converged - fft, bound);
         EXPECT_NEAR(converged, dispersion, 0.15 * -dispersion);
-        EXPECT_NEAR(converged, fft, 5e-6);
+        EXPECT_NEAR(converged, fft, bound);
     }
 }
 
+namespace {
+
+// E = −∇φ by central differences (the node field's), in double.
+std::vector<glm::dvec3> centralField(const PeriodicGrid& grid, const std::vector<double>& phi)
+{
+    std::vector<glm::dvec3> field(grid.nodeCount(), glm::dvec3(0.0));
+    for (int j = 0; j < grid.cells[1]; ++j)
+        for (int i = 0; i < grid.cells[0]; ++i) {
+            glm::dvec3& e = field[grid.index(i, j, 0)];
+            e.x = (phi[grid.index(i - 1, j, 0)] - phi[grid.index(i + 1, j, 0)]) / (2.0 * grid.spacing[0]);
+            e.y = (phi[grid.index(i, j - 1, 0)] - phi[grid.index(i, j + 1, 0)]) / (2.0 * grid.spacing[1]);
+        }
+    return field;
+}
+
+double fieldNorm(const std::vector<glm::dvec3>& v)
+{
+    double sum = 0.0;
+    for (const glm::dvec3& e : v)
+        sum += glm::dot(e, e);
+    return std::sqrt(sum);
+}
+
+// Red-black SOR sweeps from φ = 0 in double on a 2D grid, as poisson_sweep.comp's pass 3, and for
+// each sweep the L2 norm over the nodes of the size its float roundings act on: a node's update
+// rounds by at most 14u (the Jacobi value's 2d + 4 roundings, the source's 3, ω(φ_GS − φ) + φ's 3)
+// of 2(the largest |φ| among the node and its neighbours, before and after) + |s|/D, D = Σ_d 2/Δ_d².
+struct Swept {
+    std::vector<double> phi;
+    std::vector<double> roundingNorms; // per sweep, without the factor 14u
+};
+
+Swept sorSweeps(const PeriodicGrid& grid, const std::vector<double>& rho, int sweeps)
+{
+    double mean = 0.0;
+    for (double r : rho)
+        mean += r;
+    mean /= double(rho.size());
+    const double omega = sorOverRelaxation(grid), ix = 1.0 / (grid.spacing[0] * grid.spacing[0]),
+                 iy = 1.0 / (grid.spacing[1] * grid.spacing[1]), diagonal = 2.0 * ix + 2.0 * iy;
+    Swept r{std::vector<double>(rho.size(), 0.0), {}};
+    std::vector<double>& phi = r.phi;
+    for (int sweep = 0; sweep < sweeps; ++sweep) {
+        double squares = 0.0;
+        for (int colour = 0; colour < 2; ++colour)
+            for (int j = 0; j < grid.cells[1]; ++j)
+                for (int i = 0; i < grid.cells[0]; ++i) {
+                    if ((i + j) % 2 != colour)
+                        continue;
+                    const std::size_t n = grid.index(i, j, 0);
+                    const std::size_t around[4] = {grid.index(i - 1, j, 0), grid.index(i + 1, j, 0),
+                                                   grid.index(i, j - 1, 0), grid.index(i, j + 1, 0)};
+                    const double source = (rho[n] - mean) / kVacuumPermittivity;
+                    const double gs = ((phi[around[0]] + phi[around[1]]) * ix + (phi[around[2]] + phi[around[3]]) * iy +
+                                       source) / diagonal;
+                    double largest = std::abs(phi[n]);
+                    for (std::size_t k : around)
+                        largest = std::max(largest, std::abs(phi[k]));
+                    phi[n] += omega * (gs - phi[n]);
+                    largest = std::max(largest, std::abs(phi[n]));
+                    const double size = 2.0 * largest + std::abs(source) / diagonal;
+                    squares += size * size;
+                }
+        r.roundingNorms.push_back(std::sqrt(squares));
+    }
+    return r;
+}
+
+// ‖∇G^k‖₂ for k < m, G red-black SOR's iteration matrix on a 2D grid, ∇ the central-difference
+// field: on the red and the black part of each Fourier mode, whose Jacobi factor is μ, G is
+// B = [[1 − ω, ωμ], [ωμ(1 − ω), 1 − ω + ω²μ²]] (a red half-sweep, then a black one reading it) and
+// ∇ exchanges the two parts times |∇|'s symbol (Σ_d sin²(2πk_d/n_d)/Δ_d²)^½, which is 0 on the
+// constant mode; so ‖∇G^k‖ is the largest over the modes of the symbol times ‖B^k‖₂.
+std::vector<double> sorFieldPowers(const PeriodicGrid& grid, int sweeps)
+{
+    const double omega = sorOverRelaxation(grid);
+    std::vector<double> powers(std::size_t(sweeps), 0.0);
+    for (int b = 0; b < grid.cells[1]; ++b)
+        for (int a = 0; a < grid.cells[0]; ++a) {
+            const double mu = jacobiFactor(grid, a, b, 0);
+            const double symbol = std::hypot(std::sin(2.0 * M_PI * a / grid.cells[0]) / grid.spacing[0],
+                                             std::sin(2.0 * M_PI * b / grid.cells[1]) / grid.spacing[1]);
+            const glm::dmat2 step(1.0 - omega, omega * mu * (1.0 - omega), omega * mu,
+                                  1.0 - omega + omega * omega * mu * mu);
+            glm::dmat2 power(1.0);
+            for (int k = 0; k < sweeps; ++k) {
+                // The 2-norm of a 2×2 matrix: the square root of the largest eigenvalue of MᵀM.
+                const glm::dmat2 m = glm::transpose(power) * power;
+                const double trace = m[0][0] + m[1][1], det = m[0][0] * m[1][1] - m[0][1] * m[1][0];
+                const double norm = std::sqrt(0.5 * trace + std::sqrt(std::max(0.25 * trace * trace - det, 0.0)));
+                powers[std::size_t(k)] = std::max(powers[std::size_t(k)], symbol * norm);
+                power = step * power;
+            }
+        }
+    return powers;
+}
+
+} // namespace
+
 // The GPU solvers' source comes from the deposit's node sums on the GPU, not from the read-back:
 // the first field of a thermal plasma (32², 8 per cell, deposited at 2^-14 of a particle) with SOR
-// against the exact one of fft-cpu, relative L2 difference: measured 3.8e-6 (50 sweeps from φ = 0
-// leave about 10^-6, float rounding of the source and the field the rest); held to 2e-5.
+// (picSorSweeps, 50 sweeps from φ = 0) against the exact one of fft-cpu, relative L2 difference.
+// Bound: the sweeps' own error, the same sweeps in double from the same deposit (the truncation, near
+// 1e-6 by design), plus float's: the roundings of sweep j (sorSweeps) carried into the field by
+// ∇G^(m−j) (sorFieldPowers); fft-cpu's φ rounded to float, u of itself, at most √d/Δ times that in
+// the field; the field's own difference and division, 6u of it, on both. Measured 3.8e-6, the
+// truncation 3.77e-6.
 TEST(PlasmaPoissonOnTheGpu, SorFieldFromTheDepositAgreesWithTheFftField)
 {
     const auto context = gl::createContext(gl::Backend::Egl);
     const ThermalCase c = thermalCase(2, 32, 8);
-    const auto field = [&c](GpuPicSolver solver) {
-        return GpuPic(c.grid, c.electrons, c.magneticField, c.dt, kShaders, glm::dvec3(0.0), solver).nodeField();
+    const auto gpuPic = [&c](GpuPicSolver solver) {
+        return std::make_unique<GpuPic>(c.grid, c.electrons, c.magneticField, c.dt, kShaders, glm::dvec3(0.0), solver);
     };
-    const std::vector<glm::dvec3> sor = field(GpuPicSolver::RedBlackSor), fft = field(GpuPicSolver::FftCpu);
+    const std::unique_ptr<GpuPic> sorPic = gpuPic(GpuPicSolver::RedBlackSor), fftPic = gpuPic(GpuPicSolver::FftCpu);
+    const std::vector<glm::dvec3> sor = sorPic->nodeField(), fft = fftPic->nodeField();
     double difference = 0.0, norm = 0.0;
     for (std::size_t i = 0; i < fft.size(); ++i) {
         difference += glm::dot(sor[i] - fft[i], sor[i] - fft[i]);
         norm += glm::dot(fft[i], fft[i]);
     }
     const double relative = std::sqrt(difference / norm);
-    std::printf("first field, 32^2: SOR (%d sweeps) against fft-cpu: %.3g\n", picSorSweeps(c.grid), relative);
-    EXPECT_LT(relative, 2e-5);
+
+    const double u = std::ldexp(1.0, -24);
+    const int sweeps = picSorSweeps(c.grid);
+    const std::vector<double>& rho = fftPic->chargeDensity();
+    const std::vector<double> exact = FftPoissonSolver(c.grid).solve(rho);
+    const std::vector<glm::dvec3> exactField = centralField(c.grid, exact);
+    const Swept swept = sorSweeps(c.grid, rho, sweeps);
+    const std::vector<glm::dvec3> sweptField = centralField(c.grid, swept.phi);
+    std::vector<glm::dvec3> truncation(exactField.size());
+    for (std::size_t i = 0; i < truncation.size(); ++i)
+        truncation[i] = sweptField[i] - exactField[i];
+    const std::vector<double> powers = sorFieldPowers(c.grid, sweeps);
+    double sorRounding = 0.0;
+    for (int j = 0; j < sweeps; ++j)
+        sorRounding += powers[std::size_t(sweeps - 1 - j)] * 14.0 * u * swept.roundingNorms[std::size_t(j)];
+    double phiNorm = 0.0;
+    for (double p : exact)
+        phiNorm += p * p;
+    const double fftRounding = std::sqrt(2.0) / c.grid.spacing[0] * u * std::sqrt(phiNorm);
+    const double truncated = fieldNorm(truncation) / fieldNorm(exactField);
+    const double bound = truncated + (sorRounding + fftRounding) / fieldNorm(exactField) + 12.0 * u;
+    std::printf("first field, 32^2: SOR (%d sweeps) against fft-cpu: %.3g (bound %.3g: the sweeps' own %.3g)\n", sweeps,
+                relative, bound, truncated);
+    EXPECT_LT(relative, bound);
 }
 
 // Multigrid V-cycles (red-black Gauss–Seidel 2 + 2, full weighting, linear prolongation; 5 levels
@@ -709,12 +865,46 @@ TEST(PlasmaLive, SameStepSameBitsAfterJumpsBackAndForth)
 }
 
 // The live run (float, fixed-point deposit) against the CPU frames (double) at the frames' steps, in
-// units of the frame's peak. Frame 0: the electrons' positions rounded to float move each CIC weight
-// by about 1e-6 (2^-24 of the 32 km strip in 0.25 km cells), measured 7.2e-7, held to 1e-5. Before the
-// roll-up (frames 1-4 of 8, the peak still below 1.2 of the straight strip's) the float round-off of
-// every step is carried along by the growing mode: measured 3.8e-5, 8.5e-5, 2.3e-4, 6.3e-4, held to
-// 2e-3; through the roll-up (frames 5-7) 5.7e-4, 2.9e-3, 6.3e-3, held to 2e-2. The comparison sees a
-// step's worth of motion: the live frame 4 against the CPU frame 3 differs by more than 2e-2.
+// units of the frame's peak. Frame 0: the electrons' positions rounded to float, each coordinate by u
+// of itself (u = 2^-24), move a particle's CIC weights at the cell centres by at most
+// u·(cells along + cells across), so a frame value by that times one particle's share times the
+// particles around its centre (counted), and both frames' values round to float, u each (measured
+// 7.2e-7, frameZeroBound). Before the roll-up (frames 1-4 of 8, the peak still below 1.2 of the
+// straight strip's) the float round-off of every step is carried along by the growing mode: measured
+// 3.8e-5, 8.5e-5, 2.3e-4, 6.3e-4, held to 2e-3; through the roll-up (frames 5-7) 5.7e-4, 2.9e-3,
+// 6.3e-3, held to 2e-2. Those two are measured, not derived: the fixed-point deposit's rounding (up
+// to 3.7e-4 of a particle's charge at a node, 2^-16 quanta) and the float push, carried by the
+// diocotron growth and then the roll-up's mixing, bound in the worst case (every step's rounding
+// aligned with the fastest growth) a difference far above these. The comparison sees a step's worth
+// of motion: the live frame 4 against the CPU frame 3 differs by more than 2e-2.
+double frameZeroBound(const component::SheetFramesSpec& spec, const fluid::FluxFrames& cpu)
+{
+    const PeriodicGrid grid = sheetGrid(spec.sheet);
+    const Particles electrons = sheetElectrons(spec.sheet);
+    // The particles in each cell of the lattice moved back by half a cell (the deposit at the
+    // centres), then the most in any 2 × 2 block: those whose weights reach one centre.
+    std::vector<int> perCell(grid.nodeCount(), 0);
+    for (const glm::dvec3& x : electrons.position) {
+        int cell[2];
+        for (int a = 0; a < 2; ++a) {
+            const double shifted = x[a] / grid.spacing[a] - 0.5;
+            cell[a] = int(std::floor(shifted - grid.cells[a] * std::floor(shifted / grid.cells[a])));
+        }
+        ++perCell[grid.index(cell[0], cell[1], 0)];
+    }
+    int most = 0;
+    for (int j = 0; j < grid.cells[1]; ++j)
+        for (int i = 0; i < grid.cells[0]; ++i)
+            most = std::max(most, perCell[grid.index(i, j, 0)] + perCell[grid.index(i - 1, j, 0)] +
+                                      perCell[grid.index(i, j - 1, 0)] + perCell[grid.index(i - 1, j - 1, 0)]);
+    double peak = 0.0;
+    for (int i = 0; i < cpu.nx * cpu.ny; ++i)
+        peak = std::max(peak, double(cpu.flux[std::size_t(i)]));
+    const double u = std::ldexp(1.0, -24);
+    const double perKm = 1.0 / (spec.sheet.electronDensity * spec.sheet.thicknessM * 1e-3);
+    const double share = electrons.weight / grid.cellVolume() * perKm; // one particle's whole weight
+    return most * u * (grid.cells[0] + grid.cells[1]) * share / peak + 2.0 * u;
+}
 TEST(PlasmaLive, AgreesWithTheCpuFramesBeforeTheRollUp)
 {
     const auto context = gl::createContext(gl::Backend::Egl);
@@ -731,11 +921,13 @@ TEST(PlasmaLive, AgreesWithTheCpuFramesBeforeTheRollUp)
         }
         return largest / peak;
     };
+    const double zeroBound = frameZeroBound(spec, cpu);
     for (int k = 0; k < spec.frames; ++k) {
         live.advanceTo(long(k) * spec.stepsPerFrame);
         const double d = difference(k);
-        std::printf("frame %d (step %ld): largest difference %.3g of the peak\n", k, live.step(), d);
-        EXPECT_LT(d, k == 0 ? 1e-5 : k <= 4 ? 2e-3 : 2e-2) << "frame " << k;
+        std::printf("frame %d (step %ld): largest difference %.3g of the peak%s\n", k, live.step(), d,
+                    k == 0 ? (" (bound " + std::to_string(zeroBound) + ")").c_str() : "");
+        EXPECT_LT(d, k == 0 ? zeroBound : k <= 4 ? 2e-3 : 2e-2) << "frame " << k;
         if (k == 4)
             EXPECT_GT(difference(3), 2e-2);
     }
@@ -746,10 +938,11 @@ TEST(PlasmaLive, AgreesWithTheCpuFramesBeforeTheRollUp)
 // 60 s: detail phase 1, step 672, the last frame), at the 16 brightest pixels of the middle half of the
 // view. Not at the arc's ends: there the curtain reaches past its end points by the detail's reach,
 // which the live run takes as the strip's half width (its later steps are not known at start-up)
-// and the CPU frames measure (2.4 km against 4 km here), so the live arc is longer by design. Tolerance: the frames' difference through the
-// roll-up (6.3e-3 of the peak, above) is below the march's own error, so the bounds of the CPU
-// frames' render (PlasmaOnTheGpu.AgreesWithTheReference, RMS 6e-3 and max 1.5e-2) hold: measured
-// RMS 1.35e-3, max 2.8e-3 (the CPU frames' render: 1.3e-3 and 3.0e-3). The frames of a strip with one
+// and the CPU frames measure (2.4 km against 4 km here), so the live arc is longer by design. Tolerance:
+// the frames' difference through the roll-up (6.3e-3 of the peak, above) is below the march's own
+// error, so the bounds of the CPU frames' render (PlasmaOnTheGpu.AgreesWithTheReference, RMS 6e-3 and
+// max 1.5e-2, measured, not derived) hold: measured RMS 8.7e-4, max 2.9e-3 (the CPU frames' render:
+// 1.0e-3 and 3.0e-3). The frames of a strip with one
 // more wave put the reference off by far more (held above 0.1): the comparison sees the curls.
 TEST(PlasmaLive, RenderAgreesWithTheReference)
 {
