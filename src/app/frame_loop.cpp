@@ -8,6 +8,7 @@
 #include "app/hud.h"
 #include "app/navigation.h"
 #include "app/path_recorder.h"
+#include "app/stop_signal.h"
 #include "app/wall_output.h"
 #include "cluster/frame_message.h"
 #include "cluster/master_clock.h"
@@ -160,6 +161,9 @@ cluster::FrameStats runFrames(WallSession& session, const cluster::MpiWorld& wor
     for (const scene::Component* c : session.scene.components())
         componentNames.push_back(c->name());
     cluster::FrameStats stats(pixelsPerFrame(session.wall), componentNames);
+    const std::string& statsFile = session.options.statsFile;
+    if (world.isMaster() && statsFile.size() > 4 && statsFile.compare(statsFile.size() - 4, 4, ".csv") == 0)
+        stats.streamCsv(statsFile, size_t(world.size()));
     bool stopRequested = false;
     control::WallStatus wallStatus;
     const control::WallFacts wallFacts{session.scene.planetRadiusKm,
@@ -263,13 +267,16 @@ cluster::FrameStats runFrames(WallSession& session, const cluster::MpiWorld& wor
         // 4. One gather: the master learns what every rank drew, how long it took, what its bands
         // cost, what was pressed in its windows, and whether to stop.
         waitStart = SteadyClock::now();
+        report.stopSignal = stopSignal();
         world.setPhase(cluster::RankPhase::Gather, frame.state.frame);
         const std::vector<char> gathered = world.gather(cluster::packRankMessage(mine, bandCount));
         if (world.isMaster()) {
             const std::vector<cluster::RankMessage> ranks = cluster::unpackRankMessages(gathered, bandCount);
             cluster::FrameRecord record{frame.state.frame, frame.state.timeS, millisecondsSince(frameStart), {}};
             for (const cluster::RankMessage& r : ranks) {
-                stopRequested = stopRequested || r.report.closeRequested;
+                stopRequested = stopRequested || r.report.closeRequested || r.report.stopSignal;
+                if (r.report.stopSignal && !session.stoppedBySignal)
+                    session.stoppedBySignal = r.report.stopSignal;
                 record.ranks.push_back(r.report);
                 navigationEvents.insert(navigationEvents.end(), r.events.begin(), r.events.end());
             }
@@ -279,7 +286,12 @@ cluster::FrameStats runFrames(WallSession& session, const cluster::MpiWorld& wor
             if (session.options.verbose)
                 std::printf("  %s\n", session.renderer->frameLog().c_str());
             wallStatus.frame = record.frame;
-            stats.add(std::move(record));
+            try {
+                stats.add(std::move(record));
+            } catch (const std::exception& e) {
+                session.statsError = e.what();
+                stopRequested = true;
+            }
         }
 
         // 5. A screenshot or a movie frame: every rank sends its screens, the master writes the wall.

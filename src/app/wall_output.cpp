@@ -137,6 +137,8 @@ int writeOutputs(WallSession& session, const cluster::MpiWorld& world, const clu
                 throw std::runtime_error(session.movieError);
             if (!session.recordError.empty())
                 throw std::runtime_error(session.recordError);
+            if (!session.statsError.empty())
+                throw std::runtime_error(session.statsError);
             if (options.gather) {
                 io::writeExr(options.outDir + "/wall.exr", canvas);
                 io::writePng(options.outDir + "/wall.png", canvas, session.toneMap);

@@ -66,9 +66,14 @@ void configure(const cluster::MpiWorld& world, int argc, char** argv, WallSessio
         io::ensureWritableDirectory(options.outDir, "--out");
     if (!options.movieDir.empty())
         io::ensureWritableDirectory(options.movieDir, "--movie");
-    if (!options.statsFile.empty()) {
-        const std::filesystem::path parent = std::filesystem::path(options.statsFile).parent_path();
-        io::ensureWritableDirectory(parent.empty() ? "." : parent.string(), "--stats");
+    // The master's files go into existing folders (docs/driving.md, "Outputs"); checked before any
+    // frame, so that no run's data is lost to a path that cannot be written.
+    if (world.isMaster()) {
+        const std::pair<const std::string&, const char*> files[] = {
+            {options.statsFile, "--stats"}, {options.recordPath, "--record-path"}, {options.costMapFile, "--cost-map"}};
+        for (const auto& [path, option] : files)
+            if (!path.empty())
+                io::ensureWritableFile(path, option);
     }
     s.exposure = options.exposure > 0 ? options.exposure : s.scene.exposure;
     s.toneMap = toneMapFor(options, s.exposure);

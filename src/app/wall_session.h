@@ -42,6 +42,8 @@ struct WallSession {
     std::unique_ptr<control::ControlServer> control; // master with --control-port only
     std::string movieError; // master: why a --movie frame could not be written (the run then stops)
     std::string recordError; // master: why the --record-path file could not be written
+    std::string statsError;  // master: why a --stats row could not be written (the run then stops)
+    int stoppedBySignal = 0; // master: SIGINT or SIGTERM ended the run (app/stop_signal.h)
 };
 
 // Runs one step on every rank and agrees on its outcome: the largest exit status over the ranks

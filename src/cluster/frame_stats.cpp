@@ -85,38 +85,75 @@ std::string FrameStats::summary() const
     return s.str();
 }
 
+std::string FrameStats::csvHeader(size_t ranks) const
+{
+    std::ostringstream out;
+    out << "frame,time_s,frame_ms,fps,mpixel_per_s,render_max_ms,render_mean_ms,imbalance";
+    for (size_t r = 0; r < ranks; ++r)
+        out << ",frame_rank" << r << ",time_s_rank" << r << ",prepare_ms_rank" << r << ",prepare_cpu_ms_rank" << r
+            << ",render_ms_rank" << r << ",render_cpu_ms_rank" << r << ",exchange_ms_rank" << r << ",exchange_mb_rank"
+            << r << ",wait_ms_rank" << r << ",swap_ms_rank" << r << ",render_work_rank" << r;
+    for (size_t r = 0; r < ranks; ++r)
+        for (const std::string& name : componentNames_)
+            out << ",setframe_ms_" << name << "_rank" << r;
+    out << "\n";
+    return out.str();
+}
+
+std::string FrameStats::csvRow(const FrameRecord& f) const
+{
+    std::ostringstream out;
+    out.precision(9);
+    out << f.frame << "," << f.timeS << "," << f.frameMs << "," << 1000.0 / f.frameMs << ","
+        << pixelsPerFrame_ / (f.frameMs * 1e3) << "," << f.maxRenderMs() << "," << f.meanRenderMs() << ","
+        << f.imbalance();
+    for (const RankReport& r : f.ranks)
+        out << "," << r.frame << "," << r.timeS << "," << r.prepareMs << "," << r.prepareCpuMs << "," << r.renderMs
+            << "," << r.renderCpuMs << "," << r.exchangeMs << "," << r.exchangeMB << "," << r.waitMs << "," << r.swapMs
+            << "," << r.renderWork;
+    for (const RankReport& r : f.ranks)
+        for (size_t c = 0; c < componentNames_.size(); ++c)
+            out << "," << r.componentMs[c];
+    out << "\n";
+    return out.str();
+}
+
+void FrameStats::streamCsv(const std::string& path, size_t ranks)
+{
+    stream_.reset(std::fopen(path.c_str(), "w"));
+    if (!stream_)
+        throw std::runtime_error("--stats " + path + ": cannot write (" + std::strerror(errno) + ")");
+    streamPath_ = path;
+    appendToStream(csvHeader(ranks));
+}
+
+void FrameStats::appendToStream(const std::string& text)
+{
+    if (std::fwrite(text.data(), 1, text.size(), stream_.get()) != text.size() || std::fflush(stream_.get()) != 0)
+        throw std::runtime_error("--stats " + streamPath_ + ": write failed (" + std::strerror(errno) + ")");
+}
+
+void FrameStats::add(FrameRecord record)
+{
+    records_.push_back(std::move(record));
+    if (stream_)
+        appendToStream(csvRow(records_.back()));
+}
+
 void FrameStats::write(const std::string& path) const
 {
+    if (stream_ && path == streamPath_)
+        return; // every frame's row is written and flushed already
     const bool json = path.size() >= 5 && path.compare(path.size() - 5, 5, ".json") == 0;
     const bool csv = path.size() >= 4 && path.compare(path.size() - 4, 4, ".csv") == 0;
     if (!json && !csv)
         throw std::invalid_argument("--stats " + path + ": the file name must end in .csv or .json");
     std::ostringstream out;
     out.precision(9);
-    const size_t ranks = records_.empty() ? 0 : records_.front().ranks.size();
     if (csv) {
-        out << "frame,time_s,frame_ms,fps,mpixel_per_s,render_max_ms,render_mean_ms,imbalance";
-        for (size_t r = 0; r < ranks; ++r)
-            out << ",frame_rank" << r << ",time_s_rank" << r << ",prepare_ms_rank" << r << ",prepare_cpu_ms_rank" << r
-                << ",render_ms_rank" << r
-                << ",render_cpu_ms_rank" << r << ",exchange_ms_rank" << r << ",exchange_mb_rank" << r << ",wait_ms_rank" << r << ",swap_ms_rank" << r << ",render_work_rank" << r;
-        for (size_t r = 0; r < ranks; ++r)
-            for (const std::string& name : componentNames_)
-                out << ",setframe_ms_" << name << "_rank" << r;
-        out << "\n";
-        for (const FrameRecord& f : records_) {
-            out << f.frame << "," << f.timeS << "," << f.frameMs << "," << 1000.0 / f.frameMs << ","
-                << pixelsPerFrame_ / (f.frameMs * 1e3) << "," << f.maxRenderMs() << "," << f.meanRenderMs() << ","
-                << f.imbalance();
-            for (const RankReport& r : f.ranks)
-                out << "," << r.frame << "," << r.timeS << "," << r.prepareMs << "," << r.prepareCpuMs << "," << r.renderMs << ","
-                    << r.renderCpuMs << "," << r.exchangeMs << "," << r.exchangeMB << "," << r.waitMs << "," << r.swapMs << ","
-                    << r.renderWork;
-            for (const RankReport& r : f.ranks)
-                for (size_t c = 0; c < componentNames_.size(); ++c)
-                    out << "," << r.componentMs[c];
-            out << "\n";
-        }
+        out << csvHeader(records_.empty() ? 0 : records_.front().ranks.size());
+        for (const FrameRecord& f : records_)
+            out << csvRow(f);
     } else {
         out << "{\n  \"pixels_per_frame\": " << pixelsPerFrame_ << ",\n  \"frames\": [";
         for (size_t i = 0; i < records_.size(); ++i) {

@@ -2,6 +2,8 @@
 // Per-frame timing gathered on the master: each rank's render time, the frame's wall-clock
 // time, and what follows from them (frames/s, pixels/s, load imbalance = max/mean render time).
 #include <cstdint>
+#include <cstdio>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -34,6 +36,7 @@ struct RankReport {
                               // gather and the broadcast), plus the swap barrier with windows
     double swapMs = 0.0;      // presenting and swapping its windows
     std::int32_t closeRequested = 0; // a window of this rank was closed
+    std::int32_t stopSignal = 0;     // this rank received SIGINT or SIGTERM (its number; 0: none)
     // Each listed component's setFrame (its per-frame work, GPU work it waits for included), wall
     // time, ms, in the scene's component order: prepareMs split by component.
     double componentMs[kMaxComponents] = {};
@@ -56,7 +59,9 @@ public:
     // kMaxComponents (std::length_error otherwise).
     explicit FrameStats(double pixelsPerFrame, std::vector<std::string> componentNames = {});
 
-    void add(FrameRecord record) { records_.push_back(std::move(record)); }
+    // Keeps the frame's record, and with streamCsv writes its row and flushes it (std::runtime_error
+    // "--stats PATH: write failed (REASON)" if it cannot).
+    void add(FrameRecord record);
     const std::vector<FrameRecord>& records() const { return records_; }
 
     // "frame 3  t=0.100 s  41.2 ms  24.3 fps  22.4 Mpixel/s  imbalance 1.07", then the setFrame of
@@ -68,10 +73,23 @@ public:
 
     // CSV (one row per frame, one render_ms column per rank, a setframe_ms_NAME column per component
     // and rank) or JSON (each rank's "component_ms": {"NAME": ms, ...}), chosen by the extension (.csv
-    // or .json); written atomically.
+    // or .json); written atomically. Nothing for the file streamCsv writes: it is complete.
     void write(const std::string& path) const;
 
+    // Writes the CSV header for `ranks` ranks to `path`, then each frame's row as it is added, each
+    // flushed, so that a run that fails or is stopped keeps every frame drawn. Throws std::runtime_error.
+    void streamCsv(const std::string& path, size_t ranks);
+
 private:
+    void appendToStream(const std::string& text);
+    std::string csvHeader(size_t ranks) const;
+    std::string csvRow(const FrameRecord& f) const;
+
+    struct FileCloser {
+        void operator()(std::FILE* f) const { std::fclose(f); }
+    };
+    std::unique_ptr<std::FILE, FileCloser> stream_;
+    std::string streamPath_;
     double pixelsPerFrame_;
     std::vector<std::string> componentNames_;
     std::vector<FrameRecord> records_;

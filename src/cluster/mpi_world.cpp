@@ -82,6 +82,13 @@ void MpiWorld::broadcast(std::vector<char>& bytes) const
     MPI_Bcast(bytes.data(), static_cast<int>(bytes.size()), MPI_BYTE, 0, MPI_COMM_WORLD);
 }
 
+int MpiWorld::broadcastInt(int value) const
+{
+    const WaitingForRanks waiting(watchdog_.get());
+    MPI_Bcast(&value, 1, MPI_INT, 0, MPI_COMM_WORLD);
+    return value;
+}
+
 std::vector<char> MpiWorld::gather(const std::vector<char>& mine) const
 {
     const int size = static_cast<int>(mine.size());

@@ -46,6 +46,8 @@ public:
     // Rank 0's bytes to every rank, in one MPI_Bcast: every rank passes a buffer of the same size
     // (the frame's message, cluster/frame_message.h).
     void broadcast(std::vector<char>& bytes) const;
+    // Rank 0's `value` on every rank.
+    int broadcastInt(int value) const;
     // Every rank's bytes to rank 0, concatenated in rank order, in one MPI_Gather: every rank passes
     // the same size (its report, cluster/rank_message.h); the others get an empty vector.
     std::vector<char> gather(const std::vector<char>& mine) const;

@@ -10,4 +10,9 @@ namespace aurorawall::io {
 //   "--out /proc/x: cannot create directory (No such file or directory)".
 void ensureWritableDirectory(const std::string& dir, const std::string& optionName);
 
+// Checks that the file `path` can be written: its folder exists (it is not created) and files can
+// be created in it, and `path` is not a folder. Throws aurorawall::InputError with one line naming
+// the option, the path and the reason, e.g. "--stats /nonexist/s.csv: folder /nonexist does not exist".
+void ensureWritableFile(const std::string& path, const std::string& optionName);
+
 } // namespace aurorawall::io

@@ -146,6 +146,15 @@ late_output_cases() {
     expect_error stats-extension 4 2 "--stats" --wall "$TINY" --scene "$SCENE" --frames 3 --stats "$WORK/s.txt"
     expect_error stats-under-file 4 1 "--stats.*regular-file" --wall "$TINY" --scene "$SCENE" --frames 3 \
         --stats "$WORK/regular-file/s.csv"
+    expect_error stats-no-folder 4 1 "--stats $WORK/nowhere/s.csv: folder $WORK/nowhere does not exist" \
+        --wall "$TINY" --scene "$SCENE" --frames 3 --stats "$WORK/nowhere/s.csv"
+    mkdir -p "$WORK/a-folder.csv"
+    expect_error stats-is-folder 4 1 "--stats $WORK/a-folder.csv: is a folder" --wall "$TINY" --scene "$SCENE" \
+        --frames 3 --stats "$WORK/a-folder.csv"
+    expect_error record-unwritable 4 1 "--record-path /proc/flight.toml: folder /proc" --wall "$TINY" \
+        --scene "$SCENE" --frames 3 --record-path /proc/flight.toml
+    expect_error cost-map-no-folder 4 1 "--cost-map $WORK/nowhere/c.png: folder $WORK/nowhere does not exist" \
+        --wall "$TINY" --scene "$SCENE" --frames 3 --cost-map "$WORK/nowhere/c.png"
 }
 
 case "$set_name" in
