@@ -101,19 +101,19 @@ void MasterClock::setTime(double timeS)
     jumpPending_ = true;
 }
 
-scene::Camera MasterClock::camera() const
+scene::Camera MasterClock::cameraAt(double timeS) const
 {
     scene::Camera c = camera_;
     if (!c.path.empty()) { // a keyed flight: the pose at this animation time, held still
-        const scene::CameraFrame frame = scene::frameOf(c.path.orientationAt(timeS()));
-        c.positionKm = c.path.positionAt(timeS());
+        const scene::CameraFrame frame = scene::frameOf(c.path.orientationAt(timeS));
+        c.positionKm = c.path.positionAt(timeS);
         c.forward = frame.forward;
         c.up = frame.up;
         c.path = {};
         return c;
     }
     // The camera flies straight along its view direction (the paper's benchmark path).
-    c.positionKm += c.forward * (c.speedKmPerS * (timeS() - cameraTimeS_));
+    c.positionKm += c.forward * (c.speedKmPerS * (timeS - cameraTimeS_));
     return c;
 }
 

@@ -49,7 +49,9 @@ public:
     std::uint64_t nextFrame() const { return frame_; }
     // The camera at timeS(): on its keyed path (scene::CameraPath) if it has one, a still pose without
     // the path; otherwise the scene's camera flown straight along its view (forward at speedKmPerS).
-    scene::Camera camera() const;
+    scene::Camera camera() const { return cameraAt(timeS()); }
+    // The same at another animation time (where a jump to that time would put it).
+    scene::Camera cameraAt(double timeS) const;
     // Puts the camera there at timeS(); it flies on from there as the animation time runs, along its
     // own path if it has one (a camera without one leaves the scene's keyed path).
     void setCamera(const scene::Camera& camera);

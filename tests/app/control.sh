@@ -68,6 +68,11 @@ grep -q '^error preset .*/big\.toml: .*points_lat_lon_deg: 400000 control points
     fail "the big preset answered '$(cat "$WORK/big.answer")'"
 note "status answered and frames $frame_before..$frame_during drawn while the big preset loaded"
 ask ' lat_deg=58\.000000 lon_deg=20\.000000 alt_km=400\.000000 ' status
+# A time jump takes a flying camera (the benchmark view's, 25.484 km/s) no farther than goto may.
+ask '^error time: the camera, flying at 25\.484 km/s, would be 2\.55e\+16 km above the ground \(at most 1e6 km, as for goto\)$' \
+    "preset benchmark-view" "time 1e15"
+ask '^ok time_s=120$' "time 120"
+ask '^ok preset .*/low-orbit\.toml ' "preset $SRC_DIR/config/scenes/low-orbit.toml"
 # Orbiting a point on the ground 2 degrees north of the camera: the camera stays, turns to look at it
 # (the heading north, the pitch down), at the chord's distance; orbit off keeps the pose.
 ask '^ok orbit lat_deg=60 lon_deg=20 alt_km=0 distance_km=[0-9.]+$' "orbit 60 20 0"

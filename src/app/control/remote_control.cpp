@@ -43,9 +43,16 @@ std::string carryOut(const Command& command, std::uint64_t client, cluster::Mast
             throw CommandError("step: the clock is playing (pause first)");
         clock.step();
         return "ok step";
-    case CommandKind::Time:
+    case CommandKind::Time: {
+        // A flying camera moves with the time: no farther from the planet than goto may put it.
+        const double altitudeKm = glm::length(clock.cameraAt(v[0]).positionKm) - planetRadiusKm;
+        if (!(altitudeKm <= kMaxAltitudeKm))
+            throw CommandError(format("time: the camera, flying at %.6g km/s, would be %.3g km above the ground "
+                                      "(at most 1e6 km, as for goto)",
+                                      clock.camera().speedKmPerS, altitudeKm));
         clock.setTime(v[0]);
         return format("ok time_s=%.12g", v[0]);
+    }
     case CommandKind::Goto: {
         const scene::Camera now = clock.camera();
         GeographicPose pose = poseOf(now, planetRadiusKm);
