@@ -54,7 +54,7 @@ real chapmanAsymptotic(real r, real x, real inverseH)
     real q = max(r * inverseH, real(1e-6));
     real s = inversesqrt(real(0.5) * q);
     real t = real(1) / (real(1) + real(0.25) * abs(x) * inverseH * s);   // 1/(1 + z/2)
-    return t * (real(0.5) * q * s * sqrt(AIRMASS_PI) * airmassErfcxOverT(t) + real(0.25) * s * chapmanJ2OverT(t));
+    return t * (real(0.5) * q * s * sqrt(kPi) * airmassErfcxOverT(t) + real(0.25) * s * chapmanJ2OverT(t));
 }
 
 // The same at the closest approach (χ = 90°, z = 0, t = 1): the polynomials at t = 1 fold to constants.
@@ -62,7 +62,7 @@ real chapmanAsymptoticHorizontal(real r, real inverseH)
 {
     real q = max(r * inverseH, real(1e-6));
     real s = inversesqrt(real(0.5) * q);
-    return real(0.5) * q * s * sqrt(AIRMASS_PI) * airmassErfcxOverT(real(1)) + real(0.25) * s * chapmanJ2OverT(real(1));
+    return real(0.5) * q * s * sqrt(kPi) * airmassErfcxOverT(real(1)) + real(0.25) * s * chapmanJ2OverT(real(1));
 }
 
 // The published fits by kind (CHAPMAN_SCHUELER or CHAPMAN_HDRP).

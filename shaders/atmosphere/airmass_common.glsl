@@ -1,10 +1,10 @@
 // Shared pieces of the airmass closed forms (see docs/airmass.md).
 // One text for GLSL and C++ (src/common/glsl.h): `real` is float on the GPU, float or double on the CPU.
+// Needs physics/constants.glsl.
 //
 // Airmass of a ray segment through an exponential atmosphere on a sphere of radius R (km),
 // scale height H (km):   I = ∫_{t0}^{t1} exp(−(|o + t·d̂| − R)/H) dt   (km, signed: I(t1,t0) = −I(t0,t1)).
 
-const real AIRMASS_PI = real(3.14159265358979323846);
 
 // C++ has no `precise` qualifier; GLSL's `precise` forbids the compiler to reassociate or contract the
 // marked arithmetic, which the error-free transformations below rely on (the C++ side is compiled with
@@ -102,9 +102,9 @@ real airmassErfcxOverT(real t)
 // erf(x) ≈ sign(x)·√(1 − exp(−x²·(4/π + a·x²)/(1 + a·x²))), a = 8(π − 3)/(3π(4 − π)) ≈ 0.140012.
 real winitzkiErfGuts(real x)
 {
-    real a = real(8) * (AIRMASS_PI - real(3)) / (real(3) * AIRMASS_PI * (real(4) - AIRMASS_PI));
+    real a = real(8) * (kPi - real(3)) / (real(3) * kPi * (real(4) - kPi));
     real x2 = x * x;
-    return exp(-x2 * (real(4) / AIRMASS_PI + a * x2) / (real(1) + a * x2));
+    return exp(-x2 * (real(4) / kPi + a * x2) / (real(1) + a * x2));
 }
 
 real winitzkiErf(real x)

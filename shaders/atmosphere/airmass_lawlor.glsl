@@ -49,7 +49,7 @@ real airmassLawlorWinitzki(vec3 start, vec3 direction, real tstart, real tend, r
         if (xL < real(0)) { xL = -xL; xR = -xR; }
         erfDel = winitzkiErfc(sqrtKC * xR) - winitzkiErfc(sqrtKC * xL);
     }
-    real norm = sqrt(AIRMASS_PI) / real(2);
+    real norm = sqrt(kPi) / real(2);
     real eScl = exp(-k * parabola.x);
     real segmentSign = tend < tstart ? real(-1) : real(1);
     return segmentSign * eScl * norm / sqrtKC * abs(erfDel);
@@ -75,7 +75,7 @@ real airmassLawlorErfcx(vec3 origin, vec3 direction, real t0, real t1, real H, r
     real s1 = sqrtK * hi;
     real erfIntegral;                                 // ∫_{s0}^{s1} e^{−m − s²} ds
     if (s0 < real(0) && s1 > real(0)) {
-        erfIntegral = real(0.5) * sqrt(AIRMASS_PI) * (real(2) * exp(-m) - exp(-m - s1 * s1) * airmassErfcx(s1)
+        erfIntegral = real(0.5) * sqrt(kPi) * (real(2) * exp(-m) - exp(-m - s1 * s1) * airmassErfcx(s1)
                                                        - exp(-m - s0 * s0) * airmassErfcx(-s0));
     } else {
         real sa = min(abs(s0), abs(s1));
@@ -88,7 +88,7 @@ real airmassLawlorErfcx(vec3 origin, vec3 direction, real t0, real t1, real H, r
                                      + real(0.888888888888888889) * exp(-m - middle * middle)
                                      + real(0.555555555555555556) * exp(-m - (middle + offset) * (middle + offset)));
         } else {
-            erfIntegral = real(0.5) * sqrt(AIRMASS_PI) * (exp(-m - sa * sa) * airmassErfcx(sa)
+            erfIntegral = real(0.5) * sqrt(kPi) * (exp(-m - sa * sa) * airmassErfcx(sa)
                                                            - exp(-m - sb * sb) * airmassErfcx(sb));
         }
     }

@@ -31,7 +31,7 @@ struct SkyAtmosphere {
 // angle (Chandrasekhar, Radiative Transfer (1950); Bruneton & Neyret 2008, eq. 2).
 real skyRayleighPhase(real mu)
 {
-    return real(3) / (real(16) * AIRMASS_PI) * (real(1) + mu * mu);
+    return real(3) / (real(16) * kPi) * (real(1) + mu * mu);
 }
 
 // Both roots (near, far) of |o + t·d̂|² = radius², d̂ a unit vector, or (1, −1) when the ray misses.

@@ -1,3 +1,4 @@
+#include "common/constants.h"
 #include "app/plasma_accuracy.h"
 
 #include "app/cli/command_line.h"
@@ -27,7 +28,6 @@ namespace {
 
 namespace pic = aurorawall::plasma;
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kDensity = 1e12;      // m⁻³
 constexpr double kThermalSpeed = 4.19e5; // m/s: 1 eV electrons
 

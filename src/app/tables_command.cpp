@@ -1,3 +1,4 @@
+#include "common/constants.h"
 #include "app/tables_command.h"
 
 #include "app/cli/command_line.h"
@@ -41,7 +42,7 @@ void printGloryTable(const std::string& sceneFile, std::ostream& out)
     out << ",r,g,b\n";
     for (int a = 0; a < table.angles.size(); ++a) {
         char cell[40];
-        std::snprintf(cell, sizeof cell, "%.6f", table.angles.angle(a) * 180.0 / 3.14159265358979323846);
+        std::snprintf(cell, sizeof cell, "%.6f", table.angles.angle(a) / kDegree);
         out << cell;
         for (size_t w = 0; w < table.wavelengthsNm.size(); ++w) {
             std::snprintf(cell, sizeof cell, ",%.8g", table.at(int(w), a));

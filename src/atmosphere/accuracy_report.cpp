@@ -211,7 +211,8 @@ ShaderBenchmarkResult runSkyKernel(const std::string& variant, const std::vector
     if (!variant.empty()) source.defines.push_back(variant);
     source.defines.push_back("SKY_VIEW_STEPS " + std::to_string(settings.viewSteps));
     source.defines.push_back("SKY_LIGHT_STEPS " + std::to_string(settings.lightSteps));
-    for (const char* module : {"atmosphere/airmass_common.glsl", "atmosphere/airmass_chapman.glsl", "atmosphere/sky.glsl"})
+    for (const char* module :
+         {"physics/constants.glsl", "atmosphere/airmass_common.glsl", "atmosphere/airmass_chapman.glsl", "atmosphere/sky.glsl"})
         source.modules.push_back(readShaderModule(module));
     source.modules.push_back({"sky_kernel.comp", kSkyKernel});
     return runShaderBenchmark(source, inputs, viewCount, timing, [&](gl::Program& program) {

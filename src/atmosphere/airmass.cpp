@@ -7,6 +7,7 @@
 // transcendentals) and once in double.
 namespace aurorawall::f32 {
 AURORAWALL_GLSL_PRECISION(float)
+#include "physics/constants.glsl"
 #include "atmosphere/airmass_common.glsl"
 #include "atmosphere/airmass_lawlor.glsl"
 #include "atmosphere/airmass_tectonics.glsl"
@@ -16,6 +17,7 @@ AURORAWALL_GLSL_PRECISION(float)
 
 namespace aurorawall::f64 {
 AURORAWALL_GLSL_PRECISION(double)
+#include "physics/constants.glsl"
 #include "atmosphere/airmass_common.glsl"
 #include "atmosphere/airmass_lawlor.glsl"
 #include "atmosphere/airmass_tectonics.glsl"

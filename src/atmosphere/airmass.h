@@ -34,7 +34,7 @@ struct AirmassMethod {
 };
 
 // The shader modules that define every method's glslFunction, in the order they must be compiled.
-inline const char* const kAirmassShaderModules[] = {"atmosphere/airmass_common.glsl", "atmosphere/airmass_lawlor.glsl",
+inline const char* const kAirmassShaderModules[] = {"physics/constants.glsl", "atmosphere/airmass_common.glsl", "atmosphere/airmass_lawlor.glsl",
                                                     "atmosphere/airmass_tectonics.glsl", "atmosphere/airmass_chapman.glsl",
                                                     "atmosphere/airmass_march.glsl"};
 

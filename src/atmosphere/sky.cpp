@@ -8,6 +8,7 @@
 // already defines aurorawall::f32 and ::f64 with the airmass modules.
 namespace aurorawall::sky_f32 {
 AURORAWALL_GLSL_PRECISION(float)
+#include "physics/constants.glsl"
 #include "atmosphere/airmass_common.glsl"
 #include "atmosphere/airmass_chapman.glsl"
 #include "atmosphere/sky.glsl"
@@ -15,6 +16,7 @@ AURORAWALL_GLSL_PRECISION(float)
 
 namespace aurorawall::sky_f64 {
 AURORAWALL_GLSL_PRECISION(double)
+#include "physics/constants.glsl"
 #include "atmosphere/airmass_common.glsl"
 #include "atmosphere/airmass_chapman.glsl"
 #include "atmosphere/sky.glsl"

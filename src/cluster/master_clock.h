@@ -45,8 +45,6 @@ public:
 
     // The animation time shown now: the last frame's, or the one a setTime asked for.
     double timeS() const { return jumpPending_ ? anchorTimeS_ : lastTimeS_; }
-    // The number the next frame gets (frames are numbered from 0).
-    std::uint64_t nextFrame() const { return frame_; }
     // The camera at timeS(): on its keyed path (scene::CameraPath) if it has one, a still pose without
     // the path; otherwise the scene's camera flown straight along its view (forward at speedKmPerS).
     scene::Camera camera() const { return cameraAt(timeS()); }

@@ -9,7 +9,7 @@ namespace aurorawall::render {
 
 namespace {
 
-const char* kPrelude[] = {"render/work_counts.glsl", "render/ray_sphere.glsl", "render/ray.glsl", "render/layers.glsl", "render/fisheye.glsl",
+const char* kPrelude[] = {"physics/constants.glsl", "render/work_counts.glsl", "render/ray_sphere.glsl", "render/ray.glsl", "render/layers.glsl", "render/fisheye.glsl",
                          "render/tile_rays.glsl"};
 const char* kPixel = "render/pixel.glsl"; // after the generated shadeRay
 const char* entryPoint(MarchStage stage) { return stage == MarchStage::Compute ? "render/main.comp" : "render/main.frag"; }

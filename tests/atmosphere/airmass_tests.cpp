@@ -14,12 +14,14 @@
 // The shared airmass modules in double, to test their pieces directly.
 namespace aurorawall::test64 {
 AURORAWALL_GLSL_PRECISION(double)
+#include "physics/constants.glsl"
 #include "atmosphere/airmass_common.glsl"
 #include "atmosphere/airmass_chapman.glsl"
 } // namespace aurorawall::test64
 
 namespace aurorawall::test32 {
 AURORAWALL_GLSL_PRECISION(float)
+#include "physics/constants.glsl"
 #include "atmosphere/airmass_common.glsl"
 #include "atmosphere/airmass_chapman.glsl"
 } // namespace aurorawall::test32

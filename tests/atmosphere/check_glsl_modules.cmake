@@ -1,6 +1,7 @@
-# Wraps each shared module (with airmass_common.glsl before it; "a.glsl+b.glsl" compiles several in order) in a GLSL 4.50 fragment shader
+# Wraps each shared module (with physics/constants.glsl and airmass_common.glsl before it; "a.glsl+b.glsl" compiles several in order) in a GLSL 4.50 fragment shader
 # that calls its public function, and compiles it with glslangValidator.
 file(MAKE_DIRECTORY ${WORK_DIR})
+file(READ ${SHADER_DIR}/../physics/constants.glsl constants)
 file(READ ${SHADER_DIR}/airmass_common.glsl common)
 set(calls
   "airmass_lawlor.glsl|airmassLawlorWinitzki(o, d, 0.0, 100.0, 8.0, 6371.0) + airmassLawlorErfcx(o, d, 0.0, 100.0, 8.0, 6371.0)"
@@ -18,7 +19,7 @@ foreach(entry IN LISTS calls)
     file(READ ${SHADER_DIR}/${part} text)
     string(APPEND body "${text}\n")
   endforeach()
-  string(CONCAT shader "#version 450 core\n#define real float\n${common}\n${body}\n"
+  string(CONCAT shader "#version 450 core\n#define real float\n${constants}\n${common}\n${body}\n"
              "layout(location = 0) out vec4 color;\n"
              "uniform vec3 lightDirections[8];\nuniform vec3 lightIlluminance[8];\n"
              "void main() {\n  vec3 o = vec3(0.0, 0.0, 6372.0 + gl_FragCoord.x);\n  vec3 d = normalize(vec3(1.0, 0.0, gl_FragCoord.y));\n"

@@ -11,6 +11,7 @@
 namespace aurorawall::airglow_columns::f32 {
 AURORAWALL_GLSL_PRECISION(float)
 #include "render/ray_sphere.glsl"
+#include "physics/constants.glsl"
 #include "atmosphere/airmass_common.glsl"
 #include "atmosphere/airmass_chapman.glsl"
 #include "components/airglow/airglow_layer.glsl"

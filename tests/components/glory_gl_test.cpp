@@ -58,6 +58,7 @@ void look(scene::Scene& s, glm::dvec3 forward)
 
 namespace shared {
 using namespace aurorawall::f64;
+#include "physics/constants.glsl"
 #include "components/glory/cloud_deck.glsl"
 } // namespace shared
 

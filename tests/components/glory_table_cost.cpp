@@ -1,6 +1,7 @@
 // Not a test: the glory's phase table on the CPU (double, 2 threads) against the GPU (float, compute
 // shader), in run time and error, for the default table and a smaller one, and the effect on the glory's
 // colour (docs/GLORY.md, "The table on the GPU"). Needs an EGL context.
+#include "common/constants.h"
 #include "components/glory/gpu_table.h"
 #include "gl/context.h"
 
@@ -46,7 +47,7 @@ void compare(const char* name, const glory::GloryTableSpec& spec, const std::str
                 gpuSeconds, gpuAgainSeconds);
     const int angles = spec.angles.size();
     std::printf("  P relative error: max %.3g (at %.2f deg from the antisolar point, %.0f nm, P %.4g), rms %.3g\n",
-                maxError, spec.angles.angle(int(worst) % angles) * 180.0 / 3.14159265358979323846,
+                maxError, spec.angles.angle(int(worst) % angles) / kDegree,
                 cpu.wavelengthsNm[worst / size_t(angles)], cpu.values[worst], std::sqrt(squares / double(cpu.values.size())));
 
     const glory::LightSource sun;

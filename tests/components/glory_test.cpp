@@ -1,5 +1,6 @@
 // The glory's optics (src/components/glory/optics) against independent references, and the physics
 // of its rings: where the first red ring lies, what a spread of drop sizes and the Sun's disc do.
+#include "common/constants.h"
 #include "components/glory/glory.h"
 #include "components/glory/mie/mie_scattering.h"
 #include "components/glory/mie/phase_function.h"
@@ -22,8 +23,6 @@ using namespace aurorawall::glory;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-constexpr double kDegree = kPi / 180.0;
 
 // A table of the glory's region only (0–10° every 0.05°), with `wavelengths` from 400 to 700 nm.
 GloryTableSpec ringSpec(int wavelengths)

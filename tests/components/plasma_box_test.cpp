@@ -1,6 +1,7 @@
 // The plasma box (kind = "box"): the march along a ray (the shared GLSL compiled as C++ on a
 // uniform density), its frames (the seed's density to first order, n/n₀ averaging 1, the same bits
 // twice and through the cache, finite over 10⁴ steps) and its settings' errors.
+#include "common/constants.h"
 #include "common/glsl.h"
 #include "common/input_error.h"
 #include "components/plasma/box_frames.h"
@@ -40,7 +41,6 @@ using components::plasma::BoxFramesSpec;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 
 // A ray that passes beside the box, one parallel to an axis outside it, one along a face's plane
 // just outside: none adds anything.

@@ -23,7 +23,7 @@ TEST(Exr, RoundTripKeepsValuesWithinHalfPrecision)
     TempDir dir;
     Image image(3, 2);
     image.rgba = {0.0f,   1e-3f,  0.1234f, 1.0f,  //
-                  0.5f,   1.0f,   3.14159f, 0.25f, //
+                  0.5f,   1.0f,   2.71828f, 0.25f, //
                   42.0f,  1234.5f, 1e4f,    0.0f,  //
                   6e4f,   -2.5f,  0.75f,   0.5f,  //
                   1e5f / 2, 7.0f, 0.01f,   1.0f,  //

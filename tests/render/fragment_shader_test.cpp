@@ -53,7 +53,7 @@ TEST(FragmentShader, MissingShaderFolderNamesTheFile)
         render::marchShaderSource(s, "/nonexistent/shaders");
         FAIL() << "no error";
     } catch (const std::exception& e) {
-        EXPECT_EQ(std::string(e.what()).rfind("/nonexistent/shaders/render/work_counts.glsl: ", 0), 0u) << e.what();
+        EXPECT_EQ(std::string(e.what()).rfind("/nonexistent/shaders/physics/constants.glsl: ", 0), 0u) << e.what();
     }
 }
 

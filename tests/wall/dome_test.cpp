@@ -1,5 +1,6 @@
 // Dome masters: the angular fisheye of the whole canvas, checked in double against its definition
 // (the angle from the axis is |offset| * FOV / canvas height, the azimuth that of the offset).
+#include "common/constants.h"
 #include "wall/tile_rays.h"
 #include "wall/wall_file.h"
 
@@ -10,7 +11,6 @@
 namespace aurorawall::wall {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 
 // Angle between two directions, accurate near 0 and pi alike.
 double angleBetween(glm::dvec3 a, glm::dvec3 b) { return std::atan2(glm::length(glm::cross(a, b)), glm::dot(a, b)); }

@@ -41,7 +41,7 @@ real twoStreamReflectance(real tau, real g)
 real cloudDeckDiffuse(real mu0, real tau, real g, bool fromAbove, bool fromBelow)
 {
     real r = twoStreamReflectance(tau, g);
-    real lambert = max(mu0, real(0.0)) / real(3.14159265358979);
+    real lambert = max(mu0, real(0.0)) / kPi;
     if (fromAbove)
         return lambert * r;
     if (fromBelow)

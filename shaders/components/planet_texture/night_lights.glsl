@@ -7,8 +7,7 @@ uniform float uNightLightsRadiance;
 // y toward 90 deg W, z north), so longitude = atan(-y, -x).
 vec3 nightLights(vec3 n)
 {
-    const float pi = 3.14159265358979;
-    vec2 uv = vec2(atan(-n.y, -n.x) / (2.0 * pi) + 0.5, asin(clamp(n.z, -1.0, 1.0)) / pi + 0.5);
+    vec2 uv = vec2(atan(-n.y, -n.x) / (2.0 * kPi) + 0.5, asin(clamp(n.z, -1.0, 1.0)) / kPi + 0.5);
     return uNightLightsRadiance * textureLod(uNightLights, uv, 0.0).rgb;
 }
 

@@ -29,7 +29,6 @@ float starHash(vec2 cell, float salt)
 // Cells: 2·kStarCells in longitude over 2π (π/kStarCells radians each, times cos(latitude) on the
 // sky), kStarCells/2 in latitude over π (2π/kStarCells radians each).
 const float kStarCells = 1024.0;
-const float kStarPi = 3.14159265358979;
 
 // The light of the star of cell `cell` (wrapped in longitude; none beyond the poles) at the point
 // `grid` of the cell grid, at latitude angle `latitude` (radians), Gaussian width sigma (radians).
@@ -39,7 +38,7 @@ vec3 starOfCell(vec2 cell, vec2 grid, float latitude, float sigma)
     if (cell.y < 0.0 || cell.y >= 0.5 * kStarCells || starHash(wrapped, 0.0) > uStarDensity)
         return vec3(0.0);
     vec2 centre = cell + 0.25 + 0.5 * vec2(starHash(wrapped, 1.0), starHash(wrapped, 2.0));
-    vec2 offsetRad = (grid - centre) * vec2(kStarPi / kStarCells * cos(latitude), 2.0 * kStarPi / kStarCells);
+    vec2 offsetRad = (grid - centre) * vec2(kPi / kStarCells * cos(latitude), 2.0 * kPi / kStarCells);
     float magnitude = pow(starHash(wrapped, 3.0), 4.0); // few bright stars, many faint ones
     vec3 tint = mix(vec3(1.0, 0.8, 0.6), vec3(0.7, 0.8, 1.0), starHash(wrapped, 4.0));
     return uStarBrightness * magnitude * tint * exp(-dot(offsetRad, offsetRad) / (sigma * sigma));
@@ -47,15 +46,15 @@ vec3 starOfCell(vec2 cell, vec2 grid, float latitude, float sigma)
 
 vec3 starRadiance(vec3 d)
 {
-    vec2 angles = vec2(atan(d.y, d.x) + kStarPi, asin(clamp(d.z, -1.0, 1.0)) + 0.5 * kStarPi) / kStarPi; // [0,2] x [0,1]
+    vec2 angles = vec2(atan(d.y, d.x) + kPi, asin(clamp(d.z, -1.0, 1.0)) + 0.5 * kPi) / kPi; // [0,2] x [0,1]
     vec2 grid = angles * vec2(kStarCells, 0.5 * kStarCells);
     vec2 cell = floor(grid);
-    float latitude = angles.y * kStarPi - 0.5 * kStarPi;
+    float latitude = angles.y * kPi - 0.5 * kPi;
     float sigma = max(uPixelAngle, 2e-4);
     // The cells within 3σ, at most 4 each way (beyond, near the poles, where longitude cells narrow,
     // or at pixels wider than a cell, a star's light is cut at 4 cells).
-    int reachLat = min(4, 1 + int(3.0 * sigma / (2.0 * kStarPi / kStarCells)));
-    int reachLon = min(4, 1 + int(3.0 * sigma / (kStarPi / kStarCells * max(cos(latitude), 1e-3))));
+    int reachLat = min(4, 1 + int(3.0 * sigma / (2.0 * kPi / kStarCells)));
+    int reachLon = min(4, 1 + int(3.0 * sigma / (kPi / kStarCells * max(cos(latitude), 1e-3))));
     vec3 radiance = vec3(0.0);
     for (int j = -reachLat; j <= reachLat; ++j)
         for (int i = -reachLon; i <= reachLon; ++i)

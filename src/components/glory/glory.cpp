@@ -1,3 +1,4 @@
+#include "common/constants.h"
 #include "components/glory/glory.h"
 
 #include "atmosphere/airmass_exact.h"
@@ -24,6 +25,7 @@ namespace optics = aurorawall::glory;
 
 namespace f64 {
 using namespace aurorawall::f64;
+#include "physics/constants.glsl"
 #include "components/glory/cloud_deck.glsl"
 #include "components/glory/glory_angle.glsl"
 #include "render/angle.glsl"
@@ -32,7 +34,6 @@ using namespace aurorawall::f64;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr int kSampleTexels = 1024; // the per-pixel wavelength table over u in [0, 1]
 
 // The light's illuminance per linear-sRGB primary (lux): the XYZ of its spectrum, 683 ∫ E cmf dλ.

@@ -1,3 +1,4 @@
+#include "common/constants.h"
 #include "components/glory/gpu_table.h"
 
 #include "components/glory/mie/log_derivative.h"
@@ -17,7 +18,6 @@ namespace {
 
 using namespace gl; // the GL function pointers (gl/functions.h)
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr int kWorkGroupSize = 64; // local_size_x of mie_table.comp
 constexpr int kChunkNodes = 32;    // nodes per invocation of pass 2: at most 32 × 430 loop steps to x = 400
 

@@ -1,3 +1,4 @@
+#include "common/constants.h"
 #include "components/plasma/box_frames.h"
 
 #include "components/plasma/simulation/electrostatic_pic.h"
@@ -18,7 +19,6 @@ namespace {
 
 // Bump when the byte layout below changes.
 constexpr int kBoxFormatVersion = 1;
-constexpr double kPi = 3.14159265358979323846;
 
 // Every field of the spec must be in the key: a new field changes the size and stops the build here.
 static_assert(sizeof(BoxFramesSpec) == 64, "add the new BoxFramesSpec field to boxFramesCacheKey");

@@ -1,3 +1,4 @@
+#include "common/constants.h"
 #include "components/plasma/plasma.h"
 
 #include "common/input_error.h"
@@ -47,7 +48,6 @@ void readBox(const config::TableReader& t, Settings& p)
         t.fail("box_particles_per_cell_axis", number(particles) + " electrons; at most 4e6");
     p.boxSeedMode = t.integer("box_seed_mode", 1, p.boxCells / 4, p.boxSeedMode);
     // k a < 1: the seed's displacement never reorders the electrons along z.
-    const double kPi = 3.14159265358979323846;
     p.boxSeedAmplitudeKm =
         t.number("box_seed_amplitude_km", 0.0, 0.99 * p.boxSideKm / (2.0 * kPi * p.boxSeedMode), p.boxSeedAmplitudeKm);
     const double beamSpeed = boxBeamSpeed(boxFramesSpec(p));

@@ -1,3 +1,4 @@
+#include "common/constants.h"
 #include "components/glory/optics/glory_table.h"
 
 #include "common/glsl.h"
@@ -17,7 +18,6 @@ namespace aurorawall::glory {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 
 namespace shared {
 AURORAWALL_GLSL_PRECISION(double)

@@ -1,3 +1,4 @@
+#include "common/constants.h"
 #include "components/glory/optics/light_source.h"
 
 #include "components/glory/optics/colour_matching.h"
@@ -7,7 +8,6 @@
 namespace aurorawall::glory {
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kMoonRadiusKm = 1737.4;
 constexpr double kMoonDistanceKm = 384400.0;
 } // namespace
