@@ -10,6 +10,7 @@
 #include <fcntl.h>
 #include <fstream>
 #include <netinet/in.h>
+#include <netinet/tcp.h>
 #include <poll.h>
 #include <sys/socket.h>
 #include <sys/stat.h>
@@ -109,6 +110,10 @@ void ControlServer::accept()
             ::close(idlest->second.fd);
             clients_.erase(idlest);
         }
+        // Each answer leaves at once: held back by Nagle's algorithm, the last line before a close
+        // (an error saying why) would be lost to the reset that closing on unread input sends.
+        const int on = 1;
+        ::setsockopt(fd, IPPROTO_TCP, TCP_NODELAY, &on, sizeof on);
         Client& c = clients_[nextClient_++];
         c.fd = fd;
         c.authenticated = token_.empty();
