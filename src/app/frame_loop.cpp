@@ -19,6 +19,7 @@
 #include "wall/tile_rays.h"
 
 #include <algorithm>
+#include <map>
 #include <cstdio>
 #include <optional>
 #include <stdexcept>
@@ -55,20 +56,25 @@ double pixelsPerFrame(const wall::Wall& wall)
     return pixels;
 }
 
-// The master writes the gathered wall for each screenshot asked for and answers its client.
+// The master writes the gathered wall for each screenshot asked for and answers its client. A file
+// asked for several times in the frame is written once (the same picture): a client repeating one
+// screenshot in a loop costs one write a frame, not one for each line.
 void writeScreenshots(WallSession& session, const io::Image& canvas, int gatherStatus,
                       const std::vector<control::ScreenshotRequest>& screenshots)
 {
+    std::map<std::string, std::string> answers; // by path
     for (const control::ScreenshotRequest& shot : screenshots) {
-        std::string answer = "ok screenshot " + shot.path;
-        try {
-            if (gatherStatus != 0)
-                throw std::runtime_error("the wall could not be read back");
-            io::writePng(shot.path, canvas, session.toneMap); // atomic: a temporary name, then renamed
-        } catch (const std::exception& e) {
-            answer = "error screenshot " + shot.path + ": " + e.what();
+        auto [it, first] = answers.try_emplace(shot.path, "ok screenshot " + shot.path);
+        if (first) {
+            try {
+                if (gatherStatus != 0)
+                    throw std::runtime_error("the wall could not be read back");
+                io::writePng(shot.path, canvas, session.toneMap); // atomic: a temporary name, then renamed
+            } catch (const std::exception& e) {
+                it->second = "error screenshot " + shot.path + ": " + e.what();
+            }
         }
-        session.control->answer(shot.client, answer);
+        session.control->answer(shot.client, it->second);
     }
 }
 

@@ -19,7 +19,7 @@ int runRenderCommand(int argc, char** argv)
     cluster::MpiWorld world(&argc, &argv);
     WallSession session;
     const int status = setUpWallSession(world, argc, argv, session);
-    if (status != cli::kSuccess || session.options.help)
+    if (status != cli::kSuccess || session.options.help || session.options.printRanks)
         return status;
     // A failure in the middle of a frame (a corrupt band from another rank, a GPU simulation that
     // cannot be rebuilt) ends the whole job with one line: the other ranks may be waiting for this one.

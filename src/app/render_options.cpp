@@ -100,6 +100,9 @@ RenderOptions parseRenderOptions(int argc, char** argv)
          "the master opens a console window (480 px wide, the wall's aspect) showing the whole wall, "
          "downsampled, each frame, with the HUD (H); input there steers like any window. Needs --backend glfw; "
          "every rank then sends its screens to the master every frame")
+        ("print-ranks", po::bool_switch(&o.printRanks),
+         "print the number of MPI ranks the wall file needs (1 with the single-screen option) and exit without "
+         "rendering; runs on one process, without mpirun (launch scripts check their task count with it)")
         ("quiet", po::bool_switch(&o.quiet), "print only the summary, not a line per frame")
         ("verbose", po::bool_switch(&o.verbose), "also print the per-frame work of the components (curtain map build)");
     o.helpText = cli.help();

@@ -47,6 +47,7 @@ struct RenderOptions {
     bool console = false;                // --console: the master's preview window of the whole wall
     bool quiet = false;
     bool verbose = false;
+    bool printRanks = false;             // --print-ranks: print the wall's rank count and exit (for launch scripts)
     bool help = false;
     std::string helpText;
 };

@@ -54,6 +54,8 @@ void configure(const cluster::MpiWorld& world, int argc, char** argv, WallSessio
     s.wall = wall::loadWall(options.wallFile);
     if (options.singleScreen)
         s.wall = wall::singleScreenEquivalent(s.wall);
+    if (options.printRanks)
+        return;
     if (s.wall.rankCount != world.size())
         throw UsageError(options.wallFile + (options.singleScreen ? " with --single-screen" : "") +
                          ": the wall is driven by " + std::to_string(s.wall.rankCount) +
@@ -162,6 +164,11 @@ int setUpWallSession(const cluster::MpiWorld& world, int argc, char** argv, Wall
     if (session.options.help) {
         if (world.isMaster())
             std::cout << session.options.helpText;
+        return cli::kSuccess;
+    }
+    if (session.options.printRanks) {
+        if (world.isMaster())
+            std::cout << session.wall.rankCount << "\n";
         return cli::kSuccess;
     }
     world.startWatchdog(session.options.rankTimeoutS);

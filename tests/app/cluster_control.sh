@@ -2,8 +2,12 @@
 # The control port on a lab network, on the virtual cluster (launch/virtual-cluster, 2 hosts x 2
 # ranks): the master listens on host 0's address with --control-token-file; a client on host 1 that
 # does not authenticate gets one error line and is closed, and the wall keeps running; one that
-# sends the secret first steers the wall (status, pause, quit) and the job exits 0. Skipped (77) where
-# namespaces cannot be made.
+# sends the secret first steers the wall (status, pause, quit) and the job exits 0. A flood of
+# 10,000 lines per second from host 1 (launch/control-flood, connecting again whenever closed): with
+# the secret, each connection has at most 100 lines answered, then the one rate error, and is closed,
+# while the wall keeps drawing and answering, also for a flood of one screenshot (each line answered
+# ok, the file written); without it, each connection gets nothing but the one authentication error. No timing is checked (launch/control-flood-bench measures the frame time).
+# Skipped (77) where namespaces cannot be made.
 source "$(dirname "$0")/lib.sh"
 require_network_namespaces
 prefix="awcc$$"
@@ -11,7 +15,7 @@ token="$WORK/token"
 echo "secret-$$-$RANDOM" > "$token"
 chmod 600 "$token"
 AURORAWALL="$AW" VIRTUAL_CLUSTER_PREFIX="$prefix" "$SRC_DIR/launch/virtual-cluster" 2 2 -- render \
-    --wall "$WALLS/desktop-2x2.toml" --scene "$SCENE" --frames 0 --control-port 5555 --control-bind 198.18.0.1 \
+    --wall "$DATA/tiny-2x2.toml" --scene "$SCENE" --frames 0 --control-port 5555 --control-bind 198.18.0.1 \
     --control-token-file "$token" --out "$WORK/out" > "$WORK/log" 2> "$WORK/err" &
 job=$!
 for _ in $(seq 600); do
@@ -37,6 +41,42 @@ answer=$(from_host1 --token-file "$token" status pause status) || { kill $job; f
 echo "$answer"
 [ "$(head -n 1 <<<"$answer")" = "ok auth" ] || { kill $job; fail "no ok auth"; }
 grep -q " paused " <<<"$answer" || { kill $job; fail "the wall was not paused"; }
+frame_from_host1() { from_host1 --token-file "$token" status | sed -n 's/^ok frame=\([0-9]*\) .*/\1/p'; }
+# check_flood JSON PYTHON_CONDITION MESSAGE: fails (killing the job) unless the condition holds for
+# the flood's report r.
+check_flood() {
+    python3 -c "import json, sys; r = json.loads(sys.argv[1]); sys.exit(0 if ($2) else 1)" "$1" ||
+        { kill $job; fail "$3: $1"; }
+}
+flood() { ip netns exec "${prefix}h1" python3 "$SRC_DIR/launch/control-flood" --host 198.18.0.1 --port 5555 "$@"; }
+
+note "a flood of 10,000 lines per second from host 1, with the secret, for 4 s"
+before=$(frame_from_host1)
+report=$(flood --token-file "$token" --rate 10000 --seconds 4)
+after=$(frame_from_host1)
+echo "$report; frames $before -> $after"
+rate_error="error more than 100 lines per second; closing"
+check_flood "$report" "r['sent'] > 1000" "the flood did not get going"
+check_flood "$report" "list(r['errors']) == ['$rate_error'] and r['closed_by_wall'] >= 1" "not limited"
+check_flood "$report" "r['errors']['$rate_error'] == r['closed_by_wall'] and r['most_errors_in_a_connection'] == 1" \
+    "not one error line for each connection closed"
+check_flood "$report" "0 < r['ok'] <= 100 * r['connections']" "more than 100 lines answered on a connection"
+[ -n "$after" ] && [ "$after" -gt "$before" ] || { kill $job; fail "the wall stopped drawing ($before -> $after)"; }
+
+note "a flood of one screenshot, with the secret, for 2 s: every line answered ok, the file written"
+report=$(flood --token-file "$token" --rate 10000 --seconds 2 --line "screenshot flood.png")
+echo "$report"
+check_flood "$report" "r['ok'] >= 1 and set(r['errors']) <= {'$rate_error'}" "screenshots not all answered ok"
+[ "$(head -c 8 "$WORK/out/flood.png" | od -An -tx1 | tr -d ' \n')" = 89504e470d0a1a0a ] || { kill $job; fail "no flood.png"; }
+
+note "the same flood without the secret, for 2 s"
+report=$(flood --rate 10000 --seconds 2)
+echo "$report"
+auth_error="error authentication required: the first line must be auth TOKEN; closing"
+check_flood "$report" "r['ok'] == 0 and list(r['errors']) == ['$auth_error']" "an unauthenticated flood got more than the error"
+check_flood "$report" "r['errors']['$auth_error'] == r['closed_by_wall'] >= 1 and r['most_errors_in_a_connection'] == 1" \
+    "not one error line for each connection closed"
+
 from_host1 --token-file "$token" quit || { kill $job; fail "quit refused"; }
 status=0; wait $job || status=$?
 [ "$status" -eq 0 ] || { cat "$WORK/err"; fail "the job exited $status after quit"; }

@@ -1,6 +1,6 @@
 // The control server on loopback: several clients at once, a line cut off by a disconnection, a
-// client that sends and leaves, a flood held to a number of lines per poll, an overlong line, and
-// addresses it cannot listen on.
+// client that sends and leaves, a flood held to a number of lines per poll and to a rate per client,
+// an overlong line, and addresses it cannot listen on.
 #include "app/control/control_server.h"
 
 #include "common/input_error.h"
@@ -130,7 +130,7 @@ TEST(ControlServer, ALineSentJustBeforeLeavingIsCarriedOut)
 
 TEST(ControlServer, AFloodIsHandedOutInBoundedPortionsInOrder)
 {
-    ControlServer server("127.0.0.1", 0);
+    ControlServer server("127.0.0.1", 0, "", ControlServer::kIdleTimeoutS, 1e6); // no rate limit here
     Client flood(server.port()), other(server.port());
     std::string bytes;
     for (int i = 0; i < 300; ++i)
@@ -303,4 +303,67 @@ TEST(ControlServer, IdleClientsTimeOut)
     EXPECT_EQ(quiet.readLine(), "error closing this connection: idle for more than 0.3 s");
     EXPECT_EQ(quiet.readLine(), ""); // closed
     EXPECT_EQ(server.clientCount(), 1u);
+}
+
+// A client past the rate (here 150 lines at once against 100 per second, as many at once): its first
+// 100 lines are carried out and answered in order, then it gets one error line and is closed; the
+// 50 beyond are dropped. Another client, within the rate, is served all along.
+TEST(ControlServer, AClientPastTheRateIsAnsweredThenClosed)
+{
+    ControlServer server("127.0.0.1", 0);
+    Client flood(server.port()), other(server.port());
+    std::string bytes;
+    for (int i = 0; i < 150; ++i)
+        bytes += "time " + std::to_string(i) + "\n";
+    flood.send(bytes);
+    other.send("status\n");
+    std::vector<std::string> floodLines;
+    bool otherServed = false;
+    const auto end = std::chrono::steady_clock::now() + std::chrono::seconds(5);
+    while (std::chrono::steady_clock::now() < end) {
+        if (otherServed && floodLines.size() >= 100 && server.clientCount() == 1)
+            break; // the flood's client is closed
+        for (const ControlLine& l : server.poll(16)) {
+            server.answer(l.client, "ok " + l.text);
+            if (l.text == "status")
+                otherServed = true;
+            else
+                floodLines.push_back(l.text);
+        }
+        std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    }
+    ASSERT_EQ(floodLines.size(), 100u);
+    for (int i = 0; i < 100; ++i) {
+        EXPECT_EQ(floodLines[i], "time " + std::to_string(i));
+        EXPECT_EQ(flood.readLine(), "ok time " + std::to_string(i));
+    }
+    EXPECT_EQ(flood.readLine(), "error more than 100 lines per second; closing");
+    EXPECT_EQ(flood.readLine(), ""); // closed
+    EXPECT_TRUE(otherServed);
+    EXPECT_EQ(other.readLine(), "ok status");
+    EXPECT_EQ(server.clientCount(), 1u);
+}
+
+// A client that keeps within the rate is never cut off, however long it goes on: here 4 lines every
+// half second (8 per second, 16 in all) against 10 per second, 10 at once.
+TEST(ControlServer, AClientWithinTheRateIsServedThroughout)
+{
+    ControlServer server("127.0.0.1", 0, "", ControlServer::kIdleTimeoutS, 10.0);
+    Client steady(server.port());
+    size_t served = 0;
+    for (int burst = 0; burst < 4; ++burst) {
+        steady.send("status\nstatus\nstatus\nstatus\n");
+        const auto next = std::chrono::steady_clock::now() + std::chrono::milliseconds(500);
+        while (std::chrono::steady_clock::now() < next) {
+            for (const ControlLine& l : server.poll(16)) {
+                server.answer(l.client, "ok");
+                ++served;
+            }
+            std::this_thread::sleep_for(std::chrono::milliseconds(2));
+        }
+    }
+    EXPECT_EQ(served, 16u);
+    EXPECT_EQ(server.clientCount(), 1u);
+    for (size_t i = 0; i < served; ++i)
+        EXPECT_EQ(steady.readLine(), "ok");
 }

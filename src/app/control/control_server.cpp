@@ -10,6 +10,7 @@
 #include <fcntl.h>
 #include <fstream>
 #include <netinet/in.h>
+#include <netinet/tcp.h>
 #include <poll.h>
 #include <sys/socket.h>
 #include <sys/stat.h>
@@ -57,8 +58,9 @@ std::string readControlToken(const std::string& file)
     return token;
 }
 
-ControlServer::ControlServer(const std::string& bindAddress, int port, std::string token, double idleTimeoutS)
-    : address_(bindAddress), token_(std::move(token)), idleTimeoutS_(idleTimeoutS)
+ControlServer::ControlServer(const std::string& bindAddress, int port, std::string token, double idleTimeoutS,
+                             double linesPerSecond)
+    : address_(bindAddress), token_(std::move(token)), idleTimeoutS_(idleTimeoutS), linesPerSecond_(linesPerSecond)
 {
     sockaddr_in addr{};
     addr.sin_family = AF_INET;
@@ -108,15 +110,22 @@ void ControlServer::accept()
             ::close(idlest->second.fd);
             clients_.erase(idlest);
         }
+        // Each answer leaves at once: held back by Nagle's algorithm, the last line before a close
+        // (an error saying why) would be lost to the reset that closing on unread input sends.
+        const int on = 1;
+        ::setsockopt(fd, IPPROTO_TCP, TCP_NODELAY, &on, sizeof on);
         Client& c = clients_[nextClient_++];
         c.fd = fd;
         c.authenticated = token_.empty();
         c.lastHeardS = secondsNow();
+        c.rate = TokenBucket(linesPerSecond_, linesPerSecond_, c.lastHeardS);
     }
 }
 
 void ControlServer::read(Client& c)
 {
+    if (c.overRate)
+        return; // also when it hangs up: it is closed once its lines are answered
     // One read per client per poll: the bytes a flood can bring in one frame are bounded.
     char buffer[4096];
     const ssize_t n = ::recv(c.fd, buffer, sizeof buffer, 0);
@@ -135,8 +144,8 @@ void ControlServer::read(Client& c)
         if (buffer[i] == '\n') {
             received(c, std::move(c.partial));
             c.partial.clear();
-            if (c.failed)
-                return;
+            if (c.failed || c.overRate)
+                return; // the rest of the bytes are dropped: nothing more is read from it
         } else if (c.partial.size() >= kMaxLineBytes) {
             c.outgoing += "error line longer than " + std::to_string(kMaxLineBytes) + " bytes; closing\n";
             flush(c);
@@ -150,6 +159,10 @@ void ControlServer::read(Client& c)
 
 void ControlServer::received(Client& c, std::string line)
 {
+    if (!c.rate.take(c.lastHeardS)) {
+        c.overRate = true;
+        return;
+    }
     if (c.authenticated) {
         c.lines.push_back(std::move(line));
         return;
@@ -184,6 +197,13 @@ void ControlServer::closeFinished()
     const double now = secondsNow();
     for (auto it = clients_.begin(); it != clients_.end();) {
         Client& c = it->second;
+        if (!c.failed && c.overRate && c.awaiting == 0 && c.lines.empty()) {
+            char rate[32];
+            std::snprintf(rate, sizeof rate, "%g", linesPerSecond_);
+            c.outgoing += std::string("error more than ") + rate + " lines per second; closing\n";
+            flush(c);
+            c.failed = true;
+        }
         if (!c.failed && c.awaiting == 0 && c.lines.empty() && now - c.lastHeardS > idleTimeoutS_) {
             char seconds[32];
             std::snprintf(seconds, sizeof seconds, "%g", idleTimeoutS_);
@@ -207,7 +227,7 @@ std::vector<ControlLine> ControlServer::poll(std::size_t maxLines)
     std::vector<std::uint64_t> ids{0};
     for (auto& [id, c] : clients_) {
         short events = 0;
-        if (!c.readClosed && c.lines.size() < kMaxQueuedLines)
+        if (!c.readClosed && !c.overRate && c.lines.size() < kMaxQueuedLines)
             events |= POLLIN;
         if (!c.outgoing.empty())
             events |= POLLOUT;

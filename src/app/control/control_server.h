@@ -10,10 +10,16 @@
 // longest idle client (which gets one line saying so); a client that sends nothing for the idle
 // timeout (kIdleTimeoutS, 10 minutes) while nothing of its is pending is closed with one line; one
 // whose answers back up past kMaxPendingAnswerBytes (it never reads) is dropped.
+// Each client may send kMaxLinesPerSecond lines per second, as many at once (a token bucket): a line
+// beyond that ends the client's reading; its lines within the limit are still carried out and
+// answered, then it gets one error line and is closed. So a flood costs the frame loop at most one
+// second's worth of lines per connection, and its client learns at once why it was cut off.
 // With a token (a shared secret; required by the render command for any address but loopback),
 // a client's first line must be "auth TOKEN": it is answered "ok auth" and the client's later lines
 // are handed out; any other first line gets one error line and the client is closed, before any of
 // its lines reaches the wall.
+#include "app/control/token_bucket.h"
+
 #include <cstddef>
 #include <cstdint>
 #include <map>
@@ -39,12 +45,13 @@ public:
     static constexpr std::size_t kMaxClients = 16;       // a 17th closes the longest idle one (told so)
     static constexpr double kIdleTimeoutS = 600.0;       // a client silent this long is told so and closed
     static constexpr std::size_t kMaxPendingAnswerBytes = 1 << 20; // a client that reads nothing is closed
+    static constexpr double kMaxLinesPerSecond = 100.0;  // per client, and as many at once; more: closed
 
     // Listens on bindAddress (dotted IPv4) at port (0: a free port the system picks); with a
     // non-empty token, clients authenticate first (above). Throws InputError naming --control-bind
     // or --control-port if it cannot.
     ControlServer(const std::string& bindAddress, int port, std::string token = "",
-                  double idleTimeoutS = kIdleTimeoutS);
+                  double idleTimeoutS = kIdleTimeoutS, double linesPerSecond = kMaxLinesPerSecond);
     ~ControlServer();
     ControlServer(const ControlServer&) = delete;
     ControlServer& operator=(const ControlServer&) = delete;
@@ -71,6 +78,8 @@ private:
         bool failed = false;           // the connection is broken or the client misbehaved
         bool authenticated = false;    // its first line was "auth TOKEN" (or no token is asked)
         double lastHeardS = 0.0;       // when it last sent bytes (steady clock, s)
+        TokenBucket rate;              // its lines per second
+        bool overRate = false;         // it passed the rate: read no more, close once its lines are answered
     };
     // A complete line from the client: queued, or, before it has authenticated, checked as its
     // "auth TOKEN" line.
@@ -85,6 +94,7 @@ private:
     std::string address_;
     std::string token_;
     double idleTimeoutS_;
+    double linesPerSecond_;
     std::uint64_t nextClient_ = 1;
     std::map<std::uint64_t, Client> clients_;
 };
