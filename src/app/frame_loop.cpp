@@ -172,6 +172,7 @@ cluster::FrameStats runFrames(WallSession& session, const cluster::MpiWorld& wor
         stats.streamCsv(statsFile, size_t(world.size()));
     bool stopRequested = false;
     control::WallStatus wallStatus;
+    std::optional<SteadyClock::time_point> lastScreenshot; // when the wall was last gathered for screenshots
     const control::WallFacts wallFacts{session.scene.planetRadiusKm,
                                        (session.options.dataDir.empty() ? dataDirectory() : session.options.dataDir) +
                                            "/config/scenes",
@@ -197,6 +198,8 @@ cluster::FrameStats runFrames(WallSession& session, const cluster::MpiWorld& wor
             const double lastFrameS = std::chrono::duration<double>(frameStart - previousFrameStart).count();
             if (!stats.records().empty()) // over the last frame: drawing, gathering, commands
                 wallStatus.fps = 1.0 / lastFrameS;
+            if (lastScreenshot)
+                wallStatus.sinceScreenshotS = std::chrono::duration<double>(frameStart - *lastScreenshot).count();
             for (const cluster::InputEvent& e : navigationEvents)
                 if (e.type == gl::InputEvent::KeyPressed && e.code == 'H')
                     hudShown = !hudShown;
@@ -305,6 +308,8 @@ cluster::FrameStats runFrames(WallSession& session, const cluster::MpiWorld& wor
             io::Image canvas;
             const int status = gatherWallImage(session, world, canvas);
             if (world.isMaster()) {
+                if (!screenshots.empty())
+                    lastScreenshot = SteadyClock::now();
                 writeScreenshots(session, canvas, status, screenshots);
                 if (movie)
                     writeMovieFrame(session, *movie, canvas, status, frame.state, stopRequested);

@@ -104,6 +104,17 @@ std::string carryOut(const Command& command, std::uint64_t client, cluster::Mast
         std::error_code error;
         if (!std::filesystem::is_directory(full.parent_path(), error))
             throw CommandError("screenshot " + command.path + ": " + full.parent_path().string() + " is not a folder");
+        if (requests.screenshots.empty() && status.sinceScreenshotS < kScreenshotIntervalS)
+            throw CommandError("screenshot " + command.path + ": the last was taken less than 0.5 s ago (at most 2 "
+                               "a second; --movie records every frame)");
+        const bool asked = std::any_of(requests.screenshots.begin(), requests.screenshots.end(),
+                                       [&](const ScreenshotRequest& r) { return r.path == full.string(); });
+        size_t files = 0; // distinct files this frame: one asked for again is written once
+        for (size_t i = 0; i < requests.screenshots.size(); ++i)
+            files += std::none_of(requests.screenshots.begin(), requests.screenshots.begin() + long(i),
+                                  [&](const ScreenshotRequest& r) { return r.path == requests.screenshots[i].path; });
+        if (!asked && files >= kScreenshotsPerFrame)
+            throw CommandError("screenshot " + command.path + ": at most 4 files in one frame");
         requests.screenshots.push_back({client, full.string()});
         return "";
     }

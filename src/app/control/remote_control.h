@@ -19,7 +19,14 @@ constexpr std::size_t kCommandsPerFrame = 16;
 struct WallStatus {
     std::uint64_t frame = 0; // the last frame drawn
     double fps = 0.0;        // frames per second of the master's loop, over the last frame
+    double sinceScreenshotS = 1e30; // since the wall was last gathered for screenshots, s
 };
+
+// Screenshots gather the whole wall and write PNGs on the master: at most kScreenshotsPerFrame files
+// in one frame (a file asked for again in that frame is written once), and such a frame at most every kScreenshotIntervalS, so that no client, however
+// fast it asks, slows the wall by more than one gather every half second (--movie records every frame).
+constexpr std::size_t kScreenshotsPerFrame = 4;
+constexpr double kScreenshotIntervalS = 0.5;
 
 // A wall image asked for: written by the master after the next frame, then answered.
 struct ScreenshotRequest {
