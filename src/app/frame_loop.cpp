@@ -56,7 +56,7 @@ double pixelsPerFrame(const wall::Wall& wall)
 }
 
 // The master writes the gathered wall for each screenshot asked for and answers its client.
-void writeScreenshots(WallSession& session, const io::Image& canvas, int gatherStatus,
+void writeScreenshots(WallSession& session, control::CommandChannel& channel, const io::Image& canvas, int gatherStatus,
                       const std::vector<control::ScreenshotRequest>& screenshots)
 {
     for (const control::ScreenshotRequest& shot : screenshots) {
@@ -68,7 +68,7 @@ void writeScreenshots(WallSession& session, const io::Image& canvas, int gatherS
         } catch (const std::exception& e) {
             answer = "error screenshot " + shot.path + ": " + e.what();
         }
-        session.control->answer(shot.client, answer);
+        channel.answer(shot.client, answer);
     }
 }
 
@@ -172,6 +172,9 @@ cluster::FrameStats runFrames(WallSession& session, const cluster::MpiWorld& wor
                                        session.options.outDir};
     std::vector<control::ScreenshotRequest> screenshots;
     control::PresetLoader presets;
+    control::ChannelSet commandChannels; // the master's: the control port's clients
+    if (session.control)
+        commandChannels.add(*session.control);
     std::optional<MovieWriter> movie;
     if (world.isMaster() && !session.options.movieDir.empty())
         movie.emplace(session.options.movieDir, session.options.movieExr, session.toneMap);
@@ -198,9 +201,9 @@ cluster::FrameStats runFrames(WallSession& session, const cluster::MpiWorld& wor
                 clock->setCamera(navigation.apply(clock->camera(), navigationEvents));
             navigationEvents.clear();
             flyByGamepad(*session.context, *clock, navigation, gamepadBefore, stats.records().empty() ? 0.0 : lastFrameS);
-            if (session.control) {
+            if (!commandChannels.empty()) {
                 const control::FrameRequests requests =
-                    control::serveCommands(*session.control, *clock, wallStatus, wallFacts, presets);
+                    control::serveCommands(commandChannels, *clock, wallStatus, wallFacts, presets);
                 stopRequested = stopRequested || requests.quit;
                 screenshots = requests.screenshots;
                 if (requests.orbit == control::OrbitRequest::Start)
@@ -223,7 +226,7 @@ cluster::FrameStats runFrames(WallSession& session, const cluster::MpiWorld& wor
         world.setPhase(cluster::RankPhase::Draw, frame.state.frame);
         if (frame.state.quit) {
             for (const control::ScreenshotRequest& shot : screenshots)
-                session.control->answer(shot.client, "error screenshot " + shot.path + ": the wall is quitting");
+                commandChannels.answer(shot.client, "error screenshot " + shot.path + ": the wall is quitting");
             break;
         }
         cluster::RankMessage mine;
@@ -299,7 +302,7 @@ cluster::FrameStats runFrames(WallSession& session, const cluster::MpiWorld& wor
             io::Image canvas;
             const int status = gatherWallImage(session, world, canvas);
             if (world.isMaster()) {
-                writeScreenshots(session, canvas, status, screenshots);
+                writeScreenshots(session, commandChannels, canvas, status, screenshots);
                 if (movie)
                     writeMovieFrame(session, *movie, canvas, status, frame.state, stopRequested);
                 if (session.console && status == 0)
