@@ -165,6 +165,7 @@ cluster::FrameStats runFrames(WallSession& session, const cluster::MpiWorld& wor
     if (world.isMaster() && statsFile.size() > 4 && statsFile.compare(statsFile.size() - 4, 4, ".csv") == 0)
         stats.streamCsv(statsFile, size_t(world.size()));
     bool stopRequested = false;
+    bool previewDue = false; // the master's: this frame's wall goes to the browser console
     control::WallStatus wallStatus;
     const control::WallFacts wallFacts{session.scene.planetRadiusKm,
                                        (session.options.dataDir.empty() ? dataDirectory() : session.options.dataDir) +
@@ -172,9 +173,11 @@ cluster::FrameStats runFrames(WallSession& session, const cluster::MpiWorld& wor
                                        session.options.outDir};
     std::vector<control::ScreenshotRequest> screenshots;
     control::PresetLoader presets;
-    control::ChannelSet commandChannels; // the master's: the control port's clients
+    control::ChannelSet commandChannels; // the master's: the control port's clients, the browser's requests
     if (session.control)
         commandChannels.add(*session.control);
+    if (session.web)
+        commandChannels.add(session.web->commands());
     std::optional<MovieWriter> movie;
     if (world.isMaster() && !session.options.movieDir.empty())
         movie.emplace(session.options.movieDir, session.options.movieExr, session.toneMap);
@@ -212,7 +215,8 @@ cluster::FrameStats runFrames(WallSession& session, const cluster::MpiWorld& wor
                     navigation.stopOrbit();
             }
             cluster::FrameState state = clock->next(stopRequested);
-            state.gatherWall = !screenshots.empty() || movie.has_value() || session.console != nullptr;
+            previewDue = session.web && session.web->previewWanted(); // only while a browser watches
+            state.gatherWall = !screenshots.empty() || movie.has_value() || session.console != nullptr || previewDue;
             if (recorder && !state.quit)
                 recorder->add(state);
             std::vector<std::string> hud;
@@ -307,6 +311,8 @@ cluster::FrameStats runFrames(WallSession& session, const cluster::MpiWorld& wor
                     writeMovieFrame(session, *movie, canvas, status, frame.state, stopRequested);
                 if (session.console && status == 0)
                     showConsole(session, canvas);
+                if (previewDue && status == 0)
+                    session.web->showPreview(std::move(canvas)); // last: the canvas is handed over
             }
             screenshots.clear();
         }
