@@ -59,7 +59,7 @@ double pixelsPerFrame(const wall::Wall& wall)
 // The master writes the gathered wall for each screenshot asked for and answers its client. A file
 // asked for several times in the frame is written once (the same picture): a client repeating one
 // screenshot in a loop costs one write a frame, not one for each line.
-void writeScreenshots(WallSession& session, const io::Image& canvas, int gatherStatus,
+void writeScreenshots(WallSession& session, control::CommandChannel& channel, const io::Image& canvas, int gatherStatus,
                       const std::vector<control::ScreenshotRequest>& screenshots)
 {
     std::map<std::string, std::string> answers; // by path
@@ -74,7 +74,7 @@ void writeScreenshots(WallSession& session, const io::Image& canvas, int gatherS
                 it->second = "error screenshot " + shot.path + ": " + e.what();
             }
         }
-        session.control->answer(shot.client, it->second);
+        channel.answer(shot.client, it->second);
     }
 }
 
@@ -171,6 +171,7 @@ cluster::FrameStats runFrames(WallSession& session, const cluster::MpiWorld& wor
     if (world.isMaster() && statsFile.size() > 4 && statsFile.compare(statsFile.size() - 4, 4, ".csv") == 0)
         stats.streamCsv(statsFile, size_t(world.size()));
     bool stopRequested = false;
+    bool previewDue = false; // the master's: this frame's wall goes to the browser console
     control::WallStatus wallStatus;
     std::optional<SteadyClock::time_point> lastScreenshot; // when the wall was last gathered for screenshots
     const control::WallFacts wallFacts{session.scene.planetRadiusKm,
@@ -179,6 +180,11 @@ cluster::FrameStats runFrames(WallSession& session, const cluster::MpiWorld& wor
                                        session.options.outDir};
     std::vector<control::ScreenshotRequest> screenshots;
     control::PresetLoader presets;
+    control::ChannelSet commandChannels; // the master's: the control port's clients, the browser's requests
+    if (session.control)
+        commandChannels.add(*session.control);
+    if (session.web)
+        commandChannels.add(session.web->commands());
     std::optional<MovieWriter> movie;
     if (world.isMaster() && !session.options.movieDir.empty())
         movie.emplace(session.options.movieDir, session.options.movieExr, session.toneMap);
@@ -207,9 +213,9 @@ cluster::FrameStats runFrames(WallSession& session, const cluster::MpiWorld& wor
                 clock->setCamera(navigation.apply(clock->camera(), navigationEvents));
             navigationEvents.clear();
             flyByGamepad(*session.context, *clock, navigation, gamepadBefore, stats.records().empty() ? 0.0 : lastFrameS);
-            if (session.control) {
+            if (!commandChannels.empty()) {
                 const control::FrameRequests requests =
-                    control::serveCommands(*session.control, *clock, wallStatus, wallFacts, presets);
+                    control::serveCommands(commandChannels, *clock, wallStatus, wallFacts, presets);
                 stopRequested = stopRequested || requests.quit;
                 screenshots = requests.screenshots;
                 if (requests.orbit == control::OrbitRequest::Start)
@@ -218,7 +224,8 @@ cluster::FrameStats runFrames(WallSession& session, const cluster::MpiWorld& wor
                     navigation.stopOrbit();
             }
             cluster::FrameState state = clock->next(stopRequested);
-            state.gatherWall = !screenshots.empty() || movie.has_value() || session.console != nullptr;
+            previewDue = session.web && session.web->previewWanted(); // only while a browser watches
+            state.gatherWall = !screenshots.empty() || movie.has_value() || session.console != nullptr || previewDue;
             if (recorder && !state.quit)
                 recorder->add(state);
             std::vector<std::string> hud;
@@ -232,7 +239,7 @@ cluster::FrameStats runFrames(WallSession& session, const cluster::MpiWorld& wor
         world.setPhase(cluster::RankPhase::Draw, frame.state.frame);
         if (frame.state.quit) {
             for (const control::ScreenshotRequest& shot : screenshots)
-                session.control->answer(shot.client, "error screenshot " + shot.path + ": the wall is quitting");
+                commandChannels.answer(shot.client, "error screenshot " + shot.path + ": the wall is quitting");
             break;
         }
         cluster::RankMessage mine;
@@ -310,11 +317,13 @@ cluster::FrameStats runFrames(WallSession& session, const cluster::MpiWorld& wor
             if (world.isMaster()) {
                 if (!screenshots.empty())
                     lastScreenshot = SteadyClock::now();
-                writeScreenshots(session, canvas, status, screenshots);
+                writeScreenshots(session, commandChannels, canvas, status, screenshots);
                 if (movie)
                     writeMovieFrame(session, *movie, canvas, status, frame.state, stopRequested);
                 if (session.console && status == 0)
                     showConsole(session, canvas);
+                if (previewDue && status == 0)
+                    session.web->showPreview(std::move(canvas)); // last: the canvas is handed over
             }
             screenshots.clear();
         }

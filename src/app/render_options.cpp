@@ -78,12 +78,17 @@ RenderOptions parseRenderOptions(int argc, char** argv)
         ("control-port", po::value(&o.controlPort),
          "the master takes commands on this TCP port (0: a free one, printed), one per line: status, pause, play, "
          "speed, step, time, goto, look, screenshot, quit (docs/driving.md)")
+        ("web-port", po::value(&o.webPort),
+         "the master serves the operator's console to a browser on this TCP port (0: a free one, printed): "
+         "preview, play/pause, speed, time, presets, screenshots; the same commands as --control-port")
         ("control-bind", po::value(&o.controlBind)->default_value(o.controlBind),
-         "the IPv4 address --control-port listens on; any but loopback (127.x.x.x) needs --control-token-file")
+         "the IPv4 address --control-port and --web-port listen on; any but loopback (127.x.x.x) needs "
+         "--control-token-file")
         ("control-token-file", po::value(&o.controlTokenFile),
-         "a file readable by its owner only whose first line is a shared secret: every client's first line must "
-         "be 'auth SECRET', or it gets one error line and is closed (required for a --control-bind other than "
-         "loopback)")
+         "a file readable by its owner only whose first line is a shared secret: every control client's first "
+         "line must be 'auth SECRET', or it gets one error line and is closed; every web request but the page's "
+         "files needs the header 'Authorization: Bearer SECRET' (401 otherwise). Required for a --control-bind "
+         "other than loopback")
         ("rank-timeout", po::value(&o.rankTimeoutS)->default_value(o.rankTimeoutS),
          "seconds without a heartbeat from a rank (sent by a thread of its own, so a slow frame is not "
          "silence), or without progress of its main thread outside waits for other ranks (and longer than 4 "
@@ -124,17 +129,22 @@ RenderOptions parseRenderOptions(int argc, char** argv)
         check(std::isfinite(o.exposure) && o.exposure > 0 && o.exposure < 1e12, "--exposure must be a positive finite number");
     check(o.frames >= 0 && o.frames <= 100000000, "--frames must be a whole number in [0, 1e8] (got " +
                                                        std::to_string(o.frames) + ")");
-    if (cli.given("control-port")) {
+    if (cli.given("control-port"))
         check(o.controlPort >= 0 && o.controlPort <= 65535, "--control-port must be in [0, 65535]");
+    if (cli.given("web-port"))
+        check(o.webPort >= 0 && o.webPort <= 65535, "--web-port must be in [0, 65535]");
+    if (cli.given("control-port") || cli.given("web-port")) {
         check(o.controlBind.rfind("127.", 0) == 0 || cli.given("control-token-file"),
-              "--control-bind " + o.controlBind + " opens the control port beyond this machine: it needs "
-              "--control-token-file");
+              "--control-bind " + o.controlBind + " opens the control " +
+                  (cli.given("control-port") ? "port" : "console") +
+                  " beyond this machine: it needs --control-token-file");
     } else {
-        check(!cli.given("control-bind"), "--control-bind needs --control-port");
-        check(!cli.given("control-token-file"), "--control-token-file needs --control-port");
+        check(!cli.given("control-bind"), "--control-bind needs --control-port or --web-port");
+        check(!cli.given("control-token-file"), "--control-token-file needs --control-port or --web-port");
     }
-    check(o.frames > 0 || o.backend == gl::Backend::Glfw || o.controlPort >= 0,
-          "--frames 0 (until a window is closed or a quit command) needs --backend glfw or --control-port");
+    check(o.frames > 0 || o.backend == gl::Backend::Glfw || o.controlPort >= 0 || o.webPort >= 0,
+          "--frames 0 (until a window is closed or a quit command) needs --backend glfw, --control-port or "
+          "--web-port");
     if (cli.given("stats")) {
         const bool csv = o.statsFile.size() > 4 && o.statsFile.compare(o.statsFile.size() - 4, 4, ".csv") == 0;
         const bool json = o.statsFile.size() > 5 && o.statsFile.compare(o.statsFile.size() - 5, 5, ".json") == 0;

@@ -40,6 +40,7 @@ struct RenderOptions {
     int controlPort = -1;                // --control-port; -1: no remote control, 0: a free port
     std::string controlBind = "127.0.0.1"; // --control-bind
     std::string controlTokenFile;        // --control-token-file: the shared secret clients send first; empty: none
+    int webPort = -1;                    // --web-port: the browser console; -1: none, 0: a free port
     double rankTimeoutS = 10.0;          // --rank-timeout: a rank silent or hung this long ends the job (status 3)
     std::string movieDir;                // --movie: every frame's wall as OUT/frame-NNNNNN.png; empty: none
     bool movieExr = false;               // --movie-exr: also frame-NNNNNN.exr

@@ -64,7 +64,7 @@ void configure(const cluster::MpiWorld& world, int argc, char** argv, WallSessio
     s.scene = components::loadScene(options.sceneFile);
     s.shaderDir = (options.dataDir.empty() ? dataDirectory() : options.dataDir) + "/shaders";
     render::marchShaderSource(s.scene, s.shaderDir); // every module readable before any window opens
-    if (options.gather || options.tiles || options.controlPort >= 0) // the control port's screenshots go there
+    if (options.gather || options.tiles || options.controlPort >= 0 || options.webPort >= 0) // screenshot commands write there
         io::ensureWritableDirectory(options.outDir, "--out");
     if (!options.movieDir.empty())
         io::ensureWritableDirectory(options.movieDir, "--movie");
@@ -84,6 +84,17 @@ void configure(const cluster::MpiWorld& world, int argc, char** argv, WallSessio
     if (world.isMaster() && options.controlPort >= 0)
         s.control = std::make_unique<control::ControlServer>(options.controlBind, options.controlPort,
                                                              control::readControlToken(options.controlTokenFile));
+    if (world.isMaster() && options.webPort >= 0) {
+        const std::string dataDir = options.dataDir.empty() ? dataDirectory() : options.dataDir;
+        web::WebSettings settings;
+        settings.bindAddress = options.controlBind;
+        settings.port = options.webPort;
+        settings.token = control::readControlToken(options.controlTokenFile);
+        settings.pageDir = dataDir + "/web";
+        settings.presetDir = dataDir + "/config/scenes";
+        settings.toneMap = s.toneMap;
+        s.web = std::make_unique<web::WebConsole>(std::move(settings));
+    }
 }
 
 // A context per rank (a window per screen with glfw), the raymarcher, the screens' targets.
@@ -182,6 +193,10 @@ int setUpWallSession(const cluster::MpiWorld& world, int argc, char** argv, Wall
         return status;
     if (session.control) { // printed even with --quiet: with port 0 it is how a client learns the port
         std::printf("control: listening on %s:%d\n", session.control->address().c_str(), session.control->port());
+        std::fflush(stdout);
+    }
+    if (session.web) { // the same, for the browser console
+        std::printf("web: listening on %s:%d\n", session.web->address().c_str(), session.web->port());
         std::fflush(stdout);
     }
     if (world.isMaster() && !session.options.quiet) {

@@ -6,6 +6,7 @@
 #include "app/control/control_server.h"
 #include "app/render_options.h"
 #include "app/screen_target.h"
+#include "app/web/web_console.h"
 #include "cluster/load_balancer.h"
 #include "cluster/mpi_world.h"
 #include "gl/context.h"
@@ -40,6 +41,7 @@ struct WallSession {
     std::vector<cluster::Band> bands;
     bool balanced = false;
     std::unique_ptr<control::ControlServer> control; // master with --control-port only
+    std::unique_ptr<web::WebConsole> web;            // master with --web-port only
     std::string movieError; // master: why a --movie frame could not be written (the run then stops)
     std::string recordError; // master: why the --record-path file could not be written
     std::string statsError;  // master: why a --stats row could not be written (the run then stops)

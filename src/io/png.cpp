@@ -14,12 +14,14 @@ namespace aurorawall::io {
 // Both functions use libpng's simplified API (png_image_*): it reports errors through
 // image.message instead of longjmp, and png_image_write_to_file removes a partial file itself.
 
-void writePng(const std::string& path, const Image& image, const ToneMap& toneMap)
+namespace {
+
+// The image tone mapped and quantised to 8-bit RGB (round(255 v)).
+std::vector<std::uint8_t> toneMappedRgb8(const Image& image, const ToneMap& toneMap, const std::string& name)
 {
     checkImage(image);
     if (image.width == 0 || image.height == 0)
-        throw std::invalid_argument(path + ": cannot write an empty image as PNG");
-
+        throw std::invalid_argument(name + ": cannot write an empty image as PNG");
     std::vector<std::uint8_t> bytes(3 * std::size_t(image.width) * image.height);
     for (std::size_t i = 0; i < bytes.size() / 3; ++i) {
         const float* p = &image.rgba[4 * i];
@@ -27,8 +29,38 @@ void writePng(const std::string& path, const Image& image, const ToneMap& toneMa
         for (int c = 0; c < 3; ++c)
             bytes[3 * i + c] = std::uint8_t(std::lround(255.0 * display[c]));
     }
+    return bytes;
+}
 
-    writePngRgb8(path, image.width, image.height, bytes);
+png_image rgb8Header(int width, int height)
+{
+    png_image png{};
+    png.version = PNG_IMAGE_VERSION;
+    png.width = png_uint_32(width);
+    png.height = png_uint_32(height);
+    png.format = PNG_FORMAT_RGB; // 8-bit, not linear: libpng writes an sRGB chunk
+    return png;
+}
+
+} // namespace
+
+void writePng(const std::string& path, const Image& image, const ToneMap& toneMap)
+{
+    writePngRgb8(path, image.width, image.height, toneMappedRgb8(image, toneMap, path));
+}
+
+std::vector<std::uint8_t> encodePng(const Image& image, const ToneMap& toneMap)
+{
+    const std::vector<std::uint8_t> rgb = toneMappedRgb8(image, toneMap, "PNG");
+    png_image png = rgb8Header(image.width, image.height);
+    png_alloc_size_t size = 0;
+    if (!png_image_write_to_memory(&png, nullptr, &size, 0, rgb.data(), 0, nullptr)) // asks the size
+        throw std::runtime_error(std::string("cannot encode PNG: ") + png.message);
+    std::vector<std::uint8_t> bytes(size);
+    if (!png_image_write_to_memory(&png, bytes.data(), &size, 0, rgb.data(), 0, nullptr))
+        throw std::runtime_error(std::string("cannot encode PNG: ") + png.message);
+    bytes.resize(size);
+    return bytes;
 }
 
 void writePngRgb8(const std::string& path, int width, int height, const std::vector<std::uint8_t>& rgb)
@@ -37,11 +69,7 @@ void writePngRgb8(const std::string& path, int width, int height, const std::vec
         throw std::invalid_argument(path + ": cannot write a PNG of " + std::to_string(rgb.size()) + " bytes as " +
                                     std::to_string(width) + " x " + std::to_string(height) + " RGB");
     writeFileAtomically(path, [&](const std::string& temporary) {
-        png_image png{};
-        png.version = PNG_IMAGE_VERSION;
-        png.width = png_uint_32(width);
-        png.height = png_uint_32(height);
-        png.format = PNG_FORMAT_RGB; // 8-bit, not linear: libpng writes an sRGB chunk
+        png_image png = rgb8Header(width, height);
         if (!png_image_write_to_file(&png, temporary.c_str(), 0, rgb.data(), 0, nullptr))
             throw std::runtime_error(path + ": cannot write PNG: " + png.message);
     });

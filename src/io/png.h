@@ -14,6 +14,9 @@ namespace aurorawall::io {
 // Throws std::invalid_argument for an empty or inconsistent image, std::runtime_error on I/O errors.
 void writePng(const std::string& path, const Image& image, const ToneMap& toneMap);
 
+// The same PNG as writePng, in memory (for the browser console's preview).
+std::vector<std::uint8_t> encodePng(const Image& image, const ToneMap& toneMap);
+
 // Display-ready 8-bit sRGB pixels (rgb: 3 bytes a pixel, rows top-down), written atomically.
 void writePngRgb8(const std::string& path, int width, int height, const std::vector<std::uint8_t>& rgb);
 

@@ -36,15 +36,18 @@ elapsed() { awk -v a="$(now)" -v b="$1" 'BEGIN { printf "%.2f", a - b }'; }
 # control_port LOG JOB: waits (at most 60 s) until the wall started in the background as JOB writes
 # "control: listening on 127.0.0.1:PORT" to LOG, and prints PORT; fails (killing JOB) otherwise.
 # Use as port=$(control_port LOG JOB): a failure exits the script under set -e.
-control_port() {
-    local log="$1" job="$2" port
+# web_port LOG JOB: the same for --web-port's "web: listening on 127.0.0.1:PORT".
+control_port() { listening_port control "$@"; }
+web_port() { listening_port web "$@"; }
+listening_port() {
+    local what="$1" log="$2" job="$3" port
     for _ in $(seq 600); do
-        grep -q "control: listening on" "$log" && break
+        grep -q "^$what: listening on" "$log" && break
         kill -0 "$job" 2>/dev/null || { cat "$log" >&2; fail "the wall exited before listening"; }
         sleep 0.1
     done
-    port=$(sed -n 's/^control: listening on 127\.0\.0\.1:\([0-9]*\)$/\1/p' "$log")
-    [ -n "$port" ] || { cat "$log" >&2; kill "$job"; fail "no 'control: listening on 127.0.0.1:PORT' line"; }
+    port=$(sed -n "s/^$what: listening on 127\.0\.0\.1:\([0-9]*\)\$/\1/p" "$log")
+    [ -n "$port" ] || { cat "$log" >&2; kill "$job"; fail "no '$what: listening on 127.0.0.1:PORT' line"; }
     echo "$port"
 }
 

@@ -19,6 +19,7 @@
 // are handed out; any other first line gets one error line and the client is closed, before any of
 // its lines reaches the wall.
 #include "app/control/token_bucket.h"
+#include "app/control/command_channel.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -33,12 +34,7 @@ namespace aurorawall::control {
 // or its first line is empty.
 std::string readControlToken(const std::string& file);
 
-struct ControlLine {
-    std::uint64_t client = 0; // who sent it, for the answer
-    std::string text;         // without the newline
-};
-
-class ControlServer {
+class ControlServer : public CommandChannel {
 public:
     static constexpr std::size_t kMaxLineBytes = 1024;   // a longer line is answered with an error, then the client closed
     static constexpr std::size_t kMaxQueuedLines = 64;   // per client
@@ -52,7 +48,7 @@ public:
     // or --control-port if it cannot.
     ControlServer(const std::string& bindAddress, int port, std::string token = "",
                   double idleTimeoutS = kIdleTimeoutS, double linesPerSecond = kMaxLinesPerSecond);
-    ~ControlServer();
+    ~ControlServer() override;
     ControlServer(const ControlServer&) = delete;
     ControlServer& operator=(const ControlServer&) = delete;
 
@@ -61,9 +57,9 @@ public:
 
     // Accepts, reads and sends what it can without waiting; returns up to maxLines complete lines,
     // taken in turn from the clients.
-    std::vector<ControlLine> poll(std::size_t maxLines);
+    std::vector<ControlLine> poll(std::size_t maxLines) override;
     // Sends one answer line (the newline is added) to a client; nothing if it has gone.
-    void answer(std::uint64_t client, const std::string& text);
+    void answer(std::uint64_t client, const std::string& text) override;
 
     std::size_t clientCount() const { return clients_.size(); }
 

@@ -137,30 +137,30 @@ std::string statusLine(const cluster::MasterClock& clock, const WallStatus& stat
 }
 
 // A preset whose load has finished: its camera applied and the command answered.
-void applyLoadedPreset(ControlServer& server, cluster::MasterClock& clock, PresetLoader& presets,
+void applyLoadedPreset(CommandChannel& channel, cluster::MasterClock& clock, PresetLoader& presets,
                        double planetRadiusKm, FrameRequests& requests)
 {
     std::optional<PresetLoader::Loaded> loaded = presets.poll();
     if (!loaded)
         return;
     if (!loaded->camera) {
-        server.answer(loaded->client, "error " + loaded->error);
+        channel.answer(loaded->client, "error " + loaded->error);
         return;
     }
     clock.setCamera(*loaded->camera);
     requests.orbit = OrbitRequest::Stop;
     const GeographicPose p = poseOf(clock.camera(), planetRadiusKm);
-    server.answer(loaded->client, "ok preset " + loaded->name +
+    channel.answer(loaded->client, "ok preset " + loaded->name +
                                       format(" lat_deg=%.6f lon_deg=%.6f alt_km=%.6f", p.latitudeDeg, p.longitudeDeg,
                                              p.altitudeKm));
 }
 
-FrameRequests serveCommands(ControlServer& server, cluster::MasterClock& clock, const WallStatus& status,
+FrameRequests serveCommands(CommandChannel& channel, cluster::MasterClock& clock, const WallStatus& status,
                             const WallFacts& wall, PresetLoader& presets)
 {
     FrameRequests requests;
-    applyLoadedPreset(server, clock, presets, wall.planetRadiusKm, requests);
-    for (const ControlLine& line : server.poll(kCommandsPerFrame)) {
+    applyLoadedPreset(channel, clock, presets, wall.planetRadiusKm, requests);
+    for (const ControlLine& line : channel.poll(kCommandsPerFrame)) {
         std::string answer;
         try {
             if (requests.quit)
@@ -170,7 +170,7 @@ FrameRequests serveCommands(ControlServer& server, cluster::MasterClock& clock, 
             answer = std::string("error ") + e.what();
         }
         if (!answer.empty())
-            server.answer(line.client, answer);
+            channel.answer(line.client, answer);
     }
     return requests;
 }

@@ -1,8 +1,9 @@
 #pragma once
-// The wall's remote control on the master: the commands read by the ControlServer are carried out
-// on the master's clock and camera (cluster/master_clock.h) before the next frame is decided, so
-// their effect reaches every rank in that frame's one broadcast. The protocol: docs/driving.md.
-#include "app/control/control_server.h"
+// The wall's remote control on the master: the commands read from its channels (the ControlServer's
+// TCP clients, the browser console's requests) are carried out on the master's clock and camera
+// (cluster/master_clock.h) before the next frame is decided, so their effect reaches every rank in
+// that frame's one broadcast. The protocol: docs/driving.md.
+#include "app/control/command_channel.h"
 #include "app/control/preset_loader.h"
 #include "cluster/master_clock.h"
 
@@ -56,10 +57,10 @@ struct FrameRequests {
     glm::dvec3 pivotKm{0.0};
 };
 
-// Applies a preset whose load has finished (answering its command), polls the server once, carries
+// Applies a preset whose load has finished (answering its command), polls the channel once, carries
 // out up to kCommandsPerFrame commands and answers each (but the screenshots, answered once written,
 // and the presets, once loaded). A malformed or unknown line is answered "error REASON".
-FrameRequests serveCommands(ControlServer& server, cluster::MasterClock& clock, const WallStatus& status,
+FrameRequests serveCommands(CommandChannel& channel, cluster::MasterClock& clock, const WallStatus& status,
                             const WallFacts& wall, PresetLoader& presets);
 
 // The answer to `status`: the last frame drawn, and the time and camera the wall shows (those a command

@@ -1,0 +1,61 @@
+#include "app/web/status_json.h"
+
+#include <cctype>
+#include <cmath>
+#include <cstdlib>
+#include <sstream>
+#include <stdexcept>
+
+namespace aurorawall::app::web {
+
+namespace {
+
+bool isNumber(const std::string& text)
+{
+    if (text.empty() || !(std::isdigit(static_cast<unsigned char>(text[0])) || text[0] == '-'))
+        return false; // also keeps out what strtod takes but JSON does not: inf, nan, .5, 0x1
+    char* end = nullptr;
+    const double value = std::strtod(text.c_str(), &end);
+    return *end == '\0' && std::isfinite(value);
+}
+
+// A JSON string; the protocol's values are printable ASCII, the rest is escaped anyway.
+std::string quoted(const std::string& text)
+{
+    std::string out = "\"";
+    for (const char c : text) {
+        if (c == '"' || c == '\\')
+            out += std::string("\\") + c;
+        else if (static_cast<unsigned char>(c) < 0x20)
+            out += ' ';
+        else
+            out += c;
+    }
+    return out + "\"";
+}
+
+} // namespace
+
+std::string statusJson(const std::string& statusLine)
+{
+    if (statusLine.rfind("ok ", 0) != 0)
+        throw std::invalid_argument("not a status answer: " + statusLine);
+    std::istringstream words(statusLine.substr(3));
+    std::string word, json;
+    while (words >> word) {
+        const std::size_t equals = word.find('=');
+        std::string member;
+        if (equals != std::string::npos) {
+            const std::string value = word.substr(equals + 1);
+            member = quoted(word.substr(0, equals)) + ":" + (isNumber(value) ? value : quoted(value));
+        } else if (word == "paused" || word == "playing") {
+            member = std::string("\"paused\":") + (word == "paused" ? "true" : "false");
+        } else {
+            continue;
+        }
+        json += (json.empty() ? "{" : ",") + member;
+    }
+    return json.empty() ? "{}" : json + "}";
+}
+
+} // namespace aurorawall::app::web

@@ -1,0 +1,217 @@
+#include "app/web/web_console.h"
+
+#include "app/console_view.h"
+#include "app/web/command_mailbox.h"
+#include "app/web/status_json.h"
+#include "common/input_error.h"
+#include "io/png.h"
+
+#include <httplib.h>
+
+#include <arpa/inet.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+namespace aurorawall::app::web {
+
+namespace {
+
+double secondsNow()
+{
+    return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+void reply(httplib::Response& res, int status, const std::string& line)
+{
+    res.status = status;
+    res.set_content(line + "\n", "text/plain; charset=utf-8");
+}
+
+// What httplib refuses by itself.
+std::string refusal(int status)
+{
+    switch (status) {
+    case 400: return " malformed request";
+    case 404: return " no such page";
+    case 405: return " method not allowed";
+    case 413: return " request too large (a command is one line of at most 1024 bytes)";
+    case 414: return " request line too long";
+    default: return "";
+    }
+}
+
+} // namespace
+
+struct WebConsole::Impl {
+    WebSettings settings;
+    httplib::Server server;
+    CommandMailbox mailbox;
+    std::thread thread;
+    int port = 0;
+
+    // The preview: handed over by the frame loop, encoded by the first request that finds it new.
+    std::atomic<double> previewAskedS{-1e9}; // when a browser last asked for it (steady clock)
+    double previewShownS = -1e9;             // the frame loop's: when it last handed one over
+    std::mutex previewMutex;
+    std::shared_ptr<const io::Image> canvas; // the last wall handed over, not yet encoded
+    std::shared_ptr<const std::string> png;  // the last encoded preview
+
+    bool authorized(const httplib::Request& req, httplib::Response& res) const
+    {
+        if (settings.token.empty() || req.get_header_value("Authorization") == "Bearer " + settings.token)
+            return true;
+        reply(res, 401, "error authentication required: send the header 'Authorization: Bearer SECRET'");
+        return false;
+    }
+
+    void command(const httplib::Request& req, httplib::Response& res)
+    {
+        std::string line = req.body;
+        while (!line.empty() && (line.back() == '\n' || line.back() == '\r'))
+            line.pop_back();
+        if (line.find('\n') != std::string::npos)
+            return reply(res, 400, "error one command per request");
+        const std::optional<std::string> answer = mailbox.ask(line, kAnswerTimeoutS);
+        if (!answer)
+            return reply(res, 503, "error the wall did not answer");
+        reply(res, 200, *answer);
+    }
+
+    void status(httplib::Response& res)
+    {
+        const std::optional<std::string> answer = mailbox.ask("status", kAnswerTimeoutS);
+        if (!answer)
+            return reply(res, 503, "error the wall did not answer");
+        res.set_content(statusJson(*answer), "application/json");
+    }
+
+    void presets(httplib::Response& res) const
+    {
+        std::vector<std::string> names;
+        std::error_code error;
+        for (const auto& entry : std::filesystem::directory_iterator(settings.presetDir, error))
+            if (entry.path().extension() == ".toml")
+                names.push_back(entry.path().stem().string());
+        std::sort(names.begin(), names.end());
+        std::string json = "[";
+        for (const std::string& name : names)
+            json += (json.size() > 1 ? ",\"" : "\"") + name + "\""; // file names of the data directory: no quotes
+        res.set_content(json + "]", "application/json");
+    }
+
+    void preview(httplib::Response& res)
+    {
+        previewAskedS = secondsNow();
+        std::shared_ptr<const io::Image> fresh;
+        std::shared_ptr<const std::string> encoded;
+        {
+            std::lock_guard<std::mutex> lock(previewMutex);
+            fresh = std::move(canvas);
+            canvas.reset();
+            encoded = png;
+        }
+        if (fresh) { // downsampled and encoded here, off the frame loop
+            const int width = std::min(kPreviewWidthPx, fresh->width);
+            const int height = std::max(1, int(std::lround(double(width) * fresh->height / fresh->width)));
+            const io::Image small = io::imageFromGlReadback(width, height, previewTexels(*fresh, width, height));
+            const std::vector<std::uint8_t> bytes = io::encodePng(small, settings.toneMap);
+            encoded = std::make_shared<const std::string>(bytes.begin(), bytes.end());
+            std::lock_guard<std::mutex> lock(previewMutex);
+            png = encoded;
+        }
+        if (!encoded)
+            return reply(res, 503, "error no preview yet (the wall is gathered within a frame or two)");
+        res.set_header("Cache-Control", "no-store");
+        res.set_content(*encoded, "image/png");
+    }
+};
+
+WebConsole::WebConsole(WebSettings settings) : impl_(std::make_unique<Impl>())
+{
+    Impl& w = *impl_;
+    w.settings = std::move(settings);
+    in_addr probe{};
+    if (::inet_pton(AF_INET, w.settings.bindAddress.c_str(), &probe) != 1)
+        throw UsageError("--control-bind " + w.settings.bindAddress + ": not an IPv4 address (e.g. 127.0.0.1 or 0.0.0.0)");
+    httplib::Server& s = w.server;
+    // Bounded work per client: 8 threads, short timeouts, small bodies (413 beyond).
+    s.new_task_queue = [] { return new httplib::ThreadPool(8); };
+    s.set_read_timeout(2, 0);
+    s.set_write_timeout(2, 0);
+    s.set_keep_alive_timeout(2);
+    s.set_payload_max_length(kMaxBodyBytes);
+    // The page, its script and style; httplib refuses paths leaving the folder (404).
+    if (!s.set_mount_point("/", w.settings.pageDir))
+        throw InputError("--web-port: the page's folder " + w.settings.pageDir + " cannot be read");
+    s.Post("/command", [&w](const httplib::Request& req, httplib::Response& res) {
+        if (w.authorized(req, res))
+            w.command(req, res);
+    });
+    s.Get("/status", [&w](const httplib::Request& req, httplib::Response& res) {
+        if (w.authorized(req, res))
+            w.status(res);
+    });
+    s.Get("/presets", [&w](const httplib::Request& req, httplib::Response& res) {
+        if (w.authorized(req, res))
+            w.presets(res);
+    });
+    s.Get("/preview.png", [&w](const httplib::Request& req, httplib::Response& res) {
+        if (w.authorized(req, res))
+            w.preview(res);
+    });
+    // httplib's own refusals (400 malformed, 404, 413 too large) get one line saying so.
+    s.set_error_handler([](const httplib::Request&, httplib::Response& res) {
+        if (res.body.empty())
+            reply(res, res.status, "error " + std::to_string(res.status) + refusal(res.status));
+    });
+    s.set_exception_handler([](const httplib::Request&, httplib::Response& res, std::exception_ptr error) {
+        std::string reason = "unknown";
+        try {
+            std::rethrow_exception(error);
+        } catch (const std::exception& e) {
+            reason = e.what();
+        } catch (...) {
+        }
+        reply(res, 500, "error " + reason);
+    });
+    w.port = w.settings.port == 0 ? s.bind_to_any_port(w.settings.bindAddress)
+                                  : (s.bind_to_port(w.settings.bindAddress, w.settings.port) ? w.settings.port : -1);
+    if (w.port < 0)
+        throw InputError("--web-port " + std::to_string(w.settings.port) + ": cannot listen on " +
+                         w.settings.bindAddress + ":" + std::to_string(w.settings.port) + " (in use?)");
+    w.thread = std::thread([&s] { s.listen_after_bind(); });
+}
+
+WebConsole::~WebConsole()
+{
+    impl_->mailbox.close(); // first: a handler waiting for the wall returns, so the server can stop
+    impl_->server.stop();
+    impl_->thread.join();
+}
+
+int WebConsole::port() const { return impl_->port; }
+const std::string& WebConsole::address() const { return impl_->settings.bindAddress; }
+control::CommandChannel& WebConsole::commands() { return impl_->mailbox; }
+
+bool WebConsole::previewWanted() const
+{
+    const double now = secondsNow();
+    return now - impl_->previewAskedS < kPreviewInterestS && now - impl_->previewShownS >= kPreviewIntervalS;
+}
+
+void WebConsole::showPreview(io::Image&& canvas)
+{
+    impl_->previewShownS = secondsNow();
+    auto taken = std::make_shared<const io::Image>(std::move(canvas));
+    std::lock_guard<std::mutex> lock(impl_->previewMutex);
+    impl_->canvas = std::move(taken);
+}
+
+} // namespace aurorawall::app::web

@@ -1,0 +1,86 @@
+// The browser console's pieces without a server: the mailbox between the web threads and the frame
+// loop, the channels joined for serveCommands, and the status line as JSON.
+#include "app/control/command_channel.h"
+#include "app/web/command_mailbox.h"
+#include "app/web/status_json.h"
+
+#include <gtest/gtest.h>
+
+#include <thread>
+
+namespace aw = aurorawall;
+
+TEST(CommandMailbox, AnAskIsAnsweredByTheFrameLoop)
+{
+    aw::app::web::CommandMailbox mailbox;
+    std::thread frameLoop([&] {
+        for (int tries = 0; tries < 1000; ++tries) {
+            const std::vector<aw::control::ControlLine> lines = mailbox.poll(16);
+            if (!lines.empty()) {
+                mailbox.answer(lines[0].client, "ok " + lines[0].text);
+                return;
+            }
+            std::this_thread::sleep_for(std::chrono::milliseconds(1));
+        }
+    });
+    EXPECT_EQ(mailbox.ask("pause", 10.0), std::optional<std::string>("ok pause"));
+    frameLoop.join();
+}
+
+TEST(CommandMailbox, AnUnansweredAskIsWithdrawn)
+{
+    aw::app::web::CommandMailbox mailbox;
+    EXPECT_FALSE(mailbox.ask("quit", 0.01));
+    EXPECT_TRUE(mailbox.poll(16).empty()); // not carried out later
+    mailbox.answer(1, "ok quit");           // an answer nobody waits for is dropped
+}
+
+TEST(CommandMailbox, ClosedAnswersNothing)
+{
+    aw::app::web::CommandMailbox mailbox;
+    mailbox.close();
+    EXPECT_FALSE(mailbox.ask("status", 10.0)); // at once
+}
+
+namespace {
+struct Recorder : aw::control::CommandChannel {
+    std::vector<aw::control::ControlLine> lines;
+    std::vector<std::pair<std::uint64_t, std::string>> answers;
+    std::vector<aw::control::ControlLine> poll(std::size_t maxLines) override
+    {
+        std::vector<aw::control::ControlLine> out(lines.begin(), lines.begin() + std::min(maxLines, lines.size()));
+        lines.erase(lines.begin(), lines.begin() + out.size());
+        return out;
+    }
+    void answer(std::uint64_t client, const std::string& text) override { answers.push_back({client, text}); }
+};
+} // namespace
+
+TEST(ChannelSet, AnswersFindTheirChannelAndClient)
+{
+    Recorder a, b;
+    a.lines = {{7, "status"}, {7, "pause"}};
+    b.lines = {{7, "play"}};
+    aw::control::ChannelSet set;
+    set.add(a);
+    set.add(b);
+    const std::vector<aw::control::ControlLine> lines = set.poll(2); // one each
+    ASSERT_EQ(lines.size(), 2u);
+    EXPECT_EQ(lines[0].text, "status");
+    EXPECT_EQ(lines[1].text, "play");
+    EXPECT_NE(lines[0].client, lines[1].client); // client 7 of each, told apart
+    set.answer(lines[1].client, "ok playing");
+    set.answer(lines[0].client, "ok frame=1");
+    ASSERT_EQ(b.answers.size(), 1u);
+    EXPECT_EQ(b.answers[0], std::make_pair(std::uint64_t(7), std::string("ok playing")));
+    ASSERT_EQ(a.answers.size(), 1u);
+    EXPECT_EQ(a.answers[0].first, 7u);
+}
+
+TEST(StatusJson, MembersFromTheStatusLine)
+{
+    EXPECT_EQ(aw::app::web::statusJson("ok frame=12 time_s=1e+15 fps=9.5 paused speed=1 lat_deg=-65.000000"),
+              R"({"frame":12,"time_s":1e+15,"fps":9.5,"paused":true,"speed":1,"lat_deg":-65.000000})");
+    EXPECT_EQ(aw::app::web::statusJson("ok frame=1 playing name=inf"), R"({"frame":1,"paused":false,"name":"inf"})");
+    EXPECT_THROW(aw::app::web::statusJson("error the wall is quitting"), std::invalid_argument);
+}

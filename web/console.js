@@ -1,0 +1,128 @@
+// The browser console: polls /preview.png and /status about 5 times a second and sends the
+// buttons' commands as POST /command, the same lines as the control port takes.
+"use strict";
+
+const $ = (id) => document.getElementById(id);
+const POLL_MS = 200;
+const STALE_MS = 3000; // no answer from the wall this long: say so
+
+// The shared secret, if the wall asks for one: from the address's #token=... (never sent to the
+// server in the URL) or typed in; kept for this tab only.
+let token = sessionStorage.getItem("token") || "";
+const fragment = new URLSearchParams(location.hash.slice(1));
+if (fragment.get("token")) {
+  token = fragment.get("token");
+  sessionStorage.setItem("token", token);
+  history.replaceState(null, "", location.pathname);
+}
+
+let lastAnswerAt = Date.now();
+let paused = false;
+
+function headers() {
+  return token ? { Authorization: "Bearer " + token } : {};
+}
+
+async function request(path, options = {}) {
+  const response = await fetch(path, { ...options, headers: headers(), cache: "no-store" });
+  if (response.status === 401) {
+    $("login").hidden = false;
+    throw new Error("the wall asks for its secret");
+  }
+  return response;
+}
+
+async function command(line) {
+  try {
+    const response = await request("/command", { method: "POST", body: line });
+    const text = (await response.text()).trim();
+    $("answer").textContent = line + " → " + text;
+    return text;
+  } catch (e) {
+    $("answer").textContent = line + " → " + e.message;
+    return "";
+  }
+}
+
+function showStatus(s) {
+  paused = s.paused;
+  $("play").textContent = paused ? "play" : "pause";
+  $("status").textContent =
+    `frame ${s.frame}  t=${Number(s.time_s).toFixed(1)} s  ${s.fps.toPrecision(3)} fps  ` +
+    `${paused ? "paused" : "playing"} ×${s.speed}  ` +
+    `${s.lat_deg.toFixed(2)}° ${s.lon_deg.toFixed(2)}° ${s.alt_km.toFixed(1)} km`;
+  if (document.activeElement !== $("time")) $("time").value = Number(s.time_s).toFixed(1);
+  if (document.activeElement !== $("time-slider")) $("time-slider").value = s.time_s;
+  if (document.activeElement !== $("speed")) $("speed").value = s.speed;
+}
+
+async function pollStatus() {
+  try {
+    const response = await request("/status");
+    if (!response.ok) throw new Error((await response.text()).trim());
+    showStatus(await response.json());
+    lastAnswerAt = Date.now();
+  } catch (e) {
+    // the alarm below says it once the silence lasts
+  }
+}
+
+let previewUrl = null;
+async function pollPreview() {
+  try {
+    const response = await request("/preview.png");
+    if (!response.ok) return;
+    const url = URL.createObjectURL(await response.blob());
+    $("preview").src = url;
+    if (previewUrl) URL.revokeObjectURL(previewUrl);
+    previewUrl = url;
+  } catch (e) {
+    // as above
+  }
+}
+
+function checkAlive() {
+  const silentS = (Date.now() - lastAnswerAt) / 1000;
+  $("alarm").hidden = silentS * 1000 < STALE_MS;
+  $("alarm").textContent = `The wall has not answered for ${silentS.toFixed(0)} s: ` +
+    "it may have quit, crashed or be busy; the picture above is the last one.";
+}
+
+async function loadPresets() {
+  try {
+    const names = await (await request("/presets")).json();
+    $("presets").replaceChildren(...names.map((name) => {
+      const b = document.createElement("button");
+      b.type = "button";
+      b.textContent = name;
+      b.onclick = () => command("preset " + name);
+      return b;
+    }));
+  } catch (e) {
+    $("presets").textContent = "no presets: " + e.message;
+  }
+}
+
+$("play").onclick = () => command(paused ? "play" : "pause");
+$("speed").onchange = () => command("speed " + $("speed").value);
+$("time-set").onclick = () => command("time " + $("time").value);
+$("time").onkeydown = (e) => { if (e.key === "Enter") command("time " + $("time").value); };
+$("time-slider").onchange = () => command("time " + $("time-slider").value);
+$("screenshot").onclick = () => {
+  const stamp = new Date().toISOString().replace(/[-:]/g, "").replace(/\..*/, "");
+  command(`screenshot console-${stamp}.png`);
+};
+$("token-set").onclick = () => {
+  token = $("token").value;
+  sessionStorage.setItem("token", token);
+  $("login").hidden = true;
+  loadPresets();
+};
+
+loadPresets();
+// One poll at a time each: a slow wall is not flooded with requests.
+(async function loop() {
+  await Promise.all([pollStatus(), pollPreview()]);
+  checkAlive();
+  setTimeout(loop, POLL_MS);
+})();
