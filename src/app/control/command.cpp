@@ -1,6 +1,7 @@
 #include "app/control/command.h"
 
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <regex>
 #include <sstream>
@@ -58,6 +59,15 @@ double number(const std::string& word, const Grammar& g)
     return value;
 }
 
+// The word as printable ASCII: other bytes (a UTF-8 sequence, raw binary) become '?'.
+std::string printable(std::string word)
+{
+    for (char& c : word)
+        if (static_cast<unsigned char>(c) < 0x20 || static_cast<unsigned char>(c) >= 0x7f)
+            c = '?';
+    return word;
+}
+
 void checkRange(bool ok, const std::string& message)
 {
     if (!ok)
@@ -68,6 +78,16 @@ void checkRange(bool ok, const std::string& message)
 
 Command parseCommand(const std::string& line)
 {
+    // Commands are printable text: a control byte (a NUL, an escape) is refused by its value and
+    // column, and never echoed back.
+    for (size_t i = 0; i < line.size(); ++i) {
+        const unsigned char c = static_cast<unsigned char>(line[i]);
+        if ((c < 0x20 && c != '\t' && c != '\r') || c == 0x7f) {
+            char text[96];
+            std::snprintf(text, sizeof text, "the line has the control byte 0x%02x at column %zu", c, i + 1);
+            throw CommandError(text);
+        }
+    }
     std::istringstream in(line);
     std::vector<std::string> words;
     for (std::string w; in >> w;)
@@ -79,7 +99,8 @@ Command parseCommand(const std::string& line)
         if (words[0] == g.word)
             grammar = &g;
     if (!grammar)
-        throw CommandError("unknown command '" + words[0].substr(0, 40) + "' (commands: " + knownWords() + ")");
+        throw CommandError("unknown command '" + printable(words[0].substr(0, 40)) + "' (commands: " + knownWords() +
+                           ")");
     const Grammar& g = *grammar;
     Command c;
     c.kind = g.kind;
