@@ -128,7 +128,7 @@ int runAccuracyCommand(int argc, char** argv, std::ostream& out, std::ostream& e
             if (scene.sceneFile.empty())
                 throw cli.usageError(std::string(gloryRun ? "--glory" : "--scene") + " needs a file name");
             if (!parseSize(size, scene.sizePx))
-                throw cli.usageError("--size must be WxH with positive whole W and H (got '" + size + "')");
+                throw cli.usageError("--size must be WxH with positive whole W and H (got '" + echoedInput(size) + "')");
             if (scene.frame < 0 || scene.frame > 100000000)
                 throw cli.usageError("--frame must be a whole number in [0, 1e8] (got " + std::to_string(scene.frame) + ")");
             if (scene.pixels < 1 || scene.runs < 1 || scene.threads < 1 || !(scene.referenceStepKm > 0.0))

@@ -3,6 +3,7 @@
 #include "app/cli/command_line.h"
 #include "app/cli/exit_status.h"
 #include "atmosphere/airmass.h"
+#include "common/input_error.h"
 
 #include <cctype>
 #include <cmath>
@@ -38,11 +39,11 @@ std::optional<AirmassRay> parseRay(const std::string& line, std::string& problem
         char* end = nullptr;
         double value = std::strtod(text.c_str(), &end);
         if (text.empty() || *end != '\0') {
-            problem = "field " + std::to_string(values.size() + 1) + " is not a number: '" + text + "'";
+            problem = "field " + std::to_string(values.size() + 1) + " is not a number: '" + echoedInput(text) + "'";
             return std::nullopt;
         }
         if (!std::isfinite(value)) {
-            problem = "field " + std::to_string(values.size() + 1) + " is not finite: '" + text + "'";
+            problem = "field " + std::to_string(values.size() + 1) + " is not finite: '" + echoedInput(text) + "'";
             return std::nullopt;
         }
         values.push_back(value);

@@ -45,7 +45,7 @@ std::vector<double> parseAngles(const std::string& list, const cli::CommandLine&
         errno = 0;
         const double value = std::strtod(word.c_str(), &stop);
         if (word.empty() || *stop != '\0' || errno == ERANGE || !(value >= 0.0 && value <= 180.0))
-            throw cli.usageError("--angles-deg: '" + word + "' is not an angle in [0, 180] degrees (in '" + list + "')");
+            throw cli.usageError("--angles-deg: '" + echoedInput(word) + "' is not an angle in [0, 180] degrees (in '" + echoedInput(list) + "')");
         degrees.push_back(value);
         if (end == std::string::npos) return degrees;
         begin = end + 1;

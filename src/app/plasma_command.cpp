@@ -167,7 +167,7 @@ int runPlasmaCommand(int argc, char** argv, std::ostream& out, std::ostream& err
         if (actionName.empty())
             throw cli.usageError("missing the action (allowed: " + cli::wordsOf(kActions) + ")");
         if (!cli::findChoice(kActions, actionName, action))
-            throw cli.usageError("unknown action '" + actionName + "' (allowed: " + cli::wordsOf(kActions) + ")");
+            throw cli.usageError("unknown action '" + echoedInput(actionName) + "' (allowed: " + cli::wordsOf(kActions) + ")");
         if (!(kDebye >= plasma::kLandauMinKDebye && kDebye <= plasma::kLandauMaxKDebye))
             throw cli.usageError("--k-lambda-d must be in [" + number(plasma::kLandauMinKDebye) + ", " +
                                  number(plasma::kLandauMaxKDebye) + "] (got " + number(kDebye) + ")");

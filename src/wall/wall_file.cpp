@@ -206,10 +206,10 @@ Wall WallFile::screenListWall()
         // The name becomes part of file names (tile-NAME.exr) and window titles.
         static const std::regex fileNameSafe("[A-Za-z0-9_.-]+");
         if (!std::regex_match(screen.name, fileNameSafe))
-            s.fail("name", "must be letters, digits, '_', '.' or '-' (got \"" + screen.name + "\")");
+            s.fail("name", "must be letters, digits, '_', '.' or '-' (got \"" + echoedInput(screen.name) + "\")");
         for (std::size_t j = 0; j < screens.size(); ++j)
             if (screens[j].name == screen.name)
-                s.fail("name", "\"" + screen.name + "\" is already the name of the screen on line " +
+                s.fail("name", "\"" + echoedInput(screen.name) + "\" is already the name of the screen on line " +
                                    std::to_string(screens_[j].line()));
         screen.widthPx = s.integer("width_px", 1, maxPx);
         screen.heightPx = s.integer("height_px", 1, maxPx);

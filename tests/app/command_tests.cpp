@@ -4,13 +4,16 @@
 #include "app/airmass_command.h"
 #include "app/cli/command_line.h"
 #include "app/cli/exit_status.h"
+#include "app/control/command.h"
 #include "app/cost_map.h"
 #include "app/mie_command.h"
 #include "app/path_recorder.h"
+#include "app/plasma_command.h"
 #include "app/render_options.h"
 #include "app/tables_command.h"
 #include "atmosphere/airmass.h"
 #include "cluster/master_clock.h"
+#include "common/input_error.h"
 #include "components/registry.h"
 #include "components/aurora/physics/deposition_table.h"
 
@@ -18,6 +21,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -431,6 +435,74 @@ TEST(MieCommand, BadOptionsNameTheOptionAndExit2)
         EXPECT_EQ(r.err.rfind("aurorawall mie: ", 0), 0u) << r.err;
         EXPECT_EQ(lines(r.err).size(), 1u) << r.err;
     }
+}
+
+// ---- what error messages echo of the input ----
+
+TEST(EchoedInput, LongTextIsCutWithItsLengthAndControlCharactersEscaped)
+{
+    EXPECT_EQ(echoedInput("1.5e3"), "1.5e3");
+    EXPECT_EQ(echoedInput(std::string(60, 'a')), std::string(60, 'a'));
+    EXPECT_EQ(echoedInput(std::string(61, 'a')), std::string(60, 'a') + "… (61 bytes)");
+    EXPECT_EQ(echoedInput("a\nb\tc\x01\x7f"), "a\\nb\\tc\\x01\\x7F");
+    // A two-byte character across the limit is left out whole.
+    EXPECT_EQ(echoedInput(std::string(59, 'a') + "\xc3\xa9" + "b"), std::string(59, 'a') + "… (62 bytes)");
+}
+
+// However long a value, the error that quotes it is one short line with the value's start and length.
+TEST(EchoedInput, ErrorsQuotingAHugeValueStayOneShortLine)
+{
+    const std::string huge(1 << 20, '7'), word(1 << 20, 'w');
+    const std::string length = "(1048576 bytes)";
+    const auto expectShort = [&](const std::string& error, const std::string& what) {
+        EXPECT_EQ(lines(error).size(), 1u) << what;
+        EXPECT_LT(error.size(), 400u) << what;
+        EXPECT_NE(error.find(length), std::string::npos) << what << ": " << error.substr(0, 400);
+    };
+    std::string out, err;
+    EXPECT_EQ(runAirmass({"airmass"}, "0,6371,0,0,1,0,0,100,8," + word + "\n", out, err), 1);
+    expectShort(err, "airmass field");
+    expectShort(runMie({"--n", "1.33", "--k", "0", "--x", word}).err, "mie --x");
+    expectShort(runMie({"--n", "1.33", "--k", "0", "--x", "1", "--angles-deg", huge}).err, "mie --angles-deg");
+    expectShort(runMie({"--n", "1.33", "--k", "0", "--x", "1", "--" + word.substr(2), "1"}).err, "unknown option");
+    expectShort(runTables({word, "--energy-kev", "5"}).err, "tables TABLE");
+    expectShort(runAccuracy({"--scene", "s.toml", "--size", word}).err, "accuracy --size");
+    {
+        Args args({"plasma", word});
+        std::ostringstream plasmaOut, plasmaErr;
+        EXPECT_EQ(runPlasmaCommand(args.argc(), args.argv(), plasmaOut, plasmaErr), 2);
+        expectShort(plasmaErr.str(), "plasma ACTION");
+    }
+    try {
+        parseRender({"--wall", "w.toml", "--scene", "s.toml", "--backend", word});
+        ADD_FAILURE() << "render --backend: no error";
+    } catch (const UsageError& e) {
+        expectShort(e.what(), "render --backend");
+    }
+    // The control server takes lines of up to 1024 bytes.
+    for (const std::string& line : {std::string(1000, 'w'), "speed " + std::string(1000, '7')}) {
+        try {
+            control::parseCommand(line);
+            ADD_FAILURE() << "control: no error";
+        } catch (const control::CommandError& e) {
+            EXPECT_LT(std::string(e.what()).size(), 400u) << e.what();
+            EXPECT_NE(std::string(e.what()).find("(1000 bytes)"), std::string::npos) << e.what();
+        }
+    }
+    const std::filesystem::path scene = std::filesystem::temp_directory_path() / "aurorawall-echo-test.toml";
+    std::ofstream(scene) << "[scene]\nname = \"echo\"\ncomponents = [\"" << word << "\"]\n";
+    try {
+        components::loadScene(scene.string());
+        ADD_FAILURE() << "scene: no error";
+    } catch (const InputError& e) {
+        expectShort(e.what(), "scene component");
+    }
+    std::filesystem::remove(scene);
+    // A control character typed into a value stays inside the one line.
+    const Result angles = runMie({"--n", "1.33", "--k", "0", "--x", "1", "--angles-deg", "1,2\n,3"});
+    EXPECT_EQ(angles.status, 2);
+    EXPECT_EQ(lines(angles.err).size(), 1u) << angles.err;
+    EXPECT_NE(angles.err.find("'2\\n'"), std::string::npos) << angles.err;
 }
 
 // ---- render --cost-map: option, colour map and scale bar ----

@@ -1,5 +1,7 @@
 #include "app/control/command.h"
 
+#include "common/input_error.h"
+
 #include <cmath>
 #include <cstdlib>
 #include <regex>
@@ -54,7 +56,7 @@ double number(const std::string& word, const Grammar& g)
     char* end = nullptr;
     const double value = std::strtod(word.c_str(), &end);
     if (!isDecimal(word) || *end != '\0' || !std::isfinite(value))
-        throw CommandError(std::string(g.word) + ": '" + word + "' is not a finite number (usage: " + g.usage + ")");
+        throw CommandError(std::string(g.word) + ": '" + echoedInput(word) + "' is not a finite number (usage: " + g.usage + ")");
     return value;
 }
 
@@ -79,7 +81,7 @@ Command parseCommand(const std::string& line)
         if (words[0] == g.word)
             grammar = &g;
     if (!grammar)
-        throw CommandError("unknown command '" + words[0].substr(0, 40) + "' (commands: " + knownWords() + ")");
+        throw CommandError("unknown command '" + echoedInput(words[0]) + "' (commands: " + knownWords() + ")");
     const Grammar& g = *grammar;
     Command c;
     c.kind = g.kind;
