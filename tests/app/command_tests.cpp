@@ -303,6 +303,25 @@ TEST(AirmassCommand, MalformedLinesAreARuntimeFailureNamingTheLine)
 }
 
 
+// The header is a first line of the column names (any case, spaces around them); any other first
+// line is data, and "nan,..." or other names an error.
+TEST(AirmassCommand, HeaderIsALineOfTheColumnNames)
+{
+    const std::string ray = "0,6371,0,0,1,0,0,100,8,6371\n";
+    std::string out, err;
+    for (const std::string header : {"ox,oy,oz,dx,dy,dz,t0,t1,H,R", " OX, oy ,oz,dx,dy,dz,t0,t1,h,r "}) {
+        EXPECT_EQ(runAirmass({"airmass"}, header + "\n" + ray, out, err), 0) << err;
+        EXPECT_EQ(lines(out).size(), 1u) << header;
+    }
+    for (const std::string first : {"nan,0,0,0,0,0,0,0,1,1", "inf,0,6371,0,1,0,0,100,8,6371", "x,y,z,dx,dy,dz,t0,t1,H,R"}) {
+        EXPECT_EQ(runAirmass({"airmass"}, first + "\n" + ray, out, err), 1) << first;
+        EXPECT_EQ(out, "");
+        EXPECT_NE(err.find("line 1: field 1 (ox) is not"), std::string::npos) << err;
+    }
+    EXPECT_EQ(runAirmass({"airmass"}, ray + "ox,oy,oz,dx,dy,dz,t0,t1,H,R\n", out, err), 1); // a header only comes first
+    EXPECT_NE(err.find("line 2: field 1 (ox) is not a number: 'ox'"), std::string::npos) << err;
+}
+
 // ---- accuracy, up to its first GL call ----
 
 Result runAccuracy(std::vector<std::string> words)
