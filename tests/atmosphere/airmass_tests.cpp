@@ -331,6 +331,18 @@ TEST(AirmassExtremes, FiniteEverywhereAndDefaultCloseToExact)
     }
 }
 
+// lawlor-erfcx caps the density at e^60 deep inside the planet like every method: from the centre its
+// e^{R/H} overflowed and 2·inf − inf gave NaN.
+TEST(AirmassExtremes, LawlorErfcxFiniteFromThePlanetsCentre)
+{
+    for (const AirmassRay& ray : {AirmassRay{{0.0, 0.0, 0.0}, {1.0, 0.0, 0.0}, 0.0, 100.0, 8.0, kR},
+                                  AirmassRay{{0.0, 0.0, 0.0}, {0.0, 0.0, 1.0}, -7000.0, 7000.0, 8.0, kR}})
+        for (AirmassPrecision precision : {AirmassPrecision::Float32, AirmassPrecision::Float64}) {
+            const double airmass = evaluate("lawlor-erfcx", ray, precision);
+            EXPECT_TRUE(std::isfinite(airmass) && airmass > 0.0) << airmass;
+        }
+}
+
 // Random finite inputs of any magnitude (1e-45 to 1e38, either sign, some zeros; H > 0, R ≥ 0): the
 // default stays finite in float and double (its lengths are scaled by a power of two first).
 TEST(AirmassExtremes, DefaultFiniteForRandomInputsOfAnyMagnitude)
