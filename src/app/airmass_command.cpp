@@ -12,6 +12,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <istream>
+#include <limits>
 #include <optional>
 #include <ostream>
 #include <stdexcept>
@@ -56,7 +57,9 @@ bool isHeader(const std::vector<std::string>& fields)
     return true;
 }
 
-// One CSV line's fields as a ray, or an error message naming the field.
+// One CSV line's fields as a ray, or an error message naming the field. Every field must be a finite
+// number within float's range (the closed forms run in float32, as the shader does): |value| <= 3.4e38;
+// H at least float's smallest positive number, 1.4e-45 (below, H rounds to 0 in float); R >= 0.
 std::optional<AirmassRay> parseRay(const std::vector<std::string>& fields, std::string& problem)
 {
     if (fields.size() != kFieldCount) {
@@ -78,11 +81,15 @@ std::optional<AirmassRay> parseRay(const std::vector<std::string>& fields, std::
             problem = name + " is not finite: '" + echoedInput(text) + "'";
             return std::nullopt;
         }
+        if (!(std::abs(values[i]) <= std::numeric_limits<float>::max())) {
+            problem = name + " must be within float's range, |value| <= 3.40282347e+38 (got '" + echoedInput(text) + "')";
+            return std::nullopt;
+        }
     }
     AirmassRay ray{{values[0], values[1], values[2]}, {values[3], values[4], values[5]},
                    values[6], values[7], values[8], values[9]};
-    if (!(ray.scaleHeight > 0.0)) {
-        problem = "field 9 (H) must be > 0 (got '" + echoedInput(fields[8]) + "')";
+    if (!(ray.scaleHeight >= std::numeric_limits<float>::denorm_min())) {
+        problem = "field 9 (H) must be at least 1.4e-45 km, float's smallest positive number (got '" + echoedInput(fields[8]) + "')";
         return std::nullopt;
     }
     if (ray.planetRadius < 0.0) {
@@ -102,11 +109,12 @@ int runAirmassCommand(int argc, char** argv, std::istream& in, std::ostream& out
             "Usage: aurorawall airmass [--method NAME] < rays.csv\n"
             "Airmass I = integral from t0 to t1 of exp(-(|o + t*d/|d|| - R)/H) dt, in km, for each input line\n"
             "ox,oy,oz,dx,dy,dz,t0,t1,H,R (km; planet centre at the origin; t in km along the unit direction;\n"
-            "a first line of these names is a header; blank lines are skipped). Prints one number per\n"
-            "line. I is signed (t1 < t0 gives -I), 0 for a zero direction, and the planet is transparent.\n"
+            "a first line of these names is a header; blank lines are skipped). Every field is a finite number\n"
+            "within float's range (|value| <= 3.4e38), H >= 1.4e-45 and R >= 0. Prints one number per line.\n"
+            "I is signed (t1 < t0 gives -I), 0 for a zero direction, and the planet is transparent.\n"
             "Closed forms run in float32, exactly as the shader computes them; 'exact' runs in double.\n"
-            "Exit status: 0 success, 1 for a malformed input line (one error line naming it, nothing printed),\n"
-            "2 usage error.\n");
+            "Exit status: 0 success, 1 for a malformed input line or one the method gives no finite value for\n"
+            "(one error line naming it, nothing printed), 2 usage error.\n");
         const std::vector<AirmassMethod>& methods = airmassMethods();
         cli::Choices<const AirmassMethod*> choices = {{"list", nullptr}};
         for (const AirmassMethod& m : methods)
@@ -125,7 +133,8 @@ int runAirmassCommand(int argc, char** argv, std::istream& in, std::ostream& out
             return;
         }
 
-        std::vector<AirmassRay> rays;
+        // Everything is read and evaluated before anything is printed.
+        std::vector<double> airmasses;
         std::string line;
         bool seenContent = false;
         for (long lineNumber = 1; std::getline(in, line); ++lineNumber) {
@@ -141,11 +150,17 @@ int runAirmassCommand(int argc, char** argv, std::istream& in, std::ostream& out
             const std::optional<AirmassRay> ray = parseRay(fields, problem);
             if (!ray)
                 throw std::runtime_error("line " + std::to_string(lineNumber) + ": " + problem);
-            rays.push_back(*ray);
+            const double airmass = evaluateAirmass(*method, *ray, AirmassPrecision::Float32);
+            // The published baselines, the fits and march16 overflow for some extreme rays (docs/airmass.md).
+            if (!std::isfinite(airmass))
+                throw std::runtime_error("line " + std::to_string(lineNumber) + ": " + method->name +
+                                         " gives no finite airmass for this ray (" + std::to_string(airmass) +
+                                         "); " + kDefaultAirmassMethod + " and exact give one for every accepted line");
+            airmasses.push_back(airmass);
         }
-        for (const AirmassRay& ray : rays) {
+        for (const double airmass : airmasses) {
             char number[64];
-            std::snprintf(number, sizeof number, "%.12g\n", evaluateAirmass(*method, ray, AirmassPrecision::Float32));
+            std::snprintf(number, sizeof number, "%.12g\n", airmass);
             out << number;
         }
     });

@@ -322,6 +322,34 @@ TEST(AirmassCommand, HeaderIsALineOfTheColumnNames)
     EXPECT_NE(err.find("line 2: field 1 (ox) is not a number: 'ox'"), std::string::npos) << err;
 }
 
+// Every field must be a float (the closed forms run in float32): 1e308 became inf and the result NaN,
+// an H of 1e-320 became 0. A ray the method gives no finite value for is an error naming the line and
+// the method, never a NaN printed with status 0.
+TEST(AirmassCommand, FieldsBeyondFloatAndNonFiniteResultsAreErrors)
+{
+    const std::vector<std::pair<std::string, std::string>> bad = {
+        {"1e308,0,0,1,0,0,0,100,8,6371", "line 1: field 1 (ox) must be within float's range"},
+        {"0,6371,0,0,-3.5e38,0,0,100,8,6371", "line 1: field 5 (dy) must be within float's range"},
+        {"0,6371,0,0,1,0,0,100,1e-320,6371", "line 1: field 9 (H) must be at least 1.4e-45 km"},
+        {"0,6371,0,0,1,0,0,100,8,1e39", "line 1: field 10 (R) must be within float's range"},
+    };
+    std::string out, err;
+    for (const auto& [line, expected] : bad) {
+        EXPECT_EQ(runAirmass({"airmass", "--method", "exact"}, line + "\n", out, err), 1) << line;
+        EXPECT_EQ(out, "");
+        EXPECT_NE(err.find(expected), std::string::npos) << err;
+    }
+    const std::string fromTheCentre = "0,6371,0,1,0.2,0,0,100,8,6371\n0,0,0,1,0,0,0,100,8,6371\n";
+    EXPECT_EQ(runAirmass({"airmass", "--method", "lawlor-winitzki"}, fromTheCentre, out, err), 1);
+    EXPECT_EQ(out, "");
+    EXPECT_NE(err.find("line 2: lawlor-winitzki gives no finite airmass for this ray"), std::string::npos) << err;
+    for (const char* method : {kDefaultAirmassMethod, "exact", "lawlor-erfcx", "march16"}) {
+        EXPECT_EQ(runAirmass({"airmass", "--method", method}, fromTheCentre, out, err), 0) << method << err;
+        EXPECT_EQ(lines(out).size(), 2u);
+    }
+    EXPECT_EQ(runAirmass({"airmass"}, "3.4028234e38,0,0,1,0,0,0,100,1.5e-45,6371\n", out, err), 0) << err;
+}
+
 // ---- accuracy, up to its first GL call ----
 
 Result runAccuracy(std::vector<std::string> words)
