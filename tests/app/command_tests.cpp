@@ -20,6 +20,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -411,7 +412,7 @@ std::vector<double> csvNumbers(const std::string& row)
 {
     std::vector<double> values;
     std::istringstream in(row);
-    for (std::string cell; std::getline(in, cell, ',');) values.push_back(std::stod(cell));
+    for (std::string cell; std::getline(in, cell, ',');) values.push_back(std::strtod(cell.c_str(), nullptr)); // stod throws on subnormals
     return values;
 }
 
@@ -482,6 +483,17 @@ TEST(MieCommand, BadOptionsNameTheOptionAndExit2)
         EXPECT_EQ(r.err.rfind("aurorawall mie: ", 0), 0u) << r.err;
         EXPECT_EQ(lines(r.err).size(), 1u) << r.err;
     }
+}
+
+// An angle is any number in [0, 180], a subnormal one too (strtod's ERANGE rejected 4.9e-324).
+TEST(MieCommand, SubnormalAnglesAreAngles)
+{
+    const Result r = runMie({"--n", "1.33", "--k", "0", "--x", "1", "--angles-deg", "4.9e-324,1e-310"});
+    ASSERT_EQ(r.status, 0) << r.err;
+    ASSERT_EQ(lines(r.out).size(), 6u) << r.out;
+    EXPECT_EQ(csvNumbers(lines(r.out)[4])[0], 4.9e-324);
+    EXPECT_EQ(csvNumbers(lines(r.out)[5])[0], 1e-310);
+    EXPECT_EQ(runMie({"--n", "1.33", "--k", "0", "--x", "1", "--angles-deg", "1e999"}).status, 2);
 }
 
 // ---- what error messages echo of the input ----
