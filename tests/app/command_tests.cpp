@@ -496,6 +496,41 @@ TEST(MieCommand, SubnormalAnglesAreAngles)
     EXPECT_EQ(runMie({"--n", "1.33", "--k", "0", "--x", "1", "--angles-deg", "1e999"}).status, 2);
 }
 
+// ---- plasma verify ----
+
+Result runPlasma(std::vector<std::string> words)
+{
+    words.insert(words.begin(), "plasma");
+    Args args(std::move(words));
+    std::ostringstream out, err;
+    const int status = runPlasmaCommand(args.argc(), args.argv(), out, err);
+    return {status, out.str(), err.str()};
+}
+
+// Time steps and spacings where a case cannot measure are usage errors naming the option: at
+// --wp-dt 1e-300 the step count overflowed and langmuir printed NaN, exb did at --wc-dt 1e300 and
+// 1e-300, heating at --dx-lambda-d 1e300 (and failed with no option named at 5e-324).
+TEST(PlasmaCommand, TimeStepsAndSpacingsOutsideTheirRangesNameTheOption)
+{
+    const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
+        {{"--case", "langmuir", "--wp-dt", "1e-300"}, "--wp-dt must be in [0.01, 2)"},
+        {{"--case", "langmuir", "--wp-dt", "0.0099999"}, "--wp-dt must be in [0.01, 2)"},
+        {{"--case", "exb", "--wc-dt", "1e300"}, "--wc-dt must be in [1e-06, 1000000]"},
+        {{"--case", "exb", "--wc-dt", "1e-300"}, "--wc-dt must be in [1e-06, 1000000]"},
+        {{"--case", "heating", "--dx-lambda-d", "1e300"}, "--dx-lambda-d must be in [0.01, 100]"},
+        {{"--case", "heating", "--dx-lambda-d", "5e-324"}, "--dx-lambda-d must be in [0.01, 100]"},
+    };
+    for (const auto& [words, expected] : cases) {
+        std::vector<std::string> args = {"verify"};
+        args.insert(args.end(), words.begin(), words.end());
+        const Result r = runPlasma(args);
+        EXPECT_EQ(r.status, 2) << expected;
+        EXPECT_TRUE(r.out.empty()) << r.out;
+        EXPECT_EQ(r.err.rfind("aurorawall plasma: " + expected, 0), 0u) << r.err;
+        EXPECT_EQ(lines(r.err).size(), 1u) << r.err;
+    }
+}
+
 // ---- what error messages echo of the input ----
 
 TEST(EchoedInput, LongTextIsCutWithItsLengthAndControlCharactersEscaped)
@@ -526,12 +561,7 @@ TEST(EchoedInput, ErrorsQuotingAHugeValueStayOneShortLine)
     expectShort(runMie({"--n", "1.33", "--k", "0", "--x", "1", "--" + word.substr(2), "1"}).err, "unknown option");
     expectShort(runTables({word, "--energy-kev", "5"}).err, "tables TABLE");
     expectShort(runAccuracy({"--scene", "s.toml", "--size", word}).err, "accuracy --size");
-    {
-        Args args({"plasma", word});
-        std::ostringstream plasmaOut, plasmaErr;
-        EXPECT_EQ(runPlasmaCommand(args.argc(), args.argv(), plasmaOut, plasmaErr), 2);
-        expectShort(plasmaErr.str(), "plasma ACTION");
-    }
+    expectShort(runPlasma({word}).err, "plasma ACTION");
     try {
         parseRender({"--wall", "w.toml", "--scene", "s.toml", "--backend", word});
         ADD_FAILURE() << "render --backend: no error";
