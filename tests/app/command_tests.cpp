@@ -375,6 +375,11 @@ TEST(AccuracyCommand, OneParserForTheThreeKinds)
         {{"--glory", "s.toml", "--scene", "s.toml"}, "--glory cannot be combined with --scene"},
         {{"--glory", "s.toml", "--pixels", "9"}, "--pixels applies to --scene only"},
         {{"--glory", "s.toml", "--airmass"}, "--glory cannot be combined with --airmass"},
+        // inf was taken, and printed as the reference's step; 1e-300 would never end.
+        {{"--scene", "s.toml", "--reference-step-km", "inf"}, "--reference-step-km must be in [0.001, 0.25] km (got inf)"},
+        {{"--scene", "s.toml", "--reference-step-km", "1e-300"}, "--reference-step-km must be in [0.001, 0.25] km (got 1e-300)"},
+        {{"--scene", "s.toml", "--reference-step-km", "0.2500001"}, "--reference-step-km"},
+        {{"--scene", "s.toml", "--reference-step-km", "-0"}, "--reference-step-km"},
     };
     for (const auto& [words, expected] : usage) {
         const Result r = runAccuracy(words);
