@@ -61,7 +61,8 @@ real airmassLawlorWinitzki(vec3 start, vec3 direction, real tstart, real tend, r
 //   same sign (0 ≤ s0 < s1): erf(s1) − erf(s0) = erfc(s0) − erfc(s1).
 // The same-sign difference cancels when s1² − s0² < 1; there the safe form integrates e^{−A/H − s²}
 // over [s0, s1] with 3-point Gauss–Legendre (error ~1e-6, continuous across the switch), and segments
-// shorter than H take airmassShortSegment.
+// shorter than H take airmassShortSegment. Every density e^{−m − s²} is capped at e^60, as airmassDensity
+// caps it deep inside the planet (from the centre, e^{R/H} overflowed and 2·inf − inf gave NaN).
 real airmassLawlorErfcx(vec3 origin, vec3 direction, real t0, real t1, real H, real R)
 {
     if (abs(t1 - t0) <= H) return airmassShortSegment(origin, direction, t0, t1, H, R);
@@ -75,8 +76,8 @@ real airmassLawlorErfcx(vec3 origin, vec3 direction, real t0, real t1, real H, r
     real s1 = sqrtK * hi;
     real erfIntegral;                                 // ∫_{s0}^{s1} e^{−m − s²} ds
     if (s0 < real(0) && s1 > real(0)) {
-        erfIntegral = real(0.5) * sqrt(kPi) * (real(2) * exp(-m) - exp(-m - s1 * s1) * airmassErfcx(s1)
-                                                       - exp(-m - s0 * s0) * airmassErfcx(-s0));
+        erfIntegral = real(0.5) * sqrt(kPi) * (real(2) * exp(min(-m, real(60))) - exp(min(-m - s1 * s1, real(60))) * airmassErfcx(s1)
+                                                       - exp(min(-m - s0 * s0, real(60))) * airmassErfcx(-s0));
     } else {
         real sa = min(abs(s0), abs(s1));
         real sb = max(abs(s0), abs(s1));
@@ -84,12 +85,12 @@ real airmassLawlorErfcx(vec3 origin, vec3 direction, real t0, real t1, real H, r
             real halfWidth = real(0.5) * (sb - sa);
             real middle = real(0.5) * (sa + sb);
             real offset = halfWidth * real(0.774596669241483377);
-            erfIntegral = halfWidth * (real(0.555555555555555556) * exp(-m - (middle - offset) * (middle - offset))
-                                     + real(0.888888888888888889) * exp(-m - middle * middle)
-                                     + real(0.555555555555555556) * exp(-m - (middle + offset) * (middle + offset)));
+            erfIntegral = halfWidth * (real(0.555555555555555556) * exp(min(-m - (middle - offset) * (middle - offset), real(60)))
+                                     + real(0.888888888888888889) * exp(min(-m - middle * middle, real(60)))
+                                     + real(0.555555555555555556) * exp(min(-m - (middle + offset) * (middle + offset), real(60))));
         } else {
-            erfIntegral = real(0.5) * sqrt(kPi) * (exp(-m - sa * sa) * airmassErfcx(sa)
-                                                           - exp(-m - sb * sb) * airmassErfcx(sb));
+            erfIntegral = real(0.5) * sqrt(kPi) * (exp(min(-m - sa * sa, real(60))) * airmassErfcx(sa)
+                                                           - exp(min(-m - sb * sb, real(60))) * airmassErfcx(sb));
         }
     }
     real segmentSign = frame.z < frame.y ? real(-1) : real(1);

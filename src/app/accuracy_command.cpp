@@ -53,6 +53,12 @@ const char* kUsage =
     "time per frame, compared with the GPU render from the reference's table.\n"
     "Exit status: 0 success, 1 runtime failure (a file, no GL context, a shader), 2 usage error.\n";
 
+// The CPU reference's step where a curtain is in reach, km: at most the GPU reference's 0.25 km (a
+// coarser one is no reference), at least 0.001 km (50 times the default's steps; its run time grows as
+// 1/step, and at 1e-300 it would never end).
+constexpr double kMinReferenceStepKm = 0.001;
+constexpr double kMaxReferenceStepKm = 0.25;
+
 // "WxH" with positive W and H.
 bool parseSize(const std::string& text, glm::ivec2& size)
 {
@@ -98,7 +104,7 @@ int runAccuracyCommand(int argc, char** argv, std::ostream& out, std::ostream& e
              "--scene: timed frames per setting after one warm-up (the median is reported)")
             ("threads", po::value(&scene.threads)->default_value(scene.threads), "--scene: CPU reference threads")
             ("reference-step-km", po::value(&scene.referenceStepKm)->default_value(scene.referenceStepKm),
-             "--scene: CPU reference step where a curtain is in reach")
+             "--scene: CPU reference step where a curtain is in reach, 0.001 to 0.25 km")
             ("feature-costs", po::bool_switch(&scene.featureCosts),
              "--scene: the paper's table 2 (frame time of each feature) instead of the knobs")
             ("work-stats", po::bool_switch(&scene.workStats),
@@ -128,11 +134,16 @@ int runAccuracyCommand(int argc, char** argv, std::ostream& out, std::ostream& e
             if (scene.sceneFile.empty())
                 throw cli.usageError(std::string(gloryRun ? "--glory" : "--scene") + " needs a file name");
             if (!parseSize(size, scene.sizePx))
-                throw cli.usageError("--size must be WxH with positive whole W and H (got '" + size + "')");
+                throw cli.usageError("--size must be WxH with positive whole W and H (got '" + echoedInput(size) + "')");
             if (scene.frame < 0 || scene.frame > 100000000)
                 throw cli.usageError("--frame must be a whole number in [0, 1e8] (got " + std::to_string(scene.frame) + ")");
-            if (scene.pixels < 1 || scene.runs < 1 || scene.threads < 1 || !(scene.referenceStepKm > 0.0))
-                throw cli.usageError("--pixels, --runs, --threads and --reference-step-km must be positive");
+            if (scene.pixels < 1 || scene.runs < 1 || scene.threads < 1)
+                throw cli.usageError("--pixels, --runs and --threads must be positive");
+            if (!(scene.referenceStepKm >= kMinReferenceStepKm && scene.referenceStepKm <= kMaxReferenceStepKm)) {
+                char got[32];
+                std::snprintf(got, sizeof got, "%g", scene.referenceStepKm);
+                throw cli.usageError("--reference-step-km must be in [0.001, 0.25] km (got " + std::string(got) + ")");
+            }
             if (gloryRun)
                 runGloryAccuracy(scene, out);
             else

@@ -3,21 +3,28 @@
 #include "app/cli/command_line.h"
 #include "app/cli/exit_status.h"
 #include "atmosphere/airmass.h"
+#include "common/input_error.h"
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <istream>
+#include <limits>
 #include <optional>
 #include <ostream>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 namespace aurorawall::app {
 namespace {
+
+// The input's columns, in order; a first line of exactly these names (any case) is a header.
+const char* const kFields[] = {"ox", "oy", "oz", "dx", "dy", "dz", "t0", "t1", "H", "R"};
+constexpr int kFieldCount = 10;
 
 std::string trimmed(const std::string& text)
 {
@@ -27,43 +34,66 @@ std::string trimmed(const std::string& text)
     return text.substr(first, last - first + 1);
 }
 
-// One CSV line as a ray, or an error message.
-std::optional<AirmassRay> parseRay(const std::string& line, std::string& problem)
+// The line's comma-separated fields, trimmed (a trailing comma gives a last empty field).
+std::vector<std::string> fieldsOf(const std::string& line)
 {
-    std::vector<double> values;
-    std::stringstream fields(line);
-    std::string field;
-    while (std::getline(fields, field, ',')) {
-        std::string text = trimmed(field);
-        char* end = nullptr;
-        double value = std::strtod(text.c_str(), &end);
-        if (text.empty() || *end != '\0') {
-            problem = "field " + std::to_string(values.size() + 1) + " is not a number: '" + text + "'";
-            return std::nullopt;
-        }
-        if (!std::isfinite(value)) {
-            problem = "field " + std::to_string(values.size() + 1) + " is not finite: '" + text + "'";
-            return std::nullopt;
-        }
-        values.push_back(value);
+    std::vector<std::string> fields;
+    size_t begin = 0;
+    for (;;) {
+        const size_t comma = line.find(',', begin);
+        fields.push_back(trimmed(line.substr(begin, comma == std::string::npos ? std::string::npos : comma - begin)));
+        if (comma == std::string::npos) return fields;
+        begin = comma + 1;
     }
-    if (!line.empty() && line.back() == ',') { // std::getline drops a trailing empty field
-        problem = "field " + std::to_string(values.size() + 1) + " is not a number: ''";
-        return std::nullopt;
-    }
-    if (values.size() != 10) {
+}
+
+bool isHeader(const std::vector<std::string>& fields)
+{
+    if (fields.size() != kFieldCount) return false;
+    for (int i = 0; i < kFieldCount; ++i)
+        if (!std::equal(fields[i].begin(), fields[i].end(), kFields[i], kFields[i] + std::strlen(kFields[i]),
+                        [](char a, char b) { return std::tolower(static_cast<unsigned char>(a)) == std::tolower(b); }))
+            return false;
+    return true;
+}
+
+// One CSV line's fields as a ray, or an error message naming the field. Every field must be a finite
+// number within float's range (the closed forms run in float32, as the shader does): |value| <= 3.4e38;
+// H at least float's smallest positive number, 1.4e-45 (below, H rounds to 0 in float); R >= 0.
+std::optional<AirmassRay> parseRay(const std::vector<std::string>& fields, std::string& problem)
+{
+    if (fields.size() != kFieldCount) {
         problem = "expected 10 comma-separated numbers ox,oy,oz,dx,dy,dz,t0,t1,H,R, got " +
-                  std::to_string(values.size()) + " fields";
+                  std::to_string(fields.size()) + " fields";
         return std::nullopt;
+    }
+    double values[kFieldCount];
+    for (int i = 0; i < kFieldCount; ++i) {
+        const std::string name = "field " + std::to_string(i + 1) + " (" + kFields[i] + ")";
+        const std::string& text = fields[i];
+        char* end = nullptr;
+        values[i] = std::strtod(text.c_str(), &end);
+        if (text.empty() || *end != '\0') {
+            problem = name + " is not a number: '" + echoedInput(text) + "'";
+            return std::nullopt;
+        }
+        if (!std::isfinite(values[i])) {
+            problem = name + " is not finite: '" + echoedInput(text) + "'";
+            return std::nullopt;
+        }
+        if (!(std::abs(values[i]) <= std::numeric_limits<float>::max())) {
+            problem = name + " must be within float's range, |value| <= 3.40282347e+38 (got '" + echoedInput(text) + "')";
+            return std::nullopt;
+        }
     }
     AirmassRay ray{{values[0], values[1], values[2]}, {values[3], values[4], values[5]},
                    values[6], values[7], values[8], values[9]};
-    if (!(ray.scaleHeight > 0.0)) {
-        problem = "scale height H must be > 0";
+    if (!(ray.scaleHeight >= std::numeric_limits<float>::denorm_min())) {
+        problem = "field 9 (H) must be at least 1.4e-45 km, float's smallest positive number (got '" + echoedInput(fields[8]) + "')";
         return std::nullopt;
     }
     if (ray.planetRadius < 0.0) {
-        problem = "planet radius R must be >= 0";
+        problem = "field 10 (R) must be >= 0 (got '" + echoedInput(fields[9]) + "')";
         return std::nullopt;
     }
     return ray;
@@ -79,11 +109,12 @@ int runAirmassCommand(int argc, char** argv, std::istream& in, std::ostream& out
             "Usage: aurorawall airmass [--method NAME] < rays.csv\n"
             "Airmass I = integral from t0 to t1 of exp(-(|o + t*d/|d|| - R)/H) dt, in km, for each input line\n"
             "ox,oy,oz,dx,dy,dz,t0,t1,H,R (km; planet centre at the origin; t in km along the unit direction;\n"
-            "a first line starting with a letter is a header; blank lines are skipped). Prints one number per\n"
-            "line. I is signed (t1 < t0 gives -I), 0 for a zero direction, and the planet is transparent.\n"
+            "a first line of these names is a header; blank lines are skipped). Every field is a finite number\n"
+            "within float's range (|value| <= 3.4e38), H >= 1.4e-45 and R >= 0. Prints one number per line.\n"
+            "I is signed (t1 < t0 gives -I), 0 for a zero direction, and the planet is transparent.\n"
             "Closed forms run in float32, exactly as the shader computes them; 'exact' runs in double.\n"
-            "Exit status: 0 success, 1 for a malformed input line (one error line naming it, nothing printed),\n"
-            "2 usage error.\n");
+            "Exit status: 0 success, 1 for a malformed input line or one the method gives no finite value for\n"
+            "(one error line naming it, nothing printed), 2 usage error.\n");
         const std::vector<AirmassMethod>& methods = airmassMethods();
         cli::Choices<const AirmassMethod*> choices = {{"list", nullptr}};
         for (const AirmassMethod& m : methods)
@@ -102,26 +133,34 @@ int runAirmassCommand(int argc, char** argv, std::istream& in, std::ostream& out
             return;
         }
 
-        std::vector<AirmassRay> rays;
+        // Everything is read and evaluated before anything is printed.
+        std::vector<double> airmasses;
         std::string line;
         bool seenContent = false;
-        for (int lineNumber = 1; std::getline(in, line); ++lineNumber) {
+        for (long lineNumber = 1; std::getline(in, line); ++lineNumber) {
             const std::string text = trimmed(line);
             if (text.empty())
                 continue;
-            const bool header = !seenContent && std::isalpha(static_cast<unsigned char>(text[0]));
+            const std::vector<std::string> fields = fieldsOf(text);
+            const bool header = !seenContent && isHeader(fields);
             seenContent = true;
             if (header)
                 continue;
             std::string problem;
-            const std::optional<AirmassRay> ray = parseRay(text, problem);
+            const std::optional<AirmassRay> ray = parseRay(fields, problem);
             if (!ray)
                 throw std::runtime_error("line " + std::to_string(lineNumber) + ": " + problem);
-            rays.push_back(*ray);
+            const double airmass = evaluateAirmass(*method, *ray, AirmassPrecision::Float32);
+            // The published baselines, the fits and march16 overflow for some extreme rays (docs/airmass.md).
+            if (!std::isfinite(airmass))
+                throw std::runtime_error("line " + std::to_string(lineNumber) + ": " + method->name +
+                                         " gives no finite airmass for this ray (" + std::to_string(airmass) +
+                                         "); " + kDefaultAirmassMethod + " and exact give one for every accepted line");
+            airmasses.push_back(airmass);
         }
-        for (const AirmassRay& ray : rays) {
+        for (const double airmass : airmasses) {
             char number[64];
-            std::snprintf(number, sizeof number, "%.12g\n", evaluateAirmass(*method, ray, AirmassPrecision::Float32));
+            std::snprintf(number, sizeof number, "%.12g\n", airmass);
             out << number;
         }
     });

@@ -6,6 +6,7 @@
 #include "app/plasma_command.h"
 #include "app/render_command.h"
 #include "app/tables_command.h"
+#include "common/input_error.h"
 
 #include <iostream>
 #include <string>
@@ -66,9 +67,9 @@ int main(int argc, char** argv)
     if (command.empty())
         std::cerr << cli::errorLine("", std::string("missing command (allowed: ") + kCommands + ")" + seeHelp) << "\n";
     else if (command[0] == '-')
-        std::cerr << cli::errorLine("", "unrecognised option '" + command + "'" + seeHelp) << "\n";
+        std::cerr << cli::errorLine("", "unrecognised option '" + echoedInput(command) + "'" + seeHelp) << "\n";
     else
-        std::cerr << cli::errorLine("", "unknown command '" + command + "' (allowed: " + kCommands + ")" + seeHelp)
+        std::cerr << cli::errorLine("", "unknown command '" + echoedInput(command) + "' (allowed: " + kCommands + ")" + seeHelp)
                   << "\n";
     return cli::kUsageError;
 }

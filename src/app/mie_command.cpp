@@ -5,7 +5,6 @@
 #include "common/constants.h"
 #include "components/glory/mie/mie_scattering.h"
 
-#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -41,11 +40,12 @@ std::vector<double> parseAngles(const std::string& list, const cli::CommandLine&
     for (;;) {
         const size_t end = list.find(',', begin);
         const std::string word = list.substr(begin, end == std::string::npos ? std::string::npos : end - begin);
+        // strtod's ERANGE is no error here: an overflow gives inf, out of range, and an underflow
+        // (a subnormal such as 4.9e-324) is an angle in range.
         char* stop = nullptr;
-        errno = 0;
         const double value = std::strtod(word.c_str(), &stop);
-        if (word.empty() || *stop != '\0' || errno == ERANGE || !(value >= 0.0 && value <= 180.0))
-            throw cli.usageError("--angles-deg: '" + word + "' is not an angle in [0, 180] degrees (in '" + list + "')");
+        if (word.empty() || *stop != '\0' || !(value >= 0.0 && value <= 180.0))
+            throw cli.usageError("--angles-deg: '" + echoedInput(word) + "' is not an angle in [0, 180] degrees (in '" + echoedInput(list) + "')");
         degrees.push_back(value);
         if (end == std::string::npos) return degrees;
         begin = end + 1;

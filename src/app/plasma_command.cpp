@@ -66,8 +66,15 @@ std::string number(double value)
     return text;
 }
 
+// A case's rows; a value that came out NaN or infinite ends the run (exit status 1) instead of being
+// printed as if measured.
 void printRows(std::ostream& out, const std::string& name, const std::vector<plasma::VerifyRow>& rows)
 {
+    for (const plasma::VerifyRow& row : rows)
+        if (!std::isfinite(row.measured) || (row.expected && !std::isfinite(row.relativeError())))
+            throw std::runtime_error(name + ": " + row.parameter + " came out " +
+                                     number(std::isfinite(row.measured) ? row.relativeError() : row.measured) +
+                                     " (the case's measurement failed at these settings)");
     for (const plasma::VerifyRow& row : rows) {
         out << name << ',' << row.parameter << ',' << number(row.measured) << ',';
         if (row.expected)
@@ -144,12 +151,14 @@ int runPlasmaCommand(int argc, char** argv, std::ostream& out, std::ostream& err
                   ("the landau case's wave number times the Debye length, in [" + number(plasma::kLandauMinKDebye) +
                    ", " + number(plasma::kLandauMaxKDebye) + "]").c_str());
         cli.add()("wp-dt", po::value<double>(&wpDt)->default_value(0.2, "0.2"),
-                  "omega_p dt of langmuir, langmuir-2d, langmuir-3d, two-stream, energy, heating and landau, in (0, 2): the leapfrog is unstable "
-                  "from 2 on")("wc-dt", po::value<double>(&wcDt)->default_value(1.0),
-                              "omega_c dt of boris and exb, > 0 (the Boris push is stable for any)");
+                  "omega_p dt of langmuir, langmuir-2d, langmuir-3d, two-stream, energy, heating and landau, in [0.01, 2): "
+                  "the leapfrog is unstable from 2 on, and the runs' steps grow as 1/(omega_p dt)")(
+                  "wc-dt", po::value<double>(&wcDt)->default_value(1.0),
+                  "omega_c dt of boris and exb, in [1e-6, 1e6] (the Boris push is stable for any; beyond, rounding "
+                  "hides the E x B circle)");
         double dxOverDebye = 0.0;
         cli.add()("dx-lambda-d", po::value<double>(&dxOverDebye),
-                  "the heating case's grid spacing in Debye lengths, > 0 (default: 0.5, 2 and 8 in turn)");
+                  "the heating case's grid spacing in Debye lengths, in [0.01, 100] (default: 0.5, 2 and 8 in turn)");
         plasma::ParticleShape shape = plasma::ParticleShape::CloudInCell;
         cli.addChoice("shape", &shape, kShapes,
                       "the heating case's particle shape: cic (cloud-in-cell, default) or tsc (triangular-shaped cloud)");
@@ -167,20 +176,23 @@ int runPlasmaCommand(int argc, char** argv, std::ostream& out, std::ostream& err
         if (actionName.empty())
             throw cli.usageError("missing the action (allowed: " + cli::wordsOf(kActions) + ")");
         if (!cli::findChoice(kActions, actionName, action))
-            throw cli.usageError("unknown action '" + actionName + "' (allowed: " + cli::wordsOf(kActions) + ")");
+            throw cli.usageError("unknown action '" + echoedInput(actionName) + "' (allowed: " + cli::wordsOf(kActions) + ")");
         if (!(kDebye >= plasma::kLandauMinKDebye && kDebye <= plasma::kLandauMaxKDebye))
             throw cli.usageError("--k-lambda-d must be in [" + number(plasma::kLandauMinKDebye) + ", " +
                                  number(plasma::kLandauMaxKDebye) + "] (got " + number(kDebye) + ")");
         if (cli.given("k-lambda-d") && chosen != Case::Landau)
             throw cli.usageError("--k-lambda-d applies only to --case landau");
-        if (!(wpDt > 0.0 && wpDt < 2.0))
-            throw cli.usageError("--wp-dt must be in (0, 2): the leapfrog is unstable for omega_p dt >= 2 (got " +
-                                 number(wpDt) + ")");
-        if (!(wcDt > 0.0) || !std::isfinite(wcDt))
-            throw cli.usageError("--wc-dt must be a finite number > 0 (got " + number(wcDt) + ")");
+        if (!(wpDt >= plasma::kMinVerifyWpDt && wpDt < 2.0))
+            throw cli.usageError("--wp-dt must be in [" + number(plasma::kMinVerifyWpDt) +
+                                 ", 2): the leapfrog is unstable for omega_p dt >= 2, and the runs' steps grow as "
+                                 "1/(omega_p dt) (got " + number(wpDt) + ")");
+        if (!(wcDt >= plasma::kMinVerifyWcDt && wcDt <= plasma::kMaxVerifyWcDt))
+            throw cli.usageError("--wc-dt must be in [" + number(plasma::kMinVerifyWcDt) + ", " +
+                                 number(plasma::kMaxVerifyWcDt) + "] (got " + number(wcDt) + ")");
         if (cli.given("dx-lambda-d")) {
-            if (!(dxOverDebye > 0.0) || !std::isfinite(dxOverDebye))
-                throw cli.usageError("--dx-lambda-d must be a finite number > 0 (got " + number(dxOverDebye) + ")");
+            if (!(dxOverDebye >= plasma::kMinHeatingDxDebye && dxOverDebye <= plasma::kMaxHeatingDxDebye))
+                throw cli.usageError("--dx-lambda-d must be in [" + number(plasma::kMinHeatingDxDebye) + ", " +
+                                     number(plasma::kMaxHeatingDxDebye) + "] (got " + number(dxOverDebye) + ")");
             heatingSpacings = {dxOverDebye};
         }
 

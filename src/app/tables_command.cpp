@@ -86,7 +86,7 @@ int runTablesCommand(int argc, char** argv, std::ostream& out, std::ostream& err
         if (tableName.empty())
             throw cli.usageError("missing the table name (allowed: " + cli::wordsOf(kTables) + ")");
         if (!cli::findChoice(kTables, tableName, table))
-            throw cli.usageError("unknown table '" + tableName + "' (allowed: " + cli::wordsOf(kTables) + ")");
+            throw cli.usageError("unknown table '" + echoedInput(tableName) + "' (allowed: " + cli::wordsOf(kTables) + ")");
         if (table == Table::Glory) {
             if (sceneFile.empty() || cli.given("energy-kev") || maxwellian)
                 throw cli.usageError("glory takes --scene FILE and nothing else");

@@ -115,6 +115,19 @@ void openGraphics(const cluster::MpiWorld& world, WallSession& s)
         windows.push_back(spec);
     }
     s.context = gl::createContext(backend, windows);
+    // A screen beyond the device's render targets would fail at its framebuffer ("incomplete, status
+    // 36054"); name the wall file's key instead, before anything is drawn or written. Ranks with the
+    // same device and screen size give the same line, which the agreed error prints once.
+    const int largestPx = gl::largestRenderTargetPx();
+    for (int screenIndex : myScreens) {
+        const wall::Screen& screen = s.wall.screens[screenIndex];
+        for (const auto& [key, px] : {std::pair{"width_px", screen.widthPx}, std::pair{"height_px", screen.heightPx}})
+            if (px > largestPx)
+                throw InputError(s.options.wallFile + (s.options.singleScreen ? " with --single-screen" : "") + ": " +
+                                 key + " = " + std::to_string(px) + " is more than this GL device's largest render target, " +
+                                 std::to_string(largestPx) +
+                                 " px (the least of GL_MAX_TEXTURE_SIZE, GL_MAX_RENDERBUFFER_SIZE and GL_MAX_VIEWPORT_DIMS)");
+    }
     const render::MarchStage stage = s.options.march == MarchChoice::Compute    ? render::MarchStage::Compute
                                      : s.options.march == MarchChoice::Fragment ? render::MarchStage::Fragment
                                                                                 : render::preferredMarchStage(s.context->rendererName());

@@ -15,14 +15,19 @@ constexpr double kDensityExponentCap = 60.0; // as airmassDensity in airmass_com
 
 // The integrand of one monotone piece, divided by its value at the piece's lower end xLow:
 // g(x) = exp(e(x) − e(xLow)), e(x) = min((R − r(x))/H, 60), r(x) = √(x² + y²). While uncapped,
-// e(x) − e(xLow) = −(x − xLow)(x + xLow)/((r + rLow)·H), free of cancellation.
+// e(x) − e(xLow) = −(x − xLow)(x + xLow)/((r + rLow)·H), free of cancellation. g ≤ 1 on the piece;
+// a node rounded to just below xLow (pieces shorter than an ulp of x) counts as xLow, where a tiny H
+// would otherwise make e^{+huge} = inf, and 0/0 (H·r underflowing to 0 at xLow) cannot arise.
 struct PieceIntegrand {
     double y, xLow, rLow, H, R;
     bool lowCapped;
     double operator()(double x) const
     {
         double r = std::hypot(x, y);
-        if (!lowCapped) return std::exp(-(x - xLow) * (x + xLow) / ((r + rLow) * H));
+        if (!lowCapped) {
+            const double rise = (x - xLow) * (x + xLow);
+            return rise > 0.0 ? std::exp(-rise / ((r + rLow) * H)) : 1.0;
+        }
         return std::exp(std::min((R - r) / H - kDensityExponentCap, 0.0));
     }
 };

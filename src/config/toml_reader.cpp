@@ -287,7 +287,7 @@ int TableReader::choice(const std::string& key, const std::vector<std::string>& 
     std::string list;
     for (const std::string& w : words)
         list += (list.empty() ? "\"" : ", \"") + w + "\"";
-    fail(key, "must be one of " + list + " (got \"" + word + "\")");
+    fail(key, "must be one of " + list + " (got \"" + echoedInput(word) + "\")");
 }
 
 std::vector<std::string> TableReader::strings(const std::string& key) const
@@ -393,7 +393,7 @@ void TableReader::rejectKeysOutside(const std::vector<std::string>& known) const
     for (const std::string& k : known)
         list += (list.empty() ? "" : ", ") + k;
     throw inputError(file_, fileLine(first->second),
-                     "unknown key '" + qualified(first->first) + "'; known keys: " + list);
+                     "unknown key '" + echoedInput(qualified(first->first)) + "'; known keys: " + list);
 }
 
 void TableReader::rejectUnknownKeys() const
@@ -401,7 +401,7 @@ void TableReader::rejectUnknownKeys() const
     for (const auto& [key, value] : table_.as_table())
         if (!read_.count(key))
             throw inputError(file_, fileLine(value),
-                             "unknown key '" + qualified(key) + "'");
+                             "unknown key '" + echoedInput(qualified(key)) + "'");
 }
 
 } // namespace aurorawall::config

@@ -3,6 +3,7 @@
 #include "gl/backends.h"
 #include "gl/functions.h"
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace aurorawall::gl {
@@ -37,6 +38,15 @@ bool hasExtension(const std::string& name)
         if (name == reinterpret_cast<const char*>(glGetStringi(GL_EXTENSIONS, GLuint(i))))
             return true;
     return false;
+}
+
+int largestRenderTargetPx()
+{
+    GLint texture = 0, renderbuffer = 0, viewport[2] = {0, 0};
+    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &texture);
+    glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &renderbuffer);
+    glGetIntegerv(GL_MAX_VIEWPORT_DIMS, viewport);
+    return std::min({texture, renderbuffer, viewport[0], viewport[1]});
 }
 
 bool isSoftwareRenderer(const std::string& rendererName)

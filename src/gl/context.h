@@ -97,6 +97,11 @@ std::string currentRendererName();
 // Whether the current context has the GL extension `name` (e.g. "GL_ARB_shader_clock").
 bool hasExtension(const std::string& name);
 
+// The largest width and height, in pixels, of a render target of the current context (a texture
+// attached to a framebuffer, drawn through the viewport): the least of GL_MAX_TEXTURE_SIZE,
+// GL_MAX_RENDERBUFFER_SIZE and either of GL_MAX_VIEWPORT_DIMS (16384 each on llvmpipe).
+int largestRenderTargetPx();
+
 // True for Mesa's CPU renderers (llvmpipe, softpipe), by their GL_RENDERER.
 bool isSoftwareRenderer(const std::string& rendererName);
 

@@ -1,5 +1,6 @@
 #include "gl/debug_layer.h"
 
+#include "common/input_error.h"
 #include "gl/functions.h"
 
 #include <cstdlib>
@@ -285,7 +286,7 @@ DebugModes parseDebugModes(const std::string& list)
         else if (word == "hazards")
             modes.hazards = true;
         else if (!word.empty())
-            throw std::invalid_argument("AURORAWALL_GL_DEBUG: unknown mode '" + word +
+            throw std::invalid_argument("AURORAWALL_GL_DEBUG: unknown mode '" + echoedInput(word) +
                                         "' (allowed: nan-fill, reverse-workgroups, hazards)");
     }
     return modes;

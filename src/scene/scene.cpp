@@ -272,9 +272,9 @@ void SceneLoader::listComponents(Scene& s, const TableReader& meta, const Regist
         known += (known.empty() ? "" : ", ") + c->name();
     for (const std::string& name : names) {
         if (std::none_of(registry.begin(), registry.end(), [&](const Component* c) { return c->name() == name; }))
-            meta.fail("components", "unknown component '" + name + "' (known: " + known + ")");
+            meta.fail("components", "unknown component '" + echoedInput(name) + "' (known: " + known + ")");
         if (std::count(names.begin(), names.end(), name) > 1)
-            meta.fail("components", "component '" + name + "' listed twice");
+            meta.fail("components", "component '" + echoedInput(name) + "' listed twice");
     }
     Scene listed;
     listed.planetRadiusKm = s.planetRadiusKm;

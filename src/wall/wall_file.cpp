@@ -49,14 +49,16 @@ std::string show(double x)
 
 // The old INI form, recognised by the lines TOML reads differently or not at all: "[screen.NAME]"
 // sections (TOML: a nested table, not a screen list), unquoted words ("mode = windowed") and
-// space-separated lists ("per_screen = 0 1 2 3"). Returns the first such line, or 0.
+// space-separated lists ("per_screen = 0 1 2 3"). Returns the first such line, or 0. Only a line's
+// first 256 bytes are matched: std::regex recurses once per character and overflows the stack on
+// a line of a megabyte.
 int oldIniLine(const std::string& path)
 {
     static const std::regex iniOnly(R"(\s*(\[screen\.[^\]]*\]|(mode|stacking)\s*=\s*[A-Za-z]|(per_screen|monitors)\s*=\s*[0-9]).*)");
     std::ifstream in(path);
     std::string text;
     for (int line = 1; std::getline(in, text); ++line)
-        if (std::regex_match(text, iniOnly))
+        if (std::regex_match(text.substr(0, 256), iniOnly))
             return line;
     return 0;
 }
@@ -204,12 +206,15 @@ Wall WallFile::screenListWall()
         Screen screen;
         screen.name = s.string("name");
         // The name becomes part of file names (tile-NAME.exr) and window titles.
-        static const std::regex fileNameSafe("[A-Za-z0-9_.-]+");
-        if (!std::regex_match(screen.name, fileNameSafe))
-            s.fail("name", "must be letters, digits, '_', '.' or '-' (got \"" + screen.name + "\")");
+        const auto fileNameSafe = [](char c) {
+            return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_' || c == '.' ||
+                   c == '-';
+        };
+        if (screen.name.empty() || !std::all_of(screen.name.begin(), screen.name.end(), fileNameSafe))
+            s.fail("name", "must be letters, digits, '_', '.' or '-' (got \"" + echoedInput(screen.name) + "\")");
         for (std::size_t j = 0; j < screens.size(); ++j)
             if (screens[j].name == screen.name)
-                s.fail("name", "\"" + screen.name + "\" is already the name of the screen on line " +
+                s.fail("name", "\"" + echoedInput(screen.name) + "\" is already the name of the screen on line " +
                                    std::to_string(screens_[j].line()));
         screen.widthPx = s.integer("width_px", 1, maxPx);
         screen.heightPx = s.integer("height_px", 1, maxPx);

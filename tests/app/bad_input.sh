@@ -100,6 +100,9 @@ main_cases() {
         expect_error "wall-$f" 2 1 "$(at_marked_line "$WALL_DATA/$f.toml")" --wall "$WALL_DATA/$f.toml" --scene "$SCENE"
     done
     expect_error wall-missing-file 4 1 "nonexistent-wall\.toml" --wall "$WORK/nonexistent-wall.toml" --scene "$SCENE"
+    # A screen larger than the GL device's render targets: the wall file and the key, before anything is drawn.
+    expect_error wall-too-large-for-device 1 1 "huge-screen\.toml: width_px = 65536 is more than this GL device's largest render target" \
+        --wall "$DATA/huge-screen.toml" --scene "$SCENE"
     # mpirun -n other than the wall's rank count: a usage error.
     expect_error wall-wrong-rank-count 3 2 "desktop-2x2\.toml.*4 ranks.*3" --wall "$WALLS/desktop-2x2.toml" --scene "$SCENE"
     expect_error wall-ini-file 4 1 "old-desktop-2x2\.ini: INI wall files are no longer read; convert to TOML" \

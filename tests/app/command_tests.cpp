@@ -4,20 +4,25 @@
 #include "app/airmass_command.h"
 #include "app/cli/command_line.h"
 #include "app/cli/exit_status.h"
+#include "app/control/command.h"
 #include "app/cost_map.h"
 #include "app/mie_command.h"
 #include "app/path_recorder.h"
+#include "app/plasma_command.h"
 #include "app/render_options.h"
 #include "app/tables_command.h"
 #include "atmosphere/airmass.h"
 #include "cluster/master_clock.h"
+#include "common/input_error.h"
 #include "components/registry.h"
 #include "components/aurora/physics/deposition_table.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -299,6 +304,53 @@ TEST(AirmassCommand, MalformedLinesAreARuntimeFailureNamingTheLine)
 }
 
 
+// The header is a first line of the column names (any case, spaces around them); any other first
+// line is data, and "nan,..." or other names an error.
+TEST(AirmassCommand, HeaderIsALineOfTheColumnNames)
+{
+    const std::string ray = "0,6371,0,0,1,0,0,100,8,6371\n";
+    std::string out, err;
+    for (const std::string header : {"ox,oy,oz,dx,dy,dz,t0,t1,H,R", " OX, oy ,oz,dx,dy,dz,t0,t1,h,r "}) {
+        EXPECT_EQ(runAirmass({"airmass"}, header + "\n" + ray, out, err), 0) << err;
+        EXPECT_EQ(lines(out).size(), 1u) << header;
+    }
+    for (const std::string first : {"nan,0,0,0,0,0,0,0,1,1", "inf,0,6371,0,1,0,0,100,8,6371", "x,y,z,dx,dy,dz,t0,t1,H,R"}) {
+        EXPECT_EQ(runAirmass({"airmass"}, first + "\n" + ray, out, err), 1) << first;
+        EXPECT_EQ(out, "");
+        EXPECT_NE(err.find("line 1: field 1 (ox) is not"), std::string::npos) << err;
+    }
+    EXPECT_EQ(runAirmass({"airmass"}, ray + "ox,oy,oz,dx,dy,dz,t0,t1,H,R\n", out, err), 1); // a header only comes first
+    EXPECT_NE(err.find("line 2: field 1 (ox) is not a number: 'ox'"), std::string::npos) << err;
+}
+
+// Every field must be a float (the closed forms run in float32): 1e308 became inf and the result NaN,
+// an H of 1e-320 became 0. A ray the method gives no finite value for is an error naming the line and
+// the method, never a NaN printed with status 0.
+TEST(AirmassCommand, FieldsBeyondFloatAndNonFiniteResultsAreErrors)
+{
+    const std::vector<std::pair<std::string, std::string>> bad = {
+        {"1e308,0,0,1,0,0,0,100,8,6371", "line 1: field 1 (ox) must be within float's range"},
+        {"0,6371,0,0,-3.5e38,0,0,100,8,6371", "line 1: field 5 (dy) must be within float's range"},
+        {"0,6371,0,0,1,0,0,100,1e-320,6371", "line 1: field 9 (H) must be at least 1.4e-45 km"},
+        {"0,6371,0,0,1,0,0,100,8,1e39", "line 1: field 10 (R) must be within float's range"},
+    };
+    std::string out, err;
+    for (const auto& [line, expected] : bad) {
+        EXPECT_EQ(runAirmass({"airmass", "--method", "exact"}, line + "\n", out, err), 1) << line;
+        EXPECT_EQ(out, "");
+        EXPECT_NE(err.find(expected), std::string::npos) << err;
+    }
+    const std::string fromTheCentre = "0,6371,0,1,0.2,0,0,100,8,6371\n0,0,0,1,0,0,0,100,8,6371\n";
+    EXPECT_EQ(runAirmass({"airmass", "--method", "lawlor-winitzki"}, fromTheCentre, out, err), 1);
+    EXPECT_EQ(out, "");
+    EXPECT_NE(err.find("line 2: lawlor-winitzki gives no finite airmass for this ray"), std::string::npos) << err;
+    for (const char* method : {kDefaultAirmassMethod, "exact", "lawlor-erfcx", "march16"}) {
+        EXPECT_EQ(runAirmass({"airmass", "--method", method}, fromTheCentre, out, err), 0) << method << err;
+        EXPECT_EQ(lines(out).size(), 2u);
+    }
+    EXPECT_EQ(runAirmass({"airmass"}, "3.4028234e38,0,0,1,0,0,0,100,1.5e-45,6371\n", out, err), 0) << err;
+}
+
 // ---- accuracy, up to its first GL call ----
 
 Result runAccuracy(std::vector<std::string> words)
@@ -323,6 +375,11 @@ TEST(AccuracyCommand, OneParserForTheThreeKinds)
         {{"--glory", "s.toml", "--scene", "s.toml"}, "--glory cannot be combined with --scene"},
         {{"--glory", "s.toml", "--pixels", "9"}, "--pixels applies to --scene only"},
         {{"--glory", "s.toml", "--airmass"}, "--glory cannot be combined with --airmass"},
+        // inf was taken, and printed as the reference's step; 1e-300 would never end.
+        {{"--scene", "s.toml", "--reference-step-km", "inf"}, "--reference-step-km must be in [0.001, 0.25] km (got inf)"},
+        {{"--scene", "s.toml", "--reference-step-km", "1e-300"}, "--reference-step-km must be in [0.001, 0.25] km (got 1e-300)"},
+        {{"--scene", "s.toml", "--reference-step-km", "0.2500001"}, "--reference-step-km"},
+        {{"--scene", "s.toml", "--reference-step-km", "-0"}, "--reference-step-km"},
     };
     for (const auto& [words, expected] : usage) {
         const Result r = runAccuracy(words);
@@ -360,7 +417,7 @@ std::vector<double> csvNumbers(const std::string& row)
 {
     std::vector<double> values;
     std::istringstream in(row);
-    for (std::string cell; std::getline(in, cell, ',');) values.push_back(std::stod(cell));
+    for (std::string cell; std::getline(in, cell, ',');) values.push_back(std::strtod(cell.c_str(), nullptr)); // stod throws on subnormals
     return values;
 }
 
@@ -431,6 +488,115 @@ TEST(MieCommand, BadOptionsNameTheOptionAndExit2)
         EXPECT_EQ(r.err.rfind("aurorawall mie: ", 0), 0u) << r.err;
         EXPECT_EQ(lines(r.err).size(), 1u) << r.err;
     }
+}
+
+// An angle is any number in [0, 180], a subnormal one too (strtod's ERANGE rejected 4.9e-324).
+TEST(MieCommand, SubnormalAnglesAreAngles)
+{
+    const Result r = runMie({"--n", "1.33", "--k", "0", "--x", "1", "--angles-deg", "4.9e-324,1e-310"});
+    ASSERT_EQ(r.status, 0) << r.err;
+    ASSERT_EQ(lines(r.out).size(), 6u) << r.out;
+    EXPECT_EQ(csvNumbers(lines(r.out)[4])[0], 4.9e-324);
+    EXPECT_EQ(csvNumbers(lines(r.out)[5])[0], 1e-310);
+    EXPECT_EQ(runMie({"--n", "1.33", "--k", "0", "--x", "1", "--angles-deg", "1e999"}).status, 2);
+}
+
+// ---- plasma verify ----
+
+Result runPlasma(std::vector<std::string> words)
+{
+    words.insert(words.begin(), "plasma");
+    Args args(std::move(words));
+    std::ostringstream out, err;
+    const int status = runPlasmaCommand(args.argc(), args.argv(), out, err);
+    return {status, out.str(), err.str()};
+}
+
+// Time steps and spacings where a case cannot measure are usage errors naming the option: at
+// --wp-dt 1e-300 the step count overflowed and langmuir printed NaN, exb did at --wc-dt 1e300 and
+// 1e-300, heating at --dx-lambda-d 1e300 (and failed with no option named at 5e-324).
+TEST(PlasmaCommand, TimeStepsAndSpacingsOutsideTheirRangesNameTheOption)
+{
+    const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
+        {{"--case", "langmuir", "--wp-dt", "1e-300"}, "--wp-dt must be in [0.01, 2)"},
+        {{"--case", "langmuir", "--wp-dt", "0.0099999"}, "--wp-dt must be in [0.01, 2)"},
+        {{"--case", "exb", "--wc-dt", "1e300"}, "--wc-dt must be in [1e-06, 1000000]"},
+        {{"--case", "exb", "--wc-dt", "1e-300"}, "--wc-dt must be in [1e-06, 1000000]"},
+        {{"--case", "heating", "--dx-lambda-d", "1e300"}, "--dx-lambda-d must be in [0.01, 100]"},
+        {{"--case", "heating", "--dx-lambda-d", "5e-324"}, "--dx-lambda-d must be in [0.01, 100]"},
+    };
+    for (const auto& [words, expected] : cases) {
+        std::vector<std::string> args = {"verify"};
+        args.insert(args.end(), words.begin(), words.end());
+        const Result r = runPlasma(args);
+        EXPECT_EQ(r.status, 2) << expected;
+        EXPECT_TRUE(r.out.empty()) << r.out;
+        EXPECT_EQ(r.err.rfind("aurorawall plasma: " + expected, 0), 0u) << r.err;
+        EXPECT_EQ(lines(r.err).size(), 1u) << r.err;
+    }
+}
+
+// ---- what error messages echo of the input ----
+
+TEST(EchoedInput, LongTextIsCutWithItsLengthAndControlCharactersEscaped)
+{
+    EXPECT_EQ(echoedInput("1.5e3"), "1.5e3");
+    EXPECT_EQ(echoedInput(std::string(60, 'a')), std::string(60, 'a'));
+    EXPECT_EQ(echoedInput(std::string(61, 'a')), std::string(60, 'a') + "… (61 bytes)");
+    EXPECT_EQ(echoedInput("a\nb\tc\x01\x7f"), "a\\nb\\tc\\x01\\x7F");
+    // A two-byte character across the limit is left out whole.
+    EXPECT_EQ(echoedInput(std::string(59, 'a') + "\xc3\xa9" + "b"), std::string(59, 'a') + "… (62 bytes)");
+}
+
+// However long a value, the error that quotes it is one short line with the value's start and length.
+TEST(EchoedInput, ErrorsQuotingAHugeValueStayOneShortLine)
+{
+    const std::string huge(1 << 20, '7'), word(1 << 20, 'w');
+    const std::string length = "(1048576 bytes)";
+    const auto expectShort = [&](const std::string& error, const std::string& what) {
+        EXPECT_EQ(lines(error).size(), 1u) << what;
+        EXPECT_LT(error.size(), 400u) << what;
+        EXPECT_NE(error.find(length), std::string::npos) << what << ": " << error.substr(0, 400);
+    };
+    std::string out, err;
+    EXPECT_EQ(runAirmass({"airmass"}, "0,6371,0,0,1,0,0,100,8," + word + "\n", out, err), 1);
+    expectShort(err, "airmass field");
+    expectShort(runMie({"--n", "1.33", "--k", "0", "--x", word}).err, "mie --x");
+    expectShort(runMie({"--n", "1.33", "--k", "0", "--x", "1", "--angles-deg", huge}).err, "mie --angles-deg");
+    expectShort(runMie({"--n", "1.33", "--k", "0", "--x", "1", "--" + word.substr(2), "1"}).err, "unknown option");
+    expectShort(runTables({word, "--energy-kev", "5"}).err, "tables TABLE");
+    expectShort(runAccuracy({"--scene", "s.toml", "--size", word}).err, "accuracy --size");
+    expectShort(runPlasma({word}).err, "plasma ACTION");
+    try {
+        parseRender({"--wall", "w.toml", "--scene", "s.toml", "--backend", word});
+        ADD_FAILURE() << "render --backend: no error";
+    } catch (const UsageError& e) {
+        expectShort(e.what(), "render --backend");
+    }
+    // The control server takes lines of up to 1024 bytes.
+    for (const std::string& line : {std::string(1000, 'w'), "speed " + std::string(1000, '7')}) {
+        try {
+            control::parseCommand(line);
+            ADD_FAILURE() << "control: no error";
+        } catch (const control::CommandError& e) {
+            EXPECT_LT(std::string(e.what()).size(), 400u) << e.what();
+            EXPECT_NE(std::string(e.what()).find("(1000 bytes)"), std::string::npos) << e.what();
+        }
+    }
+    const std::filesystem::path scene = std::filesystem::temp_directory_path() / "aurorawall-echo-test.toml";
+    std::ofstream(scene) << "[scene]\nname = \"echo\"\ncomponents = [\"" << word << "\"]\n";
+    try {
+        components::loadScene(scene.string());
+        ADD_FAILURE() << "scene: no error";
+    } catch (const InputError& e) {
+        expectShort(e.what(), "scene component");
+    }
+    std::filesystem::remove(scene);
+    // A control character typed into a value stays inside the one line.
+    const Result angles = runMie({"--n", "1.33", "--k", "0", "--x", "1", "--angles-deg", "1,2\n,3"});
+    EXPECT_EQ(angles.status, 2);
+    EXPECT_EQ(lines(angles.err).size(), 1u) << angles.err;
+    EXPECT_NE(angles.err.find("'2\\n'"), std::string::npos) << angles.err;
 }
 
 // ---- render --cost-map: option, colour map and scale bar ----

@@ -121,11 +121,12 @@ expect 2 "^aurorawall plasma: missing the action \(allowed: verify, soak, accura
 expect 2 "^aurorawall plasma: unknown action 'run' \(allowed: verify, soak, accuracy\)" plasma run
 expect 2 "^aurorawall plasma: --case: unknown value 'ion-acoustic' \(allowed: all, langmuir, langmuir-2d, langmuir-3d, .*landau, diocotron\)" \
     plasma verify --case ion-acoustic
-expect 2 "^aurorawall plasma: --wp-dt must be in \(0, 2\): the leapfrog is unstable" plasma verify --wp-dt 2
-expect 2 "^aurorawall plasma: --wc-dt must be a finite number > 0" plasma verify --case boris --wc-dt 0
+expect 2 "^aurorawall plasma: --wp-dt must be in \[0.01, 2\): the leapfrog is unstable" plasma verify --wp-dt 2
+expect 2 "^aurorawall plasma: --wp-dt must be in \[0.01, 2\)" plasma verify --wp-dt 1e-300
+expect 2 "^aurorawall plasma: --wc-dt must be in \[1e-06, 1000000\]" plasma verify --case boris --wc-dt 0
 expect 2 "^aurorawall plasma: .*--wp-dt" plasma verify --wp-dt fast
 expect 0 "--dx-lambda-d" plasma --help
-expect 2 "^aurorawall plasma: --dx-lambda-d must be a finite number > 0" plasma verify --case heating --dx-lambda-d 0
+expect 2 "^aurorawall plasma: --dx-lambda-d must be in \[0.01, 100\]" plasma verify --case heating --dx-lambda-d 0
 expect 2 "^aurorawall plasma: .*--dx-lambda-d" plasma verify --case heating --dx-lambda-d wide
 expect 0 "--device" plasma --help
 expect 2 "^aurorawall plasma: --device: unknown value 'tpu' \(allowed: cpu, gpu\)" plasma verify --device tpu

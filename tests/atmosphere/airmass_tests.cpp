@@ -333,6 +333,18 @@ TEST(AirmassExtremes, FiniteEverywhereAndDefaultCloseToExact)
     }
 }
 
+// lawlor-erfcx caps the density at e^60 deep inside the planet like every method: from the centre its
+// e^{R/H} overflowed and 2·inf − inf gave NaN.
+TEST(AirmassExtremes, LawlorErfcxFiniteFromThePlanetsCentre)
+{
+    for (const AirmassRay& ray : {AirmassRay{{0.0, 0.0, 0.0}, {1.0, 0.0, 0.0}, 0.0, 100.0, 8.0, kR},
+                                  AirmassRay{{0.0, 0.0, 0.0}, {0.0, 0.0, 1.0}, -7000.0, 7000.0, 8.0, kR}})
+        for (AirmassPrecision precision : {AirmassPrecision::Float32, AirmassPrecision::Float64}) {
+            const double airmass = evaluate("lawlor-erfcx", ray, precision);
+            EXPECT_TRUE(std::isfinite(airmass) && airmass > 0.0) << airmass;
+        }
+}
+
 // Random finite inputs of any magnitude (1e-45 to 1e38, either sign, some zeros; H > 0, R ≥ 0): the
 // default stays finite in float and double (its lengths are scaled by a power of two first).
 TEST(AirmassExtremes, DefaultFiniteForRandomInputsOfAnyMagnitude)
@@ -341,6 +353,24 @@ TEST(AirmassExtremes, DefaultFiniteForRandomInputsOfAnyMagnitude)
     for (const AirmassRay& ray : randomFiniteRays(50000, 11, -45.0, 38.0))
         for (AirmassPrecision precision : {AirmassPrecision::Float32, AirmassPrecision::Float64})
             if (!std::isfinite(evaluate(kDefaultAirmassMethod, ray, precision))) ++nonFinite;
+    EXPECT_EQ(nonFinite, 0);
+}
+
+// The reference stays finite for any ray the airmass command takes (every field up to float's largest
+// magnitude, H from float's smallest): on these two the integrand of a piece came out e^{+huge} = inf at
+// a quadrature node rounded to just below the piece's lower end (pieces narrower than an ulp of x, a
+// tiny H); both lie far above an atmosphere of H ≤ 1e-19 km, so the airmass is 0.
+TEST(ExactAirmass, FiniteForAnyRayInFloatsRange)
+{
+    EXPECT_EQ(exactAirmass({100.0, 100.0, 8.0}, {6371.0, 100.0, -3.4028234663852886e+38}, 5.846705493191962e-23,
+                           -3.721055025970012e+35, 4.323114095597758e-20, 1.1754943508222875e-38),
+              0.0);
+    EXPECT_EQ(exactAirmass({-4.2270453091952314e-11, 8.0, 1.0}, {-1.401298464324817e-45, -5.957609930908727e-31, 1.0},
+                           1.0, 6371.0, 1.5640984751858937e-31, 0.0),
+              0.0);
+    int nonFinite = 0;
+    for (const AirmassRay& ray : randomFiniteRays(500, 5, -45.0, 38.5))
+        if (!std::isfinite(exactAirmass(ray))) ++nonFinite;
     EXPECT_EQ(nonFinite, 0);
 }
 

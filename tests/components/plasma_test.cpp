@@ -360,12 +360,32 @@ TEST(PlasmaVerify, LandauDampingAtAnotherWaveNumber)
     EXPECT_THROW(verifyLandau(0.2, kLandauMaxKDebye + 0.01), std::domain_error);
 }
 
-// Outside the leapfrog's stability the cases refuse to run.
-TEST(PlasmaVerify, RefusesAnUnstableTimeStep)
+// Outside the leapfrog's stability, and where the step counts (∝ 1/ω_pΔt) or the rounding of the
+// gyration run away, the cases refuse to run: at ω_pΔt = 1e-300 the counts overflowed and langmuir
+// measured NaN, exb did at ω_cΔt = 1e-300 and 1e300, and heating at Δx/λ_D = 1e300.
+TEST(PlasmaVerify, RefusesAnUnstableOrUnresolvedTimeStep)
 {
     EXPECT_THROW(verifyLangmuir(2.0), std::domain_error);
+    EXPECT_THROW(verifyLangmuir(1e-300), std::domain_error);
     EXPECT_THROW(verifyTwoStream(-0.1), std::domain_error);
+    EXPECT_THROW(verifyHeating(std::nextafter(kMinVerifyWpDt, 0.0), 1.0), std::domain_error);
     EXPECT_THROW(verifyBoris(0.0), std::domain_error);
+    EXPECT_THROW(verifyExB(1e-300), std::domain_error);
+    EXPECT_THROW(verifyExB(std::nextafter(kMaxVerifyWcDt, 2e6)), std::domain_error);
+    EXPECT_THROW(verifyHeating(0.2, 1e300), std::domain_error);
+    EXPECT_THROW(verifyHeating(0.2, std::nextafter(kMinHeatingDxDebye, 0.0)), std::domain_error);
+}
+
+// At a coarse ω_pΔt (1.5 to 2, under 5 samples per period) the largest |field| between two zero
+// crossings can be the first sample past one, smaller than the sample before it: the parabola through
+// them bent up and its peak's logarithm was NaN. The damping rate is then poor, but finite.
+TEST(PlasmaVerify, LandauAtACoarseTimeStepMeasuresAFiniteRate)
+{
+    for (const double wpDt : {1.5, 1.9, std::nextafter(2.0, 0.0)}) {
+        const std::vector<VerifyRow> rows = verifyLandau(wpDt, 0.5, 1 << 16);
+        EXPECT_TRUE(std::isfinite(row(rows, "damping_rate_over_wp").measured)) << wpDt;
+        EXPECT_TRUE(std::isfinite(row(rows, "frequency_over_wp").measured)) << wpDt;
+    }
 }
 
 // Langmuir in 2D, the wave along the diagonal of 256² cells: the leapfrog relation to 3e-4. The grid's

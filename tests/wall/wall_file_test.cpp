@@ -323,6 +323,19 @@ TEST(WallFileError, MissingFileNamesTheFile)
     EXPECT_EQ(wholeFileError(path), path + ": cannot open the wall file");
 }
 
+// A line of a megabyte (the files may have 16 MiB) is an error like any other, not a stack overflow
+// in a regular expression: a screen name, and a line read for the old INI form.
+TEST(WallFileError, MegabyteLinesAreErrorsNamingTheLine)
+{
+    const std::string path = (std::filesystem::temp_directory_path() / "aurorawall-long-line.toml").string();
+    const std::string megabyte(1 << 20, 'a');
+    std::ofstream(path) << "[[screen]]\nname = \"" << megabyte << "?\"\n";
+    EXPECT_NE(wholeFileError(path).find(path + ":2: screen.name: must be letters"), std::string::npos);
+    std::ofstream(path) << "[screen." << megabyte << "]\n";
+    EXPECT_EQ(wholeFileError(path).rfind(path + ":1: ", 0), 0u);
+    std::filesystem::remove(path);
+}
+
 TEST(WallFileError, IniFileGetsOneLineSayingToConvert)
 {
     const std::string path = std::string(WALL_TEST_DATA_DIR) + "/old-desktop-2x2.ini";

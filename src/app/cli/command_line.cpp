@@ -3,6 +3,20 @@
 #include <sstream>
 
 namespace aurorawall::cli {
+namespace {
+
+// Boost.Program_options' messages quote what was typed (an option, its value) from substitutions that
+// its error class keeps protected; a class derived from it may reach them, to pass each through
+// echoedInput.
+struct EchoedErrorValues : po::error_with_option_name {
+    static void cut(po::error_with_option_name& error)
+    {
+        for (auto& [placeholder, text] : error.*(&EchoedErrorValues::m_substitutions))
+            text = echoedInput(text);
+    }
+};
+
+} // namespace
 
 CommandLine::CommandLine(std::string command, const std::string& usage)
     : command_(std::move(command)), visible_(usage + "\nOptions")
@@ -25,6 +39,9 @@ bool CommandLine::parse(int argc, char** argv)
         if (values_.count("help"))
             return false;
         po::notify(values_);
+    } catch (po::error_with_option_name& e) {
+        EchoedErrorValues::cut(e);
+        throw usageError(e.what());
     } catch (const po::error& e) {
         throw usageError(e.what());
     }

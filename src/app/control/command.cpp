@@ -1,5 +1,7 @@
 #include "app/control/command.h"
 
+#include "common/input_error.h"
+
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -55,17 +57,8 @@ double number(const std::string& word, const Grammar& g)
     char* end = nullptr;
     const double value = std::strtod(word.c_str(), &end);
     if (!isDecimal(word) || *end != '\0' || !std::isfinite(value))
-        throw CommandError(std::string(g.word) + ": '" + word + "' is not a finite number (usage: " + g.usage + ")");
+        throw CommandError(std::string(g.word) + ": '" + echoedInput(word) + "' is not a finite number (usage: " + g.usage + ")");
     return value;
-}
-
-// The word as printable ASCII: other bytes (a UTF-8 sequence, raw binary) become '?'.
-std::string printable(std::string word)
-{
-    for (char& c : word)
-        if (static_cast<unsigned char>(c) < 0x20 || static_cast<unsigned char>(c) >= 0x7f)
-            c = '?';
-    return word;
 }
 
 void checkRange(bool ok, const std::string& message)
@@ -99,8 +92,7 @@ Command parseCommand(const std::string& line)
         if (words[0] == g.word)
             grammar = &g;
     if (!grammar)
-        throw CommandError("unknown command '" + printable(words[0].substr(0, 40)) + "' (commands: " + knownWords() +
-                           ")");
+        throw CommandError("unknown command '" + echoedInput(words[0]) + "' (commands: " + knownWords() + ")");
     const Grammar& g = *grammar;
     Command c;
     c.kind = g.kind;

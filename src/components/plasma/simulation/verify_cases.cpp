@@ -106,10 +106,10 @@ std::vector<VerifyRow> rows(std::vector<VerifyRow> settings, const std::vector<V
     return settings;
 }
 
-void requirePositive(double wcDt)
+void requireResolvedGyration(double wcDt)
 {
-    if (!(wcDt > 0.0) || !std::isfinite(wcDt))
-        throw std::domain_error("omega_c dt must be a finite number > 0");
+    if (!(wcDt >= kMinVerifyWcDt && wcDt <= kMaxVerifyWcDt))
+        throw std::domain_error("omega_c dt must be in [1e-6, 1e6]");
 }
 
 class CpuRun : public PicRun {
@@ -213,8 +213,8 @@ VerifyHistory exponentialHistory(const std::string& timeName, const std::string&
 
 void requireLeapfrogStable(double wpDt)
 {
-    if (!(wpDt > 0.0 && wpDt < 2.0))
-        throw std::domain_error("omega_p dt must be in (0, 2): the leapfrog is unstable from 2 on");
+    if (!(wpDt >= kMinVerifyWpDt && wpDt < 2.0))
+        throw std::domain_error("omega_p dt must be in [0.01, 2): the leapfrog is unstable from 2 on");
 }
 
 } // namespace
@@ -317,7 +317,7 @@ std::vector<VerifyRow> verifyLangmuir3D(double wpDt, int cells, const PicDevice&
 
 std::vector<VerifyRow> verifyBoris(double wcDt, long steps, const PicDevice& device)
 {
-    requirePositive(wcDt);
+    requireResolvedGyration(wcDt);
     const double dt = wcDt / cyclotronFrequency(kMagneticField);
     const std::vector<glm::dvec3> v = device.testParticleVelocities({3e5, 0.0, 1e5}, glm::dvec3(0.0),
                                                                     {0.0, 0.0, kMagneticField}, dt, steps);
@@ -335,7 +335,7 @@ std::vector<VerifyRow> verifyBoris(double wcDt, long steps, const PicDevice& dev
 
 std::vector<VerifyRow> verifyExB(double wcDt, const PicDevice& device)
 {
-    requirePositive(wcDt);
+    requireResolvedGyration(wcDt);
     constexpr long kSteps = 1000;
     const double dt = wcDt / cyclotronFrequency(kMagneticField);
     const glm::dvec3 b(0.0, 0.0, kMagneticField), e(0.5, 0.0, 0.0); // T, V/m: E/B = 1e4 m/s
@@ -439,8 +439,8 @@ std::vector<VerifyRow> verifyHeating(double wpDt, double dxOverDebye, std::uint6
                                      int particlesPerCell, VerifyHistory* history)
 {
     requireLeapfrogStable(wpDt);
-    if (!(dxOverDebye > 0.0) || !std::isfinite(dxOverDebye))
-        throw std::domain_error("dx/lambda_D must be a finite number > 0");
+    if (!(dxOverDebye >= kMinHeatingDxDebye && dxOverDebye <= kMaxHeatingDxDebye))
+        throw std::domain_error("dx/lambda_D must be in [0.01, 100]");
     if (particlesPerCell < 1)
         throw std::domain_error("particles per cell must be at least 1");
     constexpr int kCells = 64;
@@ -534,8 +534,12 @@ std::vector<VerifyRow> verifyLandau(double wpDt, double kLambda, int particles, 
         long best = crossing[c] + 1;
         for (long n = best; n <= crossing[c + 1]; ++n)
             if (std::abs(s[n]) > std::abs(s[best])) best = n;
+        // The vertex of the parabola through the three samples, where they bend down about the largest;
+        // where they do not (a first sample past the crossing smaller than the one before it, at a
+        // coarse ω_pΔt), the sample itself.
         const double a = std::abs(s[best - 1]), b = std::abs(s[best]), d = std::abs(s[best + 1]);
-        const double offset = 0.5 * (a - d) / (a - 2.0 * b + d);
+        const double curvature = a - 2.0 * b + d;
+        const double offset = b >= a && b >= d && curvature < 0.0 ? 0.5 * (a - d) / curvature : 0.0;
         peakTime.push_back((double(best) + offset) * wpDt);
         logPeak.push_back(std::log(b - 0.25 * (a - d) * offset));
     }
@@ -575,7 +579,7 @@ std::vector<VerifyRow> verifyLandau(double wpDt, double kLambda, int particles, 
 
 std::vector<VerifyRow> verifyDiocotron(double wcDt, double wpOverWc, const PicDevice& device, VerifyHistory* history)
 {
-    requirePositive(wcDt);
+    requireResolvedGyration(wcDt);
     if (!(wpOverWc > 0.0 && wpOverWc < 1.0))
         throw std::domain_error("omega_p/omega_c must be in (0, 1): the guiding-centre regime");
     requireLeapfrogStable(wpOverWc * wcDt);

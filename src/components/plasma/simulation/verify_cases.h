@@ -84,7 +84,15 @@ double sampledCosineFrequency(const std::vector<double>& s);
 
 // Each case fills `history`, where given, with the samples its measurement used.
 
-// Cold plasma oscillation: frequency against sin(ωΔt/2) = ω_pΔt/2 (0 < ω_pΔt < 2).
+// The time steps the cases take (std::domain_error outside): ω_pΔt in [kMinVerifyWpDt, 2), the leapfrog
+// being unstable from 2 on and the runs' step counts growing as 1/ω_pΔt (every case at 0.01 takes about
+// 10 minutes on a 2-core CPU; at 1e-300 the counts overflowed); ω_cΔt in [kMinVerifyWcDt, kMaxVerifyWcDt],
+// where the E×B case's velocity circle is resolved (its centre came out NaN below 1e-150 and at 1e16).
+inline constexpr double kMinVerifyWpDt = 0.01;
+inline constexpr double kMinVerifyWcDt = 1e-6;
+inline constexpr double kMaxVerifyWcDt = 1e6;
+
+// Cold plasma oscillation: frequency against sin(ωΔt/2) = ω_pΔt/2.
 std::vector<VerifyRow> verifyLangmuir(double plasmaFrequencyTimesDt, const PicDevice& device = cpuDevice(),
                                       VerifyHistory* history = nullptr);
 // The same on a 2D grid, the wave along the diagonal of a square box.
@@ -94,7 +102,7 @@ std::vector<VerifyRow> verifyLangmuir2D(double plasmaFrequencyTimesDt, int cells
 std::vector<VerifyRow> verifyLangmuir3D(double plasmaFrequencyTimesDt, int cellsPerAxis = 32,
                                         const PicDevice& device = cpuDevice(), VerifyHistory* history = nullptr);
 // One electron in a uniform B: rotation per step against 2·atan(ω_cΔt/2), and the relative change of
-// its speed over the run (expected 0: rounding only). ω_cΔt > 0.
+// its speed over the run (expected 0: rounding only).
 std::vector<VerifyRow> verifyBoris(double cyclotronFrequencyTimesDt, long steps = 1000,
                                    const PicDevice& device = cpuDevice());
 // One electron in crossed uniform E and B: the centre of its velocity circle (the gyrocentre's
@@ -112,10 +120,15 @@ inline constexpr double kHeatingRunEndWp = 200.0;
 // Numerical heating of a thermal plasma (random start, `seed`, particlesPerCell on 64 cells) on a grid
 // of spacing dxOverDebyeLength · λ_D: the rate d(kT)/dt/(kT ω_p) of the temperature along x, from a
 // least-squares line through kT_x(t). No closed form: the grid's aliasing heats ever faster as Δx/λ_D
-// grows past ~1 (Birdsall & Langdon 1991, ch. 12). dxOverDebyeLength > 0, particlesPerCell ≥ 1.
+// grows past ~1 (Birdsall & Langdon 1991, ch. 12). dxOverDebyeLength in [kMinHeatingDxDebye,
+// kMaxHeatingDxDebye]: below, no heating is resolved (already at 0.5 the rate is noise); above, kT_x
+// grows a hundredfold within the run, so the line is no rate (at 1e300 the grid's length overflowed).
+// particlesPerCell ≥ 1.
 std::vector<VerifyRow> verifyHeating(double plasmaFrequencyTimesDt, double dxOverDebyeLength, std::uint64_t seed = 1,
                                      const PicDevice& device = cpuDevice(), int particlesPerCell = 64,
                                      VerifyHistory* history = nullptr);
+inline constexpr double kMinHeatingDxDebye = 0.01;
+inline constexpr double kMaxHeatingDxDebye = 100.0;
 // The kλ_D the landau case measures (see verifyLandau).
 inline constexpr double kLandauMinKDebye = 0.35;
 inline constexpr double kLandauMaxKDebye = 0.7;
@@ -128,8 +141,7 @@ std::vector<VerifyRow> verifyLandau(double plasmaFrequencyTimesDt, double kDebye
 
 // The diocotron instability of a cold electron strip (thickness 2a, mode 1 at ka = 0.4) in a strong
 // B on a 2D grid: the exponential growth rate of the mode's field energy, halved, against the
-// guiding-centre rate diocotronGrowthRate, in units of ω_D = ω_p²/ω_c. ω_cΔt > 0, ω_p/ω_c in (0, 1),
-// ω_pΔt < 2.
+// guiding-centre rate diocotronGrowthRate, in units of ω_D = ω_p²/ω_c. ω_p/ω_c in (0, 1).
 std::vector<VerifyRow> verifyDiocotron(double cyclotronFrequencyTimesDt, double plasmaOverCyclotronFrequency = 0.1,
                                        const PicDevice& device = cpuDevice(), VerifyHistory* history = nullptr);
 
