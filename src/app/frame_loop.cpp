@@ -189,6 +189,7 @@ cluster::FrameStats runFrames(WallSession& session, const cluster::MpiWorld& wor
     if (world.isMaster() && !session.options.movieDir.empty())
         movie.emplace(session.options.movieDir, session.options.movieExr, session.toneMap);
     std::optional<PathRecorder> recorder;
+    SteadyClock::time_point lastRecordWrite = SteadyClock::now();
     if (world.isMaster() && !session.options.recordPath.empty()) {
         const cluster::ClockSettings c = clockSettings(session);
         recorder.emplace(session.options.recordPath, session.options.sceneFile, c.startTimeS, c.timeStepS);
@@ -226,8 +227,20 @@ cluster::FrameStats runFrames(WallSession& session, const cluster::MpiWorld& wor
             cluster::FrameState state = clock->next(stopRequested);
             previewDue = session.web && session.web->previewWanted(); // only while a browser watches
             state.gatherWall = !screenshots.empty() || movie.has_value() || session.console != nullptr || previewDue;
-            if (recorder && !state.quit)
+            if (recorder && !state.quit) {
                 recorder->add(state);
+                // Written as it goes, whole and atomically, at most once a second: a run that fails
+                // or is stopped loses at most its last second of flight.
+                if (frameStart - lastRecordWrite >= std::chrono::seconds(1) && session.recordError.empty()) {
+                    try {
+                        recorder->write();
+                        lastRecordWrite = frameStart;
+                    } catch (const std::exception& e) {
+                        session.recordError = std::string("--record-path: ") + e.what();
+                        stopRequested = true;
+                    }
+                }
+            }
             std::vector<std::string> hud;
             if (hudShown)
                 hud = hudFor(*clock, stats, wallStatus.fps, session.scene.planetRadiusKm);

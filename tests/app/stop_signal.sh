@@ -20,13 +20,17 @@ grep -q 'stopped by SIGTERM after [0-9]* frames' "$WORK/one.log" || { cat "$WORK
 note "SIGTERM to one rank (pid $rank) stopped the wall: $(grep -o 'stopped by .*' "$WORK/one.log")"
 
 "$MPIEXEC" -n 4 "${MPI_FLAGS[@]}" -x LP_NUM_THREADS=1 "$AW" render --wall "$DATA/tiny-2x2.toml" --scene "$SCENE" \
-    --frames 100000 --quiet --stats "$WORK/s.csv" --movie "$WORK/movie" --out "$WORK/out" >"$WORK/log" 2>&1 &
+    --frames 100000 --quiet --stats "$WORK/s.csv" --movie "$WORK/movie" --out "$WORK/out" \
+    --record-path "$WORK/flight.toml" >"$WORK/log" 2>&1 &
 job=$!
 for _ in $(seq 600); do
-    [ "$(wc -l <"$WORK/s.csv" 2>/dev/null || echo 0)" -ge 6 ] && break
+    [ "$(wc -l <"$WORK/s.csv" 2>/dev/null || echo 0)" -ge 6 ] && [ -s "$WORK/flight.toml" ] && break
     kill -0 $job 2>/dev/null || { cat "$WORK/log"; fail "the wall ended before the signal"; }
     sleep 0.1
 done
+# The recorded flight is written as it goes (at most a second behind), before the run ends.
+[ -s "$WORK/flight.toml" ] || fail "no --record-path file while the wall runs"
+grep -q '^\[\[camera.key\]\]' "$WORK/flight.toml" || fail "the recorded flight has no keys: $(head -c 300 "$WORK/flight.toml")"
 kill -INT $job
 start=$(now)
 status=0
@@ -46,5 +50,7 @@ listed=$(($(wc -l <"$WORK/movie/frames.csv") - 1))
 [ "$pngs" -ge "$((frames - 1))" ] && [ "$listed" -eq "$pngs" ] ||
     fail "$pngs movie frames and $listed listed in frames.csv for $frames frames drawn"
 [ -z "$(find "$WORK" -name '*.tmp*')" ] || fail "a temporary file was left: $(find "$WORK" -name '*.tmp*')"
+keys=$(grep -c '^\[\[camera.key\]\]' "$WORK/flight.toml")
+[ "$keys" -eq "$frames" ] || fail "the recorded flight has $keys keys for $frames frames drawn"
 [ -z "$(pgrep -f "$WORK/s.csv")" ] || fail "a rank is still running"
 echo "PASS stop_signal ($frames frames, $rows rows, $pngs movie frames)"
