@@ -81,6 +81,34 @@ async function pollPreview() {
   }
 }
 
+// Each rank's render time in the last frame as a bar (longest: full width), red where the rank lags:
+// it drew an older frame than the master's, or took more than 1.5 times the median.
+async function pollRanks() {
+  try {
+    const response = await request("/ranks");
+    if (!response.ok) return;
+    const last = await response.json();
+    if (!last.ranks) return;
+    const times = last.ranks.map((r) => r.render_ms);
+    const longest = Math.max(...times, 1e-9);
+    const median = [...times].sort((a, b) => a - b)[Math.floor(times.length / 2)];
+    $("ranks").replaceChildren(...last.ranks.map((r, i) => {
+      const row = document.createElement("div");
+      row.className = "rank" + (r.frame < last.frame || r.render_ms > 1.5 * median ? " lagging" : "");
+      const bar = document.createElement("span");
+      bar.className = "bar";
+      bar.style.width = `${(100 * r.render_ms / longest).toFixed(1)}%`;
+      const label = document.createElement("span");
+      label.className = "label";
+      label.textContent = `rank ${i}: ${r.render_ms.toFixed(1)} ms, waited ${r.wait_ms.toFixed(1)} ms`;
+      row.append(bar, label);
+      return row;
+    }));
+  } catch (e) {
+    // as for the status
+  }
+}
+
 function checkAlive() {
   const silentS = (Date.now() - lastAnswerAt) / 1000;
   $("alarm").hidden = silentS * 1000 < STALE_MS;
@@ -122,7 +150,7 @@ $("token-set").onclick = () => {
 loadPresets();
 // One poll at a time each: a slow wall is not flooded with requests.
 (async function loop() {
-  await Promise.all([pollStatus(), pollPreview()]);
+  await Promise.all([pollStatus(), pollPreview(), pollRanks()]);
   checkAlive();
   setTimeout(loop, POLL_MS);
 })();

@@ -315,6 +315,8 @@ cluster::FrameStats runFrames(WallSession& session, const cluster::MpiWorld& wor
             if (session.options.verbose)
                 std::printf("  %s\n", session.renderer->frameLog().c_str());
             wallStatus.frame = record.frame;
+            if (session.web)
+                session.web->showRanks(record);
             try {
                 stats.add(std::move(record));
             } catch (const std::exception& e) {

@@ -46,6 +46,9 @@ check [ "$(curl -s -o /dev/null -w '%{http_code}' "$url/console.js")" = 200 ]
 check [ "$(curl -s -o /dev/null -w '%{http_code}' "$url/console.css")" = 200 ]
 check [ "$(get /presets)" = 200 ]
 check grep -q '"ground-65n"' "$WORK/body"
+# Each rank's last frame (2 ranks): the frame it drew and its times.
+for _ in $(seq 100); do [ "$(get /ranks)" = 200 ] && grep -q '"render_ms"' "$WORK/body" && break; sleep 0.1; done
+check python3 -c 'import json, sys; r = json.load(open(sys.argv[1])); assert len(r["ranks"]) == 2 and all(k["frame"] == r["frame"] and k["render_ms"] > 0 for k in r["ranks"]), r' "$WORK/body"
 
 # The preview: a PNG (503 until the first wall is gathered), a new one once a frame shows a new
 # camera. (The test scene's curtains drift, but on this 64x36 wall not by a whole 8-bit step: its
@@ -147,6 +150,7 @@ if command -v chromium >/dev/null; then
     check grep -q '<button type="button">ground-65n</button>' "$WORK/dom.html"
     check grep -Eq '<img id="preview" [^>]*src="blob:' "$WORK/dom.html"
     check grep -q '<p id="alarm" class="alarm" hidden' "$WORK/dom.html"
+    check [ "$(grep -o 'rank [0-9]: [0-9.]* ms, waited' "$WORK/dom.html" | wc -l)" -eq 2 ]
     note "the page's script ran in Chromium: $(grep -o '<p id="status" class="status">[^<]*' "$WORK/dom.html" | sed 's/.*>//')"
 else
     note "SKIP the browser part: chromium is not installed"

@@ -16,6 +16,7 @@
 #include <cmath>
 #include <filesystem>
 #include <mutex>
+#include <sstream>
 #include <thread>
 #include <vector>
 
@@ -62,6 +63,7 @@ struct WebConsole::Impl {
     std::mutex previewMutex;
     std::shared_ptr<const io::Image> canvas; // the last wall handed over, not yet encoded
     std::shared_ptr<const std::string> png;  // the last encoded preview
+    std::string ranksJson = "{}";            // GET /ranks: the last frame's reports (previewMutex)
 
     bool authorized(const httplib::Request& req, httplib::Response& res) const
     {
@@ -162,6 +164,12 @@ WebConsole::WebConsole(WebSettings settings) : impl_(std::make_unique<Impl>())
         if (w.authorized(req, res))
             w.presets(res);
     });
+    s.Get("/ranks", [&w](const httplib::Request& req, httplib::Response& res) {
+        if (!w.authorized(req, res))
+            return;
+        std::lock_guard<std::mutex> lock(w.previewMutex);
+        res.set_content(w.ranksJson, "application/json");
+    });
     s.Get("/preview.png", [&w](const httplib::Request& req, httplib::Response& res) {
         if (w.authorized(req, res))
             w.preview(res);
@@ -194,6 +202,21 @@ WebConsole::~WebConsole()
     impl_->mailbox.close(); // first: a handler waiting for the wall returns, so the server can stop
     impl_->server.stop();
     impl_->thread.join();
+}
+
+void WebConsole::showRanks(const cluster::FrameRecord& record)
+{
+    std::ostringstream json;
+    json.precision(4);
+    json << "{\"frame\":" << record.frame << ",\"imbalance\":" << record.imbalance() << ",\"ranks\":[";
+    for (size_t r = 0; r < record.ranks.size(); ++r) {
+        const cluster::RankReport& report = record.ranks[r];
+        json << (r ? "," : "") << "{\"frame\":" << report.frame << ",\"render_ms\":" << report.renderMs
+             << ",\"wait_ms\":" << report.waitMs << "}";
+    }
+    json << "]}";
+    std::lock_guard<std::mutex> lock(impl_->previewMutex);
+    impl_->ranksJson = json.str();
 }
 
 int WebConsole::port() const { return impl_->port; }

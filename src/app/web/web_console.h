@@ -1,11 +1,14 @@
 #pragma once
 // The operator's console in a browser (render --web-port, docs/driving.md "Browser console"): an
 // HTTP server on the master, on a thread of its own, serving the page from the data directory's
-// web/ folder, POST /command, GET /status, GET /presets and GET /preview.png.
+// web/ folder, POST /command, GET /status, GET /presets, GET /preview.png and GET /ranks (each
+// rank's last frame: the frame it drew, its render and wait times; the master's frame and the
+// imbalance).
 // It never touches the wall itself: commands and status go through a CommandMailbox that the frame
 // loop serves with the control port's lines, and the preview is the last wall the frame loop
 // handed over, downsampled and encoded here, on request.
 #include "app/control/command_channel.h"
+#include "cluster/frame_stats.h"
 #include "io/image.h"
 #include "io/tone_map.h"
 
@@ -46,8 +49,10 @@ public:
     control::CommandChannel& commands();
     // whether to gather the wall this frame for the preview;
     bool previewWanted() const;
-    // the gathered wall (rows top-down, radiance), taken over: downsampled and encoded when asked for.
+    // the gathered wall (rows top-down, radiance), taken over: downsampled and encoded when asked for;
     void showPreview(io::Image&& canvas);
+    // each rank's report of the last frame, for GET /ranks.
+    void showRanks(const cluster::FrameRecord& record);
 
 private:
     struct Impl;
