@@ -8,9 +8,11 @@
 #include "io/image.h"
 #include "io/png.h"
 
+#include <cerrno>
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <stdexcept>
 #include <utility>
@@ -56,22 +58,62 @@ io::Image assembleWall(const wall::Wall& wall, const std::vector<char>& bytes)
     return canvas;
 }
 
+// The tile EXR of a screen under its final name, and under the name it is staged as until every
+// rank has written its tiles.
+std::string tilePath(const WallSession& session, int screen)
+{
+    return session.options.outDir + "/tile-" + session.wall.screens[screen].name + ".exr";
+}
+std::string stagedTilePath(const WallSession& session, int screen)
+{
+    return session.options.outDir + "/.tile-" + session.wall.screens[screen].name + ".exr.staged";
+}
+
 // Each screen as its target holds it, rounded to half floats (the bands drawn elsewhere arrived as
-// halves already), whoever drew its bands; with writeTiles also written as tile EXRs.
+// halves already), whoever drew its bands; with writeTiles also written as tile EXRs: all or none.
+// Every rank stages its tiles; only when all have succeeded do they take their final names, else
+// the staged ones are removed, and the failure is one line from the master (the reason, the same on
+// every rank that failed for it, e.g. a full disk).
 int readScreens(WallSession& session, const cluster::MpiWorld& world, bool writeTiles,
                 std::vector<std::pair<int, io::Image>>& images)
 {
-    return agreedStep(world, [&] {
+    std::vector<int> staged;
+    const int status = agreedStep(world, [&] {
         for (ScreenTarget& s : session.screens) {
             session.context->makeCurrent(s.window);
             images.emplace_back(s.screen, io::roundedToHalf(io::imageFromGlReadback(
                                               s.target->width(), s.target->height(), s.target->readback())));
-            if (writeTiles)
-                io::writeExr(session.options.outDir + "/tile-" + session.wall.screens[s.screen].name + ".exr",
-                             images.back().second);
         }
         session.context->makeCurrent(0);
+        if (!writeTiles)
+            return;
+        for (const auto& [screen, image] : images) {
+            errno = 0;
+            try {
+                io::writeExr(stagedTilePath(session, screen), image);
+            } catch (const std::exception& e) {
+                // The reason without the file names, which differ from rank to rank: the system's
+                // error where there is one (a full disk), else the message's last clause.
+                const int error = errno;
+                const std::string reason = e.what();
+                const size_t clause = reason.rfind(": ");
+                throw std::runtime_error(
+                    "--tiles: the tiles could not be written into " + session.options.outDir + " (" +
+                    (error != 0 ? std::strerror(error)
+                                : clause == std::string::npos ? reason : reason.substr(clause + 2)) +
+                    ")");
+            }
+            staged.push_back(screen);
+        }
     });
+    for (int screen : staged) {
+        std::error_code ignored;
+        if (status == cli::kSuccess)
+            std::filesystem::rename(stagedTilePath(session, screen), tilePath(session, screen), ignored);
+        else
+            std::filesystem::remove(stagedTilePath(session, screen), ignored);
+    }
+    return status;
 }
 
 io::Image gatherScreens(const WallSession& session, const cluster::MpiWorld& world,
@@ -114,7 +156,7 @@ void MovieWriter::write(const io::Image& canvas, const cluster::FrameState& stat
         out << csv_;
         out.close();
         if (!out)
-            throw std::runtime_error(dir_ + "/frames.csv: write failed");
+            throw std::runtime_error(dir_ + "/frames.csv: write failed (" + std::strerror(errno) + ")");
     });
 }
 

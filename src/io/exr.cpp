@@ -51,7 +51,7 @@ void writeTemporaryExr(const std::string& temporaryPath, const Image& image, Exr
     }
     file.close();
     if (!file)
-        throw std::runtime_error(temporaryPath + ": write failed");
+        throw std::runtime_error(temporaryPath + ": write failed (" + std::strerror(errno) + ")");
 }
 
 } // namespace
