@@ -145,213 +145,293 @@ void showConsole(WallSession& session, const io::Image& canvas)
     session.context->makeCurrent(0);
 }
 
-} // namespace
 
-cluster::FrameStats runFrames(WallSession& session, const cluster::MpiWorld& world)
-{
-    const size_t bandCount = session.bands.size();
-    // The master alone keeps the clock and splits the bands.
-    std::optional<cluster::MasterClock> clock;
-    std::optional<BandSplit> split;
-    Navigation navigation(session.scene.planetRadiusKm);
-    std::vector<cluster::InputEvent> navigationEvents; // every rank's, gathered with the last frame
-    bool hudShown = false;                             // the master's: H in any window toggles it
-    gl::GamepadState gamepadBefore;
-    if (world.isMaster()) {
-        clock.emplace(clockSettings(session), session.scene.camera, session.exposure);
-        split.emplace(session.bands, world.size(), session.balanced,
-                      session.options.balanceBy);
+// The master's own state across frames: its clock and camera, the band split, the input and the
+// commands it serves, and the files it writes as the frames go.
+struct MasterState {
+    MasterState(WallSession& session, const cluster::MpiWorld& world)
+        : clock(clockSettings(session), session.scene.camera, session.exposure),
+          split(session.bands, world.size(), session.balanced, session.options.balanceBy),
+          navigation(session.scene.planetRadiusKm),
+          wallFacts{session.scene.planetRadiusKm,
+                    (session.options.dataDir.empty() ? dataDirectory() : session.options.dataDir) + "/config/scenes",
+                    session.options.outDir}
+    {
+        if (session.control)
+            commandChannels.add(*session.control);
+        if (session.web)
+            commandChannels.add(session.web->commands());
+        if (!session.options.movieDir.empty())
+            movie.emplace(session.options.movieDir, session.options.movieExr, session.toneMap);
+        if (!session.options.recordPath.empty()) {
+            const cluster::ClockSettings c = clockSettings(session);
+            recorder.emplace(session.options.recordPath, session.options.sceneFile, c.startTimeS, c.timeStepS);
+        }
     }
-    BandFrame bands(session.wall, session.bands, world.rank(), session.balanced);
-    std::vector<std::string> componentNames;
-    for (const scene::Component* c : session.scene.components())
-        componentNames.push_back(c->name());
-    cluster::FrameStats stats(pixelsPerFrame(session.wall), componentNames);
-    const std::string& statsFile = session.options.statsFile;
-    if (world.isMaster() && statsFile.size() > 4 && statsFile.compare(statsFile.size() - 4, 4, ".csv") == 0)
-        stats.streamCsv(statsFile, size_t(world.size()));
+
+    cluster::MasterClock clock;
+    BandSplit split;
+    Navigation navigation;
+    std::vector<cluster::InputEvent> navigationEvents; // every rank's, gathered with the last frame
+    bool hudShown = false;                             // H in any window toggles it
+    gl::GamepadState gamepadBefore;
     bool stopRequested = false;
-    bool previewDue = false; // the master's: this frame's wall goes to the browser console
+    bool previewDue = false; // this frame's wall goes to the browser console
     control::WallStatus wallStatus;
     std::optional<SteadyClock::time_point> lastScreenshot; // when the wall was last gathered for screenshots
-    const control::WallFacts wallFacts{session.scene.planetRadiusKm,
-                                       (session.options.dataDir.empty() ? dataDirectory() : session.options.dataDir) +
-                                           "/config/scenes",
-                                       session.options.outDir};
+    control::WallFacts wallFacts;
     std::vector<control::ScreenshotRequest> screenshots;
     control::PresetLoader presets;
-    control::ChannelSet commandChannels; // the master's: the control port's clients, the browser's requests
-    if (session.control)
-        commandChannels.add(*session.control);
-    if (session.web)
-        commandChannels.add(session.web->commands());
+    control::ChannelSet commandChannels; // the control port's clients, the browser's requests
     std::optional<MovieWriter> movie;
-    if (world.isMaster() && !session.options.movieDir.empty())
-        movie.emplace(session.options.movieDir, session.options.movieExr, session.toneMap);
     std::optional<PathRecorder> recorder;
     SteadyClock::time_point lastRecordWrite = SteadyClock::now();
-    if (world.isMaster() && !session.options.recordPath.empty()) {
-        const cluster::ClockSettings c = clockSettings(session);
-        recorder.emplace(session.options.recordPath, session.options.sceneFile, c.startTimeS, c.timeStepS);
-    }
-    std::vector<char> message(cluster::frameMessageBytes(bandCount));
-    auto waitStart = SteadyClock::now(); // from this rank's previous report to this frame's message
-    auto previousFrameStart = SteadyClock::now();
-    while (true) {
-        // 1. The master flies the camera by the window events of the last frame, carries out the
-        // remote control's commands and decides the frame; one broadcast tells every rank.
-        const auto frameStart = SteadyClock::now();
+};
+
+// One frame in four phases: the master decides it (input, commands, clock) and broadcasts it; every
+// rank draws its bands and exchanges them; windows present and flip together; the master observes
+// (the reports, statistics, the wall for screenshots, movie and previews).
+class FrameLoop {
+public:
+    FrameLoop(WallSession& session, const cluster::MpiWorld& world)
+        : session_(session), world_(world), bandCount_(session.bands.size()),
+          bands_(session.wall, session.bands, world.rank(), session.balanced),
+          stats_(pixelsPerFrame(session.wall), componentNames(session.scene)),
+          message_(cluster::frameMessageBytes(bandCount_))
+    {
         if (world.isMaster()) {
-            const double lastFrameS = std::chrono::duration<double>(frameStart - previousFrameStart).count();
-            if (!stats.records().empty()) // over the last frame: drawing, gathering, commands
-                wallStatus.fps = 1.0 / lastFrameS;
-            if (lastScreenshot)
-                wallStatus.sinceScreenshotS = std::chrono::duration<double>(frameStart - *lastScreenshot).count();
-            for (const cluster::InputEvent& e : navigationEvents)
-                if (e.type == gl::InputEvent::KeyPressed && e.code == 'H')
-                    hudShown = !hudShown;
-            if (!navigationEvents.empty())
-                clock->setCamera(navigation.apply(clock->camera(), navigationEvents));
-            navigationEvents.clear();
-            flyByGamepad(*session.context, *clock, navigation, gamepadBefore, stats.records().empty() ? 0.0 : lastFrameS);
-            if (!commandChannels.empty()) {
-                const control::FrameRequests requests =
-                    control::serveCommands(commandChannels, *clock, wallStatus, wallFacts, presets);
-                stopRequested = stopRequested || requests.quit;
-                screenshots = requests.screenshots;
-                if (requests.orbit == control::OrbitRequest::Start)
-                    navigation.orbit(requests.pivotKm);
-                else if (requests.orbit == control::OrbitRequest::Stop)
-                    navigation.stopOrbit();
+            master_.emplace(session, world);
+            const std::string& file = session.options.statsFile;
+            if (file.size() > 4 && file.compare(file.size() - 4, 4, ".csv") == 0)
+                stats_.streamCsv(file, size_t(world.size()));
+        }
+    }
+
+    cluster::FrameStats run()
+    {
+        while (true) {
+            const auto frameStart = SteadyClock::now();
+            const cluster::FrameMessage frame = decide(frameStart);
+            world_.setPhase(cluster::RankPhase::Draw, frame.state.frame);
+            if (frame.state.quit) {
+                if (master_)
+                    for (const control::ScreenshotRequest& shot : master_->screenshots)
+                        master_->commandChannels.answer(shot.client,
+                                                        "error screenshot " + shot.path + ": the wall is quitting");
+                break;
             }
-            cluster::FrameState state = clock->next(stopRequested);
-            previewDue = session.web && session.web->previewWanted(); // only while a browser watches
-            state.gatherWall = !screenshots.empty() || movie.has_value() || session.console != nullptr || previewDue;
-            if (recorder && !state.quit) {
-                recorder->add(state);
-                // Written as it goes, whole and atomically, at most once a second: a run that fails
-                // or is stopped loses at most its last second of flight.
-                if (frameStart - lastRecordWrite >= std::chrono::seconds(1) && session.recordError.empty()) {
-                    try {
-                        recorder->write();
-                        lastRecordWrite = frameStart;
-                    } catch (const std::exception& e) {
-                        session.recordError = std::string("--record-path: ") + e.what();
-                        stopRequested = true;
-                    }
-                }
-            }
+            cluster::RankMessage mine = draw(frame);
+            present(frame, mine);
+            observe(frame, mine, frameStart);
+            if (frame.state.gatherWall)
+                gatherWall(frame);
+            world_.setPhase(cluster::RankPhase::Broadcast, frame.state.frame);
+        }
+        if (master_ && master_->recorder)
+            writeRecording();
+        return std::move(stats_);
+    }
+
+private:
+    static std::vector<std::string> componentNames(const scene::Scene& scene)
+    {
+        std::vector<std::string> names;
+        for (const scene::Component* c : scene.components())
+            names.push_back(c->name());
+        return names;
+    }
+
+    // 1. The master flies the camera by the window events of the last frame, carries out the remote
+    // control's commands and decides the frame; one broadcast tells every rank.
+    cluster::FrameMessage decide(SteadyClock::time_point frameStart)
+    {
+        if (master_) {
+            MasterState& m = *master_;
+            const double lastFrameS = std::chrono::duration<double>(frameStart - previousFrameStart_).count();
+            if (!stats_.records().empty()) // over the last frame: drawing, gathering, commands
+                m.wallStatus.fps = 1.0 / lastFrameS;
+            if (m.lastScreenshot)
+                m.wallStatus.sinceScreenshotS = std::chrono::duration<double>(frameStart - *m.lastScreenshot).count();
+            steer(stats_.records().empty() ? 0.0 : lastFrameS);
+            cluster::FrameState state = m.clock.next(m.stopRequested);
+            m.previewDue = session_.web && session_.web->previewWanted(); // only while a browser watches
+            state.gatherWall =
+                !m.screenshots.empty() || m.movie.has_value() || session_.console != nullptr || m.previewDue;
+            if (m.recorder && !state.quit)
+                record(state, frameStart);
             std::vector<std::string> hud;
-            if (hudShown)
-                hud = hudFor(*clock, stats, wallStatus.fps, session.scene.planetRadiusKm);
-            message = cluster::packFrameMessage({state, split->next(), {}, hud}, bandCount);
+            if (m.hudShown)
+                hud = hudFor(m.clock, stats_, m.wallStatus.fps, session_.scene.planetRadiusKm);
+            message_ = cluster::packFrameMessage({state, m.split.next(), {}, hud}, bandCount_);
         }
-        previousFrameStart = frameStart;
-        world.broadcast(message);
-        const cluster::FrameMessage frame = cluster::unpackFrameMessage(message, bandCount);
-        world.setPhase(cluster::RankPhase::Draw, frame.state.frame);
-        if (frame.state.quit) {
-            for (const control::ScreenshotRequest& shot : screenshots)
-                commandChannels.answer(shot.client, "error screenshot " + shot.path + ": the wall is quitting");
-            break;
+        previousFrameStart_ = frameStart;
+        world_.broadcast(message_);
+        return cluster::unpackFrameMessage(message_, bandCount_);
+    }
+
+    // The master's input: keys and pointer of every window, the gamepad, the commands.
+    void steer(double lastFrameS)
+    {
+        MasterState& m = *master_;
+        for (const cluster::InputEvent& e : m.navigationEvents)
+            if (e.type == gl::InputEvent::KeyPressed && e.code == 'H')
+                m.hudShown = !m.hudShown;
+        if (!m.navigationEvents.empty())
+            m.clock.setCamera(m.navigation.apply(m.clock.camera(), m.navigationEvents));
+        m.navigationEvents.clear();
+        flyByGamepad(*session_.context, m.clock, m.navigation, m.gamepadBefore, lastFrameS);
+        if (m.commandChannels.empty())
+            return;
+        const control::FrameRequests requests =
+            control::serveCommands(m.commandChannels, m.clock, m.wallStatus, m.wallFacts, m.presets);
+        m.stopRequested = m.stopRequested || requests.quit;
+        m.screenshots = requests.screenshots;
+        if (requests.orbit == control::OrbitRequest::Start)
+            m.navigation.orbit(requests.pivotKm);
+        else if (requests.orbit == control::OrbitRequest::Stop)
+            m.navigation.stopOrbit();
+    }
+
+    // The frame's camera into the recorded flight, written as it goes, whole and atomically, at most
+    // once a second: a run that fails or is stopped loses at most its last second of flight.
+    void record(const cluster::FrameState& state, SteadyClock::time_point frameStart)
+    {
+        MasterState& m = *master_;
+        m.recorder->add(state);
+        if (frameStart - m.lastRecordWrite < std::chrono::seconds(1) || !session_.recordError.empty())
+            return;
+        writeRecording();
+        m.lastRecordWrite = frameStart;
+        m.stopRequested = m.stopRequested || !session_.recordError.empty();
+    }
+
+    void writeRecording()
+    {
+        try {
+            master_->recorder->write();
+        } catch (const std::exception& e) {
+            session_.recordError = std::string("--record-path: ") + e.what();
         }
+    }
+
+    // 2. Every rank draws its bands and exchanges those drawn away from their screen.
+    cluster::RankMessage draw(const cluster::FrameMessage& frame)
+    {
         cluster::RankMessage mine;
         cluster::RankReport& report = mine.report;
         report.frame = frame.state.frame;
         report.timeS = frame.state.timeS;
-        report.waitMs = millisecondsSince(waitStart);
-
-        // 2. Every rank draws its bands and exchanges those drawn away from their screen.
-        auto phase = SteadyClock::now();
+        report.waitMs = millisecondsSince(waitStart_);
+        const auto start = SteadyClock::now();
         const double prepareCpuStart = processCpuMilliseconds();
-        session.renderer->setFrame(frame.state);
-        report.prepareMs = millisecondsSince(phase);
+        session_.renderer->setFrame(frame.state);
+        report.prepareMs = millisecondsSince(start);
         report.prepareCpuMs = processCpuMilliseconds() - prepareCpuStart;
-        const std::vector<double>& componentMs = session.renderer->componentFrameMs();
+        const std::vector<double>& componentMs = session_.renderer->componentFrameMs();
         std::copy_n(componentMs.begin(), std::min<size_t>(componentMs.size(), cluster::kMaxComponents),
                     report.componentMs);
-        mine.costs = bands.draw(*session.renderer, *session.context, session.screens, frame.assignment, world, report);
-
-        // 3. Windows show the screens' targets and flip together: the swap barrier makes every rank
-        // wait until all have drawn into their back buffers, so no screen shows the next frame early.
-        // The HUD only on the window of the wall's first screen (one copy, where a reader looks first).
-        if (session.presenter) {
-            session.context->makeCurrent(0);
-            session.presenter->setHud(frame.hud);
-            for (ScreenTarget& s : session.screens)
-                session.presenter->present(*session.context, s.window, s.target->texture(), *s.triangle, s.screen == 0);
-            phase = SteadyClock::now();
-            world.swapBarrier();
-            report.waitMs += millisecondsSince(phase);
-            phase = SteadyClock::now();
-            for (ScreenTarget& s : session.screens)
-                session.context->swapBuffers(s.window);
-            session.context->pollEvents();
-            report.closeRequested = session.context->closeRequested();
-            mine.events = windowEvents(*session.context);
-            report.swapMs = millisecondsSince(phase);
-            session.context->makeCurrent(0);
-        }
-
-        // 4. One gather: the master learns what every rank drew, how long it took, what its bands
-        // cost, what was pressed in its windows, and whether to stop.
-        waitStart = SteadyClock::now();
-        report.stopSignal = stopSignal();
-        world.setPhase(cluster::RankPhase::Gather, frame.state.frame);
-        const std::vector<char> gathered = world.gather(cluster::packRankMessage(mine, bandCount));
-        if (world.isMaster()) {
-            const std::vector<cluster::RankMessage> ranks = cluster::unpackRankMessages(gathered, bandCount);
-            cluster::FrameRecord record{frame.state.frame, frame.state.timeS, millisecondsSince(frameStart), {}};
-            for (const cluster::RankMessage& r : ranks) {
-                stopRequested = stopRequested || r.report.closeRequested || r.report.stopSignal;
-                if (r.report.stopSignal && !session.stoppedBySignal)
-                    session.stoppedBySignal = r.report.stopSignal;
-                record.ranks.push_back(r.report);
-                navigationEvents.insert(navigationEvents.end(), r.events.begin(), r.events.end());
-            }
-            split->observe(ranks);
-            if (!session.options.quiet)
-                std::printf("%s\n", stats.frameLine(record).c_str());
-            if (session.options.verbose)
-                std::printf("  %s\n", session.renderer->frameLog().c_str());
-            wallStatus.frame = record.frame;
-            if (session.web)
-                session.web->showRanks(record);
-            try {
-                stats.add(std::move(record));
-            } catch (const std::exception& e) {
-                session.statsError = e.what();
-                stopRequested = true;
-            }
-        }
-
-        // 5. A screenshot or a movie frame: every rank sends its screens, the master writes the wall.
-        if (frame.state.gatherWall) {
-            io::Image canvas;
-            const int status = gatherWallImage(session, world, canvas);
-            if (world.isMaster()) {
-                if (!screenshots.empty())
-                    lastScreenshot = SteadyClock::now();
-                writeScreenshots(session, commandChannels, canvas, status, screenshots);
-                if (movie)
-                    writeMovieFrame(session, *movie, canvas, status, frame.state, stopRequested);
-                if (session.console && status == 0)
-                    showConsole(session, canvas);
-                if (previewDue && status == 0)
-                    session.web->showPreview(std::move(canvas)); // last: the canvas is handed over
-            }
-            screenshots.clear();
-        }
-        world.setPhase(cluster::RankPhase::Broadcast, frame.state.frame);
+        mine.costs =
+            bands_.draw(*session_.renderer, *session_.context, session_.screens, frame.assignment, world_, report);
+        return mine;
     }
-    if (recorder) {
+
+    // 3. Windows show the screens' targets and flip together: the swap barrier makes every rank wait
+    // until all have drawn into their back buffers, so no screen shows the next frame early. The HUD
+    // only on the window of the wall's first screen (one copy, where a reader looks first).
+    void present(const cluster::FrameMessage& frame, cluster::RankMessage& mine)
+    {
+        if (!session_.presenter)
+            return;
+        cluster::RankReport& report = mine.report;
+        session_.context->makeCurrent(0);
+        session_.presenter->setHud(frame.hud);
+        for (ScreenTarget& s : session_.screens)
+            session_.presenter->present(*session_.context, s.window, s.target->texture(), *s.triangle, s.screen == 0);
+        auto phase = SteadyClock::now();
+        world_.swapBarrier();
+        report.waitMs += millisecondsSince(phase);
+        phase = SteadyClock::now();
+        for (ScreenTarget& s : session_.screens)
+            session_.context->swapBuffers(s.window);
+        session_.context->pollEvents();
+        report.closeRequested = session_.context->closeRequested();
+        mine.events = windowEvents(*session_.context);
+        report.swapMs = millisecondsSince(phase);
+        session_.context->makeCurrent(0);
+    }
+
+    // 4. One gather: the master learns what every rank drew, how long it took, what its bands cost,
+    // what was pressed in its windows, and whether to stop (a closed window, a stop signal).
+    void observe(const cluster::FrameMessage& frame, cluster::RankMessage& mine, SteadyClock::time_point frameStart)
+    {
+        waitStart_ = SteadyClock::now();
+        mine.report.stopSignal = stopSignal();
+        world_.setPhase(cluster::RankPhase::Gather, frame.state.frame);
+        const std::vector<char> gathered = world_.gather(cluster::packRankMessage(mine, bandCount_));
+        if (!master_)
+            return;
+        MasterState& m = *master_;
+        const std::vector<cluster::RankMessage> ranks = cluster::unpackRankMessages(gathered, bandCount_);
+        cluster::FrameRecord record{frame.state.frame, frame.state.timeS, millisecondsSince(frameStart), {}};
+        for (const cluster::RankMessage& r : ranks) {
+            m.stopRequested = m.stopRequested || r.report.closeRequested || r.report.stopSignal;
+            if (r.report.stopSignal && !session_.stoppedBySignal)
+                session_.stoppedBySignal = r.report.stopSignal;
+            record.ranks.push_back(r.report);
+            m.navigationEvents.insert(m.navigationEvents.end(), r.events.begin(), r.events.end());
+        }
+        m.split.observe(ranks);
+        if (!session_.options.quiet)
+            std::printf("%s\n", stats_.frameLine(record).c_str());
+        if (session_.options.verbose)
+            std::printf("  %s\n", session_.renderer->frameLog().c_str());
+        m.wallStatus.frame = record.frame;
+        if (session_.web)
+            session_.web->showRanks(record);
         try {
-            recorder->write();
+            stats_.add(std::move(record));
         } catch (const std::exception& e) {
-            session.recordError = std::string("--record-path: ") + e.what();
+            session_.statsError = e.what();
+            m.stopRequested = true;
         }
     }
-    return stats;
+
+    // 5. A screenshot, a movie frame or a preview: every rank sends its screens, the master uses the wall.
+    void gatherWall(const cluster::FrameMessage& frame)
+    {
+        io::Image canvas;
+        const int status = gatherWallImage(session_, world_, canvas);
+        if (!master_)
+            return;
+        MasterState& m = *master_;
+        if (!m.screenshots.empty())
+            m.lastScreenshot = SteadyClock::now();
+        writeScreenshots(session_, m.commandChannels, canvas, status, m.screenshots);
+        m.screenshots.clear();
+        if (m.movie)
+            writeMovieFrame(session_, *m.movie, canvas, status, frame.state, m.stopRequested);
+        if (session_.console && status == 0)
+            showConsole(session_, canvas);
+        if (m.previewDue && status == 0)
+            session_.web->showPreview(std::move(canvas)); // last: the canvas is handed over
+    }
+
+    WallSession& session_;
+    const cluster::MpiWorld& world_;
+    const size_t bandCount_;
+    BandFrame bands_;
+    cluster::FrameStats stats_;
+    std::optional<MasterState> master_; // rank 0 only
+    std::vector<char> message_;
+    SteadyClock::time_point waitStart_ = SteadyClock::now(); // from this rank's previous report to this frame's message
+    SteadyClock::time_point previousFrameStart_ = SteadyClock::now();
+};
+
+} // namespace
+
+cluster::FrameStats runFrames(WallSession& session, const cluster::MpiWorld& world)
+{
+    return FrameLoop(session, world).run();
 }
 
 } // namespace aurorawall::app
