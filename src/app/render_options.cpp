@@ -20,17 +20,9 @@ const cli::Choices<Balance> kBalance = {{"on", Balance::On}, {"off", Balance::Of
 const cli::Choices<cluster::BandMeasure> kBandMeasures = {{"time", cluster::BandMeasure::CpuTime},
                                                           {"work", cluster::BandMeasure::Work}};
 
-} // namespace
-
-RenderOptions parseRenderOptions(int argc, char** argv)
+// The options of the wall, the scene, the clock and the split of the work.
+void describeRenderingOptions(cli::CommandLine& cli, RenderOptions& o)
 {
-    RenderOptions o;
-    cli::CommandLine cli(
-        "render",
-        "Usage: mpirun -n RANKS aurorawall render --wall FILE --scene FILE [options]\n"
-        "Renders the scene on the wall: rank r draws the screens the wall file gives it; rank 0\n"
-        "owns the camera and the clock and broadcasts them every frame.\n"
-        "Exit status: 0 success, 1 runtime failure (files included), 2 usage error, the same on every rank.\n");
     cli.add()
         ("wall", po::value(&o.wallFile)->required(), "wall file (config/walls/*.toml): screens, bezels, eye, ranks")
         ("scene", po::value(&o.sceneFile)->required(), "scene file (config/scenes/*.toml): components and parameters");
@@ -66,14 +58,20 @@ RenderOptions parseRenderOptions(int argc, char** argv)
     cli.addChoice("balance-by", &o.balanceBy, kBandMeasures,
                   "what --balance equalizes: time (each band's measured CPU time) or work (each band's rays' work, "
                   "1 + aurora samples per pixel: exact and free of timing noise, but not proportional to time)");
+}
+
+// The options of the outputs, the remote control and the messages.
+void describeOutputAndControlOptions(cli::CommandLine& cli, RenderOptions& o)
+{
     cli.add()
         ("single-screen", po::bool_switch(&o.singleScreen),
          "render the wall's whole canvas (bezels included) as one screen on one rank: the reference a wall must match")
         ("stats", po::value(&o.statsFile), "write per-frame timings to FILE (.csv or .json)")
         ("cost-map", po::value(&o.costMapFile),
-         "rank 0 writes the last frame's cost per pixel to FILE (.png): each ray's work (1 + aurora samples) "
-         "times its rank's render time per unit of work, an estimate in ns per pixel, as viridis on a log "
-         "scale with a labelled scale bar below the wall. Draws with the static split (--balance off)")
+         "rank 0 writes the last frame's cost per pixel to FILE (.png): each rank's render time shared among "
+         "its pixels in proportion to each ray's time on the GPU's clock (GL_ARB_shader_clock), or without "
+         "one to its texture fetches, in ns per pixel, as viridis on a log scale with a labelled scale bar "
+         "below the wall. Draws with the static split (--balance off)")
         ("data-dir", po::value(&o.dataDir), "folder holding shaders/ (default: installed share/aurorawall or the source tree)")
         ("control-port", po::value(&o.controlPort),
          "the master takes commands on this TCP port (0: a free one, printed), one per line: status, pause, play, "
@@ -98,9 +96,9 @@ RenderOptions parseRenderOptions(int argc, char** argv)
          "(frame number, animation time); every rank sends its screens every frame")
         ("movie-exr", po::bool_switch(&o.movieExr), "with --movie, also frame-000000.exr, ... (linear, half float)")
         ("record-path", po::value(&o.recordPath),
-         "at the end of the run (or on quit) the master writes the camera of every frame to FILE (.toml): a "
-         "scene deriving from --scene whose [[camera.key]] path, one key per frame, replays that camera at "
-         "every recorded animation time")
+         "the master writes the camera of every frame to FILE (.toml), as it goes (at most once a second) and "
+         "at the end: a scene deriving from --scene whose [[camera.key]] path, one key per frame, replays "
+         "that camera at every recorded animation time")
         ("console", po::bool_switch(&o.console),
          "the master opens a console window (480 px wide, the wall's aspect) showing the whole wall, "
          "downsampled, each frame, with the HUD (H); input there steers like any window. Needs --backend glfw; "
@@ -110,13 +108,12 @@ RenderOptions parseRenderOptions(int argc, char** argv)
          "rendering; runs on one process, without mpirun (launch scripts check their task count with it)")
         ("quiet", po::bool_switch(&o.quiet), "print only the summary, not a line per frame")
         ("verbose", po::bool_switch(&o.verbose), "also print the per-frame work of the components (curtain map build)");
-    o.helpText = cli.help();
-    if (!cli.parse(argc, argv)) {
-        o.help = true;
-        return o;
-    }
-    o.timeStepS = cli.given("dt") ? o.timeStepS : -1.0;
-    o.startTimeGiven = cli.given("start-time");
+}
+
+// The values' ranges and the options' combinations (a usage error naming the option otherwise), and
+// what one option implies for another (--cost-map: the static split).
+void checkRenderOptions(const cli::CommandLine& cli, RenderOptions& o)
+{
     auto check = [&cli](bool ok, const std::string& message) {
         if (!ok)
             throw cli.usageError(message);
@@ -170,6 +167,29 @@ RenderOptions parseRenderOptions(int argc, char** argv)
           "--console needs --backend glfw (the console is a window next to the wall's windows)");
     check(!o.outDir.empty(), "--out must not be empty");
     check(o.balanceBands >= 1 && o.balanceBands <= 256, "--balance-bands must be in [1, 256]");
+}
+
+} // namespace
+
+RenderOptions parseRenderOptions(int argc, char** argv)
+{
+    RenderOptions o;
+    cli::CommandLine cli(
+        "render",
+        "Usage: mpirun -n RANKS aurorawall render --wall FILE --scene FILE [options]\n"
+        "Renders the scene on the wall: rank r draws the screens the wall file gives it; rank 0\n"
+        "owns the camera and the clock and broadcasts them every frame.\n"
+        "Exit status: 0 success, 1 runtime failure (files included), 2 usage error, the same on every rank.\n");
+    describeRenderingOptions(cli, o);
+    describeOutputAndControlOptions(cli, o);
+    o.helpText = cli.help();
+    if (!cli.parse(argc, argv)) {
+        o.help = true;
+        return o;
+    }
+    o.timeStepS = cli.given("dt") ? o.timeStepS : -1.0;
+    o.startTimeGiven = cli.given("start-time");
+    checkRenderOptions(cli, o);
     return o;
 }
 
