@@ -58,7 +58,9 @@ echo "$report; frames $before -> $after"
 rate_error="error more than 100 lines per second; closing"
 check_flood "$report" "r['sent'] > 1000" "the flood did not get going"
 check_flood "$report" "list(r['errors']) == ['$rate_error'] and r['closed_by_wall'] >= 1" "not limited"
-check_flood "$report" "r['errors']['$rate_error'] == r['closed_by_wall'] and r['most_errors_in_a_connection'] == 1" \
+# One error line for each connection the wall closed; the last connection may have had its error line
+# but not yet its close when the flood ended.
+check_flood "$report" "r['closed_by_wall'] <= r['errors']['$rate_error'] <= r['closed_by_wall'] + 1 and r['most_errors_in_a_connection'] == 1" \
     "not one error line for each connection closed"
 check_flood "$report" "0 < r['ok'] <= 100 * r['connections']" "more than 100 lines answered on a connection"
 [ -n "$after" ] && [ "$after" -gt "$before" ] || { kill $job; fail "the wall stopped drawing ($before -> $after)"; }
@@ -76,7 +78,7 @@ report=$(flood --rate 10000 --seconds 2)
 echo "$report"
 auth_error="error authentication required: the first line must be auth TOKEN; closing"
 check_flood "$report" "r['ok'] == 0 and list(r['errors']) == ['$auth_error']" "an unauthenticated flood got more than the error"
-check_flood "$report" "r['errors']['$auth_error'] == r['closed_by_wall'] >= 1 and r['most_errors_in_a_connection'] == 1" \
+check_flood "$report" "1 <= r['closed_by_wall'] <= r['errors']['$auth_error'] <= r['closed_by_wall'] + 1 and r['most_errors_in_a_connection'] == 1" \
     "not one error line for each connection closed"
 
 from_host1 --token-file "$token" quit || { kill $job; fail "quit refused"; }
