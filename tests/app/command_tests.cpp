@@ -16,6 +16,7 @@
 #include "common/input_error.h"
 #include "components/registry.h"
 #include "components/aurora/physics/deposition_table.h"
+#include "run_in_process.h"
 
 #include <gtest/gtest.h>
 
@@ -197,18 +198,12 @@ TEST(RenderOptions, MistakesAreUsageErrorsNamingTheOption)
 
 // ---- tables ----
 
-struct Result {
-    int status;
-    std::string out, err;
-};
+using Result = test::CommandOutput;
 
 Result runTables(std::vector<std::string> words)
 {
     words.insert(words.begin(), "tables");
-    Args args(std::move(words));
-    std::ostringstream out, err;
-    const int status = runTablesCommand(args.argc(), args.argv(), out, err);
-    return {status, out.str(), err.str()};
+    return test::runInProcess(runTablesCommand, std::move(words));
 }
 
 TEST(TablesCommand, PrintsTheDepositionProfile)
@@ -254,14 +249,13 @@ TEST(TablesCommand, BadOptionsNameTheOptionAndExit2)
 
 int runAirmass(std::vector<std::string> args, const std::string& input, std::string& out, std::string& err)
 {
-    std::vector<char*> argv;
-    for (std::string& arg : args) argv.push_back(arg.data());
     std::istringstream in(input);
-    std::ostringstream outStream, errStream;
-    int status = runAirmassCommand(int(argv.size()), argv.data(), in, outStream, errStream);
-    out = outStream.str();
-    err = errStream.str();
-    return status;
+    const Result r = test::runInProcess(
+        [&](int argc, char** argv, std::ostream& o, std::ostream& e) { return runAirmassCommand(argc, argv, in, o, e); },
+        std::move(args));
+    out = r.out;
+    err = r.err;
+    return r.status;
 }
 
 TEST(AirmassCommand, ListsMethodsAndComputes)
@@ -356,10 +350,7 @@ TEST(AirmassCommand, FieldsBeyondFloatAndNonFiniteResultsAreErrors)
 Result runAccuracy(std::vector<std::string> words)
 {
     words.insert(words.begin(), "accuracy");
-    Args args(std::move(words));
-    std::ostringstream out, err;
-    const int status = runAccuracyCommand(args.argc(), args.argv(), out, err);
-    return {status, out.str(), err.str()};
+    return test::runInProcess(runAccuracyCommand, std::move(words));
 }
 
 TEST(AccuracyCommand, OneParserForTheThreeKinds)
@@ -407,10 +398,7 @@ TEST(AccuracyCommand, UnreadableSceneIsARuntimeFailure)
 Result runMie(std::vector<std::string> words)
 {
     words.insert(words.begin(), "mie");
-    Args args(std::move(words));
-    std::ostringstream out, err;
-    const int status = runMieCommand(args.argc(), args.argv(), out, err);
-    return {status, out.str(), err.str()};
+    return test::runInProcess(runMieCommand, std::move(words));
 }
 
 std::vector<double> csvNumbers(const std::string& row)
@@ -506,10 +494,7 @@ TEST(MieCommand, SubnormalAnglesAreAngles)
 Result runPlasma(std::vector<std::string> words)
 {
     words.insert(words.begin(), "plasma");
-    Args args(std::move(words));
-    std::ostringstream out, err;
-    const int status = runPlasmaCommand(args.argc(), args.argv(), out, err);
-    return {status, out.str(), err.str()};
+    return test::runInProcess(runPlasmaCommand, std::move(words));
 }
 
 // Time steps and spacings where a case cannot measure are usage errors naming the option: at

@@ -7,6 +7,7 @@
 #include "app/mie_command.h"
 #include "app/plasma_command.h"
 #include "app/tables_command.h"
+#include "run_in_process.h"
 #include "atmosphere/airmass.h"
 #include "components/plasma/simulation/verify_cases.h"
 
@@ -23,26 +24,13 @@
 namespace aurorawall::app {
 namespace {
 
-struct Output {
-    int status;
-    std::string out, err;
-};
-
-// Runs a command on argv = words (words[0] the command's name).
-template <class Command>
-Output run(const Command& command, std::vector<std::string> words)
-{
-    std::vector<char*> argv;
-    for (std::string& w : words) argv.push_back(w.data());
-    std::ostringstream out, err;
-    const int status = command(int(argv.size()), argv.data(), out, err);
-    return {status, out.str(), err.str()};
-}
+using Output = test::CommandOutput;
+using test::runInProcess;
 
 Output airmass(const std::string& method, const std::string& input)
 {
     std::istringstream in(input);
-    return run([&](int argc, char** argv, std::ostream& out, std::ostream& err) { return runAirmassCommand(argc, argv, in, out, err); },
+    return runInProcess([&](int argc, char** argv, std::ostream& out, std::ostream& err) { return runAirmassCommand(argc, argv, in, out, err); },
                {"airmass", "--method", method});
 }
 
@@ -134,7 +122,7 @@ TEST(FiniteOutput, AirmassEveryFieldOverItsRange)
 
 Output mie(const std::string& n, const std::string& k, const std::string& x, const std::string& angles)
 {
-    return run(runMieCommand, {"mie", "--n", n, "--k", k, "--x", x, "--angles-deg", angles});
+    return runInProcess(runMieCommand, {"mie", "--n", n, "--k", k, "--x", x, "--angles-deg", angles});
 }
 
 TEST(FiniteOutput, MieEveryOptionOverItsRange)
@@ -168,7 +156,7 @@ TEST(FiniteOutput, MieEveryOptionOverItsRange)
                         EXPECT_NE(r.err.find(options[option]), std::string::npos) << where << " " << r.err;
                     }
                 }
-    for (const std::string angle : {std::string("-4.9e-324"), exactly(above(180.0)), std::string("1e999"), std::string("-1")}) {
+    for (const std::string& angle : {std::string("-4.9e-324"), exactly(above(180.0)), std::string("1e999"), std::string("-1")}) {
         const Output r = mie("1.33", "0", "1", "0," + angle);
         EXPECT_EQ(r.status, 2) << angle;
         EXPECT_NE(r.err.find("--angles-deg"), std::string::npos) << r.err;
@@ -183,12 +171,12 @@ TEST(FiniteOutput, TablesEnergyOverItsRange)
         for (const double energy : {0.01, above(0.01), 1.0, 30.0, below(1000.0), 1000.0}) {
             std::vector<std::string> words = {"tables", "deposition", "--energy-kev", exactly(energy)};
             if (maxwellian) words.push_back("--maxwellian");
-            const Output r = run(runTablesCommand, words);
+            const Output r = runInProcess(runTablesCommand, words);
             EXPECT_EQ(r.status, 0) << energy << " " << r.err;
             EXPECT_EQ(nonFiniteCell(r.out), "") << energy;
         }
         for (const double energy : {below(0.01), above(1000.0), 0.0, -0.0, 1e308}) {
-            const Output r = run(runTablesCommand, std::vector<std::string>{"tables", "deposition", "--energy-kev", exactly(energy)});
+            const Output r = runInProcess(runTablesCommand, std::vector<std::string>{"tables", "deposition", "--energy-kev", exactly(energy)});
             EXPECT_EQ(r.status, 2) << energy;
             EXPECT_NE(r.err.find("--energy-kev"), std::string::npos) << r.err;
         }
@@ -201,7 +189,7 @@ Output plasmaVerify(const std::vector<std::string>& options)
 {
     std::vector<std::string> words = {"plasma", "verify"};
     words.insert(words.end(), options.begin(), options.end());
-    return run(runPlasmaCommand, words);
+    return runInProcess(runPlasmaCommand, words);
 }
 
 void expectUsageError(const std::vector<std::string>& options, const std::string& option)
@@ -252,7 +240,9 @@ TEST(FiniteOutput, PlasmaCasesAtTheEndsOfTheirRangesOnSmallRuns)
     const auto expectFinite = [](const std::vector<plasma::VerifyRow>& rows, const std::string& what) {
         for (const plasma::VerifyRow& row : rows) {
             EXPECT_TRUE(std::isfinite(row.measured)) << what << " " << row.parameter;
-            if (row.expected) EXPECT_TRUE(std::isfinite(row.relativeError())) << what << " " << row.parameter;
+            if (row.expected) {
+                EXPECT_TRUE(std::isfinite(row.relativeError())) << what << " " << row.parameter;
+            }
         }
     };
     const double lowest = plasma::kMinVerifyWpDt;

@@ -1,0 +1,28 @@
+#pragma once
+// Runs a command's entry point (run*Command) in the test's process on argv = words, words[0] the
+// command's name, with what it prints captured.
+#include <ostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace aurorawall::app::test {
+
+struct CommandOutput {
+    int status;
+    std::string out, err;
+};
+
+// command(argc, argv, out, err), e.g. runMieCommand, or a lambda that gives airmass its input.
+template <class Command>
+CommandOutput runInProcess(const Command& command, std::vector<std::string> words)
+{
+    std::vector<char*> argv;
+    for (std::string& w : words)
+        argv.push_back(w.data());
+    std::ostringstream out, err;
+    const int status = command(int(argv.size()), argv.data(), out, err);
+    return {status, out.str(), err.str()};
+}
+
+} // namespace aurorawall::app::test
