@@ -29,6 +29,15 @@ aw_mpirun() {
     "$MPIEXEC" -n "$n" "${MPI_FLAGS[@]}" "${threads[@]}" "$AW" "$@"
 }
 
+# expect_gone PID WHAT: the process PID ends within 5 s; otherwise it is killed and the test fails
+# with "WHAT is left behind".
+expect_gone() {
+    local pid="$1" what="$2"
+    for _ in $(seq 50); do kill -0 "$pid" 2>/dev/null || return 0; sleep 0.1; done
+    kill -KILL "$pid" 2>/dev/null
+    fail "$what is left behind"
+}
+
 # Seconds since the epoch with nanoseconds, for timing.
 now() { date +%s.%N; }
 elapsed() { awk -v a="$(now)" -v b="$1" 'BEGIN { printf "%.2f", a - b }'; }

@@ -61,8 +61,7 @@ stop_case() {
     cat "$WORK/$1.err" >&2
     [ "$status" -eq 3 ] || fail "$1: exit status $status, expected 3"
     grep -q "$3" "$WORK/$1.err" || fail "$1: stderr does not say '$3'"
-    for _ in $(seq 50); do kill -0 "$victim" 2>/dev/null || break; sleep 0.1; done
-    kill -0 "$victim" 2>/dev/null && { kill -KILL "$victim"; fail "$1: the stopped process is left behind"; }
+    expect_gone "$victim" "$1: the stopped process"
     return 0
 }
 
@@ -84,8 +83,7 @@ grep -q "hung: rank 2 on [^ ]* (drawing frame 3, its main thread without progres
     fail "hang: stderr does not name rank 2 drawing frame 3"
 grep -q "rank 1 on " "$WORK/hang.err" && fail "hang: rank 1 was named too"
 grep -q "no heartbeat" "$WORK/hang.err" && fail "hang: taken for a silent rank"
-for _ in $(seq 50); do kill -0 "$victim" 2>/dev/null || break; sleep 0.1; done
-kill -0 "$victim" 2>/dev/null && { kill -KILL "$victim"; fail "hang: the hung rank's process is left behind"; }
+expect_gone "$victim" "hang: the hung rank's process"
 
 note "SIGKILL rank 1"
 start_long_run kill
