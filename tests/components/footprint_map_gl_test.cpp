@@ -3,6 +3,7 @@
 // curtain point, at most 2ε farther than the nearest, and stores its distance to within ε; elsewhere a
 // lower bound to within ε, ε = footprintGpuAllowanceKm (derived in footprint_map_gpu.h).
 #include "../aurora/random_curtains.h"
+#include "components/aurora/curtain_build.h"
 #include "components/aurora/footprint_map_gpu.h"
 #include "gl/context.h"
 #include "gl/debug_layer.h"
@@ -26,26 +27,13 @@ namespace {
 
 const std::string kShaders = std::string(AURORAWALL_SOURCE_DIR) + "/shaders";
 
-// The polylines as the curtain field uploads them (curtain_build.cpp): row c holds curtain c's points
-// (unit vector, arclength km), padded with its last point.
+// The polylines as the curtain field uploads them (curtain_build.h).
 gl::Texture polylineTexture(const std::vector<CurtainPolyline>& curtains)
 {
-    size_t widest = 1;
-    for (const CurtainPolyline& c : curtains)
-        widest = std::max(widest, c.points.size());
-    const size_t rows = std::max<size_t>(curtains.size(), 1);
-    std::vector<float> texels(4 * widest * rows, 0.0f);
-    for (size_t c = 0; c < curtains.size(); ++c)
-        for (size_t k = 0; k < widest; ++k) {
-            const size_t j = std::min(k, curtains[c].points.size() - 1);
-            float* t = &texels[4 * (c * widest + k)];
-            t[0] = float(curtains[c].points[j].x);
-            t[1] = float(curtains[c].points[j].y);
-            t[2] = float(curtains[c].points[j].z);
-            t[3] = float(curtains[c].arclengthKm[j]);
-        }
-    gl::Texture texture = gl::Texture::create2D(int(widest), int(rows), gl::TexelFormat::RGBA32F, gl::Filter::Nearest,
-                                                gl::Wrap::Clamp);
+    int width = 0, rows = 0;
+    const std::vector<float> texels = components::aurora::polylineTexels(curtains, width, rows);
+    gl::Texture texture =
+        gl::Texture::create2D(width, rows, gl::TexelFormat::RGBA32F, gl::Filter::Nearest, gl::Wrap::Clamp);
     texture.upload(texels);
     return texture;
 }

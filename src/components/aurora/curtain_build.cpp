@@ -35,6 +35,27 @@ physics::FootprintMapSpec capAround(const std::vector<physics::CurtainPolyline>&
 
 } // namespace
 
+std::vector<float> polylineTexels(const std::vector<physics::CurtainPolyline>& polylines, int& width, int& rows)
+{
+    size_t widest = 1;
+    for (const physics::CurtainPolyline& c : polylines)
+        widest = std::max(widest, c.points.size());
+    width = static_cast<int>(widest);
+    rows = static_cast<int>(std::max<size_t>(polylines.size(), 1));
+    std::vector<float> texels(4 * widest * size_t(rows), 0.0f);
+    for (size_t c = 0; c < polylines.size(); ++c)
+        for (size_t k = 0; k < widest; ++k) {
+            const size_t j = std::min(k, polylines[c].points.size() - 1);
+            const glm::dvec3& p = polylines[c].points[j];
+            float* t = &texels[4 * (c * widest + k)];
+            t[0] = static_cast<float>(p.x);
+            t[1] = static_cast<float>(p.y);
+            t[2] = static_cast<float>(p.z);
+            t[3] = static_cast<float>(polylines[c].arclengthKm[j]);
+        }
+    return texels;
+}
+
 ControlPoints controlPointsOf(const std::vector<CurtainState>& states)
 {
     ControlPoints points;
@@ -49,29 +70,12 @@ CurtainBuild buildCurtains(const CurtainModel& model, const std::vector<CurtainS
     CurtainBuild build;
     build.controlPoints = controlPointsOf(states);
     std::vector<physics::CurtainPolyline>& polylines = build.polylines;
-    size_t widest = 1;
     for (const CurtainState& s : states) {
         polylines.push_back(model.footprint(s));
-        const size_t n = polylines.back().points.size();
-        widest = std::max(widest, n);
-        build.pointCounts.push_back(n);
-        build.pointTotal += n;
+        build.pointCounts.push_back(polylines.back().points.size());
+        build.pointTotal += polylines.back().points.size();
     }
-
-    const size_t rows = std::max<size_t>(polylines.size(), 1);
-    build.polylineWidth = static_cast<int>(widest);
-    build.polylineRows = static_cast<int>(rows);
-    build.polylineTexels.assign(4 * widest * rows, 0.0f);
-    for (size_t c = 0; c < polylines.size(); ++c)
-        for (size_t k = 0; k < widest; ++k) {
-            const size_t j = std::min(k, polylines[c].points.size() - 1);
-            const glm::dvec3& p = polylines[c].points[j];
-            float* t = &build.polylineTexels[4 * (c * widest + k)];
-            t[0] = static_cast<float>(p.x);
-            t[1] = static_cast<float>(p.y);
-            t[2] = static_cast<float>(p.z);
-            t[3] = static_cast<float>(polylines[c].arclengthKm[j]);
-        }
+    build.polylineTexels = polylineTexels(polylines, build.polylineWidth, build.polylineRows);
 
     // The cap must hold every curtain's emitting band plus the map's margin (at most a few texels).
     // A march step reaches half its length beyond its midpoint, where the shader reads the map: the

@@ -18,6 +18,10 @@ using ControlPoints = std::vector<std::vector<glm::dvec2>>;
 
 ControlPoints controlPointsOf(const std::vector<CurtainState>& states);
 
+// The polylines as one RGBA32F texture, width × rows texels (both set here): row c holds curtain c's
+// points (unit vector, arclength km), padded with its last point.
+std::vector<float> polylineTexels(const std::vector<physics::CurtainPolyline>& polylines, int& width, int& rows);
+
 struct CurtainBuild {
     ControlPoints controlPoints;     // the input
     std::vector<size_t> pointCounts; // per curtain: points of its polyline

@@ -9,13 +9,13 @@ namespace aurorawall::components::aurora {
 
 namespace {
 
-// Uploads into the texture kept from the last frame when its size is the same, else into a new one.
-void uploadInto(std::unique_ptr<gl::Texture>& texture, int width, int height, const std::vector<float>& texels)
+// The texture kept from the last frame when its size is the same, else a new one (RGBA32F).
+gl::Texture& sized(std::unique_ptr<gl::Texture>& texture, int width, int height)
 {
     if (!texture || texture->width() != width || texture->height() != height)
         texture = std::make_unique<gl::Texture>(
             gl::Texture::create2D(width, height, gl::TexelFormat::RGBA32F, gl::Filter::Nearest, gl::Wrap::Clamp));
-    texture->upload(texels);
+    return *texture;
 }
 
 } // namespace
@@ -88,17 +88,16 @@ void CurtainField::upload(const CurtainBuild& build)
     controlPoints_ = build.controlPoints;
     pointCounts_ = build.pointCounts;
     pointTotal_ = build.pointTotal;
-    uploadInto(polylines_, build.polylineWidth, build.polylineRows, build.polylineTexels);
-    const physics::FootprintMap map = gpuMap_ ? FootprintMapGpu::gpuFrame(build.map) : build.map;
+    sized(polylines_, build.polylineWidth, build.polylineRows).upload(build.polylineTexels);
+    // The GPU's map has its own frame (its margin holds the float allowance); the CPU's is uploaded
+    // as built (a reference: its texels are 4 MiB at 512²).
+    const physics::FootprintMap gpuFrame = gpuMap_ ? FootprintMapGpu::gpuFrame(build.map) : physics::FootprintMap{};
+    const physics::FootprintMap& map = gpuMap_ ? gpuFrame : build.map;
     const int n = map.spec.size;
-    if (gpuMap_) {
-        if (!footprint_ || footprint_->width() != n)
-            footprint_ = std::make_unique<gl::Texture>(
-                gl::Texture::create2D(n, n, gl::TexelFormat::RGBA32F, gl::Filter::Nearest, gl::Wrap::Clamp));
-        gpuMap_->build(map, *polylines_, pointCounts_, *footprint_);
-    } else {
-        uploadInto(footprint_, n, n, map.texels);
-    }
+    if (gpuMap_)
+        gpuMap_->build(map, *polylines_, pointCounts_, sized(footprint_, n, n));
+    else
+        sized(footprint_, n, n).upload(map.texels);
     centre_ = glm::vec3(map.centre);
     east_ = glm::vec3(map.east);
     angularRadius_ = static_cast<float>(map.angularRadius);
