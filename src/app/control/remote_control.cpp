@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <set>
 
 namespace aurorawall::control {
 
@@ -107,13 +108,10 @@ std::string carryOut(const Command& command, std::uint64_t client, cluster::Mast
         if (requests.screenshots.empty() && status.sinceScreenshotS < kScreenshotIntervalS)
             throw CommandError("screenshot " + command.path + ": the last was taken less than 0.5 s ago (at most 2 "
                                "a second; --movie records every frame)");
-        const bool asked = std::any_of(requests.screenshots.begin(), requests.screenshots.end(),
-                                       [&](const ScreenshotRequest& r) { return r.path == full.string(); });
-        size_t files = 0; // distinct files this frame: one asked for again is written once
-        for (size_t i = 0; i < requests.screenshots.size(); ++i)
-            files += std::none_of(requests.screenshots.begin(), requests.screenshots.begin() + long(i),
-                                  [&](const ScreenshotRequest& r) { return r.path == requests.screenshots[i].path; });
-        if (!asked && files >= kScreenshotsPerFrame)
+        std::set<std::string> files; // this frame's: a file asked for again is written once
+        for (const ScreenshotRequest& r : requests.screenshots)
+            files.insert(r.path);
+        if (!files.count(full.string()) && files.size() >= kScreenshotsPerFrame)
             throw CommandError("screenshot " + command.path + ": at most 4 files in one frame");
         requests.screenshots.push_back({client, full.string()});
         return "";
