@@ -33,6 +33,16 @@ std::string oneLine(std::string text)
     return text;
 }
 
+// The camera of the scene file `path` of preset `name`.
+scene::Camera cameraOf(const std::string& name, const std::string& path)
+{
+    try {
+        return components::loadScene(path).camera;
+    } catch (const std::exception& e) {
+        throw CommandError("preset " + name + ": " + oneLine(e.what()));
+    }
+}
+
 } // namespace
 
 std::string presetPath(const std::string& name, const std::string& presetDir)
@@ -52,12 +62,7 @@ std::string presetPath(const std::string& name, const std::string& presetDir)
 
 scene::Camera presetCamera(const std::string& name, const std::string& presetDir)
 {
-    const std::string path = presetPath(name, presetDir);
-    try {
-        return components::loadScene(path).camera;
-    } catch (const std::exception& e) {
-        throw CommandError("preset " + name + ": " + oneLine(e.what()));
-    }
+    return cameraOf(name, presetPath(name, presetDir));
 }
 
 PresetLoader::~PresetLoader()
@@ -70,11 +75,11 @@ void PresetLoader::start(const std::string& name, const std::string& presetDir, 
 {
     if (pending_.valid())
         throw CommandError("preset " + name + ": another preset is still loading");
-    presetPath(name, presetDir);
-    pending_ = std::async(std::launch::async, [name, presetDir, client] {
+    const std::string path = presetPath(name, presetDir);
+    pending_ = std::async(std::launch::async, [name, path, client] {
         Loaded loaded{client, name, std::nullopt, ""};
         try {
-            loaded.camera = presetCamera(name, presetDir);
+            loaded.camera = cameraOf(name, path);
         } catch (const std::exception& e) {
             loaded.error = e.what();
         }

@@ -75,11 +75,11 @@ void FootprintMapGpu::ensureBuffers(int size, int coarseSize)
     coarseSize_ = coarseSize;
 }
 
-void FootprintMapGpu::dispatch(int pass, size_t invocations)
+void FootprintMapGpu::dispatch(int pass, size_t invocations, GLbitfield barriers)
 {
     program_.set("uPass", pass);
     glDispatchCompute(GLuint((invocations + kWorkGroupSize - 1) / kWorkGroupSize), 1, 1);
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    glMemoryBarrier(barriers);
 }
 
 void FootprintMapGpu::build(const physics::FootprintMap& frame, const gl::Texture& polylines,
@@ -139,9 +139,8 @@ void FootprintMapGpu::build(const physics::FootprintMap& frame, const gl::Textur
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, FloodIn, flood[0]);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, FloodOut, flood[1]);
     dispatch(CoarseBound, size_t(coarse) * coarse);
-    program_.set("uPass", int(Assemble));
-    glDispatchCompute(GLuint((size_t(n) * n + kWorkGroupSize - 1) / kWorkGroupSize), 1, 1);
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
+    dispatch(Assemble, size_t(n) * n,
+             GL_SHADER_STORAGE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
 }
 
 } // namespace aurorawall::components::aurora

@@ -52,7 +52,8 @@ public:
 
 private:
     void ensureBuffers(int size, int coarseSize);
-    void dispatch(int pass, size_t invocations);
+    // One pass over `invocations` items, then the barriers that order what reads its writes next.
+    void dispatch(int pass, size_t invocations, GLbitfield barriers = GL_SHADER_STORAGE_BARRIER_BIT);
 
     gl::Program program_;
     int size_ = 0, coarseSize_ = 0;
