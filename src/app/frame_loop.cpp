@@ -14,7 +14,6 @@
 #include "cluster/master_clock.h"
 #include "cluster/rank_message.h"
 #include "common/clock.h"
-#include "common/data_dir.h"
 #include "io/png.h"
 #include "wall/tile_rays.h"
 
@@ -154,7 +153,7 @@ struct MasterState {
           split(session.bands, world.size(), session.balanced, session.options.balanceBy),
           navigation(session.scene.planetRadiusKm),
           wallFacts{session.scene.planetRadiusKm,
-                    (session.options.dataDir.empty() ? dataDirectory() : session.options.dataDir) + "/config/scenes",
+                    session.dataDir + "/config/scenes",
                     session.options.outDir}
     {
         if (session.control)

@@ -62,7 +62,8 @@ void configure(const cluster::MpiWorld& world, int argc, char** argv, WallSessio
                          (s.wall.rankCount == 1 ? " rank" : " ranks") + ", but mpirun started " +
                          std::to_string(world.size()) + " (use mpirun -n " + std::to_string(s.wall.rankCount) + ")");
     s.scene = components::loadScene(options.sceneFile);
-    s.shaderDir = (options.dataDir.empty() ? dataDirectory() : options.dataDir) + "/shaders";
+    s.dataDir = options.dataDir.empty() ? dataDirectory() : options.dataDir;
+    s.shaderDir = s.dataDir + "/shaders";
     render::marchShaderSource(s.scene, s.shaderDir); // every module readable before any window opens
     if (options.gather || options.tiles || options.controlPort >= 0 || options.webPort >= 0) // screenshot commands write there
         io::ensureWritableDirectory(options.outDir, "--out");
@@ -85,13 +86,12 @@ void configure(const cluster::MpiWorld& world, int argc, char** argv, WallSessio
         s.control = std::make_unique<control::ControlServer>(options.controlBind, options.controlPort,
                                                              control::readControlToken(options.controlTokenFile));
     if (world.isMaster() && options.webPort >= 0) {
-        const std::string dataDir = options.dataDir.empty() ? dataDirectory() : options.dataDir;
         web::WebSettings settings;
         settings.bindAddress = options.controlBind;
         settings.port = options.webPort;
         settings.token = control::readControlToken(options.controlTokenFile);
-        settings.pageDir = dataDir + "/web";
-        settings.presetDir = dataDir + "/config/scenes";
+        settings.pageDir = s.dataDir + "/web";
+        settings.presetDir = s.dataDir + "/config/scenes";
         settings.toneMap = s.toneMap;
         s.web = std::make_unique<web::WebConsole>(std::move(settings));
     }

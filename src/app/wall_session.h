@@ -27,7 +27,8 @@ struct WallSession {
     RenderOptions options;
     wall::Wall wall;
     scene::Scene scene;
-    std::string shaderDir;
+    std::string dataDir;   // --data-dir, else the installed or source tree's (common/data_dir.h)
+    std::string shaderDir; // dataDir/shaders
     double exposure = 1.0; // --exposure, else the scene's
     io::ToneMap toneMap;   // windows and wall.png
     // GL objects below the context, so that they are deleted while it exists.
