@@ -35,13 +35,42 @@ std::string oneLine(const std::string& what)
 
 namespace {
 
+// An open bracket of the text: '[' (an array or a table header) or '{' (an inline table), with the
+// elements an array has so far (its commas, and whether something follows the last).
+struct OpenBracket {
+    char bracket;
+    int line;
+    std::size_t commas = 0;
+    bool pending = false;
+};
+
 // The text with a line break after every comma of an array (outside strings and comments, and not
-// in inline tables, where TOML allows none), and the file's line of each resulting line.
-std::string breakArraysAfterCommas(const std::string& text, std::vector<int>& lines)
+// in inline tables, where TOML allows none), and the file's line of each resulting line. Refuses an
+// array of more than kMaxTomlArrayElements elements, or more than kMaxTomlFileArrayElements in all.
+std::string breakArraysAfterCommas(const std::string& path, const std::string& text, std::vector<int>& lines)
 {
     std::string out;
     out.reserve(text.size() + text.size() / 8);
-    std::vector<char> open; // '[' or '{'
+    std::vector<OpenBracket> open;
+    std::size_t fileElements = 0;
+    const auto checkLength = [&path](const OpenBracket& array, std::size_t elements) {
+        if (elements > kMaxTomlArrayElements)
+            throw inputError(path, array.line, "an array of more than " + std::to_string(kMaxTomlArrayElements) +
+                                                   " elements, the most a config array may have");
+    };
+    const auto closeArray = [&](const OpenBracket& array) {
+        const std::size_t elements = array.commas + (array.pending ? 1 : 0);
+        checkLength(array, elements);
+        fileElements += elements;
+        if (fileElements > kMaxTomlFileArrayElements)
+            throw inputError(path, array.line, "more than " + std::to_string(kMaxTomlFileArrayElements) +
+                                                   " array elements in the file, the most a config file may hold");
+    };
+    // Something other than a comma or a closing bracket starts (or continues) an element.
+    const auto element = [&open] {
+        if (!open.empty())
+            open.back().pending = true;
+    };
     int line = 1;
     lines.assign(1, 1);
     enum class In { Code, Comment, Basic, Literal, MultiBasic, MultiLiteral } in = In::Code;
@@ -85,6 +114,7 @@ std::string breakArraysAfterCommas(const std::string& text, std::vector<int>& li
             if (c == '#') {
                 in = In::Comment;
             } else if (c == '"' || c == '\'') {
+                element();
                 const bool triple = text.compare(i, 3, c == '"' ? basic3 : literal3) == 0;
                 in = c == '"' ? (triple ? In::MultiBasic : In::Basic) : (triple ? In::MultiLiteral : In::Literal);
                 if (triple) {
@@ -92,12 +122,19 @@ std::string breakArraysAfterCommas(const std::string& text, std::vector<int>& li
                     i += 2;
                 }
             } else if (c == '[' || c == '{') {
-                open.push_back(c);
+                element();
+                open.push_back({c, line});
             } else if ((c == ']' || c == '}') && !open.empty()) {
+                if (open.back().bracket == '[')
+                    closeArray(open.back());
                 open.pop_back();
-            } else if (c == ',' && !open.empty() && open.back() == '[') {
+            } else if (c == ',' && !open.empty() && open.back().bracket == '[') {
+                checkLength(open.back(), ++open.back().commas);
+                open.back().pending = false;
                 out += '\n';
                 lines.push_back(line);
+            } else if (c != ',' && c != ' ' && c != '\t' && c != '\r') {
+                element();
             }
             break;
         }
@@ -121,7 +158,7 @@ TomlFile parseTomlFile(const std::string& path)
     if (!in || !(text << in.rdbuf()))
         throw inputError(path, 0, "cannot read the file");
     auto lines = std::make_shared<std::vector<int>>();
-    std::istringstream broken(breakArraysAfterCommas(text.str(), *lines));
+    std::istringstream broken(breakArraysAfterCommas(path, text.str(), *lines));
     const auto fileLine = [&lines](std::size_t parsed) {
         return parsed >= 1 && parsed <= lines->size() ? (*lines)[parsed - 1] : int(parsed);
     };

@@ -25,11 +25,16 @@ struct TomlFile {
 
 // The largest file read (a scene or wall file; past it one error line names the file).
 constexpr std::size_t kMaxTomlFileBytes = 16u << 20;
+// The most elements an inline array may have, and all of a file's inline arrays together (nested
+// arrays' elements counted too): toml11 takes about 4 µs a value on the 2-core machine, so a file
+// at the limits reads in about half a second, and one past them is refused before it is parsed.
+constexpr std::size_t kMaxTomlArrayElements = 16384;
+constexpr std::size_t kMaxTomlFileArrayElements = 131072;
 
 // Parses a file; syntax errors become InputError "file:line: problem". Arrays are parsed with a
 // line break after each of their commas (toml11 scans a value's whole line for comments, which made
 // an array on one line cost the square of its length: 48 s for 40,000 points); the line numbers in
-// errors are the file's.
+// errors are the file's. Arrays past the limits above are refused with their line before parsing.
 TomlFile parseTomlFile(const std::string& path);
 
 class TableReader {

@@ -46,13 +46,22 @@ ask '^error preset nowhere: no such preset in .* \(presets: .*low-orbit.*\)$' "p
 ask '^ok preset .*/low-orbit\.toml lat_deg=58\.000000 lon_deg=20\.000000 alt_km=400\.000000$' \
     "preset $SRC_DIR/config/scenes/low-orbit.toml"
 ask ' lat_deg=58\.000000 lon_deg=20\.000000 alt_km=400\.000000 ' status
-# A large preset is read off the frame loop: while the 400,000 points of one curtain are read (seconds),
-# status answers and the frames go on, and a second preset is refused; then the big one is refused
-# for its size, and the camera stays.
-python3 - "$WORK/big.toml" <<'PY'
+# A large preset is read off the frame loop: while a chain of base scenes, each with curtains of
+# 16,000, 16,000 and 10,000 points (within the limits of an array and a file), is read (seconds),
+# status answers and the
+# frames go on, and a second preset is refused; then the chain's last base, one curtain of 400,000
+# points, is refused for its length before it is parsed, and the camera stays.
+python3 - "$WORK" <<'PY'
 import sys
-points = ", ".join(f"[{66 + (k % 100) / 200:.5f}, {-10 + 60 * k / 400000:.6f}]" for k in range(400000))
-open(sys.argv[1], "w").write(f'[scene]\nbase = "overhead.toml"\n\n[[aurora.curtain]]\npoints_lat_lon_deg = [{points}]\n')
+folder = sys.argv[1]
+def curtain(n, lat):
+    points = ", ".join(f"[{lat + (k % 100) / 200:.5f}, {-10 + 60 * k / n:.6f}]" for k in range(n))
+    return f"[[aurora.curtain]]\npoints_lat_lon_deg = [{points}]\n"
+open(f"{folder}/big-7.toml", "w").write('[scene]\nbase = "overhead.toml"\n\n' + curtain(400000, 66))
+for level in range(7):
+    name = "big.toml" if level == 0 else f"big-{level}.toml"
+    open(f"{folder}/{name}", "w").write(f'[scene]\nbase = "big-{level + 1}.toml"\n\n' + curtain(16000, 66) +
+                                        curtain(16000, 67) + curtain(10000, 68))
 PY
 cp "$DATA/overhead.toml" "$WORK/overhead.toml"
 "${client[@]}" --port "$port" "preset $WORK/big.toml" > "$WORK/big.answer" &
@@ -64,7 +73,7 @@ frame_during=$(field frame "$(ask ' lat_deg=58\.000000 lon_deg=20\.000000 alt_km
 kill -0 $loader 2>/dev/null || fail "the big preset was answered before status: $(cat "$WORK/big.answer")"
 [ "$frame_during" -gt "$frame_before" ] || fail "no frame was drawn while the preset loaded ($frame_before, $frame_during)"
 wait $loader && fail "the big preset was accepted: $(cat "$WORK/big.answer")"
-grep -q '^error preset .*/big\.toml: .*points_lat_lon_deg: 400000 control points, more than the 16384' "$WORK/big.answer" ||
+grep -q '^error preset .*/big\.toml: .*/big-7\.toml:5: an array of more than 16384 elements' "$WORK/big.answer" ||
     fail "the big preset answered '$(cat "$WORK/big.answer")'"
 note "status answered and frames $frame_before..$frame_during drawn while the big preset loaded"
 ask ' lat_deg=58\.000000 lon_deg=20\.000000 alt_km=400\.000000 ' status

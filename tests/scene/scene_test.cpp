@@ -3,6 +3,7 @@
 #include "components/aurora/aurora.h"
 #include "components/fluid_detail/fluid_detail.h"
 #include "components/registry.h"
+#include "config/toml_reader.h"
 #include "scene/scene.h"
 #include "load_error.h"
 
@@ -86,6 +87,38 @@ TEST(Scene, LongOneLineArraysAndBracketsInStrings)
     ASSERT_EQ(curtains.size(), 2u);
     EXPECT_EQ(curtains[0].keys.front().pointsLatLonDeg.size(), 60u);
     EXPECT_EQ(curtains[0].keys.front().pointsLatLonDeg[59], glm::dvec2(65.59, 19.5));
+}
+
+namespace {
+
+// Curtains of `points` control points each on one line (the first array's line is 4), as a scene file.
+std::string curtainScene(const std::string& name, std::size_t points, std::size_t curtains = 1)
+{
+    std::ostringstream text;
+    text << "[scene]\ncomponents = [\"planet\", \"aurora\"]\n";
+    for (std::size_t c = 0; c < curtains; ++c) {
+        text << "[[aurora.curtain]]\npoints_lat_lon_deg = [";
+        for (std::size_t k = 0; k < points; ++k)
+            text << (k ? ", " : "") << "[" << 66.0 + 0.001 * double(k % 7) << ", " << -10.0 + 1e-3 * double(k) << "]";
+        text << "]\n";
+    }
+    return aurorawall::test::temporarySceneFile(name, text.str());
+}
+
+} // namespace
+
+// An inline array may have kMaxTomlArrayElements elements, a file kMaxTomlFileArrayElements in all
+// (nested ones too); past either, one line names the array's line before toml11 parses the file.
+TEST(SceneErrors, ArraysPastTheLimitsAreRefusedWithTheirLine)
+{
+    const std::size_t most = config::kMaxTomlArrayElements;
+    EXPECT_EQ(loadError(curtainScene("at_limit.toml", most)).find("an array of"), std::string::npos);
+    const std::string longer = curtainScene("past_limit.toml", most + 1);
+    EXPECT_EQ(loadError(longer), longer + ":4: an array of more than 16384 elements, the most a config array may have");
+    // Each curtain: its points and their two coordinates, 3 × 16000 elements; three fit, four do not.
+    const std::string many = curtainScene("many_arrays.toml", 16000, 4);
+    EXPECT_NE(loadError(many).find("array elements in the file, the most a config file may hold"), std::string::npos);
+    EXPECT_EQ(loadError(curtainScene("fewer_arrays.toml", 16000, 2)).find("array elements"), std::string::npos);
 }
 
 TEST(SceneErrors, MissingFile)
