@@ -1,4 +1,4 @@
-// The browser console: polls /preview.png and /status about 5 times a second and sends the
+// The browser console: polls /preview.png, /status and /ranks about 5 times a second and sends the
 // buttons' commands as POST /command, the same lines as the control port takes.
 "use strict";
 
@@ -82,7 +82,14 @@ async function pollPreview() {
 }
 
 // Each rank's render time in the last frame as a bar (longest: full width), red where the rank lags:
-// it drew an older frame than the master's, or took more than 1.5 times the median.
+// it drew an older frame than the master's, took more than 1.5 times the median, or its last
+// heartbeat reached the master more than two heartbeat periods ago (a beat missed).
+function rankLags(r, last, median) {
+  const heartbeatLate = r.heartbeat_age_s !== null && last.heartbeat_period_s !== null &&
+    r.heartbeat_age_s > 2 * last.heartbeat_period_s;
+  return r.frame < last.frame || r.render_ms > 1.5 * median || heartbeatLate;
+}
+
 async function pollRanks() {
   try {
     const response = await request("/ranks");
@@ -94,13 +101,15 @@ async function pollRanks() {
     const median = [...times].sort((a, b) => a - b)[Math.floor(times.length / 2)];
     $("ranks").replaceChildren(...last.ranks.map((r, i) => {
       const row = document.createElement("div");
-      row.className = "rank" + (r.frame < last.frame || r.render_ms > 1.5 * median ? " lagging" : "");
+      row.className = "rank" + (rankLags(r, last, median) ? " lagging" : "");
       const bar = document.createElement("span");
       bar.className = "bar";
       bar.style.width = `${(100 * r.render_ms / longest).toFixed(1)}%`;
       const label = document.createElement("span");
       label.className = "label";
-      label.textContent = `rank ${i}: ${r.render_ms.toFixed(1)} ms, waited ${r.wait_ms.toFixed(1)} ms`;
+      // the master (rank 0) is the one that hears the others
+      const heard = i === 0 || r.heartbeat_age_s === null ? "" : `, heard ${r.heartbeat_age_s.toFixed(1)} s ago`;
+      label.textContent = `rank ${i}: ${r.render_ms.toFixed(1)} ms, waited ${r.wait_ms.toFixed(1)} ms${heard}`;
       row.append(bar, label);
       return row;
     }));
@@ -147,10 +156,18 @@ $("token-set").onclick = () => {
   loadPresets();
 };
 
+// Polls `poll` again POLL_MS after each answer: one request at a time each, so a slow wall is not
+// flooded; each on its own, so the ranks' heartbeats still show while the wall's frame loop waits
+// for a silent rank and /status does not answer.
+function keepPolling(poll) {
+  (async function loop() {
+    await poll();
+    setTimeout(loop, POLL_MS);
+  })();
+}
+
 loadPresets();
-// One poll at a time each: a slow wall is not flooded with requests.
-(async function loop() {
-  await Promise.all([pollStatus(), pollPreview(), pollRanks()]);
-  checkAlive();
-  setTimeout(loop, POLL_MS);
-})();
+keepPolling(pollStatus);
+keepPolling(pollPreview);
+keepPolling(pollRanks);
+setInterval(checkAlive, POLL_MS);

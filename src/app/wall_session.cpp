@@ -93,6 +93,10 @@ void configure(const cluster::MpiWorld& world, int argc, char** argv, WallSessio
         settings.pageDir = s.dataDir + "/web";
         settings.presetDir = s.dataDir + "/config/scenes";
         settings.toneMap = s.toneMap;
+        // The web server's thread asks for them once a frame has been drawn, after the watchdog started;
+        // the session, and so the server, ends before the world.
+        settings.heartbeatAgesS = [&world] { return world.heartbeatAgesS(); };
+        settings.heartbeatPeriodS = cluster::heartbeatPeriodS(options.rankTimeoutS);
         s.web = std::make_unique<web::WebConsole>(std::move(settings));
     }
 }

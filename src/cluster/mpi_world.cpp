@@ -43,6 +43,11 @@ void MpiWorld::setPhase(RankPhase phase, std::uint64_t frame) const
         watchdog_->setPhase(phase, frame);
 }
 
+std::vector<double> MpiWorld::heartbeatAgesS() const
+{
+    return watchdog_ ? watchdog_->heartbeatAgesS() : std::vector<double>{};
+}
+
 int MpiWorld::agreedStatus(int myStatus, const std::string& myError, const std::string& prefix) const
 {
     int agreed = 0;

@@ -36,6 +36,9 @@ public:
     void startWatchdog(double timeoutS) const;
     // What this rank is doing now, for its heartbeats (nothing before startWatchdog).
     void setPhase(RankPhase phase, std::uint64_t frame = 0) const;
+    // On the master, with a watchdog: each rank's seconds since its last heartbeat (Watchdog::
+    // heartbeatAgesS); otherwise empty.
+    std::vector<double> heartbeatAgesS() const;
 
     // Called by every rank after a set-up step with its own exit status (0: it went well) and error
     // message. Returns the largest status over the ranks, on every rank; if it is not 0, rank 0 prints

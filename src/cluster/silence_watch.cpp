@@ -39,6 +39,14 @@ std::vector<SilenceWatch::Silent> SilenceWatch::silentRanks(double nowS) const
     return silent;
 }
 
+std::vector<double> SilenceWatch::heartbeatAgesS(double nowS) const
+{
+    std::vector<double> ages(ranks_.size(), 0.0);
+    for (size_t r = 1; r < ranks_.size(); ++r)
+        ages[r] = std::max(0.0, nowS - ranks_[r].atS);
+    return ages;
+}
+
 double SilenceWatch::stallLimitS(const MainThreadProgress::Snapshot& master) const
 {
     return std::max(timeoutS_, kFramesBeforeHung * std::max(master.slowestFrameS, master.busyThisFrameS));

@@ -54,6 +54,9 @@ public:
     };
     // The ranks not heard for longer than the timeout at `nowS`, in rank order.
     std::vector<Silent> silentRanks(double nowS) const;
+    // Each rank's seconds since its last heartbeat at `nowS` (since the start until its first), in
+    // rank order; 0 for rank 0, the watcher itself.
+    std::vector<double> heartbeatAgesS(double nowS) const;
 
     // How long a main thread may go without progress before it counts as hung, given the master's.
     double stallLimitS(const MainThreadProgress::Snapshot& master) const;

@@ -52,6 +52,8 @@ std::string describeHung(const std::vector<SilenceWatch::Hung>& hung, const std:
 
 } // namespace
 
+double heartbeatPeriodS(double timeoutS) { return std::clamp(timeoutS / 5.0, 0.05, 1.0); }
+
 Watchdog::Watchdog(MPI_Comm comm, double timeoutS) : comm_(comm), timeoutS_(timeoutS), progress_(secondsNow())
 {
     MPI_Comm_rank(comm_, &rank_);
@@ -71,6 +73,8 @@ Watchdog::Watchdog(MPI_Comm comm, double timeoutS) : comm_(comm), timeoutS_(time
         hangFrame_ = hangFrame;
     else
         hangRank_ = -1;
+    if (rank_ == 0)
+        watch_.emplace(size_, timeoutS_, secondsNow());
     if (size_ == 1)
         return;
     thread_ = std::thread([this] { rank_ == 0 ? watchRanks() : sendHeartbeats(); });
@@ -105,6 +109,12 @@ void Watchdog::waitEnds()
     progress_.waitEnds(secondsNow());
 }
 
+std::vector<double> Watchdog::heartbeatAgesS()
+{
+    const std::lock_guard<std::mutex> lock(watchMutex_);
+    return watch_ ? watch_->heartbeatAgesS(secondsNow()) : std::vector<double>{};
+}
+
 MainThreadProgress::Snapshot Watchdog::progress()
 {
     const std::lock_guard<std::mutex> lock(mutex_);
@@ -113,7 +123,7 @@ MainThreadProgress::Snapshot Watchdog::progress()
 
 void Watchdog::sendHeartbeats()
 {
-    const auto period = std::chrono::duration<double>(std::clamp(timeoutS_ / 5.0, 0.05, 1.0));
+    const auto period = std::chrono::duration<double>(heartbeatPeriodS(timeoutS_));
     const auto tick = std::chrono::milliseconds(10); // how soon the thread notices it should stop
     auto next = std::chrono::steady_clock::now();
     // The master's heartbeats: a master silent for longer than the timeout (stopped, frozen, cut off)
@@ -169,12 +179,11 @@ void Watchdog::sendHeartbeats()
 
 void Watchdog::watchRanks()
 {
-    SilenceWatch watch(size_, timeoutS_, secondsNow());
     std::int64_t beat[kHeartbeatValues] = {};
     MPI_Request request;
     MPI_Irecv(beat, kHeartbeatValues, MPI_INT64_T, MPI_ANY_SOURCE, kHeartbeatTag, comm_, &request);
     // The master's own heartbeat to every worker, at the workers' period (eager: MPI_Send returns).
-    const double beatPeriodS = std::clamp(timeoutS_ / 5.0, 0.05, 1.0);
+    const double beatPeriodS = heartbeatPeriodS(timeoutS_);
     double nextBeatS = 0.0;
     const auto beatWorkers = [this](std::int64_t running) {
         for (int r = 1; r < size_; ++r)
@@ -189,16 +198,21 @@ void Watchdog::watchRanks()
         MPI_Status status;
         MPI_Test(&request, &arrived, &status);
         if (arrived) {
-            watch.heard(status.MPI_SOURCE,
-                        {static_cast<RankPhase>(beat[0]), static_cast<std::uint64_t>(beat[1]), beat[2] != 0,
-                         static_cast<double>(beat[3]) * 1e-6},
-                        secondsNow());
+            const std::lock_guard<std::mutex> lock(watchMutex_);
+            watch_->heard(status.MPI_SOURCE,
+                          {static_cast<RankPhase>(beat[0]), static_cast<std::uint64_t>(beat[1]), beat[2] != 0,
+                           static_cast<double>(beat[3]) * 1e-6},
+                          secondsNow());
             MPI_Irecv(beat, kHeartbeatValues, MPI_INT64_T, MPI_ANY_SOURCE, kHeartbeatTag, comm_, &request);
             continue;
         }
         const MainThreadProgress::Snapshot master = progress();
         const std::string masterPhase = describePhase(master.phase, master.frame);
-        const std::vector<SilenceWatch::Silent> silent = watch.silentRanks(secondsNow());
+        std::unique_lock<std::mutex> lock(watchMutex_);
+        const std::vector<SilenceWatch::Silent> silent = watch_->silentRanks(secondsNow());
+        const std::vector<SilenceWatch::Hung> hung = watch_->hungRanks(master);
+        const double stallLimitS = watch_->stallLimitS(master);
+        lock.unlock();
         if (!silent.empty()) {
             std::fprintf(stderr,
                          "aurorawall render: no heartbeat for more than --rank-timeout %g s from %s; the master "
@@ -207,13 +221,12 @@ void Watchdog::watchRanks()
             std::fflush(stderr);
             MPI_Abort(MPI_COMM_WORLD, kRankSilentExitStatus);
         }
-        const std::vector<SilenceWatch::Hung> hung = watch.hungRanks(master);
         if (!hung.empty()) {
             std::fprintf(stderr,
                          "aurorawall render: hung: %s, more than %.1f s = max(--rank-timeout %g s, %g x max(the "
                          "slowest frame %.2f s, the master's own work this frame %.2f s)); the master was waiting in "
                          "%s; ending the job (exit status %d)\n",
-                         describeHung(hung, hosts_).c_str(), watch.stallLimitS(master), timeoutS_, kFramesBeforeHung,
+                         describeHung(hung, hosts_).c_str(), stallLimitS, timeoutS_, kFramesBeforeHung,
                          master.slowestFrameS,
                          master.busyThisFrameS, masterPhase.c_str(), kRankSilentExitStatus);
             std::fflush(stderr);

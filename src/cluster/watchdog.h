@@ -21,12 +21,14 @@
 // main thread sleep for ever when it starts drawing frame FRAME, as a driver call that never returns
 // would (its heartbeat thread keeps beating). It is read once, when the watchdog starts.
 #include "cluster/rank_phase.h"
+#include "cluster/silence_watch.h"
 
 #include <mpi.h>
 
 #include <atomic>
 #include <cstdint>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <thread>
 #include <vector>
@@ -35,6 +37,10 @@ namespace aurorawall::cluster {
 
 // The exit status of a job ended because a rank fell silent or hung.
 constexpr int kRankSilentExitStatus = 3;
+
+// Seconds between two heartbeats of a rank (and of the master to the workers): a fifth of the
+// timeout, within [0.05, 1] s.
+double heartbeatPeriodS(double timeoutS);
 
 class Watchdog {
 public:
@@ -54,6 +60,10 @@ public:
     void waitBegins();
     void waitEnds();
 
+    // On the master: each rank's seconds since its last heartbeat, in rank order (0 for the master
+    // itself; SilenceWatch::heartbeatAgesS). Empty on the other ranks. Any thread.
+    std::vector<double> heartbeatAgesS();
+
 private:
     void sendHeartbeats();
     void watchRanks();
@@ -68,6 +78,8 @@ private:
     std::uint64_t hangFrame_ = 0;
     std::mutex mutex_; // guards progress_, marked by the main thread and read by the watchdog's
     MainThreadProgress progress_;
+    std::mutex watchMutex_;              // guards watch_, fed by the watchdog's thread, read by heartbeatAgesS
+    std::optional<SilenceWatch> watch_;  // the master's record of the heartbeats
     std::atomic<bool> stop_{false};
     std::thread thread_;
 };

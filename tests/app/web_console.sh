@@ -46,9 +46,19 @@ check [ "$(curl -s -o /dev/null -w '%{http_code}' "$url/console.js")" = 200 ]
 check [ "$(curl -s -o /dev/null -w '%{http_code}' "$url/console.css")" = 200 ]
 check [ "$(get /presets)" = 200 ]
 check grep -q '"ground-65n"' "$WORK/body"
-# Each rank's last frame (2 ranks): the frame it drew and its times.
+# Each rank's last frame (2 ranks): the frame it drew, its times, and the age of its last heartbeat
+# at the master (a beat every 1 s at the default --rank-timeout 10: allowed up to 5 s on a loaded machine).
 for _ in $(seq 100); do [ "$(get /ranks)" = 200 ] && grep -q '"render_ms"' "$WORK/body" && break; sleep 0.1; done
-check python3 -c 'import json, sys; r = json.load(open(sys.argv[1])); assert len(r["ranks"]) == 2 and all(k["frame"] == r["frame"] and k["render_ms"] > 0 for k in r["ranks"]), r' "$WORK/body"
+check python3 - "$WORK/body" <<'PY'
+import json, sys
+r = json.load(open(sys.argv[1]))
+print("GET /ranks ->", r)
+assert len(r["ranks"]) == 2 and all(k["frame"] == r["frame"] and k["render_ms"] > 0 for k in r["ranks"]), r
+assert r["heartbeat_period_s"] == 1, r
+ages = [k["heartbeat_age_s"] for k in r["ranks"]]
+assert all(isinstance(a, (int, float)) and 0 <= a < 5 for a in ages), ages
+assert ages[0] == 0, ages  # the master hears the others
+PY
 
 # The preview: a PNG (503 until the first wall is gathered), a new one once a frame shows a new
 # camera. (The test scene's curtains drift, but on this 64x36 wall not by a whole 8-bit step: its
@@ -151,6 +161,7 @@ if command -v chromium >/dev/null; then
     check grep -Eq '<img id="preview" [^>]*src="blob:' "$WORK/dom.html"
     check grep -q '<p id="alarm" class="alarm" hidden' "$WORK/dom.html"
     check [ "$(grep -o 'rank [0-9]: [0-9.]* ms, waited' "$WORK/dom.html" | wc -l)" -eq 2 ]
+    check grep -Eq 'rank 1: [0-9.]+ ms, waited [0-9.]+ ms, heard [0-9.]+ s ago' "$WORK/dom.html"
     note "the page's script ran in Chromium: $(grep -o '<p id="status" class="status">[^<]*' "$WORK/dom.html" | sed 's/.*>//')"
 else
     note "SKIP the browser part: chromium is not installed"

@@ -84,3 +84,24 @@ TEST(StatusJson, MembersFromTheStatusLine)
     EXPECT_EQ(aw::app::web::statusJson("ok frame=1 playing name=inf"), R"({"frame":1,"paused":false,"name":"inf"})");
     EXPECT_THROW(aw::app::web::statusJson("error the wall is quitting"), std::invalid_argument);
 }
+
+TEST(RanksJson, EachRanksFrameTimesAndHeartbeatAge)
+{
+    aw::cluster::FrameRecord record{7, 3.5, 40.0, {}};
+    record.ranks.resize(2);
+    record.ranks[0].frame = 7;
+    record.ranks[0].renderMs = 20.0;
+    record.ranks[0].waitMs = 1.5;
+    record.ranks[1].frame = 6;
+    record.ranks[1].renderMs = 30.0;
+    record.ranks[1].waitMs = 0.25;
+    EXPECT_EQ(aw::app::web::ranksJson(record, {0.0, 0.375}, 1.0),
+              R"({"frame":7,"imbalance":1.2,"heartbeat_period_s":1,"ranks":[)"
+              R"({"frame":7,"render_ms":20,"wait_ms":1.5,"heartbeat_age_s":0},)"
+              R"({"frame":6,"render_ms":30,"wait_ms":0.25,"heartbeat_age_s":0.375}]})");
+    // Without a watchdog (no MPI_THREAD_MULTIPLE): no ages, no period.
+    EXPECT_EQ(aw::app::web::ranksJson(record, {}, 1.0),
+              R"({"frame":7,"imbalance":1.2,"heartbeat_period_s":null,"ranks":[)"
+              R"({"frame":7,"render_ms":20,"wait_ms":1.5,"heartbeat_age_s":null},)"
+              R"({"frame":6,"render_ms":30,"wait_ms":0.25,"heartbeat_age_s":null}]})");
+}

@@ -56,6 +56,19 @@ TEST(SilenceWatch, AFinishedRankIsNoLongerWatched)
     EXPECT_TRUE(watch.silentRanks(100.0).empty());
 }
 
+TEST(SilenceWatch, HeartbeatAgesCountFromEachRanksLastBeat)
+{
+    SilenceWatch watch(3, 10.0, 100.0);
+    EXPECT_EQ(watch.heartbeatAgesS(100.0), (std::vector<double>{0.0, 0.0, 0.0}));
+    watch.heard(1, {RankPhase::Draw, 4}, 101.25);
+    const std::vector<double> ages = watch.heartbeatAgesS(102.0);
+    ASSERT_EQ(ages.size(), 3u);
+    EXPECT_EQ(ages[0], 0.0);          // the master, the watcher itself
+    EXPECT_DOUBLE_EQ(ages[1], 0.75);  // since its beat
+    EXPECT_DOUBLE_EQ(ages[2], 2.0);   // never heard: since the start
+    EXPECT_EQ(watch.heartbeatAgesS(100.5)[1], 0.0); // a clock read before the beat: never negative
+}
+
 TEST(SilenceWatch, HeartbeatsFromUnknownRanksAreIgnored)
 {
     SilenceWatch watch(2, 1.0, 0.0);

@@ -58,4 +58,30 @@ std::string statusJson(const std::string& statusLine)
     return json.empty() ? "{}" : json + "}";
 }
 
+std::string ranksJson(const cluster::FrameRecord& record, const std::vector<double>& heartbeatAgesS,
+                      double heartbeatPeriodS)
+{
+    const bool watched = heartbeatAgesS.size() >= record.ranks.size();
+    std::ostringstream json;
+    json.precision(4);
+    json << "{\"frame\":" << record.frame << ",\"imbalance\":" << record.imbalance() << ",\"heartbeat_period_s\":";
+    if (watched)
+        json << heartbeatPeriodS;
+    else
+        json << "null";
+    json << ",\"ranks\":[";
+    for (std::size_t r = 0; r < record.ranks.size(); ++r) {
+        const cluster::RankReport& report = record.ranks[r];
+        json << (r ? "," : "") << "{\"frame\":" << report.frame << ",\"render_ms\":" << report.renderMs
+             << ",\"wait_ms\":" << report.waitMs << ",\"heartbeat_age_s\":";
+        if (watched)
+            json << heartbeatAgesS[r];
+        else
+            json << "null";
+        json << "}";
+    }
+    json << "]}";
+    return json.str();
+}
+
 } // namespace aurorawall::app::web

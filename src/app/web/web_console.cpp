@@ -16,7 +16,6 @@
 #include <cmath>
 #include <filesystem>
 #include <mutex>
-#include <sstream>
 #include <thread>
 #include <vector>
 
@@ -63,7 +62,7 @@ struct WebConsole::Impl {
     std::mutex previewMutex;
     std::shared_ptr<const io::Image> canvas; // the last wall handed over, not yet encoded
     std::shared_ptr<const std::string> png;  // the last encoded preview
-    std::string ranksJson = "{}";            // GET /ranks: the last frame's reports (previewMutex)
+    std::optional<cluster::FrameRecord> lastFrame; // GET /ranks: the last frame's reports (previewMutex)
 
     bool authorized(const httplib::Request& req, httplib::Response& res) const
     {
@@ -106,6 +105,19 @@ struct WebConsole::Impl {
         for (const std::string& name : names)
             json += (json.size() > 1 ? ",\"" : "\"") + name + "\""; // file names of the data directory: no quotes
         res.set_content(json + "]", "application/json");
+    }
+
+    // The last frame's reports with each rank's heartbeat age now ({} before the first frame).
+    void ranks(httplib::Response& res)
+    {
+        std::optional<cluster::FrameRecord> frame;
+        {
+            std::lock_guard<std::mutex> lock(previewMutex);
+            frame = lastFrame;
+        }
+        const std::vector<double> ages =
+            frame && settings.heartbeatAgesS ? settings.heartbeatAgesS() : std::vector<double>{};
+        res.set_content(frame ? ranksJson(*frame, ages, settings.heartbeatPeriodS) : "{}", "application/json");
     }
 
     void preview(httplib::Response& res)
@@ -165,10 +177,8 @@ WebConsole::WebConsole(WebSettings settings) : impl_(std::make_unique<Impl>())
             w.presets(res);
     });
     s.Get("/ranks", [&w](const httplib::Request& req, httplib::Response& res) {
-        if (!w.authorized(req, res))
-            return;
-        std::lock_guard<std::mutex> lock(w.previewMutex);
-        res.set_content(w.ranksJson, "application/json");
+        if (w.authorized(req, res))
+            w.ranks(res);
     });
     s.Get("/preview.png", [&w](const httplib::Request& req, httplib::Response& res) {
         if (w.authorized(req, res))
@@ -206,17 +216,9 @@ WebConsole::~WebConsole()
 
 void WebConsole::showRanks(const cluster::FrameRecord& record)
 {
-    std::ostringstream json;
-    json.precision(4);
-    json << "{\"frame\":" << record.frame << ",\"imbalance\":" << record.imbalance() << ",\"ranks\":[";
-    for (size_t r = 0; r < record.ranks.size(); ++r) {
-        const cluster::RankReport& report = record.ranks[r];
-        json << (r ? "," : "") << "{\"frame\":" << report.frame << ",\"render_ms\":" << report.renderMs
-             << ",\"wait_ms\":" << report.waitMs << "}";
-    }
-    json << "]}";
+    cluster::FrameRecord copy = record;
     std::lock_guard<std::mutex> lock(impl_->previewMutex);
-    impl_->ranksJson = json.str();
+    impl_->lastFrame = std::move(copy);
 }
 
 int WebConsole::port() const { return impl_->port; }

@@ -2,8 +2,8 @@
 // The operator's console in a browser (render --web-port, docs/driving.md "Browser console"): an
 // HTTP server on the master, on a thread of its own, serving the page from the data directory's
 // web/ folder, POST /command, GET /status, GET /presets, GET /preview.png and GET /ranks (each
-// rank's last frame: the frame it drew, its render and wait times; the master's frame and the
-// imbalance).
+// rank's last frame: the frame it drew, its render and wait times, the age of its last heartbeat;
+// the master's frame and the imbalance).
 // It never touches the wall itself: commands and status go through a CommandMailbox that the frame
 // loop serves with the control port's lines, and the preview is the last wall the frame loop
 // handed over, downsampled and encoded here, on request.
@@ -12,8 +12,11 @@
 #include "io/image.h"
 #include "io/tone_map.h"
 
+#include <functional>
 #include <memory>
+#include <optional>
 #include <string>
+#include <vector>
 
 namespace aurorawall::app::web {
 
@@ -24,6 +27,10 @@ struct WebSettings {
     std::string pageDir;                   // the page, its script and style (DATA/web)
     std::string presetDir;                 // config/scenes: the names GET /presets lists
     io::ToneMap toneMap;                   // the preview's, as wall.png's
+    // Each rank's seconds since its last heartbeat reached the master, now (rank order; empty without
+    // a watchdog), called by GET /ranks on the server's thread; and the heartbeat period, s.
+    std::function<std::vector<double>()> heartbeatAgesS;
+    double heartbeatPeriodS = 1.0;
 };
 
 class WebConsole {
@@ -51,7 +58,8 @@ public:
     bool previewWanted() const;
     // the gathered wall (rows top-down, radiance), taken over: downsampled and encoded when asked for;
     void showPreview(io::Image&& canvas);
-    // each rank's report of the last frame, for GET /ranks.
+    // each rank's report of the last frame, for GET /ranks (ranksJson, with the heartbeats' ages
+    // at the time of the request: they grow while a rank is silent and the frame loop waits for it).
     void showRanks(const cluster::FrameRecord& record);
 
 private:

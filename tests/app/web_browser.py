@@ -1,0 +1,324 @@
+#!/usr/bin/env python3
+"""Presses the browser console's buttons in headless Chromium and checks the wall obeys.
+
+Usage: web_browser.py URL SECRET WORK_DIR PRESET RANK1_PID
+
+URL is the console of a running wall (http://127.0.0.1:PORT) at the default --rank-timeout (10 s:
+a heartbeat every second), SECRET its token, PRESET a preset whose camera differs from the wall's,
+RANK1_PID the process of its rank 1. Chromium is driven through the DevTools protocol over
+--remote-debugging-pipe (JSON messages ending in a NUL byte: it reads fd 3, writes fd 4); the page
+is opened with #token=SECRET and its real controls are used through Runtime.evaluate: the
+pause/play button, the time slider (its value set, then the input and change events the page
+listens to), a preset's button. After each, GET /status must show what was asked: paused with
+the time standing still, the slider's time, playing with the time running, the camera the preset's
+answer reports. The preview on the page must change when the camera moves. While rank 1 is
+stopped (SIGSTOP, for at most 6 s), GET /ranks and the page must show its heartbeat's age growing
+past two periods and draw the rank red; once it runs again (SIGCONT), no longer. Writes
+WORK_DIR/console.png (Page.captureScreenshot) and WORK_DIR/chromium.log. Standard library only.
+Exit status 0 when all holds, 1 otherwise (with one line saying what did not).
+"""
+import base64
+import fcntl
+import json
+import os
+import select
+import signal
+import subprocess
+import sys
+import time
+import urllib.request
+
+DEADLINE_S = 30.0  # for each condition polled; frames take 50-300 ms on a loaded 2-core machine
+POLL_S = 0.1
+
+
+class Failure(Exception):
+    pass
+
+
+def poll(what, probe, deadline_s=DEADLINE_S):
+    """probe() until it returns something true; Failure naming `what` after the deadline."""
+    end = time.monotonic() + deadline_s
+    last = None
+    while time.monotonic() < end:
+        last = probe()
+        if last:
+            return last
+        time.sleep(POLL_S)
+    raise Failure(f"{what} (waited {deadline_s:.0f} s; last seen: {last!r})")
+
+
+class Chromium:
+    """One headless Chromium, one page, over the DevTools pipe."""
+
+    def __init__(self, work_dir):
+        to_chrome_r, to_chrome_w = os.pipe()
+        from_chrome_r, from_chrome_w = os.pipe()
+        # The child's ends at 10 and above, so bash can put them at 3 and 4 without clobbering one another.
+        child_r = fcntl.fcntl(to_chrome_r, fcntl.F_DUPFD, 10)
+        child_w = fcntl.fcntl(from_chrome_w, fcntl.F_DUPFD, 10)
+        for fd in (to_chrome_r, from_chrome_w):
+            os.close(fd)
+        self.log = open(os.path.join(work_dir, "chromium.log"), "wb")
+        args = ["--headless", "--no-sandbox", "--disable-gpu", "--no-first-run", "--remote-debugging-pipe",
+                "--user-data-dir=" + os.path.join(work_dir, "chromium-profile"), "--window-size=720,900",
+                "about:blank"]
+        self.process = subprocess.Popen(
+            ["bash", "-c", f'exec 3<&{child_r} 4>&{child_w} {child_r}<&- {child_w}>&-; exec /usr/bin/chromium "$@"',
+             "chromium"] + args,
+            pass_fds=(child_r, child_w), stdin=subprocess.DEVNULL, stdout=self.log, stderr=self.log)
+        os.close(child_r)
+        os.close(child_w)
+        self.out, self.inp = to_chrome_w, from_chrome_r
+        self.buffer = b""
+        self.next_id = 0
+        self.events = []
+        self.session = None
+
+    def _send(self, message):
+        data = json.dumps(message).encode() + b"\0"
+        while data:
+            data = data[os.write(self.out, data):]
+
+    def _receive(self, deadline):
+        """The next message, or None at the deadline; Failure if Chromium closed the pipe."""
+        while b"\0" not in self.buffer:
+            left = deadline - time.monotonic()
+            if left <= 0 or not select.select([self.inp], [], [], left)[0]:
+                return None
+            chunk = os.read(self.inp, 1 << 20)
+            if not chunk:
+                raise Failure("Chromium closed the DevTools pipe (see chromium.log)")
+            self.buffer += chunk
+        message, self.buffer = self.buffer.split(b"\0", 1)
+        return json.loads(message)
+
+    def call(self, method, params=None, page=True, timeout_s=DEADLINE_S):
+        """A DevTools command's result; events arriving meanwhile are kept in self.events."""
+        self.next_id += 1
+        message = {"id": self.next_id, "method": method, "params": params or {}}
+        if page:
+            message["sessionId"] = self.session
+        self._send(message)
+        deadline = time.monotonic() + timeout_s
+        while True:
+            answer = self._receive(deadline)
+            if answer is None:
+                raise Failure(f"no answer to {method} within {timeout_s:.0f} s")
+            if answer.get("id") == self.next_id:
+                if "error" in answer:
+                    raise Failure(f"{method}: {answer['error']}")
+                return answer["result"]
+            if "method" in answer:
+                self.events.append(answer)
+
+    def open(self, url):
+        target = self.call("Target.createTarget", {"url": "about:blank"}, page=False)["targetId"]
+        self.session = self.call("Target.attachToTarget", {"targetId": target, "flatten": True}, page=False)["sessionId"]
+        self.call("Runtime.enable")
+        self.call("Page.enable")
+        self.call("Page.navigate", {"url": url})
+
+    def evaluate(self, expression):
+        """The value of a JavaScript expression in the page (promises awaited); Failure if it throws."""
+        result = self.call("Runtime.evaluate", {"expression": expression, "returnByValue": True, "awaitPromise": True})
+        if "exceptionDetails" in result:
+            raise Failure(f"the page threw on {expression!r}: {result['exceptionDetails'].get('exception', {}).get('description', result['exceptionDetails'].get('text'))}")
+        return result["result"].get("value")
+
+    def page_errors(self):
+        return [e["params"]["exceptionDetails"].get("exception", {}).get("description", "?")
+                for e in self.events if e.get("method") == "Runtime.exceptionThrown"]
+
+    def screenshot(self, path):
+        data = self.call("Page.captureScreenshot", {"format": "png"})["data"]
+        with open(path, "wb") as f:
+            f.write(base64.b64decode(data))
+
+    def close(self):
+        try:
+            self.call("Browser.close", page=False, timeout_s=5)
+        except (Failure, OSError):
+            pass
+        try:
+            self.process.wait(timeout=10)
+        except subprocess.TimeoutExpired:
+            self.process.kill()
+            self.process.wait()
+        os.close(self.out)
+        os.close(self.inp)
+        self.log.close()
+
+
+class Wall:
+    """GET /status of the wall, beside the page."""
+
+    def __init__(self, url, secret):
+        self.url, self.secret = url, secret
+
+    def status(self):
+        request = urllib.request.Request(self.url + "/status", headers={"Authorization": "Bearer " + self.secret})
+        with urllib.request.urlopen(request, timeout=15) as r:
+            return json.load(r)
+
+    def ranks(self):
+        request = urllib.request.Request(self.url + "/ranks", headers={"Authorization": "Bearer " + self.secret})
+        with urllib.request.urlopen(request, timeout=15) as r:
+            return json.load(r)
+
+    def frames_later(self, count):
+        """The status once the wall has drawn `count` more frames."""
+        first = self.status()["frame"]
+        return poll(f"{count} frames after frame {first}", lambda: (lambda s: s if s["frame"] >= first + count else None)(self.status()))
+
+
+# JavaScript helpers defined in the page once it has loaded.
+PAGE_HELPERS = r"""
+window.awTest = {
+  click(id) { document.getElementById(id).click(); return true; },
+  text(id) { return document.getElementById(id).textContent; },
+  shown(id) { return getComputedStyle(document.getElementById(id)).display !== "none"; },
+  // The time slider moved as a hand would: its value, then the events the page listens to.
+  slide(value) {
+    const s = document.getElementById("time-slider");
+    s.value = value;
+    s.dispatchEvent(new Event("input", { bubbles: true }));
+    s.dispatchEvent(new Event("change", { bubbles: true }));
+    return s.value;
+  },
+  // Rank i's row in the ranks' view: its label and whether it is drawn as lagging.
+  rank(i) {
+    const row = document.querySelectorAll("#ranks .rank")[i];
+    return row ? { label: row.textContent, lagging: row.classList.contains("lagging") } : null;
+  },
+  clickPreset(name) {
+    const b = [...document.querySelectorAll("#presets button")].find((b) => b.textContent === name);
+    if (!b) return false;
+    b.click();
+    return true;
+  },
+  // The preview's pixels, decoded, as a short fingerprint (width, height, a sum over every byte).
+  async preview() {
+    const img = document.getElementById("preview");
+    if (!img.src) return null;
+    await img.decode();
+    const c = document.createElement("canvas");
+    c.width = img.naturalWidth;
+    c.height = img.naturalHeight;
+    const g = c.getContext("2d");
+    g.drawImage(img, 0, 0);
+    const d = g.getImageData(0, 0, c.width, c.height).data;
+    let h = 0;
+    for (let i = 0; i < d.length; ++i) h = (h * 31 + d[i]) >>> 0;
+    return `${c.width}x${c.height}:${h}`;
+  },
+};
+true
+"""
+
+
+def answer_after(browser, prefix):
+    """The page's answer line once it shows the answer to a command beginning with `prefix`."""
+    return poll(f"the page's answer to '{prefix}'",
+                lambda: (lambda t: t if t.startswith(prefix) and " → " in t else None)(browser.evaluate("awTest.text('answer')")))
+
+
+def check_pause_and_play(browser, wall):
+    poll("the page showing the wall playing", lambda: browser.evaluate("awTest.text('play')") == "pause")
+    browser.evaluate("awTest.click('play')")
+    print("pause ->", answer_after(browser, "pause"))
+    poll("/status paused", lambda: wall.status()["paused"])
+    before = wall.status()
+    after = wall.frames_later(3)
+    if after["time_s"] != before["time_s"]:
+        raise Failure(f"paused, yet the time ran from {before['time_s']} (frame {before['frame']}) to {after['time_s']} (frame {after['frame']})")
+    print(f"paused: frames {before['frame']} to {after['frame']} all at time_s={after['time_s']}")
+
+    # The time slider, while paused: the next frames show exactly its time.
+    print("slider ->", browser.evaluate("awTest.slide(1234)"))
+    print("time ->", answer_after(browser, "time 1234"))
+    poll("/status time_s=1234 after the slider", lambda: wall.status()["time_s"] == 1234)
+    print("slider: /status time_s=1234")
+
+    poll("the page showing the wall paused", lambda: browser.evaluate("awTest.text('play')") == "play")
+    browser.evaluate("awTest.click('play')")
+    print("play ->", answer_after(browser, "play"))
+    poll("/status playing", lambda: not wall.status()["paused"])
+    before = wall.status()
+    after = wall.frames_later(3)
+    if not after["time_s"] > before["time_s"] >= 1234:
+        raise Failure(f"playing, yet the time went from {before['time_s']} to {after['time_s']}")
+    print(f"playing: time_s {before['time_s']} at frame {before['frame']} -> {after['time_s']} at frame {after['frame']}")
+
+
+def check_preset_and_preview(browser, wall, preset):
+    first = poll("a preview on the page", lambda: browser.evaluate("awTest.preview()"))
+    if not browser.evaluate(f"awTest.clickPreset({json.dumps(preset)})"):
+        raise Failure(f"no button for the preset {preset}")
+    answer = answer_after(browser, "preset " + preset).split(" → ", 1)[1]
+    print(f"preset {preset} ->", answer)
+    if not answer.startswith("ok preset " + preset):
+        raise Failure(f"preset {preset} answered {answer}")
+    asked = {k: float(v) for k, v in (w.split("=") for w in answer.split()[3:])}
+    status = poll("/status at the preset's camera",
+                  lambda: (lambda s: s if all(abs(s[k] - v) < 1e-6 for k, v in asked.items()) else None)(wall.status()))
+    print("camera:", {k: status[k] for k in asked})
+    second = poll("the preview on the page changing with the camera",
+                  lambda: (lambda p: p if p and p != first else None)(browser.evaluate("awTest.preview()")))
+    print(f"preview: {first} -> {second}")
+
+
+def check_silent_rank(browser, wall, pid):
+    poll("rank 1 drawn as keeping up", lambda: (lambda r: r and not r["lagging"])(browser.evaluate("awTest.rank(1)")))
+    period = wall.ranks()["heartbeat_period_s"]
+    os.kill(pid, signal.SIGSTOP)  # its heartbeat thread stops too; the frame loop waits for it
+    try:
+        stopped = time.monotonic()
+
+        def late():
+            row = browser.evaluate("awTest.rank(1)")
+            age = wall.ranks()["ranks"][1]["heartbeat_age_s"]
+            return (row, age) if row and row["lagging"] and "heard" in row["label"] and age > 2 * period else None
+        row, age = poll("rank 1 red with its heartbeat more than two periods old", late, deadline_s=6.0)
+        print(f"rank 1 stopped {time.monotonic() - stopped:.1f} s: /ranks heartbeat_age_s={age}, page: {row}")
+    finally:
+        os.kill(pid, signal.SIGCONT)
+    row = poll("rank 1 drawn as keeping up again", lambda: (lambda r: r if r and not r["lagging"] else None)(browser.evaluate("awTest.rank(1)")))
+    after = wall.frames_later(3)
+    print(f"rank 1 running again: page: {row}; the wall at frame {after['frame']}")
+
+
+def main():
+    url, secret, work_dir, preset, rank1_pid = sys.argv[1:6]
+    wall = Wall(url, secret)
+    browser = Chromium(work_dir)
+    try:
+        browser.call("Browser.getVersion", page=False)
+        browser.open(f"{url}/#token={secret}")
+        poll("the page's script loaded", lambda: browser.evaluate("typeof command === 'function' && document.readyState === 'complete'"))
+        browser.evaluate(PAGE_HELPERS)
+        poll("the status line filled", lambda: browser.evaluate("awTest.text('status')").startswith("frame "))
+        poll("the preset buttons", lambda: browser.evaluate("document.querySelectorAll('#presets button').length"))
+        if browser.evaluate("awTest.shown('login')"):
+            raise Failure("the page asks for the secret though its address gave it")
+        check_pause_and_play(browser, wall)
+        check_preset_and_preview(browser, wall, preset)
+        check_silent_rank(browser, wall, int(rank1_pid))
+        shot = os.path.join(work_dir, "console.png")
+        browser.screenshot(shot)
+        with open(shot, "rb") as f:
+            if f.read(8) != b"\x89PNG\r\n\x1a\n":
+                raise Failure("the screenshot is not a PNG")
+        print(f"screenshot: {shot}, {os.path.getsize(shot)} bytes")
+        if browser.page_errors():
+            raise Failure(f"the page threw: {browser.page_errors()}")
+    except Failure as e:
+        print(f"FAIL: {e}", file=sys.stderr)
+        return 1
+    finally:
+        browser.close()
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
