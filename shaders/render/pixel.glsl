@@ -1,7 +1,7 @@
 // One pixel's ray, shared by the two entry points of the march (main.frag, main.comp): the caller
 // sets gPixelCentre (tile_rays.glsl), and gets the radiance, linear RGB in the scene's radiance
-// unit with alpha 1, and the ray's work (src/render/work_counts.h, PixelWork): by default 1 + its
-// aurora samples, with which the load balancer shares the measured time of a draw among the bands
+// unit with alpha 1, and the ray's work (src/render/work_counts.h, PixelWork): by default 1 + the
+// steps its marching components took (gRayWork), with which the load balancer shares the measured time of a draw among the bands
 // it covered (src/gl/float_target.h); with AURORAWALL_WORK_CLOCK the GPU clock cycles it took; with
 // AURORAWALL_WORK_FETCHES 1 + its texture fetches.
 uniform vec3 uCameraPositionKm; // camera relative to the planet centre, planet frame
@@ -15,9 +15,7 @@ void shadePixel(out vec4 radiance, out float work)
     radiance = vec4(0.0, 0.0, 0.0, 1.0);
     if (fragmentInImage()) {
         radiance = vec4(shadeRay(uCameraPositionKm, fragmentRayDirection()), 1.0);
-#ifdef HAS_AURORA
-        work = 1.0 + float(gAuroraSamples);
-#endif
+        work = 1.0 + float(gRayWork);
     }
 #if defined(AURORAWALL_WORK_CLOCK)
     work = float(clock2x32ARB().x - start.x); // the low word's difference: a ray takes < 2^32 cycles

@@ -9,3 +9,7 @@ ivec4 gWork = ivec4(0);
 #else
 #define COUNT_WORK(field, n)
 #endif
+
+// The ray's work by which the load balancer shares out a draw's measured time (pixel.glsl: 1 + this):
+// each component that marches adds its steps (the aurora: the steps of auroraSegment).
+int gRayWork = 0;

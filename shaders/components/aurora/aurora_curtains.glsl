@@ -25,8 +25,6 @@ uniform float uFootprintAngularRadius;
 uniform float uFootprintSize;
 uniform float uFootprintMarginKm;
 
-int gAuroraSamples = 0; // steps this pixel's ray has taken in auroraSegment: its work (main.frag)
-
 // Point j of curtain c's polyline: unit vector, arclength km.
 vec4 polylinePoint(int c, int j)
 {
@@ -295,7 +293,7 @@ vec3 auroraSegment(vec3 o, vec3 d, vec2 seg)
             t0 = seg.x + float(k) * uAuroraStepKm;
             t1 = min(t0 + uAuroraStepKm, seg.y);
             step = stepCandidates(o, d, t0, t1);
-            ++gAuroraSamples;
+            ++gRayWork; // the ray's work (render/work_counts.glsl)
             COUNT_WORK(x, 1);
             if (step.candidates.x >= 0.0 || step.candidates.z >= 0.0)
                 break;
