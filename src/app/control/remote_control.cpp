@@ -10,7 +10,7 @@
 #include <filesystem>
 #include <set>
 
-namespace aurorawall::control {
+namespace aurorawall::app::control {
 
 namespace {
 
@@ -199,4 +199,4 @@ FrameRequests serveCommands(CommandChannel& channel, cluster::MasterClock& clock
     return requests;
 }
 
-} // namespace aurorawall::control
+} // namespace aurorawall::app::control
