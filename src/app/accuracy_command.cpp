@@ -70,94 +70,126 @@ bool parseSize(const std::string& text, glm::ivec2& size)
     return true;
 }
 
+// The options of every kind of run; the initial values are the defaults --help shows.
+struct AccuracyOptions {
+    bool airmass = false, sky = false;
+    AccuracyReportSettings shader;  // --airmass, --sky
+    SceneAccuracySettings scene;    // --scene, --glory
+    std::string size = "320x180"; // --size, parsed into scene.sizePx
+};
+
+void declareOptions(cli::CommandLine& cli, AccuracyOptions& o)
+{
+    AccuracyReportSettings& shader = o.shader;
+    SceneAccuracySettings& scene = o.scene;
+    cli.add()
+        ("airmass", po::bool_switch(&o.airmass), "the airmass methods")
+        ("sky", po::bool_switch(&o.sky), "the several-lights sky")
+        ("scene", po::value(&scene.sceneFile), "the aurora's quality knobs on this scene file")
+        ("glory", po::value(&scene.sceneFile), "the glory's quality knobs on this scene file")
+        ("repeat", po::value(&shader.airmassRepeat)->default_value(shader.airmassRepeat),
+         "--airmass: airmass evaluations per shader invocation")
+        ("copies", po::value(&shader.copies),
+         "--airmass, --sky: work per dispatch in copies of the ray set (default: 1 on llvmpipe, 64 on a GPU)")
+        ("view-steps", po::value(&shader.viewSteps)->default_value(shader.viewSteps), "--sky: outer march steps M")
+        ("light-steps", po::value(&shader.lightSteps)->default_value(shader.lightSteps),
+         "--sky: nested-march steps K per light")
+        ("wall", po::value(&scene.wallFile),
+         "--scene: wall file whose single-screen equivalent sets the field of view (default "
+         "config/walls/single.toml)")
+        ("size", po::value(&o.size)->default_value(o.size), "--scene: render size WxH in pixels")
+        ("pixels", po::value(&scene.pixels)->default_value(scene.pixels), "--scene: pixels of the CPU reference")
+        ("frame", po::value(&scene.frame)->default_value(scene.frame),
+         "--scene: the scene's frame K as render draws it (its start time plus K time steps, the camera "
+         "moved along its path)")
+        ("runs", po::value(&scene.runs)->default_value(scene.runs),
+         "--scene: timed frames per setting after one warm-up (the median is reported)")
+        ("threads", po::value(&scene.threads)->default_value(scene.threads), "--scene: CPU reference threads")
+        ("reference-step-km", po::value(&scene.referenceStepKm)->default_value(scene.referenceStepKm),
+         "--scene: CPU reference step where a curtain is in reach, 0.001 to 0.25 km")
+        ("feature-costs", po::bool_switch(&scene.featureCosts),
+         "--scene: the paper's table 2 (frame time of each feature) instead of the knobs")
+        ("work-stats", po::bool_switch(&scene.workStats),
+         "--scene: the march's work per pixel and per 8x4-pixel block instead of the knobs (CSV)");
+}
+
+// Throws a usage error unless exactly one kind of run is chosen (--airmass and --sky go together)
+// and every option given applies to it.
+void checkRunKind(const cli::CommandLine& cli, const AccuracyOptions& o)
+{
+    const bool gloryRun = cli.given("glory");
+    if (gloryRun && cli.given("scene"))
+        throw cli.usageError("--glory cannot be combined with --scene");
+    const bool sceneRun = cli.given("scene") || gloryRun;
+    if (sceneRun && (o.airmass || o.sky))
+        throw cli.usageError(std::string(gloryRun ? "--glory" : "--scene") + " cannot be combined with --airmass or --sky");
+    if (!sceneRun && !o.airmass && !o.sky)
+        throw cli.usageError("choose --airmass, --sky, --scene FILE or --glory FILE");
+    for (const std::string& option : sceneRun ? kShaderOptions : kSceneOptions)
+        if (cli.given(option))
+            throw cli.usageError("--" + option + " applies to " + (sceneRun ? "--airmass and --sky" : "--scene") +
+                                 " only");
+    if (gloryRun)
+        for (const std::string& option : kAuroraOnlyOptions)
+            if (cli.given(option))
+                throw cli.usageError("--" + option + " applies to --scene only");
+}
+
+// --scene or --glory: the options checked, then the sweep.
+void runSceneKnobs(const cli::CommandLine& cli, AccuracyOptions& o, std::ostream& out)
+{
+    const bool gloryRun = cli.given("glory");
+    SceneAccuracySettings& scene = o.scene;
+    if (scene.sceneFile.empty())
+        throw cli.usageError(std::string(gloryRun ? "--glory" : "--scene") + " needs a file name");
+    if (!parseSize(o.size, scene.sizePx))
+        throw cli.usageError("--size must be WxH with positive whole W and H (got '" + echoedInput(o.size) + "')");
+    if (scene.frame < 0 || scene.frame > 100000000)
+        throw cli.usageError("--frame must be a whole number in [0, 1e8] (got " + std::to_string(scene.frame) + ")");
+    if (scene.pixels < 1 || scene.runs < 1 || scene.threads < 1)
+        throw cli.usageError("--pixels, --runs and --threads must be positive");
+    if (!(scene.referenceStepKm >= kMinReferenceStepKm && scene.referenceStepKm <= kMaxReferenceStepKm)) {
+        char got[32];
+        std::snprintf(got, sizeof got, "%g", scene.referenceStepKm);
+        throw cli.usageError("--reference-step-km must be in [0.001, 0.25] km (got " + std::string(got) + ")");
+    }
+    if (gloryRun)
+        runGloryAccuracy(scene, out);
+    else
+        runSceneAccuracy(scene, out);
+}
+
+// --airmass and/or --sky: the options checked, then the tables on one GL context.
+void runShaderTables(const cli::CommandLine& cli, const AccuracyOptions& o, std::ostream& out)
+{
+    const AccuracyReportSettings& shader = o.shader;
+    if (shader.airmassRepeat < 1 || shader.viewSteps < 1 || shader.lightSteps < 1 ||
+        (cli.given("copies") && shader.copies < 1))
+        throw cli.usageError("--repeat, --copies, --view-steps and --light-steps must be >= 1");
+    const auto context = openAccuracyContext(out);
+    if (o.airmass)
+        printAirmassAccuracy(shader, out);
+    if (o.sky)
+        printSkyAccuracy(shader, out);
+}
+
 } // namespace
 
 int runAccuracyCommand(int argc, char** argv, std::ostream& out, std::ostream& err)
 {
     return cli::runCommand("accuracy", out, err, [&] {
         cli::CommandLine cli("accuracy", kUsage);
-        bool airmass = false, sky = false;
-        AccuracyReportSettings shader;
-        SceneAccuracySettings scene;
-        std::string size = "320x180";
-        cli.add()
-            ("airmass", po::bool_switch(&airmass), "the airmass methods")
-            ("sky", po::bool_switch(&sky), "the several-lights sky")
-            ("scene", po::value(&scene.sceneFile), "the aurora's quality knobs on this scene file")
-            ("glory", po::value(&scene.sceneFile), "the glory's quality knobs on this scene file")
-            ("repeat", po::value(&shader.airmassRepeat)->default_value(shader.airmassRepeat),
-             "--airmass: airmass evaluations per shader invocation")
-            ("copies", po::value(&shader.copies),
-             "--airmass, --sky: work per dispatch in copies of the ray set (default: 1 on llvmpipe, 64 on a GPU)")
-            ("view-steps", po::value(&shader.viewSteps)->default_value(shader.viewSteps), "--sky: outer march steps M")
-            ("light-steps", po::value(&shader.lightSteps)->default_value(shader.lightSteps),
-             "--sky: nested-march steps K per light")
-            ("wall", po::value(&scene.wallFile),
-             "--scene: wall file whose single-screen equivalent sets the field of view (default "
-             "config/walls/single.toml)")
-            ("size", po::value(&size)->default_value(size), "--scene: render size WxH in pixels")
-            ("pixels", po::value(&scene.pixels)->default_value(scene.pixels), "--scene: pixels of the CPU reference")
-            ("frame", po::value(&scene.frame)->default_value(scene.frame),
-             "--scene: the scene's frame K as render draws it (its start time plus K time steps, the camera "
-             "moved along its path)")
-            ("runs", po::value(&scene.runs)->default_value(scene.runs),
-             "--scene: timed frames per setting after one warm-up (the median is reported)")
-            ("threads", po::value(&scene.threads)->default_value(scene.threads), "--scene: CPU reference threads")
-            ("reference-step-km", po::value(&scene.referenceStepKm)->default_value(scene.referenceStepKm),
-             "--scene: CPU reference step where a curtain is in reach, 0.001 to 0.25 km")
-            ("feature-costs", po::bool_switch(&scene.featureCosts),
-             "--scene: the paper's table 2 (frame time of each feature) instead of the knobs")
-            ("work-stats", po::bool_switch(&scene.workStats),
-             "--scene: the march's work per pixel and per 8x4-pixel block instead of the knobs (CSV)");
+        AccuracyOptions options;
+        declareOptions(cli, options);
         if (!cli.parse(argc, argv)) {
             out << cli.help();
             return;
         }
-        const bool gloryRun = cli.given("glory");
-        if (gloryRun && cli.given("scene"))
-            throw cli.usageError("--glory cannot be combined with --scene");
-        const bool sceneRun = cli.given("scene") || gloryRun;
-        if (sceneRun && (airmass || sky))
-            throw cli.usageError(std::string(gloryRun ? "--glory" : "--scene") + " cannot be combined with --airmass or --sky");
-        if (!sceneRun && !airmass && !sky)
-            throw cli.usageError("choose --airmass, --sky, --scene FILE or --glory FILE");
-        for (const std::string& option : sceneRun ? kShaderOptions : kSceneOptions)
-            if (cli.given(option))
-                throw cli.usageError("--" + option + " applies to " +
-                                     (sceneRun ? "--airmass and --sky" : "--scene") + " only");
-        if (gloryRun)
-            for (const std::string& option : kAuroraOnlyOptions)
-                if (cli.given(option))
-                    throw cli.usageError("--" + option + " applies to --scene only");
-
-        if (sceneRun) {
-            if (scene.sceneFile.empty())
-                throw cli.usageError(std::string(gloryRun ? "--glory" : "--scene") + " needs a file name");
-            if (!parseSize(size, scene.sizePx))
-                throw cli.usageError("--size must be WxH with positive whole W and H (got '" + echoedInput(size) + "')");
-            if (scene.frame < 0 || scene.frame > 100000000)
-                throw cli.usageError("--frame must be a whole number in [0, 1e8] (got " + std::to_string(scene.frame) + ")");
-            if (scene.pixels < 1 || scene.runs < 1 || scene.threads < 1)
-                throw cli.usageError("--pixels, --runs and --threads must be positive");
-            if (!(scene.referenceStepKm >= kMinReferenceStepKm && scene.referenceStepKm <= kMaxReferenceStepKm)) {
-                char got[32];
-                std::snprintf(got, sizeof got, "%g", scene.referenceStepKm);
-                throw cli.usageError("--reference-step-km must be in [0.001, 0.25] km (got " + std::string(got) + ")");
-            }
-            if (gloryRun)
-                runGloryAccuracy(scene, out);
-            else
-                runSceneAccuracy(scene, out);
-            return;
-        }
-        if (shader.airmassRepeat < 1 || shader.viewSteps < 1 || shader.lightSteps < 1 ||
-            (cli.given("copies") && shader.copies < 1))
-            throw cli.usageError("--repeat, --copies, --view-steps and --light-steps must be >= 1");
-        const auto context = openAccuracyContext(out);
-        if (airmass)
-            printAirmassAccuracy(shader, out);
-        if (sky)
-            printSkyAccuracy(shader, out);
+        checkRunKind(cli, options);
+        if (cli.given("scene") || cli.given("glory"))
+            runSceneKnobs(cli, options, out);
+        else
+            runShaderTables(cli, options, out);
     });
 }
 

@@ -72,13 +72,9 @@ std::vector<cluster::BandCost> BandFrame::draw(render::TileRenderer& renderer, g
                                                const std::vector<std::int32_t>& assignment,
                                                const cluster::MpiWorld& world, cluster::RankReport& report)
 {
-    // 1. Draw my bands: each run of consecutive bands of one screen in one draw (a draw has a fixed
-    // cost, and rasterizers shade whole pixel blocks), its process CPU time shared among the run's
-    // bands in proportion to their rays' work. Bands of other ranks' screens are read back at once
-    // (the next run may draw into the same scratch target) as half floats.
+    // 1. Draw my bands, one run of consecutive bands of one screen at a time.
     std::vector<cluster::BandCost> costs;
-    std::vector<std::vector<std::uint16_t>> outgoingPixels;
-    std::vector<int> outgoingBands;
+    OutgoingBands outgoing;
     const auto start = SteadyClock::now();
     const double cpuStart = processCpuMilliseconds();
     for (size_t first = 0; first < bands_.size();) {
@@ -89,66 +85,85 @@ std::vector<cluster::BandCost> BandFrame::draw(render::TileRenderer& renderer, g
         size_t end = first + 1;
         while (end < bands_.size() && assignment[end] == rank_ && bands_[end].screen == bands_[first].screen)
             ++end;
-        const cluster::Band& top = bands_[first];
-        const cluster::Band& bottom = bands_[end - 1];
-        const wall::Screen& screen = wall_.screens[top.screen];
-        const bool myScreen = top.owner == rank_;
-        ScreenTarget* own = myScreen ? &screenTarget(screens, top.screen) : nullptr;
-        Scratch* scratch = myScreen ? nullptr : &scratchFor(screen.widthPx, screen.heightPx);
-        gl::FloatTarget& target = myScreen ? *own->target : *scratch->target;
-        context.makeCurrent(myScreen ? own->window : 0);
-
-        const double runStart = processCpuMilliseconds();
-        drawRows(renderer, wall::tileRays(wall_, top.screen), target, myScreen ? *own->triangle : *scratch->triangle,
-                 firstGlRow(bottom, screen.heightPx), bottom.y0 + bottom.height - top.y0);
-        gl::glFinish();
-        const double runMs = processCpuMilliseconds() - runStart;
-
-        if (measureCosts_) {
-            std::vector<double> work(end - first, 0.0);
-            double runWork = 0.0;
-            for (size_t i = first; i < end; ++i) {
-                for (float w : target.readbackWork(firstGlRow(bands_[i], screen.heightPx), bands_[i].height))
-                    work[i - first] += w;
-                runWork += work[i - first];
-            }
-            report.renderWork += runWork;
-            for (size_t i = first; i < end; ++i)
-                costs.push_back({static_cast<std::int32_t>(i), runWork > 0.0 ? runMs * work[i - first] / runWork : 0.0,
-                                 work[i - first]});
-        }
-        if (!myScreen)
-            for (size_t i = first; i < end; ++i) {
-                const cluster::Band& b = bands_[i];
-                outgoingPixels.push_back(rgbHalves(target.readbackRgb(firstGlRow(b, screen.heightPx), b.height)));
-                outgoingBands.push_back(static_cast<int>(i));
-            }
+        drawRun(first, end, renderer, context, screens, report, costs, outgoing);
         first = end;
     }
     report.renderMs = millisecondsSince(start);
     report.renderCpuMs = processCpuMilliseconds() - cpuStart;
 
-    // 2. Exchange: other screens' bands go out compressed (io/band_compression.h, lossless), my
-    // screens' bands drawn elsewhere come in and go into their rows of my screens' targets.
+    // 2. Exchange the bands drawn away from their screens.
+    exchange(outgoing, context, screens, assignment, world, report);
+    return costs;
+}
+
+void BandFrame::drawRun(size_t first, size_t end, render::TileRenderer& renderer, gl::Context& context,
+                        std::vector<ScreenTarget>& screens, cluster::RankReport& report,
+                        std::vector<cluster::BandCost>& costs, OutgoingBands& outgoing)
+{
+    const cluster::Band& top = bands_[first];
+    const cluster::Band& bottom = bands_[end - 1];
+    const wall::Screen& screen = wall_.screens[top.screen];
+    const bool myScreen = top.owner == rank_;
+    ScreenTarget* own = myScreen ? &screenTarget(screens, top.screen) : nullptr;
+    Scratch* scratch = myScreen ? nullptr : &scratchFor(screen.widthPx, screen.heightPx);
+    gl::FloatTarget& target = myScreen ? *own->target : *scratch->target;
+    context.makeCurrent(myScreen ? own->window : 0);
+
+    const double runStart = processCpuMilliseconds();
+    drawRows(renderer, wall::tileRays(wall_, top.screen), target, myScreen ? *own->triangle : *scratch->triangle,
+             firstGlRow(bottom, screen.heightPx), bottom.y0 + bottom.height - top.y0);
+    gl::glFinish();
+    const double runMs = processCpuMilliseconds() - runStart;
+
+    if (measureCosts_)
+        shareRunCost(first, end, target, screen.heightPx, runMs, report, costs);
+    if (!myScreen)
+        for (size_t i = first; i < end; ++i) {
+            const cluster::Band& b = bands_[i];
+            outgoing.pixels.push_back(rgbHalves(target.readbackRgb(firstGlRow(b, screen.heightPx), b.height)));
+            outgoing.bands.push_back(static_cast<int>(i));
+        }
+}
+
+void BandFrame::shareRunCost(size_t first, size_t end, const gl::FloatTarget& target, int screenHeight, double runMs,
+                             cluster::RankReport& report, std::vector<cluster::BandCost>& costs) const
+{
+    std::vector<double> work(end - first, 0.0);
+    double runWork = 0.0;
+    for (size_t i = first; i < end; ++i) {
+        for (float w : target.readbackWork(firstGlRow(bands_[i], screenHeight), bands_[i].height))
+            work[i - first] += w;
+        runWork += work[i - first];
+    }
+    report.renderWork += runWork;
+    for (size_t i = first; i < end; ++i)
+        costs.push_back({static_cast<std::int32_t>(i), runWork > 0.0 ? runMs * work[i - first] / runWork : 0.0,
+                         work[i - first]});
+}
+
+void BandFrame::exchange(const OutgoingBands& outgoing, gl::Context& context, std::vector<ScreenTarget>& screens,
+                         const std::vector<std::int32_t>& assignment, const cluster::MpiWorld& world,
+                         cluster::RankReport& report) const
+{
     const auto exchangeStart = SteadyClock::now();
     std::vector<std::vector<std::uint8_t>> outgoingBytes;
-    for (const auto& pixels : outgoingPixels)
+    for (const auto& pixels : outgoing.pixels)
         outgoingBytes.push_back(io::compressHalves(pixels, 3));
-    std::vector<cluster::MpiWorld::Message> outgoing, incoming;
-    for (size_t k = 0; k < outgoingBands.size(); ++k)
-        outgoing.push_back({bands_[outgoingBands[k]].owner, outgoingBands[k], &outgoingBytes[k]});
+    std::vector<cluster::MpiWorld::Message> sent, received;
+    for (size_t k = 0; k < outgoing.bands.size(); ++k)
+        sent.push_back({bands_[outgoing.bands[k]].owner, outgoing.bands[k], &outgoingBytes[k]});
     std::vector<size_t> arrivingBands;
     for (size_t i = 0; i < bands_.size(); ++i)
         if (bands_[i].owner == rank_ && assignment[i] != rank_)
             arrivingBands.push_back(i);
     std::vector<std::vector<std::uint8_t>> incomingBytes(arrivingBands.size());
     for (size_t k = 0; k < arrivingBands.size(); ++k)
-        incoming.push_back({assignment[arrivingBands[k]], static_cast<int>(arrivingBands[k]), &incomingBytes[k]});
-    world.exchange(outgoing, incoming);
+        received.push_back({assignment[arrivingBands[k]], static_cast<int>(arrivingBands[k]), &incomingBytes[k]});
+    world.exchange(sent, received);
     size_t bytes = 0;
-    for (const auto& m : outgoing)
+    for (const auto& m : sent)
         bytes += m.bytes->size();
-    for (const auto& m : incoming)
+    for (const auto& m : received)
         bytes += m.bytes->size();
     report.exchangeMB = 1e-6 * static_cast<double>(bytes);
     for (size_t k = 0; k < arrivingBands.size(); ++k) {
@@ -162,7 +177,6 @@ std::vector<cluster::BandCost> BandFrame::draw(render::TileRenderer& renderer, g
     }
     context.makeCurrent(0);
     report.exchangeMs = millisecondsSince(exchangeStart);
-    return costs;
 }
 
 } // namespace aurorawall::app

@@ -55,6 +55,27 @@ private:
     };
     Scratch& scratchFor(int width, int height);
 
+    // Bands of other ranks' screens drawn here, as half-float RGB, and their indices.
+    struct OutgoingBands {
+        std::vector<std::vector<std::uint16_t>> pixels;
+        std::vector<int> bands;
+    };
+    // Draws the run of my bands [first, end), all of one screen, in one draw (a draw has a fixed cost,
+    // and rasterizers shade whole pixel blocks). Bands of other ranks' screens are read back at once
+    // (the next run may draw into the same scratch target) into `outgoing`.
+    void drawRun(size_t first, size_t end, render::TileRenderer& renderer, gl::Context& context,
+                 std::vector<ScreenTarget>& screens, cluster::RankReport& report,
+                 std::vector<cluster::BandCost>& costs, OutgoingBands& outgoing);
+    // The run's process CPU time `runMs` shared among its bands in proportion to their rays' work
+    // (the target's attachment 1, rows of a screen `screenHeight` tall); the work added to the report.
+    void shareRunCost(size_t first, size_t end, const gl::FloatTarget& target, int screenHeight, double runMs,
+                      cluster::RankReport& report, std::vector<cluster::BandCost>& costs) const;
+    // Other screens' bands go out compressed (io/band_compression.h, lossless), my screens' bands
+    // drawn elsewhere come in and go into their rows of my screens' targets.
+    void exchange(const OutgoingBands& outgoing, gl::Context& context, std::vector<ScreenTarget>& screens,
+                  const std::vector<std::int32_t>& assignment, const cluster::MpiWorld& world,
+                  cluster::RankReport& report) const;
+
     const wall::Wall& wall_;
     std::vector<cluster::Band> bands_;
     int rank_;

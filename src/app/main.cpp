@@ -78,18 +78,18 @@ int main(int argc, char** argv)
     const std::string seeHelp = " (see aurorawall --help)";
     if (command == "--help" || command == "-h") {
         std::cout << usage();
-        return cli::kSuccess;
+        return app::cli::kSuccess;
     }
     for (const Command& c : kCommands)
         if (command == c.name)
             return c.run(argc - 1, argv + 1);
     if (command.empty())
-        std::cerr << cli::errorLine("", "missing command (allowed: " + commandNames() + ")" + seeHelp) << "\n";
+        std::cerr << app::cli::errorLine("", "missing command (allowed: " + commandNames() + ")" + seeHelp) << "\n";
     else if (command[0] == '-')
-        std::cerr << cli::errorLine("", "unrecognised option '" + echoedInput(command) + "'" + seeHelp) << "\n";
+        std::cerr << app::cli::errorLine("", "unrecognised option '" + echoedInput(command) + "'" + seeHelp) << "\n";
     else
-        std::cerr << cli::errorLine("", "unknown command '" + echoedInput(command) + "' (allowed: " + commandNames() +
+        std::cerr << app::cli::errorLine("", "unknown command '" + echoedInput(command) + "' (allowed: " + commandNames() +
                                             ")" + seeHelp)
                   << "\n";
-    return cli::kUsageError;
+    return app::cli::kUsageError;
 }

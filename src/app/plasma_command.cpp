@@ -113,6 +113,141 @@ void writeHistory(const std::string& directory, const std::string& name, const p
     }
 }
 
+const char* const kUsage =
+    "Usage: aurorawall plasma verify [--case NAME] [--device cpu|gpu] [--solver NAME] [--wp-dt X]\n"
+    "                               [--wc-dt X] [--dx-lambda-d X] [--k-lambda-d K] [--shape cic|tsc]\n"
+    "                               [--history DIR]\n"
+    "       aurorawall plasma soak --help, aurorawall plasma accuracy --help: the long runs of a scene's\n"
+    "       plasma, the error against run time\n"
+    "Runs the electrostatic particle-in-cell plasma's verification cases and prints CSV\n"
+    "case,parameter,measured,expected,rel_error; expected comes from theory (frequencies and rates in\n"
+    "units of the plasma frequency omega_p); rows of a run's settings, and the heating rates (no closed\n"
+    "form), leave expected and rel_error empty (docs/PLASMA.md). --device gpu runs every case in GLSL\n"
+    "compute shaders (float, headless EGL) instead of in double on the CPU, with the same settings,\n"
+    "analysis and theory; --solver chooses their Poisson solve.\n"
+    "Exit status: 0 success, 1 a run failed or output not written, 2 usage error.\n";
+
+// The options of `plasma verify`; the initial values are the defaults --help shows.
+struct VerifyOptions {
+    std::string actionName;
+    Case chosen = Case::All;
+    Device device = Device::Cpu;
+    plasma::GpuPicSolver solver = plasma::GpuPicSolver::FftCpu;
+    double kDebye = 0.5;      // k λ_D of the landau case
+    double wpDt = 0.2;        // ω_p Δt
+    double wcDt = 1.0;        // ω_c Δt of boris and exb
+    double dxOverDebye = 0.0; // --dx-lambda-d, used only when given
+    plasma::ParticleShape shape = plasma::ParticleShape::CloudInCell;
+    std::string historyDirectory;
+    std::vector<double> heatingSpacings = kHeatingSpacings; // Δx/λ_D of the heating runs
+};
+
+// Declares the options in the order --help lists them.
+void declareOptions(cli::CommandLine& cli, VerifyOptions& o)
+{
+    cli.addChoice("case", &o.chosen, kCases, "the case to run (all: each in turn)");
+    cli.addChoice("device", &o.device, kDevices, "cpu: the simulation in double; gpu: in compute shaders (float)");
+    cli.addChoice("solver", &o.solver, kSolvers,
+                  "the Poisson solve of --device gpu: fft-cpu (exact, FFT in double on the CPU, default), "
+                  "jacobi (20 Jacobi sweeps on the GPU, does not converge), sor (red-black SOR on the GPU "
+                  "to 1e-6) or multigrid (6 V-cycles on the GPU)");
+    cli.add()("k-lambda-d", po::value<double>(&o.kDebye)->default_value(0.5, "0.5"),
+              ("the landau case's wave number times the Debye length, in [" + number(plasma::kLandauMinKDebye) +
+               ", " + number(plasma::kLandauMaxKDebye) + "]").c_str());
+    cli.add()("wp-dt", po::value<double>(&o.wpDt)->default_value(0.2, "0.2"),
+              "omega_p dt of langmuir, langmuir-2d, langmuir-3d, two-stream, energy, heating and landau, in [0.01, 2): "
+              "the leapfrog is unstable from 2 on, and the runs' steps grow as 1/(omega_p dt)")(
+              "wc-dt", po::value<double>(&o.wcDt)->default_value(1.0),
+              "omega_c dt of boris and exb, in [1e-6, 1e6] (the Boris push is stable for any; beyond, rounding "
+              "hides the E x B circle)");
+    cli.add()("dx-lambda-d", po::value<double>(&o.dxOverDebye),
+              "the heating case's grid spacing in Debye lengths, in [0.01, 100] (default: 0.5, 2 and 8 in turn)");
+    cli.addChoice("shape", &o.shape, kShapes,
+                  "the heating case's particle shape: cic (cloud-in-cell, default) or tsc (triangular-shaped cloud)");
+    cli.add()("history", po::value<std::string>(&o.historyDirectory),
+              "an existing folder: each case run, except boris and exb, also writes there CASE.csv "
+              "(heating: heating-dxX.csv, X = dx/lambda_D), the samples its measurement used against time "
+              "(in 1/omega_p; diocotron in 1/omega_D), with the fit's window and lines");
+    cli.addPositional("action", &o.actionName);
+}
+
+// Throws a usage error for the first option out of range or not applicable, in this order; a given
+// --dx-lambda-d becomes the only heating spacing.
+void checkOptions(const cli::CommandLine& cli, VerifyOptions& o)
+{
+    Action action = Action::Verify;
+    if (o.actionName.empty())
+        throw cli.usageError("missing the action (allowed: " + cli::wordsOf(kActions) + ")");
+    if (!cli::findChoice(kActions, o.actionName, action))
+        throw cli.usageError("unknown action '" + echoedInput(o.actionName) + "' (allowed: " + cli::wordsOf(kActions) + ")");
+    if (!(o.kDebye >= plasma::kLandauMinKDebye && o.kDebye <= plasma::kLandauMaxKDebye))
+        throw cli.usageError("--k-lambda-d must be in [" + number(plasma::kLandauMinKDebye) + ", " +
+                             number(plasma::kLandauMaxKDebye) + "] (got " + number(o.kDebye) + ")");
+    if (cli.given("k-lambda-d") && o.chosen != Case::Landau)
+        throw cli.usageError("--k-lambda-d applies only to --case landau");
+    if (!(o.wpDt >= plasma::kMinVerifyWpDt && o.wpDt < 2.0))
+        throw cli.usageError("--wp-dt must be in [" + number(plasma::kMinVerifyWpDt) +
+                             ", 2): the leapfrog is unstable for omega_p dt >= 2, and the runs' steps grow as "
+                             "1/(omega_p dt) (got " + number(o.wpDt) + ")");
+    if (!(o.wcDt >= plasma::kMinVerifyWcDt && o.wcDt <= plasma::kMaxVerifyWcDt))
+        throw cli.usageError("--wc-dt must be in [" + number(plasma::kMinVerifyWcDt) + ", " +
+                             number(plasma::kMaxVerifyWcDt) + "] (got " + number(o.wcDt) + ")");
+    if (cli.given("dx-lambda-d")) {
+        if (!(o.dxOverDebye >= plasma::kMinHeatingDxDebye && o.dxOverDebye <= plasma::kMaxHeatingDxDebye))
+            throw cli.usageError("--dx-lambda-d must be in [" + number(plasma::kMinHeatingDxDebye) + ", " +
+                                 number(plasma::kMaxHeatingDxDebye) + "] (got " + number(o.dxOverDebye) + ")");
+        o.heatingSpacings = {o.dxOverDebye};
+    }
+    if (o.device != Device::Gpu && cli.given("solver"))
+        throw cli.usageError("--solver applies only to --device gpu");
+    if (cli.given("shape") && o.chosen != Case::Heating)
+        throw cli.usageError("--shape applies only to --case heating");
+    if (o.shape != plasma::ParticleShape::CloudInCell && o.device == Device::Gpu)
+        throw cli.usageError("--shape tsc runs only on --device cpu (the GPU step deposits by cloud-in-cell)");
+}
+
+// Prints a case's rows, and with --history writes its history as DIRECTORY/FILE.csv.
+template <typename Verify>
+void runCase(const VerifyOptions& o, std::ostream& out, const std::string& name, const std::string& file,
+             const Verify& verify)
+{
+    plasma::VerifyHistory history;
+    printRows(out, name, verify(o.historyDirectory.empty() ? nullptr : &history));
+    if (!o.historyDirectory.empty() && !history.columns.empty())
+        writeHistory(o.historyDirectory, file, history);
+}
+
+// The header, then the chosen cases (all: each in turn) on one device.
+void runCases(const VerifyOptions& o, const plasma::PicDevice& on, std::ostream& out)
+{
+    const auto runs = [&o](Case c) { return o.chosen == Case::All || o.chosen == c; };
+    out << "case,parameter,measured,expected,rel_error\n";
+    if (runs(Case::Langmuir))
+        runCase(o, out, "langmuir", "langmuir", [&](auto h) { return plasma::verifyLangmuir(o.wpDt, on, h); });
+    if (runs(Case::Langmuir2D))
+        runCase(o, out, "langmuir-2d", "langmuir-2d",
+                [&](auto h) { return plasma::verifyLangmuir2D(o.wpDt, 256, on, h); });
+    if (runs(Case::Langmuir3D))
+        runCase(o, out, "langmuir-3d", "langmuir-3d",
+                [&](auto h) { return plasma::verifyLangmuir3D(o.wpDt, 32, on, h); });
+    if (runs(Case::Boris)) printRows(out, "boris", plasma::verifyBoris(o.wcDt, 1000, on));
+    if (runs(Case::ExB)) printRows(out, "exb", plasma::verifyExB(o.wcDt, on));
+    if (runs(Case::TwoStream))
+        runCase(o, out, "two-stream", "two-stream", [&](auto h) { return plasma::verifyTwoStream(o.wpDt, on, h); });
+    if (runs(Case::Energy))
+        runCase(o, out, "energy", "energy", [&](auto h) { return plasma::verifyEnergy(o.wpDt, on, h); });
+    if (runs(Case::Heating))
+        for (const double spacing : o.heatingSpacings)
+            runCase(o, out, "heating", "heating-dx" + number(spacing),
+                    [&](auto h) { return plasma::verifyHeating(o.wpDt, spacing, 1, on, 64, h); });
+    if (runs(Case::Landau))
+        runCase(o, out, "landau", "landau",
+                [&](auto h) { return plasma::verifyLandau(o.wpDt, o.kDebye, 1 << 20, on, h); });
+    if (runs(Case::Diocotron))
+        runCase(o, out, "diocotron", "diocotron",
+                [&](auto h) { return plasma::verifyDiocotron(kDiocotronWcDt, 0.1, on, h); });
+}
+
 } // namespace
 
 int runPlasmaCommand(int argc, char** argv, std::ostream& out, std::ostream& err)
@@ -120,129 +255,20 @@ int runPlasmaCommand(int argc, char** argv, std::ostream& out, std::ostream& err
     if (argc > 1 && std::string(argv[1]) == "soak") return runPlasmaSoakCommand(argc - 1, argv + 1, out, err);
     if (argc > 1 && std::string(argv[1]) == "accuracy") return runPlasmaAccuracyCommand(argc - 1, argv + 1, out, err);
     return cli::runCommand("plasma", out, err, [&] {
-        cli::CommandLine cli(
-            "plasma",
-            "Usage: aurorawall plasma verify [--case NAME] [--device cpu|gpu] [--solver NAME] [--wp-dt X]\n"
-            "                               [--wc-dt X] [--dx-lambda-d X] [--k-lambda-d K] [--shape cic|tsc]\n"
-            "                               [--history DIR]\n"
-            "       aurorawall plasma soak --help, aurorawall plasma accuracy --help: the long runs of a scene's\n"
-            "       plasma, the error against run time\n"
-            "Runs the electrostatic particle-in-cell plasma's verification cases and prints CSV\n"
-            "case,parameter,measured,expected,rel_error; expected comes from theory (frequencies and rates in\n"
-            "units of the plasma frequency omega_p); rows of a run's settings, and the heating rates (no closed\n"
-            "form), leave expected and rel_error empty (docs/PLASMA.md). --device gpu runs every case in GLSL\n"
-            "compute shaders (float, headless EGL) instead of in double on the CPU, with the same settings,\n"
-            "analysis and theory; --solver chooses their Poisson solve.\n"
-            "Exit status: 0 success, 1 a run failed or output not written, 2 usage error.\n");
-        std::string actionName;
-        Case chosen = Case::All;
-        double wpDt = 0.2, wcDt = 1.0, kDebye = 0.5;
-        std::vector<double> heatingSpacings = kHeatingSpacings;
-        Device device = Device::Cpu;
-        cli.addChoice("case", &chosen, kCases, "the case to run (all: each in turn)");
-        cli.addChoice("device", &device, kDevices,
-                      "cpu: the simulation in double; gpu: in compute shaders (float)");
-        plasma::GpuPicSolver solver = plasma::GpuPicSolver::FftCpu;
-        cli.addChoice("solver", &solver, kSolvers,
-                      "the Poisson solve of --device gpu: fft-cpu (exact, FFT in double on the CPU, default), "
-                      "jacobi (20 Jacobi sweeps on the GPU, does not converge), sor (red-black SOR on the GPU "
-                      "to 1e-6) or multigrid (6 V-cycles on the GPU)");
-        cli.add()("k-lambda-d", po::value<double>(&kDebye)->default_value(0.5, "0.5"),
-                  ("the landau case's wave number times the Debye length, in [" + number(plasma::kLandauMinKDebye) +
-                   ", " + number(plasma::kLandauMaxKDebye) + "]").c_str());
-        cli.add()("wp-dt", po::value<double>(&wpDt)->default_value(0.2, "0.2"),
-                  "omega_p dt of langmuir, langmuir-2d, langmuir-3d, two-stream, energy, heating and landau, in [0.01, 2): "
-                  "the leapfrog is unstable from 2 on, and the runs' steps grow as 1/(omega_p dt)")(
-                  "wc-dt", po::value<double>(&wcDt)->default_value(1.0),
-                  "omega_c dt of boris and exb, in [1e-6, 1e6] (the Boris push is stable for any; beyond, rounding "
-                  "hides the E x B circle)");
-        double dxOverDebye = 0.0;
-        cli.add()("dx-lambda-d", po::value<double>(&dxOverDebye),
-                  "the heating case's grid spacing in Debye lengths, in [0.01, 100] (default: 0.5, 2 and 8 in turn)");
-        plasma::ParticleShape shape = plasma::ParticleShape::CloudInCell;
-        cli.addChoice("shape", &shape, kShapes,
-                      "the heating case's particle shape: cic (cloud-in-cell, default) or tsc (triangular-shaped cloud)");
-        std::string historyDirectory;
-        cli.add()("history", po::value<std::string>(&historyDirectory),
-                  "an existing folder: each case run, except boris and exb, also writes there CASE.csv "
-                  "(heating: heating-dxX.csv, X = dx/lambda_D), the samples its measurement used against time "
-                  "(in 1/omega_p; diocotron in 1/omega_D), with the fit's window and lines");
-        cli.addPositional("action", &actionName);
+        cli::CommandLine cli("plasma", kUsage);
+        VerifyOptions options;
+        declareOptions(cli, options);
         if (!cli.parse(argc, argv)) {
             out << cli.help();
             return;
         }
-        Action action = Action::Verify;
-        if (actionName.empty())
-            throw cli.usageError("missing the action (allowed: " + cli::wordsOf(kActions) + ")");
-        if (!cli::findChoice(kActions, actionName, action))
-            throw cli.usageError("unknown action '" + echoedInput(actionName) + "' (allowed: " + cli::wordsOf(kActions) + ")");
-        if (!(kDebye >= plasma::kLandauMinKDebye && kDebye <= plasma::kLandauMaxKDebye))
-            throw cli.usageError("--k-lambda-d must be in [" + number(plasma::kLandauMinKDebye) + ", " +
-                                 number(plasma::kLandauMaxKDebye) + "] (got " + number(kDebye) + ")");
-        if (cli.given("k-lambda-d") && chosen != Case::Landau)
-            throw cli.usageError("--k-lambda-d applies only to --case landau");
-        if (!(wpDt >= plasma::kMinVerifyWpDt && wpDt < 2.0))
-            throw cli.usageError("--wp-dt must be in [" + number(plasma::kMinVerifyWpDt) +
-                                 ", 2): the leapfrog is unstable for omega_p dt >= 2, and the runs' steps grow as "
-                                 "1/(omega_p dt) (got " + number(wpDt) + ")");
-        if (!(wcDt >= plasma::kMinVerifyWcDt && wcDt <= plasma::kMaxVerifyWcDt))
-            throw cli.usageError("--wc-dt must be in [" + number(plasma::kMinVerifyWcDt) + ", " +
-                                 number(plasma::kMaxVerifyWcDt) + "] (got " + number(wcDt) + ")");
-        if (cli.given("dx-lambda-d")) {
-            if (!(dxOverDebye >= plasma::kMinHeatingDxDebye && dxOverDebye <= plasma::kMaxHeatingDxDebye))
-                throw cli.usageError("--dx-lambda-d must be in [" + number(plasma::kMinHeatingDxDebye) + ", " +
-                                     number(plasma::kMaxHeatingDxDebye) + "] (got " + number(dxOverDebye) + ")");
-            heatingSpacings = {dxOverDebye};
-        }
-
-        if (device != Device::Gpu && cli.given("solver"))
-            throw cli.usageError("--solver applies only to --device gpu");
-        if (cli.given("shape") && chosen != Case::Heating)
-            throw cli.usageError("--shape applies only to --case heating");
-        if (shape != plasma::ParticleShape::CloudInCell && device == Device::Gpu)
-            throw cli.usageError("--shape tsc runs only on --device cpu (the GPU step deposits by cloud-in-cell)");
-
-        if (cli.given("history")) requireWritableDirectory(historyDirectory);
-
-        const auto runs = [chosen](Case c) { return chosen == Case::All || chosen == c; };
-        // Prints a case's rows, and with --history writes its history as FILE.csv.
-        const auto runCase = [&](const std::string& name, const std::string& file, const auto& verify) {
-            plasma::VerifyHistory history;
-            printRows(out, name, verify(historyDirectory.empty() ? nullptr : &history));
-            if (!historyDirectory.empty() && !history.columns.empty())
-                writeHistory(historyDirectory, file, history);
-        };
-        const auto runCases = [&](const plasma::PicDevice& on) {
-            out << "case,parameter,measured,expected,rel_error\n";
-            if (runs(Case::Langmuir))
-                runCase("langmuir", "langmuir", [&](auto h) { return plasma::verifyLangmuir(wpDt, on, h); });
-            if (runs(Case::Langmuir2D))
-                runCase("langmuir-2d", "langmuir-2d",
-                        [&](auto h) { return plasma::verifyLangmuir2D(wpDt, 256, on, h); });
-            if (runs(Case::Langmuir3D))
-                runCase("langmuir-3d", "langmuir-3d", [&](auto h) { return plasma::verifyLangmuir3D(wpDt, 32, on, h); });
-            if (runs(Case::Boris)) printRows(out, "boris", plasma::verifyBoris(wcDt, 1000, on));
-            if (runs(Case::ExB)) printRows(out, "exb", plasma::verifyExB(wcDt, on));
-            if (runs(Case::TwoStream))
-                runCase("two-stream", "two-stream", [&](auto h) { return plasma::verifyTwoStream(wpDt, on, h); });
-            if (runs(Case::Energy))
-                runCase("energy", "energy", [&](auto h) { return plasma::verifyEnergy(wpDt, on, h); });
-            if (runs(Case::Heating))
-                for (const double spacing : heatingSpacings)
-                    runCase("heating", "heating-dx" + number(spacing),
-                            [&](auto h) { return plasma::verifyHeating(wpDt, spacing, 1, on, 64, h); });
-            if (runs(Case::Landau))
-                runCase("landau", "landau", [&](auto h) { return plasma::verifyLandau(wpDt, kDebye, 1 << 20, on, h); });
-            if (runs(Case::Diocotron))
-                runCase("diocotron", "diocotron",
-                        [&](auto h) { return plasma::verifyDiocotron(kDiocotronWcDt, 0.1, on, h); });
-        };
-        if (device == Device::Gpu) {
+        checkOptions(cli, options);
+        if (cli.given("history")) requireWritableDirectory(options.historyDirectory);
+        if (options.device == Device::Gpu) {
             const auto context = gl::createContext(gl::Backend::Egl);
-            runCases(plasma::GpuPicDevice(dataDirectory() + "/shaders", solver));
+            runCases(options, plasma::GpuPicDevice(dataDirectory() + "/shaders", options.solver), out);
         } else {
-            runCases(plasma::cpuDevice(shape));
+            runCases(options, plasma::cpuDevice(options.shape), out);
         }
     });
 }

@@ -105,6 +105,9 @@ private:
     glm::dvec3 eyeOffset() const;
     Wall gridWall();
     Wall screenListWall();
+    Screen readScreen(const TableReader& s, const std::vector<Screen>& earlier) const;
+    void checkOverlaps(const Screen& screen, const TableReader& s, const std::vector<Screen>& earlier) const;
+    void numberRanks(std::vector<Screen>& screens, bool anyRank, std::optional<std::size_t> firstWithoutRank) const;
     void checkRankCount(const Wall& wall) const;
     void placeWindows(Wall& wall) const;
     void readProjection(Wall& wall) const;
@@ -202,49 +205,8 @@ Wall WallFile::screenListWall()
     bool anyRank = false;
     std::optional<std::size_t> firstWithoutRank;
     for (const TableReader& s : screens_) {
-        s.rejectKeysOutside(screenKeys);
-        Screen screen;
-        screen.name = s.string("name");
-        // The name becomes part of file names (tile-NAME.exr) and window titles.
-        const auto fileNameSafe = [](char c) {
-            return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_' || c == '.' ||
-                   c == '-';
-        };
-        if (screen.name.empty() || !std::all_of(screen.name.begin(), screen.name.end(), fileNameSafe))
-            s.fail("name", "must be letters, digits, '_', '.' or '-' (got \"" + echoedInput(screen.name) + "\")");
-        for (std::size_t j = 0; j < screens.size(); ++j)
-            if (screens[j].name == screen.name)
-                s.fail("name", "\"" + echoedInput(screen.name) + "\" is already the name of the screen on line " +
-                                   std::to_string(screens_[j].line()));
-        screen.widthPx = s.integer("width_px", 1, maxPx);
-        screen.heightPx = s.integer("height_px", 1, maxPx);
-        screen.widthMm = s.numberAbove("width_mm", 0.0, maxMm);
-        screen.heightMm = s.numberAbove("height_mm", 0.0, maxMm);
-        screen.lowerLeftMm = {s.number("x_mm", -maxMm, maxMm), s.number("y_mm", -maxMm, maxMm)};
-        screen.eye = Eye(s.choice("eye", {"centre", "left", "right"}, 0));
-        if (s.has("stereo")) {
-            forbid(s, "eye", "cannot be combined with stereo: a side-by-side screen shows both eyes");
-            s.choice("stereo", {"side-by-side"}, 0);
-            if (screen.widthPx % 2 != 0)
-                s.fail("stereo", "a side-by-side screen needs an even width_px (got " + std::to_string(screen.widthPx) + ")");
-            screen.eye = Eye::sideBySide;
-        }
-        for (std::size_t j = 0; j < screens.size(); ++j) {
-            const Screen& other = screens[j];
-            // Passive stereo: a left-eye and a right-eye screen may share the wall area.
-            const bool otherEye = (screen.eye == Eye::left && other.eye == Eye::right) ||
-                                  (screen.eye == Eye::right && other.eye == Eye::left);
-            if (otherEye)
-                continue;
-            const double overlapX = std::min(screen.lowerRight().x, other.lowerRight().x) -
-                                    std::max(screen.lowerLeftMm.x, other.lowerLeftMm.x);
-            const double overlapY = std::min(screen.upperLeft().y, other.upperLeft().y) -
-                                    std::max(screen.lowerLeftMm.y, other.lowerLeftMm.y);
-            if (overlapX > 1e-6 && overlapY > 1e-6)
-                throw inputError(path_, s.line(),
-                                 "screen '" + screen.name + "' overlaps screen '" + other.name + "' (line " +
-                                     std::to_string(screens_[j].line()) + ") by " + show(overlapX) + " x " + show(overlapY) + " mm");
-        }
+        Screen screen = readScreen(s, screens);
+        checkOverlaps(screen, s, screens);
         if (s.has("rank")) {
             screen.rank = s.integer("rank", 0, maxRank);
             anyRank = true;
@@ -253,7 +215,80 @@ Wall WallFile::screenListWall()
         }
         screens.push_back(screen);
     }
+    numberRanks(screens, anyRank, firstWithoutRank);
 
+    glm::dvec2 lo = screens.front().lowerLeftMm, hi = lo;
+    for (const Screen& screen : screens) {
+        lo = glm::min(lo, screen.lowerLeftMm);
+        hi = glm::max(hi, glm::dvec2(screen.upperRight()));
+    }
+    const glm::dvec3 eyeMm = glm::dvec3((lo + hi) / 2.0, 0.0) + eyeOffset();
+    try {
+        return assembleWall(std::move(screens), eyeMm, path_);
+    } catch (const std::invalid_argument& e) {
+        failFile(e.what());
+    }
+}
+
+// One [[screen]] table without its rank: its name (unique among the earlier screens), size, place
+// and eye.
+Screen WallFile::readScreen(const TableReader& s, const std::vector<Screen>& earlier) const
+{
+    s.rejectKeysOutside(screenKeys);
+    Screen screen;
+    screen.name = s.string("name");
+    // The name becomes part of file names (tile-NAME.exr) and window titles.
+    const auto fileNameSafe = [](char c) {
+        return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_' || c == '.' ||
+               c == '-';
+    };
+    if (screen.name.empty() || !std::all_of(screen.name.begin(), screen.name.end(), fileNameSafe))
+        s.fail("name", "must be letters, digits, '_', '.' or '-' (got \"" + echoedInput(screen.name) + "\")");
+    for (std::size_t j = 0; j < earlier.size(); ++j)
+        if (earlier[j].name == screen.name)
+            s.fail("name", "\"" + echoedInput(screen.name) + "\" is already the name of the screen on line " +
+                               std::to_string(screens_[j].line()));
+    screen.widthPx = s.integer("width_px", 1, maxPx);
+    screen.heightPx = s.integer("height_px", 1, maxPx);
+    screen.widthMm = s.numberAbove("width_mm", 0.0, maxMm);
+    screen.heightMm = s.numberAbove("height_mm", 0.0, maxMm);
+    screen.lowerLeftMm = {s.number("x_mm", -maxMm, maxMm), s.number("y_mm", -maxMm, maxMm)};
+    screen.eye = Eye(s.choice("eye", {"centre", "left", "right"}, 0));
+    if (s.has("stereo")) {
+        forbid(s, "eye", "cannot be combined with stereo: a side-by-side screen shows both eyes");
+        s.choice("stereo", {"side-by-side"}, 0);
+        if (screen.widthPx % 2 != 0)
+            s.fail("stereo", "a side-by-side screen needs an even width_px (got " + std::to_string(screen.widthPx) + ")");
+        screen.eye = Eye::sideBySide;
+    }
+    return screen;
+}
+
+// A screen may not overlap an earlier one by more than 1e-6 mm each way, except that a left-eye and
+// a right-eye screen may share the wall area (passive stereo).
+void WallFile::checkOverlaps(const Screen& screen, const TableReader& s, const std::vector<Screen>& earlier) const
+{
+    for (std::size_t j = 0; j < earlier.size(); ++j) {
+        const Screen& other = earlier[j];
+        const bool otherEye = (screen.eye == Eye::left && other.eye == Eye::right) ||
+                              (screen.eye == Eye::right && other.eye == Eye::left);
+        if (otherEye)
+            continue;
+        const double overlapX = std::min(screen.lowerRight().x, other.lowerRight().x) -
+                                std::max(screen.lowerLeftMm.x, other.lowerLeftMm.x);
+        const double overlapY = std::min(screen.upperLeft().y, other.upperLeft().y) -
+                                std::max(screen.lowerLeftMm.y, other.lowerLeftMm.y);
+        if (overlapX > 1e-6 && overlapY > 1e-6)
+            throw inputError(path_, s.line(),
+                             "screen '" + screen.name + "' overlaps screen '" + other.name + "' (line " +
+                                 std::to_string(screens_[j].line()) + ") by " + show(overlapX) + " x " + show(overlapY) + " mm");
+    }
+}
+
+// Ranks given in every [[screen]] (then 0..N-1 without gaps), or in none: then screens_per_rank
+// consecutive screens per rank, in file order.
+void WallFile::numberRanks(std::vector<Screen>& screens, bool anyRank, std::optional<std::size_t> firstWithoutRank) const
+{
     if (anyRank) {
         if (firstWithoutRank)
             throw inputError(path_, screens_[*firstWithoutRank].line(),
@@ -269,18 +304,6 @@ Wall WallFile::screenListWall()
         const int perRank = ranks_.integer("screens_per_rank", 1, maxRank, 1);
         for (std::size_t i = 0; i < screens.size(); ++i)
             screens[i].rank = int(i) / perRank;
-    }
-
-    glm::dvec2 lo = screens.front().lowerLeftMm, hi = lo;
-    for (const Screen& screen : screens) {
-        lo = glm::min(lo, screen.lowerLeftMm);
-        hi = glm::max(hi, glm::dvec2(screen.upperRight()));
-    }
-    const glm::dvec3 eyeMm = glm::dvec3((lo + hi) / 2.0, 0.0) + eyeOffset();
-    try {
-        return assembleWall(std::move(screens), eyeMm, path_);
-    } catch (const std::invalid_argument& e) {
-        failFile(e.what());
     }
 }
 

@@ -9,7 +9,7 @@
 
 #include <fstream>
 
-namespace aurorawall::control {
+namespace aurorawall::app::control {
 namespace {
 
 TEST(Preset, NameOrPathGivesTheScenesCamera)
@@ -74,4 +74,4 @@ TEST(Preset, RefusalsNameThePresetOnOneLine)
 }
 
 } // namespace
-} // namespace aurorawall::control
+} // namespace aurorawall::app::control

@@ -15,7 +15,7 @@ TEST(CommandMailbox, AnAskIsAnsweredByTheFrameLoop)
     aw::app::web::CommandMailbox mailbox;
     std::thread frameLoop([&] {
         for (int tries = 0; tries < 1000; ++tries) {
-            const std::vector<aw::control::ControlLine> lines = mailbox.poll(16);
+            const std::vector<aw::app::control::ControlLine> lines = mailbox.poll(16);
             if (!lines.empty()) {
                 mailbox.answer(lines[0].client, "ok " + lines[0].text);
                 return;
@@ -43,12 +43,12 @@ TEST(CommandMailbox, ClosedAnswersNothing)
 }
 
 namespace {
-struct Recorder : aw::control::CommandChannel {
-    std::vector<aw::control::ControlLine> lines;
+struct Recorder : aw::app::control::CommandChannel {
+    std::vector<aw::app::control::ControlLine> lines;
     std::vector<std::pair<std::uint64_t, std::string>> answers;
-    std::vector<aw::control::ControlLine> poll(std::size_t maxLines) override
+    std::vector<aw::app::control::ControlLine> poll(std::size_t maxLines) override
     {
-        std::vector<aw::control::ControlLine> out(lines.begin(), lines.begin() + std::min(maxLines, lines.size()));
+        std::vector<aw::app::control::ControlLine> out(lines.begin(), lines.begin() + std::min(maxLines, lines.size()));
         lines.erase(lines.begin(), lines.begin() + out.size());
         return out;
     }
@@ -61,10 +61,10 @@ TEST(ChannelSet, AnswersFindTheirChannelAndClient)
     Recorder a, b;
     a.lines = {{7, "status"}, {7, "pause"}};
     b.lines = {{7, "play"}};
-    aw::control::ChannelSet set;
+    aw::app::control::ChannelSet set;
     set.add(a);
     set.add(b);
-    const std::vector<aw::control::ControlLine> lines = set.poll(2); // one each
+    const std::vector<aw::app::control::ControlLine> lines = set.poll(2); // one each
     ASSERT_EQ(lines.size(), 2u);
     EXPECT_EQ(lines[0].text, "status");
     EXPECT_EQ(lines[1].text, "play");

@@ -3,7 +3,7 @@
 
 #include <gtest/gtest.h>
 
-using namespace aurorawall::control;
+using namespace aurorawall::app::control;
 
 TEST(Command, WordsWithoutArguments)
 {

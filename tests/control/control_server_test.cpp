@@ -20,7 +20,7 @@
 #include <unistd.h>
 
 using namespace aurorawall;
-using namespace aurorawall::control;
+using namespace aurorawall::app::control;
 
 namespace {
 

@@ -5,7 +5,7 @@
 #include <gtest/gtest.h>
 
 using namespace aurorawall;
-using namespace aurorawall::control;
+using namespace aurorawall::app::control;
 
 namespace {
 

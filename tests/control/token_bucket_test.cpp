@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-using aurorawall::control::TokenBucket;
+using aurorawall::app::control::TokenBucket;
 
 namespace {
 

@@ -2,7 +2,7 @@
 
 #include <sstream>
 
-namespace aurorawall::cli {
+namespace aurorawall::app::cli {
 namespace {
 
 // Boost.Program_options' messages quote what was typed (an option, its value) from substitutions that
@@ -66,4 +66,4 @@ UsageError CommandLine::usageError(const std::string& message) const
     return UsageError(message + " (see aurorawall" + (command_.empty() ? "" : " " + command_) + " --help)");
 }
 
-} // namespace aurorawall::cli
+} // namespace aurorawall::app::cli

@@ -16,7 +16,7 @@
 #include <memory>
 #include <string>
 
-namespace aurorawall::cli {
+namespace aurorawall::app::cli {
 
 namespace po = boost::program_options;
 
@@ -77,4 +77,4 @@ void CommandLine::addChoice(const char* option, E* target, const Choices<E>& cho
     visible_.add_options()(option, value, help.c_str());
 }
 
-} // namespace aurorawall::cli
+} // namespace aurorawall::app::cli

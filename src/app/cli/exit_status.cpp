@@ -5,7 +5,7 @@
 #include <ostream>
 #include <stdexcept>
 
-namespace aurorawall::cli {
+namespace aurorawall::app::cli {
 
 int exitStatusOf(const std::exception& error)
 {
@@ -31,4 +31,4 @@ int runCommand(const std::string& command, std::ostream& out, std::ostream& err,
     return kSuccess;
 }
 
-} // namespace aurorawall::cli
+} // namespace aurorawall::app::cli

@@ -9,7 +9,7 @@
 #include <sstream>
 #include <vector>
 
-namespace aurorawall::control {
+namespace aurorawall::app::control {
 
 namespace {
 
@@ -149,4 +149,4 @@ Command parseCommand(const std::string& line)
     return c;
 }
 
-} // namespace aurorawall::control
+} // namespace aurorawall::app::control

@@ -4,7 +4,7 @@
 #include <stdexcept>
 #include <string>
 
-namespace aurorawall::control {
+namespace aurorawall::app::control {
 
 enum class CommandKind { Status, Pause, Play, Speed, Step, Time, Goto, Look, Preset, Orbit, OrbitOff, Screenshot, Quit };
 
@@ -36,4 +36,4 @@ public:
 // unknown word, a wrong number of arguments, a malformed number or one outside its bounds.
 Command parseCommand(const std::string& line);
 
-} // namespace aurorawall::control
+} // namespace aurorawall::app::control

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-namespace aurorawall::control {
+namespace aurorawall::app::control {
 
 // A client number c of channel i travels as c * n + i (n channels, fixed once the frames run).
 
@@ -26,4 +26,4 @@ void ChannelSet::answer(std::uint64_t client, const std::string& text)
         channels_[client % n]->answer(client / n, text);
 }
 
-} // namespace aurorawall::control
+} // namespace aurorawall::app::control

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-namespace aurorawall::control {
+namespace aurorawall::app::control {
 
 struct ControlLine {
     std::uint64_t client = 0; // who sent it, for the answer
@@ -37,4 +37,4 @@ private:
     std::vector<CommandChannel*> channels_;
 };
 
-} // namespace aurorawall::control
+} // namespace aurorawall::app::control

@@ -17,7 +17,7 @@
 #include <unistd.h>
 #include <utility>
 
-namespace aurorawall::control {
+namespace aurorawall::app::control {
 
 namespace {
 
@@ -278,4 +278,4 @@ void ControlServer::answer(std::uint64_t client, const std::string& text)
     flush(c);
 }
 
-} // namespace aurorawall::control
+} // namespace aurorawall::app::control

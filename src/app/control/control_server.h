@@ -27,7 +27,7 @@
 #include <string>
 #include <vector>
 
-namespace aurorawall::control {
+namespace aurorawall::app::control {
 
 // The shared secret in the first line of `file` (empty for an empty file name: no token). Throws
 // InputError naming the file if it cannot be read, is readable or writable by anyone but its owner,
@@ -95,4 +95,4 @@ private:
     std::map<std::uint64_t, Client> clients_;
 };
 
-} // namespace aurorawall::control
+} // namespace aurorawall::app::control

@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace aurorawall::control {
+namespace aurorawall::app::control {
 
 GeographicPose poseOf(const scene::Camera& camera, double planetRadiusKm)
 {
@@ -42,4 +42,4 @@ scene::Camera cameraAt(const GeographicPose& pose, double planetRadiusKm, double
     return c;
 }
 
-} // namespace aurorawall::control
+} // namespace aurorawall::app::control

@@ -4,7 +4,7 @@
 // horizontal), and back, in the planet frame of common/planet_frame.h.
 #include "scene/scene.h"
 
-namespace aurorawall::control {
+namespace aurorawall::app::control {
 
 struct GeographicPose {
     double latitudeDeg = 0.0;
@@ -22,4 +22,4 @@ GeographicPose poseOf(const scene::Camera& camera, double planetRadiusKm);
 // the given speed along its view.
 scene::Camera cameraAt(const GeographicPose& pose, double planetRadiusKm, double speedKmPerS);
 
-} // namespace aurorawall::control
+} // namespace aurorawall::app::control

@@ -6,7 +6,7 @@
 
 #include <glm/gtc/quaternion.hpp>
 
-namespace aurorawall::control {
+namespace aurorawall::app::control {
 
 namespace {
 
@@ -109,4 +109,4 @@ scene::Camera orbitAtDistance(const scene::Camera& camera, const glm::dvec3& piv
     return moved;
 }
 
-} // namespace aurorawall::control
+} // namespace aurorawall::app::control

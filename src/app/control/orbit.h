@@ -6,7 +6,7 @@
 // over the pivot's zenith is as smooth as any other turn. Planet frame of common/planet_frame.h, km.
 #include "scene/scene.h"
 
-namespace aurorawall::control {
+namespace aurorawall::app::control {
 
 // The point to orbit when orbiting starts from `camera`: where its view axis first meets the ground
 // (the sphere of radius planetRadiusKm) ahead of it; when the axis misses the planet, the point on
@@ -31,4 +31,4 @@ scene::Camera orbitTurned(const scene::Camera& camera, const glm::dvec3& pivotKm
 scene::Camera orbitAtDistance(const scene::Camera& camera, const glm::dvec3& pivotKm, double distanceKm,
                               double minRadiusKm);
 
-} // namespace aurorawall::control
+} // namespace aurorawall::app::control

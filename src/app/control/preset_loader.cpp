@@ -8,7 +8,7 @@
 #include <filesystem>
 #include <vector>
 
-namespace aurorawall::control {
+namespace aurorawall::app::control {
 
 namespace {
 
@@ -94,4 +94,4 @@ std::optional<PresetLoader::Loaded> PresetLoader::poll()
     return pending_.get();
 }
 
-} // namespace aurorawall::control
+} // namespace aurorawall::app::control

@@ -10,7 +10,7 @@
 #include <optional>
 #include <string>
 
-namespace aurorawall::control {
+namespace aurorawall::app::control {
 
 class PresetLoader {
 public:
@@ -49,4 +49,4 @@ scene::Camera presetCamera(const std::string& name, const std::string& presetDir
 // CommandError "preset NAME: REASON" for a name that is neither, or a file that does not exist.
 std::string presetPath(const std::string& name, const std::string& presetDir);
 
-} // namespace aurorawall::control
+} // namespace aurorawall::app::control

@@ -10,7 +10,7 @@
 #include <filesystem>
 #include <set>
 
-namespace aurorawall::control {
+namespace aurorawall::app::control {
 
 namespace {
 
@@ -19,6 +19,87 @@ std::string format(const char* pattern, double a, double b = 0.0, double c = 0.0
     char text[160];
     std::snprintf(text, sizeof text, pattern, a, b, c);
     return text;
+}
+
+// time T: the clock set to T. A flying camera moves with the time: no farther from the planet than
+// goto may put it.
+std::string setTime(double timeS, cluster::MasterClock& clock, double planetRadiusKm)
+{
+    const double altitudeKm = glm::length(clock.cameraAt(timeS).positionKm) - planetRadiusKm;
+    if (!(altitudeKm <= kMaxAltitudeKm))
+        throw CommandError(format("time: the camera, flying at %.6g km/s, would be %.3g km above the ground "
+                                  "(at most 1e6 km, as for goto)",
+                                  clock.camera().speedKmPerS, altitudeKm));
+    clock.setTime(timeS);
+    return format("ok time_s=%.12g", timeS);
+}
+
+// goto LAT LON ALT (degrees, degrees, km): the camera moved there, its heading and pitch kept.
+std::string moveTo(const double* v, cluster::MasterClock& clock, double planetRadiusKm, FrameRequests& requests)
+{
+    const scene::Camera now = clock.camera();
+    GeographicPose pose = poseOf(now, planetRadiusKm);
+    pose.latitudeDeg = v[0];
+    pose.longitudeDeg = v[1];
+    pose.altitudeKm = v[2];
+    clock.setCamera(cameraAt(pose, planetRadiusKm, now.speedKmPerS));
+    requests.orbit = OrbitRequest::Stop;
+    return format("ok goto lat_deg=%.9g lon_deg=%.9g alt_km=%.9g", v[0], v[1], v[2]);
+}
+
+// look HEADING PITCH (degrees): the camera turned where it stands.
+std::string turnTo(const double* v, cluster::MasterClock& clock, double planetRadiusKm, FrameRequests& requests)
+{
+    const scene::Camera now = clock.camera();
+    GeographicPose pose = poseOf(now, planetRadiusKm);
+    pose.headingDeg = v[0];
+    pose.pitchDeg = v[1];
+    clock.setCamera(cameraAt(pose, planetRadiusKm, now.speedKmPerS));
+    requests.orbit = OrbitRequest::Stop;
+    return format("ok look heading_deg=%.9g pitch_deg=%.9g", v[0], v[1]);
+}
+
+// orbit LAT LON ALT (degrees, degrees, km): the camera aimed at that point and circling it.
+std::string startOrbit(const double* v, cluster::MasterClock& clock, double planetRadiusKm, FrameRequests& requests)
+{
+    const glm::dvec3 pivot = scene::planetPoint(v[0], v[1], planetRadiusKm + v[2]);
+    const scene::Camera now = clock.camera();
+    const double distanceKm = glm::length(pivot - now.positionKm);
+    if (distanceKm < 1e-3)
+        throw CommandError("orbit: the camera is at that point (less than 1 m away)");
+    clock.setCamera(aimedAt(now, pivot));
+    requests.orbit = OrbitRequest::Start;
+    requests.pivotKm = pivot;
+    return format("ok orbit lat_deg=%.9g lon_deg=%.9g alt_km=%.9g", v[0], v[1], v[2]) +
+           format(" distance_km=%.6f", distanceKm);
+}
+
+// screenshot PATH: the request queued for this frame, answered once written. Only inside the output
+// folder: a client must not write wherever the master's user may.
+void requestScreenshot(const std::string& path, std::uint64_t client, const WallStatus& status, const WallFacts& wall,
+                       FrameRequests& requests)
+{
+    const std::filesystem::path relative(path);
+    if (relative.is_absolute())
+        throw CommandError("screenshot " + path + ": an absolute path; give a path inside the output "
+                           "folder (--out " + wall.outputDir + ")");
+    for (const std::filesystem::path& part : relative)
+        if (part == "..")
+            throw CommandError("screenshot " + path + ": '..' would leave the output folder (--out " +
+                               wall.outputDir + ")");
+    const std::filesystem::path full = std::filesystem::path(wall.outputDir) / relative;
+    std::error_code error;
+    if (!std::filesystem::is_directory(full.parent_path(), error))
+        throw CommandError("screenshot " + path + ": " + full.parent_path().string() + " is not a folder");
+    if (requests.screenshots.empty() && status.sinceScreenshotS < kScreenshotIntervalS)
+        throw CommandError("screenshot " + path + ": the last was taken less than 0.5 s ago (at most 2 "
+                           "a second; --movie records every frame)");
+    std::set<std::string> files; // this frame's: a file asked for again is written once
+    for (const ScreenshotRequest& r : requests.screenshots)
+        files.insert(r.path);
+    if (!files.count(full.string()) && files.size() >= kScreenshotsPerFrame)
+        throw CommandError("screenshot " + path + ": at most 4 files in one frame");
+    requests.screenshots.push_back({client, full.string()});
 }
 
 // Carries out one command; returns its answer ("" for a screenshot, answered once written).
@@ -44,78 +125,23 @@ std::string carryOut(const Command& command, std::uint64_t client, cluster::Mast
             throw CommandError("step: the clock is playing (pause first)");
         clock.step();
         return "ok step";
-    case CommandKind::Time: {
-        // A flying camera moves with the time: no farther from the planet than goto may put it.
-        const double altitudeKm = glm::length(clock.cameraAt(v[0]).positionKm) - planetRadiusKm;
-        if (!(altitudeKm <= kMaxAltitudeKm))
-            throw CommandError(format("time: the camera, flying at %.6g km/s, would be %.3g km above the ground "
-                                      "(at most 1e6 km, as for goto)",
-                                      clock.camera().speedKmPerS, altitudeKm));
-        clock.setTime(v[0]);
-        return format("ok time_s=%.12g", v[0]);
-    }
-    case CommandKind::Goto: {
-        const scene::Camera now = clock.camera();
-        GeographicPose pose = poseOf(now, planetRadiusKm);
-        pose.latitudeDeg = v[0];
-        pose.longitudeDeg = v[1];
-        pose.altitudeKm = v[2];
-        clock.setCamera(cameraAt(pose, planetRadiusKm, now.speedKmPerS));
-        requests.orbit = OrbitRequest::Stop;
-        return format("ok goto lat_deg=%.9g lon_deg=%.9g alt_km=%.9g", v[0], v[1], v[2]);
-    }
-    case CommandKind::Look: {
-        const scene::Camera now = clock.camera();
-        GeographicPose pose = poseOf(now, planetRadiusKm);
-        pose.headingDeg = v[0];
-        pose.pitchDeg = v[1];
-        clock.setCamera(cameraAt(pose, planetRadiusKm, now.speedKmPerS));
-        requests.orbit = OrbitRequest::Stop;
-        return format("ok look heading_deg=%.9g pitch_deg=%.9g", v[0], v[1]);
-    }
+    case CommandKind::Time:
+        return setTime(v[0], clock, planetRadiusKm);
+    case CommandKind::Goto:
+        return moveTo(v, clock, planetRadiusKm, requests);
+    case CommandKind::Look:
+        return turnTo(v, clock, planetRadiusKm, requests);
     case CommandKind::Preset:
         presets.start(command.path, wall.presetDir, client);
         return ""; // answered once loaded (applyLoadedPreset)
-    case CommandKind::Orbit: {
-        const glm::dvec3 pivot = scene::planetPoint(v[0], v[1], planetRadiusKm + v[2]);
-        const scene::Camera now = clock.camera();
-        const double distanceKm = glm::length(pivot - now.positionKm);
-        if (distanceKm < 1e-3)
-            throw CommandError("orbit: the camera is at that point (less than 1 m away)");
-        clock.setCamera(aimedAt(now, pivot));
-        requests.orbit = OrbitRequest::Start;
-        requests.pivotKm = pivot;
-        return format("ok orbit lat_deg=%.9g lon_deg=%.9g alt_km=%.9g", v[0], v[1], v[2]) +
-               format(" distance_km=%.6f", distanceKm);
-    }
+    case CommandKind::Orbit:
+        return startOrbit(v, clock, planetRadiusKm, requests);
     case CommandKind::OrbitOff:
         requests.orbit = OrbitRequest::Stop;
         return "ok orbit off";
-    case CommandKind::Screenshot: {
-        // Only inside the output folder: a client must not write wherever the master's user may.
-        const std::filesystem::path relative(command.path);
-        if (relative.is_absolute())
-            throw CommandError("screenshot " + command.path + ": an absolute path; give a path inside the output "
-                               "folder (--out " + wall.outputDir + ")");
-        for (const std::filesystem::path& part : relative)
-            if (part == "..")
-                throw CommandError("screenshot " + command.path + ": '..' would leave the output folder (--out " +
-                                   wall.outputDir + ")");
-        const std::filesystem::path full = std::filesystem::path(wall.outputDir) / relative;
-        std::error_code error;
-        if (!std::filesystem::is_directory(full.parent_path(), error))
-            throw CommandError("screenshot " + command.path + ": " + full.parent_path().string() + " is not a folder");
-        if (requests.screenshots.empty() && status.sinceScreenshotS < kScreenshotIntervalS)
-            throw CommandError("screenshot " + command.path + ": the last was taken less than 0.5 s ago (at most 2 "
-                               "a second; --movie records every frame)");
-        std::set<std::string> files; // this frame's: a file asked for again is written once
-        for (const ScreenshotRequest& r : requests.screenshots)
-            files.insert(r.path);
-        if (!files.count(full.string()) && files.size() >= kScreenshotsPerFrame)
-            throw CommandError("screenshot " + command.path + ": at most 4 files in one frame");
-        requests.screenshots.push_back({client, full.string()});
+    case CommandKind::Screenshot:
+        requestScreenshot(command.path, client, status, wall, requests);
         return "";
-    }
     case CommandKind::Quit:
         requests.quit = true;
         return "ok quit";
@@ -173,4 +199,4 @@ FrameRequests serveCommands(CommandChannel& channel, cluster::MasterClock& clock
     return requests;
 }
 
-} // namespace aurorawall::control
+} // namespace aurorawall::app::control

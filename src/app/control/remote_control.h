@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-namespace aurorawall::control {
+namespace aurorawall::app::control {
 
 // Commands carried out per frame at most; more wait for the next frames.
 constexpr std::size_t kCommandsPerFrame = 16;
@@ -67,4 +67,4 @@ FrameRequests serveCommands(CommandChannel& channel, cluster::MasterClock& clock
 // has just set, if no frame has shown them yet).
 std::string statusLine(const cluster::MasterClock& clock, const WallStatus& status, double planetRadiusKm);
 
-} // namespace aurorawall::control
+} // namespace aurorawall::app::control

@@ -5,7 +5,7 @@
 // caller (seconds on a steady clock), so the limit is tested without waiting.
 #include <algorithm>
 
-namespace aurorawall::control {
+namespace aurorawall::app::control {
 
 class TokenBucket {
 public:
@@ -33,4 +33,4 @@ private:
     double lastS_ = 0.0;
 };
 
-} // namespace aurorawall::control
+} // namespace aurorawall::app::control

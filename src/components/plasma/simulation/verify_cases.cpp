@@ -481,6 +481,72 @@ std::vector<VerifyRow> verifyHeating(double wpDt, double dxOverDebye, std::uint6
                 device.settings(particles, 1), {{"heating_rate_over_wp", fit.slope, std::nullopt}});
 }
 
+namespace {
+
+// The landau case's field mode s at every step: its zero crossings (linear between steps) and the
+// largest |s| between each two (the vertex of the parabola through the three samples around it),
+// times in 1/ω_p.
+struct LandauPeaks {
+    std::vector<double> crossingTime;
+    std::vector<double> peakTime, logPeak;
+};
+
+// From step firstStep on, up to the last step; s holds steps + 1 samples ω_pΔt = wpDt apart.
+LandauPeaks landauPeaks(const std::vector<double>& s, long firstStep, long steps, double wpDt)
+{
+    LandauPeaks peaks;
+    std::vector<long> crossing; // the step before each zero crossing
+    for (long n = firstStep; n < steps; ++n)
+        if ((s[n] < 0.0) != (s[n + 1] < 0.0)) {
+            crossing.push_back(n);
+            peaks.crossingTime.push_back((double(n) + s[n] / (s[n] - s[n + 1])) * wpDt);
+        }
+    for (std::size_t c = 0; c + 1 < crossing.size(); ++c) {
+        long best = crossing[c] + 1;
+        for (long n = best; n <= crossing[c + 1]; ++n)
+            if (std::abs(s[n]) > std::abs(s[best])) best = n;
+        // The vertex of the parabola through the three samples, where they bend down about the largest;
+        // where they do not (a first sample past the crossing smaller than the one before it, at a
+        // coarse ω_pΔt), the sample itself.
+        const double a = std::abs(s[best - 1]), b = std::abs(s[best]), d = std::abs(s[best + 1]);
+        const double curvature = a - 2.0 * b + d;
+        const double offset = b >= a && b >= d && curvature < 0.0 ? 0.5 * (a - d) / curvature : 0.0;
+        peaks.peakTime.push_back((double(best) + offset) * wpDt);
+        peaks.logPeak.push_back(std::log(b - 0.25 * (a - d) * offset));
+    }
+    return peaks;
+}
+
+// |s| at every step, the maxima (at their interpolated times) and the lines through them: the fitted
+// one and the theory's rate γ = root.imag() through the fit's middle.
+void writeLandauHistory(VerifyHistory& history, const std::vector<double>& s, long steps, double wpDt,
+                        const LandauPeaks& peaks, const Line& fit, std::complex<double> root, double fitStart,
+                        double fitEnd, double halfPeriod)
+{
+    const double middle = 0.5 * (peaks.peakTime.front() + peaks.peakTime.back());
+    const Line theory{root.imag(), fit.at(middle) - root.imag() * middle};
+    history.columns = {"t_wp", "abs_field_mode", "peak", "fitted", "expected"};
+    for (long n = 0; n <= steps; ++n) {
+        const double time = double(n) * wpDt;
+        history.rows.push_back({time, std::abs(s[n]), kNoValue, std::exp(fit.at(time)), std::exp(theory.at(time))});
+    }
+    for (std::size_t p = 0; p < peaks.peakTime.size(); ++p)
+        history.rows.push_back({peaks.peakTime[p], kNoValue, std::exp(peaks.logPeak[p]),
+                                std::exp(fit.at(peaks.peakTime[p])), std::exp(theory.at(peaks.peakTime[p]))});
+    std::sort(history.rows.begin(), history.rows.end(),
+              [](const std::vector<double>& a, const std::vector<double>& b) { return a[0] < b[0]; });
+    history.fit = {{"fit_start", fitStart},
+                   {"fit_end", fitEnd},
+                   {"fitted_rate", fit.slope},
+                   {"fitted_intercept", fit.intercept},
+                   {"expected_rate", root.imag()},
+                   {"expected_intercept", theory.intercept},
+                   {"fitted_omega", kPi / halfPeriod},
+                   {"expected_omega", root.real()}};
+}
+
+} // namespace
+
 std::vector<VerifyRow> verifyLandau(double wpDt, double kLambda, int particles, const PicDevice& device,
                                     VerifyHistory* history)
 {
@@ -522,55 +588,14 @@ std::vector<VerifyRow> verifyLandau(double wpDt, double kLambda, int particles, 
         s.push_back(fieldMode(run->nodeField(), 1).imag()); // the field of a cos(kx) density wave ∝ sin(kx)
         run->step();
     }
-    std::vector<long> crossing;      // the step before each zero crossing
-    std::vector<double> crossingTime; // in 1/ω_p
-    for (long n = long(std::ceil(fitStart / wpDt)); n < steps; ++n)
-        if ((s[n] < 0.0) != (s[n + 1] < 0.0)) {
-            crossing.push_back(n);
-            crossingTime.push_back((double(n) + s[n] / (s[n] - s[n + 1])) * wpDt);
-        }
-    std::vector<double> peakTime, logPeak;
-    for (std::size_t c = 0; c + 1 < crossing.size(); ++c) {
-        long best = crossing[c] + 1;
-        for (long n = best; n <= crossing[c + 1]; ++n)
-            if (std::abs(s[n]) > std::abs(s[best])) best = n;
-        // The vertex of the parabola through the three samples, where they bend down about the largest;
-        // where they do not (a first sample past the crossing smaller than the one before it, at a
-        // coarse ω_pΔt), the sample itself.
-        const double a = std::abs(s[best - 1]), b = std::abs(s[best]), d = std::abs(s[best + 1]);
-        const double curvature = a - 2.0 * b + d;
-        const double offset = b >= a && b >= d && curvature < 0.0 ? 0.5 * (a - d) / curvature : 0.0;
-        peakTime.push_back((double(best) + offset) * wpDt);
-        logPeak.push_back(std::log(b - 0.25 * (a - d) * offset));
-    }
-    if (peakTime.size() < 3)
+    const LandauPeaks peaks = landauPeaks(s, long(std::ceil(fitStart / wpDt)), steps, wpDt);
+    if (peaks.peakTime.size() < 3)
         throw std::runtime_error("landau: fewer than four zero crossings of the field");
-    const double halfPeriod = (crossingTime.back() - crossingTime.front()) / double(crossingTime.size() - 1);
-    const Line fit = fittedLine(peakTime, logPeak);
-    if (history) {
-        // |s| at every step, the maxima (at their interpolated times) and the lines through them.
-        const double middle = 0.5 * (peakTime.front() + peakTime.back());
-        const Line theory{root.imag(), fit.at(middle) - root.imag() * middle};
-        history->columns = {"t_wp", "abs_field_mode", "peak", "fitted", "expected"};
-        for (long n = 0; n <= steps; ++n) {
-            const double time = double(n) * wpDt;
-            history->rows.push_back(
-                {time, std::abs(s[n]), kNoValue, std::exp(fit.at(time)), std::exp(theory.at(time))});
-        }
-        for (std::size_t p = 0; p < peakTime.size(); ++p)
-            history->rows.push_back({peakTime[p], kNoValue, std::exp(logPeak[p]), std::exp(fit.at(peakTime[p])),
-                                     std::exp(theory.at(peakTime[p]))});
-        std::sort(history->rows.begin(), history->rows.end(),
-                  [](const std::vector<double>& a, const std::vector<double>& b) { return a[0] < b[0]; });
-        history->fit = {{"fit_start", fitStart},
-                        {"fit_end", fitEnd},
-                        {"fitted_rate", fit.slope},
-                        {"fitted_intercept", fit.intercept},
-                        {"expected_rate", root.imag()},
-                        {"expected_intercept", theory.intercept},
-                        {"fitted_omega", kPi / halfPeriod},
-                        {"expected_omega", root.real()}};
-    }
+    const double halfPeriod =
+        (peaks.crossingTime.back() - peaks.crossingTime.front()) / double(peaks.crossingTime.size() - 1);
+    const Line fit = fittedLine(peaks.peakTime, peaks.logPeak);
+    if (history)
+        writeLandauHistory(*history, s, steps, wpDt, peaks, fit, root, fitStart, fitEnd, halfPeriod);
     return rows({setting("wp_dt", wpDt), setting("k_debye", kLambda), setting("cells", kCells),
                  setting("particles", particles)},
                 device.settings(particles, 1),
