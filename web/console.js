@@ -17,6 +17,7 @@ if (fragment.get("token")) {
 }
 
 let lastAnswerAt = Date.now();
+const stamp = () => new Date().toISOString().replace(/[-:]/g, "").replace(/\..*/, ""); // for file names
 let paused = false;
 
 function headers() {
@@ -145,10 +146,64 @@ $("speed").onchange = () => command("speed " + $("speed").value);
 $("time-set").onclick = () => command("time " + $("time").value);
 $("time").onkeydown = (e) => { if (e.key === "Enter") command("time " + $("time").value); };
 $("time-slider").onchange = () => command("time " + $("time-slider").value);
-$("screenshot").onclick = () => {
-  const stamp = new Date().toISOString().replace(/[-:]/g, "").replace(/\..*/, "");
-  command(`screenshot console-${stamp}.png`);
+$("screenshot").onclick = () => command(`screenshot console-${stamp()}.png`);
+// Recording: `record start` / `record stop` of a camera path and `movie start` / `movie stop` into the
+// wall's output folder, named by the time pressed. The stopped path can be downloaded (GET
+// /recordings/NAME, with the secret, hence fetched) and replayed: `preset FILE` at its first time.
+let recording = "";  // the path's name while `record start` runs
+let movie = false;
+let recorded = null; // the last stopped path: { name, file, from }
+
+function showRecording() {
+  $("record").textContent = recording ? "stop path" : "record path";
+  $("record").classList.toggle("on", !!recording);
+  $("movie").textContent = movie ? "stop movie" : "record movie";
+  $("movie").classList.toggle("on", movie);
+  $("download").hidden = $("replay").hidden = !recorded;
+  if (recorded) $("download").textContent = "download " + recorded.name;
+}
+
+$("record").onclick = async () => {
+  if (!recording) {
+    const name = `path-${stamp()}.toml`;
+    if ((await command("record start " + name)).startsWith("ok")) recording = name;
+  } else {
+    const answer = await command("record stop");
+    const stopped = answer.match(/^ok record stop (.+) keys=\d+ from_s=(\S+) to_s=\S+$/);
+    if (stopped) recorded = { name: recording, file: stopped[1], from: stopped[2] };
+    if (answer.startsWith("ok") || answer.includes("no recording runs") || answer.includes("(the recording ended)"))
+      recording = "";
+  }
+  showRecording();
 };
+
+$("movie").onclick = async () => {
+  const answer = await command(movie ? "movie stop" : `movie start movie-${stamp()}`);
+  if (answer.startsWith("ok movie start")) movie = true;
+  else if (answer.startsWith("ok movie stop") || answer.startsWith("error movie stop")) movie = false;
+  showRecording();
+};
+
+$("download").onclick = async (e) => {
+  e.preventDefault();
+  try {
+    const response = await request("/recordings/" + encodeURIComponent(recorded.name));
+    if (!response.ok) throw new Error((await response.text()).trim());
+    const a = document.createElement("a");
+    a.href = URL.createObjectURL(await response.blob());
+    a.download = recorded.name;
+    a.click();
+    setTimeout(() => URL.revokeObjectURL(a.href), 10000);
+    $("answer").textContent = "downloaded " + recorded.name;
+  } catch (err) {
+    $("answer").textContent = "download " + recorded.name + " → " + err.message;
+  }
+};
+
+$("replay").onclick = async () => {
+  if ((await command("preset " + recorded.file)).startsWith("ok")) await command("time " + recorded.from);
+};
+
 $("token-set").onclick = () => {
   token = $("token").value;
   sessionStorage.setItem("token", token);

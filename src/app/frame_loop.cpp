@@ -2,6 +2,7 @@
 
 #include "app/band_frame.h"
 #include "app/band_split.h"
+#include "app/command_outputs.h"
 #include "app/control/geographic_camera.h"
 #include "app/control/remote_control.h"
 #include "app/gamepad.h"
@@ -154,12 +155,17 @@ struct MasterState {
           navigation(session.scene.planetRadiusKm),
           wallFacts{session.scene.planetRadiusKm,
                     session.dataDir + "/config/scenes",
-                    session.options.outDir}
+                    session.options.outDir},
+          outputs(session.options.sceneFile, clockSettings(session).timeStepS, session.toneMap)
     {
         if (session.control)
             commandChannels.add(*session.control);
-        if (session.web)
+        if (session.web) {
             commandChannels.add(session.web->commands());
+            outputs.onRecorded = [&web = *session.web](const std::string& name, const std::string& file) {
+                web.addRecording(name, file); // GET /recordings/NAME serves it
+            };
+        }
         if (!session.options.movieDir.empty())
             movie.emplace(session.options.movieDir, session.options.movieExr, session.toneMap);
         if (!session.options.recordPath.empty()) {
@@ -182,6 +188,8 @@ struct MasterState {
     std::vector<control::ScreenshotRequest> screenshots;
     control::PresetLoader presets;
     control::ChannelSet commandChannels; // the control port's clients, the browser's requests
+    CommandOutputs outputs;              // record start|stop, movie start|stop
+    std::vector<control::OutputRequest> outputRequests; // this frame's, carried out once it is decided
     std::optional<MovieWriter> movie;
     std::optional<PathRecorder> recorder;
     SteadyClock::time_point lastRecordWrite = SteadyClock::now();
@@ -228,6 +236,8 @@ public:
         }
         if (master_ && master_->recorder)
             writeRecording();
+        if (master_)
+            master_->outputs.finish(master_->commandChannels);
         return std::move(stats_);
     }
 
@@ -253,9 +263,13 @@ private:
                 m.wallStatus.sinceScreenshotS = std::chrono::duration<double>(frameStart - *m.lastScreenshot).count();
             steer(stats_.records().empty() ? 0.0 : lastFrameS);
             cluster::FrameState state = m.clock.next(m.stopRequested);
+            m.outputs.decide(m.outputRequests, state, m.commandChannels, frameStart);
+            m.outputRequests.clear();
+            m.wallStatus.recording = m.outputs.recording();
+            m.wallStatus.movie = m.outputs.movie();
             m.previewDue = session_.web && session_.web->previewWanted(); // only while a browser watches
-            state.gatherWall =
-                !m.screenshots.empty() || m.movie.has_value() || session_.console != nullptr || m.previewDue;
+            state.gatherWall = !m.screenshots.empty() || m.movie.has_value() || m.outputs.movieWanted() ||
+                               session_.console != nullptr || m.previewDue;
             if (m.recorder && !state.quit)
                 record(state, frameStart);
             std::vector<std::string> hud;
@@ -285,6 +299,7 @@ private:
             control::serveCommands(m.commandChannels, m.clock, m.wallStatus, m.wallFacts, m.presets);
         m.stopRequested = m.stopRequested || requests.quit;
         m.screenshots = requests.screenshots;
+        m.outputRequests = requests.outputs;
         if (requests.orbit == control::OrbitRequest::Start)
             m.navigation.orbit(requests.pivotKm);
         else if (requests.orbit == control::OrbitRequest::Stop)
@@ -409,6 +424,8 @@ private:
         m.screenshots.clear();
         if (m.movie)
             writeMovieFrame(session_, *m.movie, canvas, status, frame.state, m.stopRequested);
+        m.outputs.writeMovieFrame(canvas, status, frame.state, m.commandChannels);
+        m.wallStatus.movie = m.outputs.movie(); // a first frame that failed ended it
         if (session_.console && status == 0)
             showConsole(session_, canvas);
         if (m.previewDue && status == 0)

@@ -11,7 +11,9 @@ is opened with #token=SECRET and its real controls are used through Runtime.eval
 pause/play button, the time slider (its value set, then the input and change events the page
 listens to), a preset's button. After each, GET /status must show what was asked: paused with
 the time standing still, the slider's time, playing with the time running, the camera the preset's
-answer reports. The preview on the page must change when the camera moves. While rank 1 is
+answer reports. The recording buttons: a path recorded and stopped, downloaded through the page's
+fetch (the file's bytes, application/toml), a movie recorded and stopped (its PNGs in WORK_DIR, the
+wall's --out), the path replayed. The preview on the page must change when the camera moves. While rank 1 is
 stopped (SIGSTOP, for at most 6 s), GET /ranks and the page must show its heartbeat's age growing
 past two periods and draw the rank red; once it runs again (SIGCONT), no longer. Writes
 WORK_DIR/console.png (Page.captureScreenshot) and WORK_DIR/chromium.log. Standard library only.
@@ -268,6 +270,43 @@ def check_preset_and_preview(browser, wall, preset):
     print(f"preview: {first} -> {second}")
 
 
+def check_recording(browser, wall, work_dir):
+    """Record path, stop, download (the file's bytes), record movie, stop (its PNGs), replay path."""
+    browser.evaluate("awTest.click('record')")
+    started = answer_after(browser, "record start")
+    if "→ ok record start" not in started or browser.evaluate("awTest.text('record')") != "stop path":
+        raise Failure(f"record path: {started}")
+    wall.frames_later(5)
+    browser.evaluate("awTest.click('record')")
+    stopped = answer_after(browser, "record stop")
+    if "→ ok record stop" not in stopped or not browser.evaluate("awTest.shown('download')"):
+        raise Failure(f"stop path: {stopped}")
+    name = browser.evaluate("recorded.name")
+    status, kind, text = browser.evaluate(
+        "(async () => { const r = await request('/recordings/' + encodeURIComponent(recorded.name));"
+        " return [r.status, r.headers.get('content-type'), await r.text()]; })()")
+    with open(os.path.join(work_dir, name)) as f:
+        if (status, kind, text) != (200, "application/toml", f.read()):
+            raise Failure(f"GET /recordings/{name}: {status} {kind}, {len(text)} characters unlike the file's")
+    browser.evaluate("awTest.click('download')")
+    poll("the page's download", lambda: browser.evaluate("awTest.text('answer')") == "downloaded " + name)
+    browser.evaluate("awTest.click('movie')")
+    if "→ ok movie start" not in answer_after(browser, "movie start"):
+        raise Failure("record movie: " + browser.evaluate("awTest.text('answer')"))
+    wall.frames_later(3)
+    browser.evaluate("awTest.click('movie')")
+    movie = answer_after(browser, "movie stop")
+    folder, frames = movie.split("ok movie stop ")[1].rsplit(" frames=", 1)
+    pngs = [f for f in os.listdir(folder) if f.endswith(".png")]
+    if len(pngs) != int(frames) or int(frames) < 3:
+        raise Failure(f"stop movie: {movie}, {len(pngs)} PNGs in {folder}")
+    browser.evaluate("awTest.click('replay')")
+    replayed = answer_after(browser, "time ")
+    if "→ ok time_s=" not in replayed:
+        raise Failure(f"replay path: {replayed}")
+    print(f"recorded {name} ({stopped.split('keys=')[1]}), downloaded; movie of {frames} frames; {replayed}")
+
+
 def check_silent_rank(browser, wall, pid):
     poll("rank 1 drawn as keeping up", lambda: (lambda r: r and not r["lagging"])(browser.evaluate("awTest.rank(1)")))
     period = wall.ranks()["heartbeat_period_s"]
@@ -303,6 +342,7 @@ def main():
             raise Failure("the page asks for the secret though its address gave it")
         check_pause_and_play(browser, wall)
         check_preset_and_preview(browser, wall, preset)
+        check_recording(browser, wall, work_dir)
         check_silent_rank(browser, wall, int(rank1_pid))
         shot = os.path.join(work_dir, "console.png")
         browser.screenshot(shot)

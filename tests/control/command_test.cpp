@@ -67,6 +67,19 @@ TEST(Command, ScreenshotTakesTheRestOfTheLineAsItsPath)
     EXPECT_EQ(parseCommand("screenshot a.png").path, "a.png");
 }
 
+TEST(Command, RecordAndMovieStartTakeTheRestOfTheLine)
+{
+    const Command record = parseCommand(" record  start  paths/my flight.toml \r");
+    EXPECT_EQ(record.kind, CommandKind::RecordStart);
+    EXPECT_EQ(record.path, "paths/my flight.toml");
+    EXPECT_EQ(parseCommand("record stop").kind, CommandKind::RecordStop);
+    const Command movie = parseCommand("movie start clips/take 1");
+    EXPECT_EQ(movie.kind, CommandKind::MovieStart);
+    EXPECT_EQ(movie.path, "clips/take 1");
+    EXPECT_EQ(parseCommand("movie\tstop ").kind, CommandKind::MovieStop);
+    EXPECT_EQ(parseCommand("record start start.toml").path, "start.toml"); // a name may be the subcommand's word
+}
+
 // Each refused line with a piece of its reason.
 // Control bytes are refused by value and column (a NUL no longer cuts the answer short), and a long
 // unknown word is echoed cut.
@@ -126,6 +139,15 @@ TEST(Command, RefusedLinesSayWhy)
         {"bogus", "preset"}, // the list of commands
         {"screenshot wall.jpg", "must end in .png"},
         {"screenshot .png", "must end in .png"},
+        {"record", "record: start or stop expected (usage: record start PATH.toml | record stop)"},
+        {"record go x.toml", "record: start or stop expected"},
+        {"record start", "record: missing the path"},
+        {"record start x.png", "record start x.png: the file name must end in .toml"},
+        {"record start .toml", "must end in .toml"},
+        {"record stop now", "record stop: no argument expected"},
+        {"movie", "movie: start or stop expected (usage: movie start DIR | movie stop)"},
+        {"movie start  ", "movie: missing the path"},
+        {"movie stop x", "movie stop: no argument expected"},
     };
     for (const auto& [line, reason] : cases) {
         try {

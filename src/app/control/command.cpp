@@ -33,6 +33,8 @@ const Grammar kGrammar[] = {
     {"preset", CommandKind::Preset, 0, true, "preset NAME"},
     {"orbit", CommandKind::Orbit, 3, false, "orbit LAT_DEG LON_DEG ALT_KM | orbit off"},
     {"screenshot", CommandKind::Screenshot, 0, true, "screenshot PATH.png"},
+    {"record", CommandKind::RecordStart, 0, true, "record start PATH.toml | record stop"},
+    {"movie", CommandKind::MovieStart, 0, true, "movie start DIR | movie stop"},
     {"quit", CommandKind::Quit, 0, false, "quit"},
 };
 
@@ -65,6 +67,45 @@ void checkRange(bool ok, const std::string& message)
 {
     if (!ok)
         throw CommandError(message);
+}
+
+bool endsWith(const std::string& text, const std::string& end)
+{
+    return text.size() > end.size() && text.compare(text.size() - end.size(), end.size(), end) == 0;
+}
+
+// A path argument: the rest of the line after `word` (the line's first word, or the subcommand after
+// it), blanks at its ends removed (a name may hold spaces).
+std::string restOfLine(const std::string& line, const std::string& word, const Grammar& g)
+{
+    const size_t first = line.find_first_not_of(" \t");
+    const size_t after = line.find(word, word == g.word ? first : first + std::string(g.word).size());
+    const size_t start = line.find_first_not_of(" \t\r", after + word.size());
+    if (start == std::string::npos)
+        throw CommandError(std::string(g.word) + ": missing the " + (g.kind == CommandKind::Preset ? "name" : "path") +
+                           " (usage: " + g.usage + ")");
+    const size_t last = line.find_last_not_of(" \t\r");
+    return line.substr(start, last + 1 - start);
+}
+
+// `record start PATH.toml`, `record stop`, `movie start DIR`, `movie stop`.
+Command startOrStop(const std::string& line, const std::vector<std::string>& words, const Grammar& g)
+{
+    const bool record = g.kind == CommandKind::RecordStart;
+    Command c;
+    if (words.size() >= 2 && words[1] == "stop") {
+        if (words.size() > 2)
+            throw CommandError(std::string(g.word) + " stop: no argument expected (usage: " + g.usage + ")");
+        c.kind = record ? CommandKind::RecordStop : CommandKind::MovieStop;
+        return c;
+    }
+    if (words.size() < 2 || words[1] != "start")
+        throw CommandError(std::string(g.word) + ": start or stop expected (usage: " + g.usage + ")");
+    c.kind = g.kind;
+    c.path = restOfLine(line, "start", g);
+    if (record)
+        checkRange(endsWith(c.path, ".toml"), "record start " + c.path + ": the file name must end in .toml");
+    return c;
 }
 
 } // namespace
@@ -101,18 +142,13 @@ Command parseCommand(const std::string& line)
         c.kind = CommandKind::OrbitOff;
         return c;
     }
+    if (c.kind == CommandKind::RecordStart || c.kind == CommandKind::MovieStart)
+        return startOrStop(line, words, g);
     if (g.path) {
-        // The path is the rest of the line, blanks at its ends removed (a name may hold spaces).
-        const size_t start = line.find_first_not_of(" \t", line.find(g.word) + std::string(g.word).size());
-        const size_t last = line.find_last_not_of(" \t\r");
-        if (arguments == 0 || start == std::string::npos)
-            throw CommandError(std::string(g.word) + ": missing the " + (c.kind == CommandKind::Preset ? "name" : "path") +
-                           " (usage: " + g.usage + ")");
-        c.path = line.substr(start, last + 1 - start);
+        c.path = restOfLine(line, g.word, g);
         if (c.kind == CommandKind::Preset)
             return c;
-        checkRange(c.path.size() > 4 && c.path.compare(c.path.size() - 4, 4, ".png") == 0,
-                   std::string(g.word) + " " + c.path + ": the file name must end in .png");
+        checkRange(endsWith(c.path, ".png"), std::string(g.word) + " " + c.path + ": the file name must end in .png");
         return c;
     }
     if (arguments != static_cast<size_t>(g.numbers))

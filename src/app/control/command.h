@@ -6,7 +6,10 @@
 
 namespace aurorawall::app::control {
 
-enum class CommandKind { Status, Pause, Play, Speed, Step, Time, Goto, Look, Preset, Orbit, OrbitOff, Screenshot, Quit };
+enum class CommandKind {
+    Status, Pause, Play, Speed, Step, Time, Goto, Look, Preset, Orbit, OrbitOff, Screenshot,
+    RecordStart, RecordStop, MovieStart, MovieStop, Quit
+};
 
 // The accepted bounds of the arguments.
 constexpr double kMinSpeed = 0.1;    // animation seconds per frame step, relative to --dt (or to real time)
@@ -22,7 +25,9 @@ struct Command {
     // look: heading (deg clockwise from north), pitch (deg above the horizontal);
     // orbit: the point's latitude (deg), longitude (deg), altitude (km).
     double values[3] = {0.0, 0.0, 0.0};
-    std::string path; // screenshot: the PNG to write; preset: the preset's name or scene file
+    // screenshot: the PNG to write; preset: the preset's name or scene file; record start: the TOML to
+    // write; movie start: the folder to write into
+    std::string path;
 };
 
 // A line that is not a command; what() is the reason, one line, without the "error " of the answer.

@@ -3,6 +3,7 @@
 #include "app/control/command.h"
 #include "app/control/geographic_camera.h"
 #include "app/control/orbit.h"
+#include "app/control/output_path.h"
 #include "components/registry.h"
 
 #include <algorithm>
@@ -74,32 +75,58 @@ std::string startOrbit(const double* v, cluster::MasterClock& clock, double plan
            format(" distance_km=%.6f", distanceKm);
 }
 
-// screenshot PATH: the request queued for this frame, answered once written. Only inside the output
-// folder: a client must not write wherever the master's user may.
+// screenshot PATH: the request queued for this frame, answered once written (inside the output
+// folder only: output_path.h).
 void requestScreenshot(const std::string& path, std::uint64_t client, const WallStatus& status, const WallFacts& wall,
                        FrameRequests& requests)
 {
-    const std::filesystem::path relative(path);
-    if (relative.is_absolute())
-        throw CommandError("screenshot " + path + ": an absolute path; give a path inside the output "
-                           "folder (--out " + wall.outputDir + ")");
-    for (const std::filesystem::path& part : relative)
-        if (part == "..")
-            throw CommandError("screenshot " + path + ": '..' would leave the output folder (--out " +
-                               wall.outputDir + ")");
-    const std::filesystem::path full = std::filesystem::path(wall.outputDir) / relative;
-    std::error_code error;
-    if (!std::filesystem::is_directory(full.parent_path(), error))
-        throw CommandError("screenshot " + path + ": " + full.parent_path().string() + " is not a folder");
+    const std::string full = insideOutputFolder("screenshot " + path, path, wall.outputDir).string();
     if (requests.screenshots.empty() && status.sinceScreenshotS < kScreenshotIntervalS)
         throw CommandError("screenshot " + path + ": the last was taken less than 0.5 s ago (at most 2 "
                            "a second; --movie records every frame)");
     std::set<std::string> files; // this frame's: a file asked for again is written once
     for (const ScreenshotRequest& r : requests.screenshots)
         files.insert(r.path);
-    if (!files.count(full.string()) && files.size() >= kScreenshotsPerFrame)
+    if (!files.count(full) && files.size() >= kScreenshotsPerFrame)
         throw CommandError("screenshot " + path + ": at most 4 files in one frame");
-    requests.screenshots.push_back({client, full.string()});
+    requests.screenshots.push_back({client, full});
+}
+
+// `record start|stop`, `movie start|stop` checked against what runs (and what this frame's earlier
+// lines have asked): one recording and one movie at a time, a stop only while one runs.
+OutputRequest outputRequest(const Command& command, std::uint64_t client, const WallStatus& status,
+                            const WallFacts& wall, const FrameRequests& requests)
+{
+    const bool record = command.kind == CommandKind::RecordStart || command.kind == CommandKind::RecordStop;
+    const bool start = command.kind == CommandKind::RecordStart || command.kind == CommandKind::MovieStart;
+    const CommandKind startKind = record ? CommandKind::RecordStart : CommandKind::MovieStart;
+    const CommandKind stopKind = record ? CommandKind::RecordStop : CommandKind::MovieStop;
+    std::string running = record ? status.recording : status.movie;
+    for (const OutputRequest& r : requests.outputs)
+        if (r.kind == startKind)
+            running = r.path;
+        else if (r.kind == stopKind)
+            running.clear();
+    const std::string word = record ? "record" : "movie";
+    if (!start) {
+        if (running.empty())
+            throw CommandError(word + " stop: no " + (record ? "recording" : "movie") + " runs (" + word +
+                               " start " + (record ? "PATH.toml" : "DIR") + " starts one)");
+        return {command.kind, client, "", running};
+    }
+    const std::string what = word + " start " + command.path;
+    if (!running.empty())
+        throw CommandError(what + ": " + (record ? "a recording" : "a movie") + " into " + running + " runs (" + word +
+                           " stop first)");
+    const std::filesystem::path full = insideOutputFolder(what, command.path, wall.outputDir);
+    std::error_code error;
+    if (record && std::filesystem::is_directory(full, error))
+        throw CommandError(what + ": " + full.string() + " is a folder");
+    if (!record && std::filesystem::exists(full, error) && !std::filesystem::is_directory(full, error))
+        throw CommandError(what + ": " + full.string() + " is not a folder");
+    if (!record && std::filesystem::exists(full / "frames.csv", error))
+        throw CommandError(what + ": " + full.string() + " already holds a movie (frames.csv); give another folder");
+    return {command.kind, client, command.path, full.string()};
 }
 
 // Carries out one command; returns its answer ("" for a screenshot, answered once written).
@@ -141,6 +168,12 @@ std::string carryOut(const Command& command, std::uint64_t client, cluster::Mast
         return "ok orbit off";
     case CommandKind::Screenshot:
         requestScreenshot(command.path, client, status, wall, requests);
+        return "";
+    case CommandKind::RecordStart:
+    case CommandKind::RecordStop:
+    case CommandKind::MovieStart:
+    case CommandKind::MovieStop:
+        requests.outputs.push_back(outputRequest(command, client, status, wall, requests));
         return "";
     case CommandKind::Quit:
         requests.quit = true;

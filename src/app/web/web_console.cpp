@@ -15,6 +15,9 @@
 #include <chrono>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <map>
 #include <mutex>
 #include <thread>
 #include <vector>
@@ -63,6 +66,7 @@ struct WebConsole::Impl {
     std::shared_ptr<const io::Image> canvas; // the last wall handed over, not yet encoded
     std::shared_ptr<const std::string> png;  // the last encoded preview
     std::optional<cluster::FrameRecord> lastFrame; // GET /ranks: the last frame's reports (previewMutex)
+    std::map<std::string, std::string> recordings;  // GET /recordings/NAME: name as recorded -> file (previewMutex)
 
     bool authorized(const httplib::Request& req, httplib::Response& res) const
     {
@@ -118,6 +122,28 @@ struct WebConsole::Impl {
         const std::vector<double> ages =
             frame && settings.heartbeatAgesS ? settings.heartbeatAgesS() : std::vector<double>{};
         res.set_content(frame ? ranksJson(*frame, ages, settings.heartbeatPeriodS) : "{}", "application/json");
+    }
+
+    // A recorded camera path, looked up by the name it was recorded under: no other file can be named,
+    // so no path leaves the output folder.
+    void recording(const std::string& name, httplib::Response& res)
+    {
+        std::string file;
+        {
+            std::lock_guard<std::mutex> lock(previewMutex);
+            const auto it = recordings.find(name);
+            if (it != recordings.end())
+                file = it->second;
+        }
+        std::ifstream in(file, std::ios::binary);
+        if (file.empty() || !in)
+            return reply(res, 404, "error 404 no such recording (only the paths this wall recorded)");
+        const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+        std::string base = std::filesystem::path(name).filename().string();
+        std::replace_if(base.begin(), base.end(), [](char c) { return c == '"' || c == '\\'; }, '_'); // quoted below
+        res.set_header("Content-Disposition", "attachment; filename=\"" + base + "\"");
+        res.set_header("Cache-Control", "no-store");
+        res.set_content(text, "application/toml");
     }
 
     void preview(httplib::Response& res)
@@ -180,6 +206,10 @@ WebConsole::WebConsole(WebSettings settings) : impl_(std::make_unique<Impl>())
         if (w.authorized(req, res))
             w.ranks(res);
     });
+    s.Get(R"(/recordings/(.+))", [&w](const httplib::Request& req, httplib::Response& res) {
+        if (w.authorized(req, res))
+            w.recording(req.matches[1], res);
+    });
     s.Get("/preview.png", [&w](const httplib::Request& req, httplib::Response& res) {
         if (w.authorized(req, res))
             w.preview(res);
@@ -219,6 +249,12 @@ void WebConsole::showRanks(const cluster::FrameRecord& record)
     cluster::FrameRecord copy = record;
     std::lock_guard<std::mutex> lock(impl_->previewMutex);
     impl_->lastFrame = std::move(copy);
+}
+
+void WebConsole::addRecording(const std::string& name, const std::string& file)
+{
+    std::lock_guard<std::mutex> lock(impl_->previewMutex);
+    impl_->recordings[name] = file;
 }
 
 int WebConsole::port() const { return impl_->port; }

@@ -1,9 +1,9 @@
 #pragma once
 // The operator's console in a browser (render --web-port, docs/driving.md "Browser console"): an
 // HTTP server on the master, on a thread of its own, serving the page from the data directory's
-// web/ folder, POST /command, GET /status, GET /presets, GET /preview.png and GET /ranks (each
+// web/ folder, POST /command, GET /status, GET /presets, GET /preview.png, GET /ranks (each
 // rank's last frame: the frame it drew, its render and wait times, the age of its last heartbeat;
-// the master's frame and the imbalance).
+// the master's frame and the imbalance) and GET /recordings/NAME (a camera path the wall recorded).
 // It never touches the wall itself: commands and status go through a CommandMailbox that the frame
 // loop serves with the control port's lines, and the preview is the last wall the frame loop
 // handed over, downsampled and encoded here, on request.
@@ -61,6 +61,9 @@ public:
     // each rank's report of the last frame, for GET /ranks (ranksJson, with the heartbeats' ages
     // at the time of the request: they grow while a rank is silent and the frame loop waits for it).
     void showRanks(const cluster::FrameRecord& record);
+    // a file the wall has recorded (`record start NAME`), for GET /recordings/NAME: only such files
+    // are served.
+    void addRecording(const std::string& name, const std::string& file);
 
 private:
     struct Impl;

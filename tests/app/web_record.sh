@@ -1,0 +1,150 @@
+#!/bin/bash
+# Recording from the console: on a 2-rank headless wall (--web-port, no secret), POST /command
+# `record start flight.toml`, frames pass while the camera is steered, `record stop`; the file is
+# downloaded from GET /recordings/flight.toml (the same bytes, application/toml; other names and
+# paths leaving the folder 404), replayed with `preset OUT/flight.toml` and `time FROM`, and recorded
+# again: every key's position comes back bit-identical (17 digits), its direction and up within 1e-15. `movie start`/`movie stop`
+# write PNG frames and none after the stop. Bad paths, a second start, a stop with nothing running are
+# refused; on a full disk (a small tmpfs, skipped where it cannot be mounted) the commands answer
+# errors. The wall keeps drawing throughout, and exits 0 on quit.
+source "$(dirname "$0")/lib.sh"
+command -v curl >/dev/null || { echo "SKIP: curl is not installed"; exit 77; }
+
+wall="$WORK/tiny-2-ranks.toml"
+{ cat "$DATA/tiny-2x2.toml"; printf '\n[ranks]\nscreens_per_rank = 2\n'; } > "$wall"
+out="$WORK/out"
+mkdir -p "$out"
+disk="$out/full"
+mkdir "$disk"
+mounted=0
+if mount -t tmpfs -o size=8k tmpfs "$disk" 2>/dev/null; then
+    mounted=1
+    trap 'umount "$disk" 2>/dev/null; cleanup' EXIT
+fi
+
+aw_mpirun 2 render --wall "$wall" --scene "$SCENE" --frames 0 --web-port 0 --dt 0.25 --start-time 100 \
+    --quiet --out "$out" > "$WORK/log" 2>&1 &
+job=$!
+port=$(web_port "$WORK/log" "$job")
+url="http://127.0.0.1:$port"
+stop_wall() { pkill -P "$job" 2>/dev/null; kill "$job" 2>/dev/null; }
+check() { "$@" || { stop_wall; cat "$WORK/log"; fail "$*"; }; }
+
+# post LINE: the command's answer line (status 200 checked).
+post() {
+    local code
+    code=$(curl -s -o "$WORK/body" -w '%{http_code}' --data-binary "$1" "$url/command")
+    [ "$code" = 200 ] || { stop_wall; fail "POST '$1' -> $code $(cat "$WORK/body")"; }
+    echo "$1 -> $(cat "$WORK/body")" >&2
+    cat "$WORK/body"
+}
+status() {
+    curl -s "$url/status" | python3 -c 'import json, sys; print(json.load(sys.stdin)[sys.argv[1]])' "$1"
+}
+# frames N: waits until N more frames have been drawn (the wall keeps running).
+frames() {
+    local start; start=$(status frame)
+    for _ in $(seq 300); do
+        [ $(( $(status frame) - start )) -ge "$1" ] && return 0
+        sleep 0.1
+    done
+    stop_wall; fail "the wall drew fewer than $1 frames in 30 s"
+}
+refused() { check grep -q "^error $2" <(post "$1"); }
+
+note "refusals"
+refused "record stop" "record stop: no recording runs"
+refused "movie stop" "movie stop: no movie runs"
+refused "record start ../x.toml" "record start \.\./x\.toml: '\.\.' would leave the output folder"
+refused "record start /tmp/x.toml" "record start /tmp/x\.toml: an absolute path"
+refused "record start nowhere/x.toml" "record start nowhere/x\.toml: .*/nowhere is not a folder"
+refused "record start x.png" "record start x\.png: the file name must end in \.toml"
+refused "record begin x.toml" "record: start or stop expected"
+refused "movie start ../m" "movie start \.\./m: '\.\.' would leave the output folder"
+refused "movie start nowhere/m" "movie start nowhere/m: .*/nowhere is not a folder"
+
+note "record a flight"
+check grep -qx 'ok goto lat_deg=65 lon_deg=25 alt_km=200' <(post "goto 65 25 200")
+check grep -qx "ok record start $out/flight.toml" <(post "record start flight.toml")
+refused "record start other.toml" "record start other\.toml: a recording into $out/flight\.toml runs"
+frames 4
+check grep -qx 'ok look heading_deg=30 pitch_deg=20' <(post "look 30 20")
+frames 4
+answer=$(post "record stop")
+read -r keys from to < <(sed -n 's/^ok record stop .*flight\.toml keys=\([0-9]*\) from_s=\(.*\) to_s=\(.*\)$/\1 \2 \3/p' <<< "$answer")
+[ -n "$keys" ] && [ "$keys" -ge 8 ] || { stop_wall; fail "record stop answered '$answer'"; }
+note "$keys keys from $from s to $to s"
+refused "record stop" "record stop: no recording runs"
+[ -z "$(find "$out" -name '*.tmp*')" ] || { stop_wall; fail "a temporary file was left"; }
+
+note "download"
+code=$(curl -s -o "$WORK/download.toml" -w '%{http_code} %{content_type}' "$url/recordings/flight.toml")
+check [ "$code" = "200 application/toml" ]
+check cmp "$out/flight.toml" "$WORK/download.toml"
+for path in /recordings/other.toml /recordings/../flight.toml /recordings/..%2fout%2fflight.toml \
+    /recordings/%2e%2e/%2e%2e/etc/passwd /recordings/ /recordings/screenshot.png; do
+    code=$(curl -s -o "$WORK/body" -w '%{http_code}' --path-as-is "$url$path")
+    echo "GET $path -> $code $(cat "$WORK/body")"
+    check [ "$code" = 404 ]
+done
+
+note "replay: preset the recorded file at its first time, recorded again"
+check grep -q '^ok paused' <(post pause)
+check grep -q "^ok preset $out/flight.toml " <(post "preset $out/flight.toml")
+check grep -qx "ok time_s=$from" <(post "time $from")
+check grep -qx "ok record start $out/replay.toml" <(post "record start replay.toml")
+check grep -q '^ok playing' <(post play)
+for _ in $(seq 300); do
+    python3 -c 'import sys; sys.exit(0 if float(sys.argv[1]) > float(sys.argv[2]) else 1)' "$(status time_s)" "$to" && break
+    sleep 0.1
+done
+check grep -q "^ok record stop $out/replay.toml " <(post "record stop")
+check python3 - "$out/flight.toml" "$out/replay.toml" <<'PY'
+import sys, tomllib
+def keys(path):
+    with open(path, "rb") as f:
+        return {k["time_s"]: (k["position_km"], k["direction"], k["up"]) for k in tomllib.load(f)["camera"]["key"]}
+flown, replayed = keys(sys.argv[1]), keys(sys.argv[2])
+missing = [t for t in flown if t not in replayed]
+assert not missing, f"times not replayed: {missing}"
+differ = [t for t in flown if flown[t][0] != replayed[t][0]]
+assert not differ, f"{len(differ)} of {len(flown)} positions differ, first at {differ[0]}: {flown[differ[0]]} vs {replayed[differ[0]]}"
+# The orientation goes through the path's quaternions: back within a few ulps, not bit for bit.
+turn = max(abs(a - b) for t in flown for i in (1, 2) for a, b in zip(flown[t][i], replayed[t][i]))
+assert turn <= 1e-15, f"direction or up differ by {turn}"
+print(f"{len(flown)} recorded positions replayed bit-identical; direction and up within {turn:.2g}")
+PY
+check grep -q '^ok orbit off' <(post "orbit off")
+
+note "movie"
+check grep -qx "ok movie start $out/clip" <(post "movie start clip")
+refused "movie start clip2" "movie start clip2: a movie into $out/clip runs"
+frames 3
+answer=$(post "movie stop")
+n=$(sed -n "s|^ok movie stop $out/clip frames=\([0-9]*\)\$|\1|p" <<< "$answer")
+[ -n "$n" ] && [ "$n" -ge 3 ] || { stop_wall; fail "movie stop answered '$answer'"; }
+check [ "$(ls "$out/clip"/frame-*.png | wc -l)" = "$n" ]
+check [ "$(($(wc -l < "$out/clip/frames.csv") - 1))" = "$n" ]
+frames 3
+check [ "$(ls "$out/clip"/frame-*.png | wc -l)" = "$n" ]
+note "$n movie frames, none after the stop"
+refused "movie start clip" "movie start clip: .*/clip already holds a movie"
+
+if [ $mounted = 1 ]; then
+    note "a full disk"
+    check grep -qx "ok record start $out/full/long.toml" <(post "record start full/long.toml")
+    answer=$(post "movie start full/m")
+    frames 3
+    [[ "$answer" == "ok movie start"* ]] && check grep -q '^error movie stop: frame .*: ' <(post "movie stop")
+    [[ "$answer" == "error movie start: frame "* ]] || [[ "$answer" == "ok movie start"* ]] ||
+        { stop_wall; fail "movie start on a full disk answered '$answer'"; }
+    frames 40 # 8 KiB hold about 30 keys
+    check grep -q "^error record stop: .*long.toml" <(post "record stop")
+    check grep -q 'record: .*long.toml' "$WORK/log"
+fi
+
+frames 2
+check grep -qx 'ok quit' <(post quit)
+status=0; wait $job || status=$?
+[ $status -eq 0 ] || { cat "$WORK/log"; fail "the wall exited $status"; }
+echo "PASS web_record"
