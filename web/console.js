@@ -47,6 +47,7 @@ async function command(line) {
 
 function showStatus(s) {
   paused = s.paused;
+  camera = s;
   $("play").textContent = paused ? "play" : "pause";
   $("status").textContent =
     `frame ${s.frame}  t=${Number(s.time_s).toFixed(1)} s  ${s.fps.toPrecision(3)} fps  ` +
@@ -203,6 +204,89 @@ $("download").onclick = async (e) => {
 $("replay").onclick = async () => {
   if ((await command("preset " + recorded.file)).startsWith("ok")) await command("time " + recorded.from);
 };
+
+// Steering: keys (W/S forward and back, A/D to the sides, R/F up and down, the arrows look), a drag
+// on the preview (look; a finger too) and a gamepad (the browser's Gamepad API: the left stick moves,
+// the right stick looks), each sent as the protocol's `goto` or `look` from the camera the wall last
+// reported. A move covers a tenth of the altitude (at least 1 km) along the ground's great circle.
+const PLANET_RADIUS_KM = 6371; // the moves' great circles; the wall keeps its own sphere for the altitude
+const LOOK_STEP_DEG = 5;
+const DRAG_DEG_PER_PX = 0.2;
+let camera = null;   // the last /status (lat_deg, lon_deg, alt_km, heading_deg, pitch_deg), or a steer's answer
+let steering = false; // one steering command at a time: a held key or stick never floods the wall
+
+const radians = (deg) => deg * Math.PI / 180;
+const degrees = (rad) => rad * 180 / Math.PI;
+const wrapDeg = (deg) => ((deg % 360) + 540) % 360 - 180;
+
+// `goto` forward and to the right by the given fractions of a move, the altitude times `upFactor`.
+function moveLine(c, forward, right, upFactor) {
+  const stepKm = Math.max(0.1 * c.alt_km, 1);
+  const angle = Math.hypot(forward, right) * stepKm / PLANET_RADIUS_KM;
+  const bearing = radians(c.heading_deg) + Math.atan2(right, forward);
+  const lat1 = radians(c.lat_deg);
+  const lat2 = Math.asin(Math.sin(lat1) * Math.cos(angle) + Math.cos(lat1) * Math.sin(angle) * Math.cos(bearing));
+  const lon2 = radians(c.lon_deg) + Math.atan2(Math.sin(bearing) * Math.sin(angle) * Math.cos(lat1),
+                                               Math.cos(angle) - Math.sin(lat1) * Math.sin(lat2));
+  const altKm = Math.min(Math.max(c.alt_km * upFactor, 0.001), 1e6);
+  return `goto ${degrees(lat2).toFixed(6)} ${wrapDeg(degrees(lon2)).toFixed(6)} ${altKm.toFixed(6)}`;
+}
+
+function lookLine(c, turnDeg, tiltDeg) {
+  const pitch = Math.min(Math.max(c.pitch_deg + tiltDeg, -90), 90);
+  return `look ${(((c.heading_deg + turnDeg) % 360) + 360) % 360} ${pitch}`;
+}
+
+// Sends one steering line; the answer's values (e.g. "ok look heading_deg=.. pitch_deg=..") update the
+// camera at once, so that the next press starts from it before /status shows it.
+async function steer(line) {
+  if (!camera || steering) return;
+  steering = true;
+  const answer = await command(line);
+  for (const [, key, value] of answer.matchAll(/(\w+)=(-?[\d.e+-]+)/g))
+    if (key in camera) camera = { ...camera, [key]: Number(value) };
+  steering = false;
+}
+
+const KEYS = {
+  w: (c) => moveLine(c, 1, 0, 1), s: (c) => moveLine(c, -1, 0, 1),
+  a: (c) => moveLine(c, 0, -1, 1), d: (c) => moveLine(c, 0, 1, 1),
+  r: (c) => moveLine(c, 0, 0, 1.25), f: (c) => moveLine(c, 0, 0, 1 / 1.25),
+  ArrowLeft: (c) => lookLine(c, -LOOK_STEP_DEG, 0), ArrowRight: (c) => lookLine(c, LOOK_STEP_DEG, 0),
+  ArrowUp: (c) => lookLine(c, 0, LOOK_STEP_DEG), ArrowDown: (c) => lookLine(c, 0, -LOOK_STEP_DEG),
+};
+document.addEventListener("keydown", (e) => {
+  const key = e.key.length === 1 ? e.key.toLowerCase() : e.key;
+  if (!KEYS[key] || e.target.closest("input, textarea, select") || !camera) return;
+  e.preventDefault();
+  steer(KEYS[key](camera));
+});
+
+// A drag on the preview turns the camera: right turns right, up looks up.
+let drag = null; // { x, y } of the last look sent
+$("preview").addEventListener("pointerdown", (e) => {
+  drag = { x: e.clientX, y: e.clientY };
+  $("preview").setPointerCapture(e.pointerId);
+});
+$("preview").addEventListener("pointermove", (e) => {
+  if (!drag || steering || !camera) return;
+  const dx = e.clientX - drag.x, dy = e.clientY - drag.y;
+  if (Math.abs(dx) + Math.abs(dy) < 2) return;
+  drag = { x: e.clientX, y: e.clientY };
+  steer(lookLine(camera, dx * DRAG_DEG_PER_PX, -dy * DRAG_DEG_PER_PX));
+});
+$("preview").addEventListener("pointerup", () => { drag = null; });
+$("preview").addEventListener("pointercancel", () => { drag = null; });
+
+// The first gamepad, read 10 times a second: sticks past a dead zone move and look.
+const DEAD_ZONE = 0.15;
+setInterval(() => {
+  const pad = [...(navigator.getGamepads ? navigator.getGamepads() : [])].find((p) => p && p.connected);
+  if (!pad || !camera || pad.axes.length < 4) return;
+  const [lx, ly, rx, ry] = pad.axes.map((a) => (Math.abs(a) < DEAD_ZONE ? 0 : a));
+  if (lx || ly) steer(moveLine(camera, -ly, lx, 1));
+  else if (rx || ry) steer(lookLine(camera, rx * LOOK_STEP_DEG, -ry * LOOK_STEP_DEG));
+}, 100);
 
 $("token-set").onclick = () => {
   token = $("token").value;

@@ -22,6 +22,7 @@ Exit status 0 when all holds, 1 otherwise (with one line saying what did not).
 import base64
 import fcntl
 import json
+import math
 import os
 import select
 import signal
@@ -270,6 +271,53 @@ def check_preset_and_preview(browser, wall, preset):
     print(f"preview: {first} -> {second}")
 
 
+def great_circle_km(a, b):
+    """The ground distance between two /status cameras on a 6371 km sphere (the page's moves)."""
+    la1, lo1, la2, lo2 = (math.radians(v) for v in (a["lat_deg"], a["lon_deg"], b["lat_deg"], b["lon_deg"]))
+    h = math.sin((la2 - la1) / 2) ** 2 + math.cos(la1) * math.cos(la2) * math.sin((lo2 - lo1) / 2) ** 2
+    return 2 * 6371 * math.asin(math.sqrt(h))
+
+
+def check_steering(browser, wall):
+    """An arrow key turns the camera 5 degrees, W moves it a tenth of its altitude (at least 1 km)
+    forward at the same altitude, a drag of 50 px across the preview turns it 10 degrees."""
+    def key(name, code, vk):
+        for kind in ("keyDown", "keyUp"):
+            event = {"type": kind, "key": name, "code": code, "windowsVirtualKeyCode": vk}
+            if kind == "keyDown" and len(name) == 1:
+                event["text"] = name  # a character key: its keydown carries the character
+            browser.call("Input.dispatchKeyEvent", event)
+
+    def turned_by(before, degrees):
+        want = (before["heading_deg"] + degrees) % 360
+        return lambda: (lambda s: s if abs((s["heading_deg"] - want + 180) % 360 - 180) < 1e-4 else None)(wall.status())
+
+    before = wall.status()
+    key("ArrowRight", "ArrowRight", 39)
+    after = poll("/status turned 5 degrees right by the arrow key", turned_by(before, 5))
+    print(f"ArrowRight: heading {before['heading_deg']:.6f} -> {after['heading_deg']:.6f}")
+    before = after
+    key("w", "KeyW", 87)
+    step_km = max(0.1 * before["alt_km"], 1)
+    answer = answer_after(browser, "goto ").split(" → ", 1)[1]
+    if not answer.startswith("ok goto"):
+        raise Failure(f"W: the page's goto answered {answer}")
+    after = poll("/status moved forward by W", lambda: (lambda s: s if great_circle_km(before, s) > 0.5 * step_km else None)(wall.status()))
+    moved = great_circle_km(before, after)
+    print(f"W: moved {moved:.6f} km (a move: {step_km:.6f} km), altitude {before['alt_km']:.6f} -> {after['alt_km']:.6f} km")
+    if abs(moved - step_km) > 1e-3 * step_km or abs(after["alt_km"] - before["alt_km"]) > 1e-5:
+        raise Failure(f"W moved {moved} km at altitude {after['alt_km']}, expected {step_km} km at {before['alt_km']}")
+    before = after
+    box = browser.evaluate("(() => { const r = document.getElementById('preview').getBoundingClientRect(); "
+                           "return [r.left + r.width / 2, r.top + r.height / 2]; })()")
+    x, y = box
+    browser.call("Input.dispatchMouseEvent", {"type": "mousePressed", "x": x, "y": y, "button": "left", "buttons": 1, "clickCount": 1})
+    browser.call("Input.dispatchMouseEvent", {"type": "mouseMoved", "x": x + 50, "y": y, "button": "left", "buttons": 1})
+    browser.call("Input.dispatchMouseEvent", {"type": "mouseReleased", "x": x + 50, "y": y, "button": "left", "buttons": 0, "clickCount": 1})
+    after = poll("/status turned 10 degrees right by a 50 px drag", turned_by(before, 10))
+    print(f"drag: heading {before['heading_deg']:.6f} -> {after['heading_deg']:.6f}")
+
+
 def check_recording(browser, wall, work_dir):
     """Record path, stop, download (the file's bytes), record movie, stop (its PNGs), replay path."""
     browser.evaluate("awTest.click('record')")
@@ -342,6 +390,7 @@ def main():
             raise Failure("the page asks for the secret though its address gave it")
         check_pause_and_play(browser, wall)
         check_preset_and_preview(browser, wall, preset)
+        check_steering(browser, wall)
         check_recording(browser, wall, work_dir)
         check_silent_rank(browser, wall, int(rank1_pid))
         shot = os.path.join(work_dir, "console.png")
