@@ -214,6 +214,7 @@ const LOOK_STEP_DEG = 5;
 const DRAG_DEG_PER_PX = 0.2;
 let camera = null;   // the last /status (lat_deg, lon_deg, alt_km, heading_deg, pitch_deg), or a steer's answer
 let steering = false; // one steering command at a time: a held key or stick never floods the wall
+let nextSteer = null;  // the latest asked for meanwhile (camera => line), sent when the one in flight ends
 
 const radians = (deg) => deg * Math.PI / 180;
 const degrees = (rad) => rad * 180 / Math.PI;
@@ -237,15 +238,23 @@ function lookLine(c, turnDeg, tiltDeg) {
   return `look ${(((c.heading_deg + turnDeg) % 360) + 360) % 360} ${pitch}`;
 }
 
-// Sends one steering line; the answer's values (e.g. "ok look heading_deg=.. pitch_deg=..") update the
-// camera at once, so that the next press starts from it before /status shows it.
-async function steer(line) {
-  if (!camera || steering) return;
+// Sends the steering line `make(camera)`; the answer's values (e.g. "ok look heading_deg=.. pitch_deg=..")
+// update the camera at once, so that the next press starts from it before /status shows it. While one
+// is in flight, only the latest asked for waits (a press is never lost, a held key never piles up).
+async function steer(make) {
+  if (!camera) return;
+  if (steering) {
+    nextSteer = make;
+    return;
+  }
   steering = true;
-  const answer = await command(line);
+  const answer = await command(make(camera));
   for (const [, key, value] of answer.matchAll(/(\w+)=(-?[\d.e+-]+)/g))
     if (key in camera) camera = { ...camera, [key]: Number(value) };
   steering = false;
+  const next = nextSteer;
+  nextSteer = null;
+  if (next) steer(next);
 }
 
 const KEYS = {
@@ -259,7 +268,7 @@ document.addEventListener("keydown", (e) => {
   const key = e.key.length === 1 ? e.key.toLowerCase() : e.key;
   if (!KEYS[key] || e.target.closest("input, textarea, select") || !camera) return;
   e.preventDefault();
-  steer(KEYS[key](camera));
+  steer(KEYS[key]);
 });
 
 // A drag on the preview turns the camera: right turns right, up looks up.
@@ -269,11 +278,11 @@ $("preview").addEventListener("pointerdown", (e) => {
   $("preview").setPointerCapture(e.pointerId);
 });
 $("preview").addEventListener("pointermove", (e) => {
-  if (!drag || steering || !camera) return;
+  if (!drag || steering || !camera) return; // the pixels dragged meanwhile count in the next look
   const dx = e.clientX - drag.x, dy = e.clientY - drag.y;
   if (Math.abs(dx) + Math.abs(dy) < 2) return;
   drag = { x: e.clientX, y: e.clientY };
-  steer(lookLine(camera, dx * DRAG_DEG_PER_PX, -dy * DRAG_DEG_PER_PX));
+  steer((c) => lookLine(c, dx * DRAG_DEG_PER_PX, -dy * DRAG_DEG_PER_PX));
 });
 $("preview").addEventListener("pointerup", () => { drag = null; });
 $("preview").addEventListener("pointercancel", () => { drag = null; });
@@ -284,8 +293,8 @@ setInterval(() => {
   const pad = [...(navigator.getGamepads ? navigator.getGamepads() : [])].find((p) => p && p.connected);
   if (!pad || !camera || pad.axes.length < 4) return;
   const [lx, ly, rx, ry] = pad.axes.map((a) => (Math.abs(a) < DEAD_ZONE ? 0 : a));
-  if (lx || ly) steer(moveLine(camera, -ly, lx, 1));
-  else if (rx || ry) steer(lookLine(camera, rx * LOOK_STEP_DEG, -ry * LOOK_STEP_DEG));
+  if (lx || ly) steer((c) => moveLine(c, -ly, lx, 1));
+  else if (rx || ry) steer((c) => lookLine(c, rx * LOOK_STEP_DEG, -ry * LOOK_STEP_DEG));
 }, 100);
 
 $("token-set").onclick = () => {

@@ -295,6 +295,7 @@ def check_steering(browser, wall):
     before = wall.status()
     key("ArrowRight", "ArrowRight", 39)
     after = poll("/status turned 5 degrees right by the arrow key", turned_by(before, 5))
+    answer_after(browser, "look ")  # the page has its answer: the next press starts from it
     print(f"ArrowRight: heading {before['heading_deg']:.6f} -> {after['heading_deg']:.6f}")
     before = after
     key("w", "KeyW", 87)
@@ -316,6 +317,21 @@ def check_steering(browser, wall):
     browser.call("Input.dispatchMouseEvent", {"type": "mouseReleased", "x": x + 50, "y": y, "button": "left", "buttons": 0, "clickCount": 1})
     after = poll("/status turned 10 degrees right by a 50 px drag", turned_by(before, 10))
     print(f"drag: heading {before['heading_deg']:.6f} -> {after['heading_deg']:.6f}")
+
+
+def check_narrow_screen(browser, work_dir):
+    """On a phone's screen (375 CSS px wide, touch) the page fits its width: nothing scrolls sideways
+    and every control lies within the screen."""
+    browser.call("Emulation.setDeviceMetricsOverride", {"width": 375, "height": 812, "deviceScaleFactor": 2, "mobile": True})
+    browser.call("Emulation.setTouchEmulationEnabled", {"enabled": True, "maxTouchPoints": 5})
+    fits = poll("the page fitting 375 px", lambda: browser.evaluate(
+        "(() => { const w = document.documentElement.clientWidth;"
+        " const out = [...document.querySelectorAll('button, input, img')].filter((e) => e.offsetParent &&"
+        " e.getBoundingClientRect().right > w + 0.5).map((e) => e.id || e.textContent);"
+        " return w === 375 && document.documentElement.scrollWidth <= w && out.length === 0 ? w :"
+        " null; })()"))
+    browser.screenshot(os.path.join(work_dir, "console-phone.png"))
+    print(f"phone: the page fits {fits} px, every control within it")
 
 
 def check_recording(browser, wall, work_dir):
@@ -399,6 +415,7 @@ def main():
             if f.read(8) != b"\x89PNG\r\n\x1a\n":
                 raise Failure("the screenshot is not a PNG")
         print(f"screenshot: {shot}, {os.path.getsize(shot)} bytes")
+        check_narrow_screen(browser, work_dir)
         if browser.page_errors():
             raise Failure(f"the page threw: {browser.page_errors()}")
     except Failure as e:
