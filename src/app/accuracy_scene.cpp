@@ -11,6 +11,7 @@
 #include "components/fluid_detail/curtain_detail.h"
 #include "components/plasma/plasma.h"
 #include "components/registry.h"
+#include "components/roles/curtain_detail.h"
 #include "render/tile_renderer.h"
 #include "wall/wall_file.h"
 
@@ -300,13 +301,11 @@ struct References {
 void computeReferences(References& r, const SceneView& view, const std::vector<glm::ivec2>& pixels, const SceneAccuracySettings& settings)
 {
     const auto start = std::chrono::steady_clock::now();
-    std::shared_ptr<const fluid::FluxFrames> frames;
-    for (const scene::Component* c : r.scene.components())
-        if (!frames)
-            frames = c->referenceFrames(r.scene);
+    const std::shared_ptr<const fluid::FluxFrames> frames = components::roles::curtainDetailFrames(r.scene);
     render::ReferenceSettings reference;
     reference.stepKm = settings.referenceStepKm;
-    const render::ReferenceModel model(r.scene, view.frame.timeS, frames.get(), reference);
+    const render::ReferenceModel model(r.scene, view.frame.timeS, components::roles::curtainDetailData(frames.get()),
+                                       reference);
     r.cpu = referencePixels(model, view, pixels, settings.threads);
     r.cpuSeconds = secondsSince(start);
 }

@@ -3,16 +3,17 @@
 #include "scene/ray_steps.h"
 
 #include <algorithm>
+#include <utility>
 
 namespace aurorawall::render {
 
-ReferenceModel::ReferenceModel(const scene::Scene& scene, double timeS, const fluid::FluxFrames* detail,
+ReferenceModel::ReferenceModel(const scene::Scene& scene, double timeS, scene::RoleData roleData,
                                ReferenceSettings settings)
 {
     scene::ReferenceContext context;
     context.timeS = timeS;
     context.stepKm = settings.stepKm;
-    context.fluidFrames = detail;
+    context.roleData = std::move(roleData);
     for (const scene::Component* c : scene.components()) {
         std::unique_ptr<scene::ReferenceShader> shader = c->makeReference(scene, context);
         if (shader)

@@ -21,14 +21,12 @@ struct ReferenceSettings {
 
 class ReferenceModel {
 public:
-    // The scene at animation time timeS. detail: the curtain detail frames when the scene lists
-    // fluid_detail (fluid::simulateCurtainDetail of its spec, or others on the same strip) or plasma
-    // (components::plasma::simulateSheetFrames of its spec), else null: the listed component's
-    // Component::referenceFrames gives them. Throws scene::NotInReference
-    // (a std::invalid_argument) naming a listed component the reference does not model, and
-    // std::invalid_argument for fluid_detail or plasma without frames.
-    ReferenceModel(const scene::Scene& scene, double timeS, const fluid::FluxFrames* detail,
-                   ReferenceSettings settings = {});
+    // The scene at animation time timeS. roleData: what the caller gives the roles' parts of the
+    // reference (ReferenceContext::roleData; e.g. the curtain detail's frames, which the scene's
+    // provider of the role gives: src/components/roles). Throws scene::NotInReference (a
+    // std::invalid_argument) naming a listed component the reference does not model, and
+    // std::invalid_argument for a role's provider without its data.
+    ReferenceModel(const scene::Scene& scene, double timeS, scene::RoleData roleData, ReferenceSettings settings = {});
 
     // Radiance (linear sRGB, cd/m^2) arriving at `originKm` (planet frame) from direction `direction`
     // (any length), i.e. shadeRay(o, d).

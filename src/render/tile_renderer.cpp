@@ -45,10 +45,11 @@ TileRenderer::TileRenderer(const scene::Scene& scene, const std::string& shaderD
     : scene_(scene), stage_(stage), countWork_(countWork), pixelWork_(pixelWork),
       program_(marchProgram(scene, shaderDir, stage, countWork, pixelWork))
 {
-    // A component finds the GPU parts of those made before it (registry order).
-    const scene::FindRenderer find = [&](const std::string& name) -> scene::ComponentRenderer* {
+    // A component finds the GPU part of a role's provider made before it (registry order).
+    const scene::FindRenderer find = [&](const std::string& role) -> scene::ComponentRenderer* {
+        const scene::Component* provider = scene.provider(role);
         for (size_t i = 0; i < components_.size(); ++i)
-            if (scene.components()[i]->name() == name)
+            if (scene.components()[i] == provider)
                 return components_[i].get();
         return nullptr;
     };

@@ -8,11 +8,16 @@
 // The registry (src/components/registry.h) lists every component; the scene loader, the shader
 // assembly, the renderer and the reference all iterate over the components a scene lists, so a
 // scene that does not list a component compiles and precomputes none of it.
+// Components find each other by role, never by name: a component names the roles it provides
+// (e.g. "curtain detail"); one that uses a role asks the scene or FindRenderer for its provider and
+// talks to it through the role's interface (src/components/roles), which the core does not know.
 #include "cluster/frame_state.h"
 #include "common/glsl.h"
 #include "config/toml_reader.h"
 
+#include <any>
 #include <functional>
+#include <map>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -20,9 +25,6 @@
 
 namespace aurorawall::gl {
 class Program;
-}
-namespace aurorawall::fluid {
-struct FluxFrames;
 }
 
 namespace aurorawall::f64 {
@@ -62,14 +64,18 @@ public:
     virtual std::string frameLog() const { return {}; }
 };
 
-// Finds the renderer of another listed component (null when the scene does not list it).
-using FindRenderer = std::function<ComponentRenderer*(const std::string& name)>;
+// Finds the renderer of the listed component that provides a role (null when none does).
+using FindRenderer = std::function<ComponentRenderer*(const std::string& role)>;
+
+// Data the caller of the CPU reference gives for a role, by role (e.g. the curtain detail's frames);
+// the role's header says what its entry holds.
+using RoleData = std::map<std::string, std::any>;
 
 // What a component's part of the CPU reference may use besides the scene.
 struct ReferenceContext {
-    double timeS = 0.0;                         // animation time
-    double stepKm = 0.05;                       // fine fixed step for emission integrals
-    const fluid::FluxFrames* fluidFrames = nullptr; // the fluid_detail or plasma frames, when listed
+    double timeS = 0.0;   // animation time
+    double stepKm = 0.05; // fine fixed step for emission integrals
+    RoleData roleData;
 };
 
 // A component's part of shadeRay in double precision: the same model as its shader, evaluated
@@ -96,6 +102,8 @@ public:
     virtual std::string name() const = 0;
     // Components that must be listed with this one.
     virtual std::vector<std::string> needs() const { return {}; }
+    // The roles it provides to other components; a scene lists at most one provider of a role.
+    virtual std::vector<std::string> provides() const { return {}; }
 
     virtual std::unique_ptr<ComponentSettings> defaultSettings() const = 0;
     // Reads the component's table into `settings` (which holds the defaults, or a base scene's
@@ -119,9 +127,6 @@ public:
     // Its part of the CPU reference; null when it adds nothing by itself (e.g. data another
     // component uses). Throws NotInReference when the reference cannot model it.
     virtual std::unique_ptr<ReferenceShader> makeReference(const Scene& scene, const ReferenceContext& context) const = 0;
-    // The curtain detail frames it gives the reference (ReferenceContext::fluidFrames: the frames its
-    // renderer uploads, from the table cache); null for a component without any.
-    virtual std::shared_ptr<const fluid::FluxFrames> referenceFrames(const Scene&) const { return nullptr; }
 };
 
 // A component whose settings are S (S::kComponent is its name): the name and the defaults.

@@ -240,6 +240,16 @@ bool Scene::has(const std::string& componentName) const
     return settings_.count(componentName) != 0;
 }
 
+const Component* Scene::provider(const std::string& role) const
+{
+    for (const Component* c : components_) {
+        const std::vector<std::string> roles = c->provides();
+        if (std::count(roles.begin(), roles.end(), role))
+            return c;
+    }
+    return nullptr;
+}
+
 void Scene::add(const Component& c)
 {
     if (!has(c.name()))
@@ -286,10 +296,15 @@ void SceneLoader::listComponents(Scene& s, const TableReader& meta, const Regist
         }
     s.components_ = listed.components_;
     s.settings_ = std::move(listed.settings_);
-    for (const Component* c : s.components_)
+    for (const Component* c : s.components_) {
         for (const std::string& needed : c->needs())
             if (!s.has(needed))
                 meta.fail("components", "'" + c->name() + "' needs '" + needed + "'");
+        for (const std::string& role : c->provides())
+            if (const Component* first = s.provider(role); first != c)
+                meta.fail("components", "the scene lists both " + c->name() + " and " + first->name() +
+                                            ": both provide the " + role + ", and a scene may list one of them");
+    }
 }
 
 // depth counts the base scenes above this one (a guard against cycles).

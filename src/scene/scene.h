@@ -48,6 +48,8 @@ struct Scene {
     // modules assembled and their GPU parts made).
     const std::vector<const Component*>& components() const { return components_; }
     bool has(const std::string& componentName) const;
+    // The listed component that provides `role` (Component::provides), null when none does.
+    const Component* provider(const std::string& role) const;
 
     // Lists `c` with its default settings (scene files do this; tests may too, in registry order).
     void add(const Component& c);

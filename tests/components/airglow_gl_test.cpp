@@ -53,9 +53,9 @@ test::BoundedError gpuAgainstReference(const scene::Scene& s)
     scene::Scene withoutAirglow = s, withoutAtmosphere = s;
     withoutAirglow.remove("airglow");
     withoutAtmosphere.remove("atmosphere");
-    const render::ReferenceModel model(s, view.frame.timeS, nullptr);
-    const render::ReferenceModel glowModel(withoutAirglow, view.frame.timeS, nullptr);
-    const render::ReferenceModel airglowModel(withoutAtmosphere, view.frame.timeS, nullptr);
+    const render::ReferenceModel model(s, view.frame.timeS, {});
+    const render::ReferenceModel glowModel(withoutAirglow, view.frame.timeS, {});
+    const render::ReferenceModel airglowModel(withoutAtmosphere, view.frame.timeS, {});
     const auto& air = s.settings<components::atmosphere::Settings>();
     const double u = kUnitRoundoff, R = s.planetRadiusKm;
     double layerError = 0.0; // ε_U plus the closed form's, the worst layer

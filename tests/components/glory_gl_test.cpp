@@ -165,7 +165,7 @@ private:
 test::BoundedError gpuAgainstReference(const scene::Scene& s)
 {
     const Render r = renderScene(s, {64, 36});
-    const render::ReferenceModel model(s, r.view.frame.timeS, nullptr);
+    const render::ReferenceModel model(s, r.view.frame.timeS, {});
     const PixelBound bound(s, model, r.view);
     test::BoundedError b;
     for (int y = 0; y < r.image.height; ++y)
@@ -217,7 +217,7 @@ TEST(GloryOnTheGpu, SunExactlyBehindAndInFront)
         scene::Scene s = gloryScene();
         const glm::dvec3 sun = s.settings<GlorySettings>().lightDirection;
         s.camera.positionKm = glm::normalize(s.camera.positionKm) * (s.planetRadiusKm + altitudeKm);
-        const render::ReferenceModel model(s, 0.0, nullptr);
+        const render::ReferenceModel model(s, 0.0, {});
         for (double sign : {-1.0, 1.0}) {
             look(s, sign * sun);
             const Render r = renderScene(s, {33, 33});

@@ -7,6 +7,7 @@
 #include "components/plasma/box_reference.h"
 #include "components/plasma/plasma.h"
 #include "components/registry.h"
+#include "components/roles/curtain_detail.h"
 #include "gl/context.h"
 #include "io/table_cache.h"
 #include "render/float_bounds.h"
@@ -107,10 +108,11 @@ Comparison compare(int stepsPerCell)
     for (const glm::ivec2& p : pixels)
         values.push_back(app::pixelRadiance(gpu, p.x, p.y));
     const double floor = 1.0 / (255.0 * s.exposure);
-    const std::shared_ptr<const fluid::FluxFrames> strip = components::plasma::component().referenceFrames(s);
-    const render::ReferenceModel model(s, view.frame.timeS, strip.get());
+    const std::shared_ptr<const fluid::FluxFrames> strip = components::roles::curtainDetailFrames(s);
+    const scene::RoleData detail = components::roles::curtainDetailData(strip.get());
+    const render::ReferenceModel model(s, view.frame.timeS, detail);
     const double frameS = plasma.boxPlayS / (plasma.boxFrames - 1);
-    const render::ReferenceModel earlier(s, view.frame.timeS - frameS, strip.get());
+    const render::ReferenceModel earlier(s, view.frame.timeS - frameS, detail);
     const std::vector<glm::dvec3> reference = app::referencePixels(model, view, pixels, 2);
 
     namespace box = components::plasma;

@@ -7,6 +7,7 @@
 #include "components/plasma/plasma.h"
 #include "components/plasma/sheet_frames.h"
 #include "components/registry.h"
+#include "components/roles/curtain_detail.h"
 #include "scene/load_error.h"
 
 #include <gtest/gtest.h>
@@ -170,7 +171,7 @@ TEST(PlasmaBoxReference, StepsPerCellIsReadAndChecked)
     }
 }
 
-// The frames the plasma gives the reference (Component::referenceFrames) are the strip's simulation,
+// The frames the plasma gives the reference (the curtain detail role's referenceFrames) are the strip's simulation,
 // bit for bit, with either kind.
 TEST(PlasmaBoxReference, ReferenceFramesAreTheStripsFrames)
 {
@@ -180,7 +181,7 @@ TEST(PlasmaBoxReference, ReferenceFramesAreTheStripsFrames)
         const std::string file = testing::TempDir() + "plasma_reference_frames.toml";
         std::ofstream(file) << kHead + strip + kind;
         const scene::Scene scene = components::loadScene(file);
-        const auto frames = components::plasma::component().referenceFrames(scene);
+        const auto frames = components::roles::curtainDetailFrames(scene);
         ASSERT_TRUE(frames);
         const fluid::FluxFrames expected = components::plasma::simulateSheetFrames(
             components::plasma::sheetFramesSpec(scene.settings<components::plasma::Settings>()));

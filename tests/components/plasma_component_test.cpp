@@ -122,6 +122,10 @@ TEST(PlasmaComponent, SettingsErrorsNameFileLineAndKey)
     std::string both = kSceneHead;
     both.replace(both.find("\"plasma\""), 8, "\"plasma\", \"fluid_detail\"");
     EXPECT_NE(sceneError(both).find("both plasma and fluid_detail"), std::string::npos) << sceneError(both);
+    // Two providers of one role: an error of the components key, naming the file and the role.
+    EXPECT_NE(sceneError(both).find("plasma_settings.toml:"), std::string::npos) << sceneError(both);
+    EXPECT_NE(sceneError(both).find("scene.components: "), std::string::npos) << sceneError(both);
+    EXPECT_NE(sceneError(both).find("curtain detail"), std::string::npos) << sceneError(both);
     std::string alone = kSceneHead;
     alone.replace(alone.find("\"aurora\", "), 10, "");
     alone.erase(alone.find("[[aurora.curtain]]"));

@@ -5,6 +5,7 @@
 #include "components/plasma/plasma.h"
 #include "components/plasma/sheet_frames.h"
 #include "components/registry.h"
+#include "components/roles/curtain_detail.h"
 #include "gl/context.h"
 #include "render/reference_ray.h"
 #include "scene/scene.h"
@@ -45,7 +46,7 @@ TEST(PlasmaOnTheGpu, AgreesWithTheReference)
     pixels.resize(16);
     const fluid::FluxFrames frames = components::plasma::simulateSheetFrames(
         components::plasma::sheetFramesSpec(s.settings<components::plasma::Settings>()));
-    const render::ReferenceModel model(s, view.frame.timeS, &frames);
+    const render::ReferenceModel model(s, view.frame.timeS, components::roles::curtainDetailData(&frames));
     const std::vector<glm::dvec3> reference = app::referencePixels(model, view, pixels, 2);
     std::vector<glm::dvec3> values;
     for (const glm::ivec2& p : pixels)
@@ -56,7 +57,7 @@ TEST(PlasmaOnTheGpu, AgreesWithTheReference)
     other.seedMode += 1;
     const fluid::FluxFrames otherFrames =
         components::plasma::simulateSheetFrames(components::plasma::sheetFramesSpec(other));
-    const render::ReferenceModel otherModel(s, view.frame.timeS, &otherFrames);
+    const render::ReferenceModel otherModel(s, view.frame.timeS, components::roles::curtainDetailData(&otherFrames));
     const app::RelativeError wrong =
         app::relativeError(values, app::referencePixels(otherModel, view, pixels, 2), floor);
     std::printf("plasma: GPU (finest) vs CPU reference at the %zu brightest pixels: rms %.3g, max %.3g; "
@@ -66,5 +67,5 @@ TEST(PlasmaOnTheGpu, AgreesWithTheReference)
     EXPECT_LT(e.rms, 6e-3);
     EXPECT_LT(e.max, 1.5e-2);
     EXPECT_GT(wrong.rms, 0.1);
-    EXPECT_THROW(render::ReferenceModel(s, 0.0, nullptr), std::invalid_argument);
+    EXPECT_THROW(render::ReferenceModel(s, 0.0, {}), std::invalid_argument);
 }

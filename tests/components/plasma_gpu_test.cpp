@@ -19,6 +19,7 @@
 #include "components/plasma/simulation/particle_mesh.h"
 #include "components/plasma/simulation/plasma_parameters.h"
 #include "components/registry.h"
+#include "components/roles/curtain_detail.h"
 #include "gl/context.h"
 #include "poisson_test_density.h"
 #include "render/reference_ray.h"
@@ -964,7 +965,7 @@ TEST(PlasmaLive, RenderAgreesWithTheReference)
     });
     pixels.resize(16);
     const fluid::FluxFrames frames = component::simulateSheetFrames(seamStrip());
-    const render::ReferenceModel model(s, view.frame.timeS, &frames);
+    const render::ReferenceModel model(s, view.frame.timeS, components::roles::curtainDetailData(&frames));
     std::vector<glm::dvec3> values;
     for (const glm::ivec2& p : pixels)
         values.push_back(app::pixelRadiance(gpu, p.x, p.y));
@@ -974,7 +975,7 @@ TEST(PlasmaLive, RenderAgreesWithTheReference)
     component::Settings other = s.settings<component::Settings>();
     other.seedMode += 1;
     const fluid::FluxFrames otherFrames = component::simulateSheetFrames(component::sheetFramesSpec(other));
-    const render::ReferenceModel otherModel(s, view.frame.timeS, &otherFrames);
+    const render::ReferenceModel otherModel(s, view.frame.timeS, components::roles::curtainDetailData(&otherFrames));
     const app::RelativeError wrong =
         app::relativeError(values, app::referencePixels(otherModel, view, pixels, 2), floor);
     std::printf("against the frames of a strip with one more wave: rms %.3g\n", wrong.rms);

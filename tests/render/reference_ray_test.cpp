@@ -7,6 +7,7 @@
 #include "components/fluid_detail/curtain_detail.h"
 #include "components/aurora/aurora.h"
 #include "components/registry.h"
+#include "components/roles/curtain_detail.h"
 #include "render/reference_ray.h"
 #include "scene_samples.h"
 #include "scene/scene.h"
@@ -19,6 +20,7 @@
 #include <fstream>
 
 using namespace aurorawall;
+using aurorawall::components::roles::curtainDetailData;
 using aurorawall::test::litPixels;
 
 namespace {
@@ -80,7 +82,7 @@ TEST_F(ReferenceRay, GpuAtItsFinestSettingsAgreesWithTheReference)
 {
     const io::Image gpu = app::renderView(*scene_, *view_, kSource + "/shaders", 0).image;
     const std::vector<glm::ivec2> pixels = litPixels(gpu, floor(), 16);
-    const render::ReferenceModel model(*scene_, view_->frame.timeS, frames_);
+    const render::ReferenceModel model(*scene_, view_->frame.timeS, curtainDetailData(frames_));
     const std::vector<glm::dvec3> reference = app::referencePixels(model, *view_, pixels, 2);
     std::vector<glm::dvec3> values;
     for (const glm::ivec2& p : pixels)
@@ -110,10 +112,11 @@ TEST_F(ReferenceRay, ReferenceConverges)
     render::ReferenceSettings fine, finer;
     fine.stepKm = 0.05;
     finer.stepKm = 0.025;
+    const scene::RoleData detail = curtainDetailData(frames_);
     const std::vector<glm::dvec3> a =
-        app::referencePixels(render::ReferenceModel(*scene_, view_->frame.timeS, frames_, fine), *view_, pixels, 2);
+        app::referencePixels(render::ReferenceModel(*scene_, view_->frame.timeS, detail, fine), *view_, pixels, 2);
     const std::vector<glm::dvec3> b =
-        app::referencePixels(render::ReferenceModel(*scene_, view_->frame.timeS, frames_, finer), *view_, pixels, 2);
+        app::referencePixels(render::ReferenceModel(*scene_, view_->frame.timeS, detail, finer), *view_, pixels, 2);
     const app::RelativeError e = app::relativeError(a, b, 0.0);
     std::printf("reference 0.05 km vs 0.025 km at the brightest pixels: max %.3g\n", e.max);
     EXPECT_LT(e.max, 1e-3);
@@ -122,8 +125,8 @@ TEST_F(ReferenceRay, ReferenceConverges)
 TEST_F(ReferenceRay, RejectsWhatItDoesNotModel)
 {
     const scene::Scene full = components::loadScene(kSource + "/config/scenes/substorm.toml");
-    EXPECT_THROW(render::ReferenceModel(full, 0.0, frames_), std::invalid_argument);
-    EXPECT_THROW(render::ReferenceModel(*scene_, 0.0, nullptr), std::invalid_argument);
+    EXPECT_THROW(render::ReferenceModel(full, 0.0, curtainDetailData(frames_)), std::invalid_argument);
+    EXPECT_THROW(render::ReferenceModel(*scene_, 0.0, {}), std::invalid_argument);
 }
 
 // The default march (12 km steps, each cut into sub-steps of at most 1 km in altitude and 0.75 of the
@@ -138,7 +141,7 @@ TEST_F(ReferenceRay, CoarseStepsIntegratedAcrossTheCurtainStayNearTheReference)
     for (long long frame : {0LL, 28LL, 60LL}) {
         scene::Scene s = app::withoutUnmodelled(components::loadScene(kSource + "/config/scenes/benchmark-view.toml"));
         const app::SceneView view = app::sceneView(s, kSource + "/config/walls/single.toml", {64, 36}, frame);
-        const render::ReferenceModel model(s, view.frame.timeS, frames_);
+        const render::ReferenceModel model(s, view.frame.timeS, curtainDetailData(frames_));
         std::vector<glm::ivec2> pixels;
         std::vector<glm::dvec3> reference;
         auto& aurora = s.settings<components::aurora::Settings>();
@@ -174,7 +177,7 @@ TEST_F(ReferenceRay, SmoothCurtainsIntegratedAcrossStayNearTheReference)
     const io::Image gpu = app::renderView(s, view, kSource + "/shaders", 0).image;
     const double floor = 1.0 / (255.0 * s.exposure);
     const std::vector<glm::ivec2> pixels = litPixels(gpu, floor, 16);
-    const render::ReferenceModel model(s, view.frame.timeS, nullptr);
+    const render::ReferenceModel model(s, view.frame.timeS, {});
     const std::vector<glm::dvec3> reference = app::referencePixels(model, view, pixels, 2);
     std::vector<glm::dvec3> values;
     for (const glm::ivec2& p : pixels)
@@ -244,8 +247,8 @@ energy_kev = 3.0
     const app::RelativeError gpu = app::relativeError(valuesB, valuesA, floor);
     const std::vector<glm::ivec2> pixels = litPixels(a, floor, 8);
     const app::RelativeError cpu =
-        app::relativeError(app::referencePixels(render::ReferenceModel(withThick, view.frame.timeS, nullptr), view, pixels, 2),
-                           app::referencePixels(render::ReferenceModel(alone, view.frame.timeS, nullptr), view, pixels, 2),
+        app::relativeError(app::referencePixels(render::ReferenceModel(withThick, view.frame.timeS, {}), view, pixels, 2),
+                           app::referencePixels(render::ReferenceModel(alone, view.frame.timeS, {}), view, pixels, 2),
                            floor);
     std::printf("thin curtain's end with a thick one far away against alone: GPU %zu pixels, max %.3g; "
                 "CPU reference %zu pixels, max %.3g\n",

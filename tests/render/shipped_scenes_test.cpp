@@ -4,6 +4,7 @@
 // (stars, planet_texture, sky) are left out of both.
 #include "app/accuracy_scene.h"
 #include "components/registry.h"
+#include "components/roles/curtain_detail.h"
 #include "gl/context.h"
 #include "render/reference_ray.h"
 #include "scene/scene.h"
@@ -49,13 +50,11 @@ TEST_P(ShippedScene, DefaultsAgreeWithTheCpuReference)
     const std::vector<glm::ivec2> pixels = test::litPixels(gpu, floor, 12);
     if (pixels.empty())
         GTEST_SKIP() << GetParam() << ": no lit pixel once stars, sky and night lights are left out";
-    std::shared_ptr<const fluid::FluxFrames> frames;
-    for (const scene::Component* c : s.components())
-        if (!frames)
-            frames = c->referenceFrames(s);
+    const std::shared_ptr<const fluid::FluxFrames> frames = components::roles::curtainDetailFrames(s);
     std::unique_ptr<render::ReferenceModel> model;
     try {
-        model = std::make_unique<render::ReferenceModel>(s, view.frame.timeS, frames.get());
+        model = std::make_unique<render::ReferenceModel>(s, view.frame.timeS,
+                                                         components::roles::curtainDetailData(frames.get()));
     } catch (const std::invalid_argument& e) {
         GTEST_SKIP() << GetParam() << ": the CPU reference does not model it (" << e.what() << ")";
     }

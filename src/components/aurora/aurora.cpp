@@ -5,9 +5,7 @@
 #include "components/aurora/curtain_field.h"
 #include "components/aurora/physics/curtain_geometry.h"
 #include "components/atmosphere/atmosphere.h"
-#include "components/fluid_detail/curtain_detail.h"
-#include "components/plasma/plasma.h"
-#include "components/plasma/plasma_detail.h"
+#include "components/roles/curtain_detail.h"
 #include "common/data_dir.h"
 #include "gl/context.h"
 #include "gl/shader_program.h"
@@ -27,7 +25,7 @@ MapBuilder resolvedMapBuilder(MapBuilder choice)
 
 class Renderer : public scene::ComponentRenderer {
 public:
-    Renderer(const Settings& s, double planetRadiusKm, const fluid_detail::DetailShape* detail)
+    Renderer(const Settings& s, double planetRadiusKm, const roles::DetailShape* detail)
         : s_(s), tables_(s), model_(s, planetRadiusKm, detail),
           field_(model_, resolvedMapBuilder(s.footprintMapBuild), dataDirectory() + "/shaders")
     {
@@ -173,36 +171,27 @@ public:
     std::unique_ptr<scene::ComponentRenderer> makeRenderer(const scene::Scene& scene,
                                                            const scene::FindRenderer& find) const override
     {
-        // The curtain detail comes from plasma or fluid_detail (a scene lists at most one of them).
-        const fluid_detail::DetailShape* detail = nullptr;
-        if (const auto* fluid = dynamic_cast<const fluid_detail::CurtainDetail*>(find("fluid_detail")))
-            detail = &fluid->shape();
-        if (const auto* electrons = dynamic_cast<const plasma::PlasmaDetail*>(find("plasma")))
-            detail = &electrons->shape();
-        return std::make_unique<Renderer>(scene.settings<Settings>(), scene.planetRadiusKm, detail);
+        // The curtain detail comes from its provider, when the scene lists one.
+        const auto* provider = dynamic_cast<const roles::CurtainDetailRenderer*>(find(roles::kCurtainDetail));
+        return std::make_unique<Renderer>(scene.settings<Settings>(), scene.planetRadiusKm,
+                                          provider ? &provider->shape() : nullptr);
     }
     std::unique_ptr<scene::ReferenceShader> makeReference(const scene::Scene& scene,
                                                           const scene::ReferenceContext& context) const override
     {
-        const bool detailed = scene.has("fluid_detail") || scene.has("plasma");
-        if (detailed != (context.fluidFrames != nullptr))
+        const roles::CurtainDetailProvider* provider = roles::curtainDetailProvider(scene);
+        const fluid::FluxFrames* frames = roles::referenceFrames(context);
+        if ((provider != nullptr) != (frames != nullptr))
             throw std::invalid_argument(
                 "the reference needs the detail frames exactly when the scene lists fluid_detail or plasma");
-        std::optional<fluid_detail::DetailShape> shape;
+        std::optional<roles::DetailShape> shape;
         double stripWidthKm = 0.0;
-        if (scene.has("fluid_detail")) {
-            const fluid::CurtainDetailSpec spec =
-                fluid_detail::curtainDetailSpec(scene.settings<fluid_detail::Settings>());
-            shape = fluid_detail::detailShape(spec, *context.fluidFrames);
-            stripWidthKm = spec.stripWidthKm;
-        }
-        if (scene.has("plasma")) {
-            const plasma::SheetFramesSpec spec = plasma::sheetFramesSpec(scene.settings<plasma::Settings>());
-            shape = plasma::sheetDetailShape(spec, *context.fluidFrames);
-            stripWidthKm = spec.sheet.widthM * 1e-3;
+        if (provider) {
+            shape = provider->referenceShape(scene, *frames);
+            stripWidthKm = provider->stripWidthKm(scene);
         }
         return std::make_unique<AuroraReference>(scene.settings<Settings>(), scene.planetRadiusKm, context.timeS,
-                                                 context.stepKm, context.fluidFrames, shape, stripWidthKm);
+                                                 context.stepKm, frames, shape, stripWidthKm);
     }
 };
 

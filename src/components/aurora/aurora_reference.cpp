@@ -20,7 +20,7 @@ namespace {
 namespace aurorawall::components::aurora {
 
 AuroraReference::AuroraReference(const Settings& aurora, double planetRadiusKm, double timeS, double stepKm,
-                                 const fluid::FluxFrames* frames, std::optional<fluid_detail::DetailShape> shape,
+                                 const fluid::FluxFrames* frames, std::optional<roles::DetailShape> shape,
                                  double stripWidthKm)
     : aurora_(aurora), planetRadiusKm_(planetRadiusKm), stepKm_(stepKm), frames_(frames),
       stripWidthKm_(stripWidthKm), shape_(shape)

@@ -12,7 +12,7 @@
 //     within reach, and exact jumps over the rest (the distance to the nearest curtain, less the
 //     reach, is a distance along the ray that cannot reach an emitting point).
 #include "components/aurora/curtain_model.h"
-#include "components/fluid_detail/simulation/curtain_detail.h"
+#include "components/roles/curtain_detail.h"
 #include "scene/component.h"
 
 #include <glm/glm.hpp>
@@ -23,10 +23,10 @@ namespace aurorawall::components::aurora {
 
 class AuroraReference : public scene::ReferenceShader {
 public:
-    // frames: the curtain detail frames (fluid_detail's or plasma's) when the scene lists one, else
+    // frames: the curtain detail frames when the scene lists a provider of the role, else
     // null; shape: their shape for the curtain model; stripWidthKm: their strip's width.
     AuroraReference(const Settings& aurora, double planetRadiusKm, double timeS, double stepKm,
-                    const fluid::FluxFrames* frames, std::optional<fluid_detail::DetailShape> shape,
+                    const fluid::FluxFrames* frames, std::optional<roles::DetailShape> shape,
                     double stripWidthKm);
 
     f64::Ray shade(f64::Ray ray) const override;
@@ -56,7 +56,7 @@ private:
     double stepKm_;
     const fluid::FluxFrames* frames_;
     double stripWidthKm_;
-    std::optional<fluid_detail::DetailShape> shape_;
+    std::optional<roles::DetailShape> shape_;
     std::optional<CurtainModel> model_;
     std::vector<Curtain> curtains_;
     glm::dvec3 lineRgb_[4];

@@ -4,7 +4,7 @@
 
 namespace aurorawall::components::aurora {
 
-CurtainModel::CurtainModel(const Settings& aurora, double planetRadiusKm, const fluid_detail::DetailShape* detail)
+CurtainModel::CurtainModel(const Settings& aurora, double planetRadiusKm, const roles::DetailShape* detail)
     : aurora_(aurora), planetRadiusKm_(planetRadiusKm)
 {
     if (detail)

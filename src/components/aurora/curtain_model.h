@@ -10,7 +10,7 @@
 #include "components/aurora/physics/curtain_geometry.h"
 #include "components/aurora/aurora.h"
 #include "components/aurora/curtain_frames.h"
-#include "components/fluid_detail/curtain_detail.h"
+#include "components/roles/curtain_detail.h"
 
 #include <optional>
 #include <vector>
@@ -26,8 +26,8 @@ struct CurtainNow {
 
 class CurtainModel {
 public:
-    // detail: the fluid_detail frames' shape, or null when the scene does not list it.
-    CurtainModel(const Settings& aurora, double planetRadiusKm, const fluid_detail::DetailShape* detail);
+    // detail: the curtain detail frames' shape, or null when the scene lists no provider of it.
+    CurtainModel(const Settings& aurora, double planetRadiusKm, const roles::DetailShape* detail);
 
     // Every curtain at animation time timeS, in the scene's order: statesAt, then footprint of each.
     std::vector<CurtainNow> at(double timeS) const;
@@ -43,14 +43,14 @@ public:
 
     // The largest reach of any curtain at any phase: beyond it from every centre line nothing emits.
     double reachKm() const { return reachKm_; }
-    const fluid_detail::DetailShape* detail() const { return detail_ ? &*detail_ : nullptr; }
+    const roles::DetailShape* detail() const { return detail_ ? &*detail_ : nullptr; }
     const Settings& settings() const { return aurora_; }
     double planetRadiusKm() const { return planetRadiusKm_; }
 
 private:
     const Settings& aurora_;
     double planetRadiusKm_;
-    std::optional<fluid_detail::DetailShape> detail_;
+    std::optional<roles::DetailShape> detail_;
     std::vector<double> lateralScale_;
     double reachKm_ = 0.0;
 };

@@ -8,7 +8,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <utility>
 
 namespace aurorawall::components::fluid_detail {
 
@@ -37,23 +36,6 @@ std::vector<double> frameReachesKm(const fluid::FluxFrames& f, double stripWidth
                 if (f.at(k, ix, iy) > 1e-3f * peak)
                     reach[k] = std::max(reach[k], std::abs((iy + 0.5) * f.texelKmY - 0.5 * stripWidthKm) + f.texelKmY);
     return reach;
-}
-
-double DetailShape::reachAtPhaseKm(double phase) const
-{
-    if (frameReachKm.empty())
-        return reachKm;
-    const int last = static_cast<int>(frameReachKm.size()) - 1;
-    const double p = std::clamp(phase, 0.0, 1.0) * last;
-    const int first = std::clamp(static_cast<int>(std::floor(p - 1e-3)), 0, last);
-    const int end = std::clamp(static_cast<int>(std::ceil(p + 1e-3)), 0, last);
-    return *std::max_element(frameReachKm.begin() + first, frameReachKm.begin() + end + 1);
-}
-
-void DetailShape::setFrameReaches(std::vector<double> reachesKm)
-{
-    frameReachKm = std::move(reachesKm);
-    reachKm = *std::max_element(frameReachKm.begin(), frameReachKm.end());
 }
 
 DetailShape detailShape(const fluid::CurtainDetailSpec& spec, const fluid::FluxFrames& frames)

@@ -7,33 +7,18 @@
 #include "gl/shader_program.h"
 #include "components/fluid_detail/flux_column_texture.h"
 #include "components/fluid_detail/fluid_detail.h"
-#include "scene/component.h"
+#include "components/roles/curtain_detail.h"
 
 #include <string>
 #include <vector>
 
 namespace aurorawall::components::fluid_detail {
 
-// How the frames shape a curtain across and along it: what the aurora's curtain model needs.
-struct DetailShape {
-    double fluxWidthKm = 0.0;          // standard deviation of the flux across the strip at frame 0 (km)
-    double reachKm = 0.0;              // the largest reach of any frame (strip km)
-    std::vector<double> frameReachKm;  // each frame's (frameReachesKm); empty: reachKm for every frame
-    double stripLengthKm = 0.0;        // the pattern's period along the curtain
-    // Frame 0 is a Gaussian of unit integral across: its peak is 1/(sigma sqrt(2 pi)); scaling by
-    // sigma sqrt(2 pi) makes the smooth curtain's peak 1.
-    double peakScale = 1.0;
-
-    // The reach (strip km) of the frames blended at detail phase `phase` (0 ... 1, frame
-    // phase * (frames - 1)): the larger of the two, and of a neighbour where the phase lies within
-    // rounding of a frame (the shader computes the blend in float).
-    double reachAtPhaseKm(double phase) const;
-    // Sets frameReachKm to these (one per frame, at least one) and reachKm to the largest.
-    void setFrameReaches(std::vector<double> reachesKm);
-};
+using roles::DetailShape;
+// The shape of these frames for the aurora's curtain model.
 DetailShape detailShape(const fluid::CurtainDetailSpec& spec, const fluid::FluxFrames& frames);
 
-class CurtainDetail : public scene::ComponentRenderer {
+class CurtainDetail : public roles::CurtainDetailRenderer {
 public:
     explicit CurtainDetail(const Settings& detail);
 
@@ -42,7 +27,7 @@ public:
     // Texture unit 3 and the uniforms of shaders/components/aurora/curtain_profile.glsl.
     void bind(gl::Program& program) const override;
 
-    const DetailShape& shape() const { return shape_; }
+    const DetailShape& shape() const override { return shape_; }
 
 private:
     fluid::CurtainDetailSpec spec_;

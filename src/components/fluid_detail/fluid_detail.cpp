@@ -2,6 +2,7 @@
 
 #include "components/fluid_detail/cached_flux_frames.h"
 #include "components/fluid_detail/curtain_detail.h"
+#include "components/roles/curtain_detail.h"
 #include "io/table_cache.h"
 #include "scene/scene.h"
 
@@ -9,12 +10,13 @@ namespace aurorawall::components::fluid_detail {
 
 namespace {
 
-// The aurora's curtain profile samples these frames (shaders/components/aurora/curtain_profile.glsl
-// under HAS_FLUID_DETAIL), and the aurora's reference samples them in double: the component adds no
-// shader module and no reference step of its own.
-class FluidDetail : public scene::ComponentWith<Settings> {
+// It provides the curtain detail: the aurora's curtain profile samples these frames
+// (shaders/components/aurora/curtain_profile.glsl under HAS_FLUID_DETAIL), and the aurora's reference
+// samples them in double: the component adds no shader module and no reference step of its own.
+class FluidDetail : public scene::ComponentWith<Settings>, public roles::CurtainDetailProvider {
 public:
     std::vector<std::string> needs() const override { return {"aurora"}; }
+    std::vector<std::string> provides() const override { return {roles::kCurtainDetail}; }
     void read(const config::TableReader& t, scene::Scene&, scene::ComponentSettings& settings) const override
     {
         auto& f = dynamic_cast<Settings&>(settings);
@@ -47,6 +49,14 @@ public:
     {
         return std::make_shared<const fluid::FluxFrames>(
             cachedFluxFrames(curtainDetailSpec(scene.settings<Settings>()), io::defaultCacheDirectory()).frames);
+    }
+    DetailShape referenceShape(const scene::Scene& scene, const fluid::FluxFrames& frames) const override
+    {
+        return detailShape(curtainDetailSpec(scene.settings<Settings>()), frames);
+    }
+    double stripWidthKm(const scene::Scene& scene) const override
+    {
+        return curtainDetailSpec(scene.settings<Settings>()).stripWidthKm;
     }
 };
 

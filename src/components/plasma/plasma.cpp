@@ -1,10 +1,10 @@
 #include "common/constants.h"
 #include "components/plasma/plasma.h"
 
-#include "common/input_error.h"
 #include "components/plasma/box_reference.h"
 #include "components/plasma/box_renderer.h"
 #include "components/plasma/simulation/plasma_parameters.h"
+#include "components/roles/curtain_detail.h"
 #include "io/table_cache.h"
 #include "scene/scene.h"
 
@@ -72,18 +72,16 @@ void readBox(const config::TableReader& t, Settings& p)
     p.boxStepsPerCell = t.integer("box_steps_per_cell", 1, 64, p.boxStepsPerCell);
 }
 
-// The aurora's curtain profile samples the strip's frames (curtain_profile.glsl under HAS_PLASMA), and
-// the aurora's reference samples them in double (referenceFrames): the curls add no reference step of
-// their own; the box adds its emission (box_reference.h).
-class Plasma : public scene::ComponentWith<Settings> {
+// It provides the curtain detail: the aurora's curtain profile samples the strip's frames
+// (curtain_profile.glsl under HAS_PLASMA), and the aurora's reference samples them in double
+// (referenceFrames): the curls add no reference step of their own; the box adds its emission
+// (box_reference.h).
+class Plasma : public scene::ComponentWith<Settings>, public roles::CurtainDetailProvider {
 public:
     std::vector<std::string> needs() const override { return {"aurora"}; }
-    void read(const config::TableReader& t, scene::Scene& scene, scene::ComponentSettings& settings) const override
+    std::vector<std::string> provides() const override { return {roles::kCurtainDetail}; }
+    void read(const config::TableReader& t, scene::Scene&, scene::ComponentSettings& settings) const override
     {
-        if (scene.has("fluid_detail"))
-            throw inputError(t.file(), t.line(),
-                             "the scene lists both plasma and fluid_detail: the aurora takes its curtain detail "
-                             "from one of them");
         auto& p = dynamic_cast<Settings&>(settings);
         p.cellsAlong = t.integer("cells_along", 16, 4096, p.cellsAlong);
         p.cellsAcross = t.integer("cells_across", 8, 4096, p.cellsAcross);
@@ -155,6 +153,14 @@ public:
     {
         return std::make_shared<const fluid::FluxFrames>(
             cachedSheetFrames(sheetFramesSpec(scene.settings<Settings>()), io::defaultCacheDirectory()).frames);
+    }
+    roles::DetailShape referenceShape(const scene::Scene& scene, const fluid::FluxFrames& frames) const override
+    {
+        return sheetDetailShape(sheetFramesSpec(scene.settings<Settings>()), frames);
+    }
+    double stripWidthKm(const scene::Scene& scene) const override
+    {
+        return sheetFramesSpec(scene.settings<Settings>()).sheet.widthM * 1e-3;
     }
 };
 

@@ -8,18 +8,17 @@
 //     setFrame to the step of the first curtain's detail phase at the frame's time (curlsStep); the
 //     shader's frame lookup pinned to that one frame (frame count 1).
 #include "components/aurora/aurora.h"
-#include "components/fluid_detail/curtain_detail.h"
 #include "components/plasma/live_pic.h"
 #include "components/plasma/plasma.h"
+#include "components/roles/curtain_detail.h"
 #include "components/fluid_detail/flux_column_texture.h"
-#include "scene/component.h"
 
 #include <memory>
 #include <string>
 
 namespace aurorawall::components::plasma {
 
-class PlasmaDetail : public scene::ComponentRenderer {
+class PlasmaDetail : public roles::CurtainDetailRenderer {
 public:
     // aurora: the scene's curtains (the first one's detail phase drives the live run).
     PlasmaDetail(const Settings& plasma, const aurora::Settings& aurora);
@@ -30,7 +29,7 @@ public:
     // Texture unit 3: uFluxTables, with uFluxStrip and uFluxLayout.
     void bind(gl::Program& program) const override;
 
-    const fluid_detail::DetailShape& shape() const { return shape_; }
+    const roles::DetailShape& shape() const override { return shape_; }
 
 private:
     SheetFramesSpec spec_;
@@ -38,7 +37,7 @@ private:
     std::unique_ptr<LivePic> live_;
     fluid_detail::FluxColumnTexture columns_;
     fluid::FluxFrames liveFrame_; // device = "gpu": the live run's frame, its flux replaced each step
-    fluid_detail::DetailShape shape_;
+    roles::DetailShape shape_;
     std::string summary_;
 };
 

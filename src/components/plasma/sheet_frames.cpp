@@ -1,6 +1,7 @@
 #include "components/plasma/sheet_frames.h"
 
 #include "components/fluid_detail/cached_flux_frames.h"
+#include "components/fluid_detail/curtain_detail.h"
 
 #include "components/plasma/simulation/particle_mesh.h"
 #include "components/plasma/simulation/plasma_parameters.h"
@@ -66,7 +67,7 @@ fluid::FluxFrames simulateSheetFrames(const SheetFramesSpec& spec)
     return f;
 }
 
-fluid_detail::DetailShape sheetDetailShape(const SheetFramesSpec& spec, const fluid::FluxFrames& f)
+roles::DetailShape sheetDetailShape(const SheetFramesSpec& spec, const fluid::FluxFrames& f)
 {
     const double widthKm = spec.sheet.widthM * 1e-3;
     double peak = 0.0, integral = 0.0, second = 0.0;
@@ -79,7 +80,7 @@ fluid_detail::DetailShape sheetDetailShape(const SheetFramesSpec& spec, const fl
             second += v * u * u;
         }
     }
-    fluid_detail::DetailShape d;
+    roles::DetailShape d;
     d.fluxWidthKm = std::sqrt(second / integral);
     d.setFrameReaches(fluid_detail::frameReachesKm(f, widthKm));
     d.stripLengthKm = spec.sheet.lengthM * 1e-3;

@@ -3,8 +3,8 @@
 // electron strip (simulation/electron_sheet.h) as it rolls up into vortices, in the form the aurora's
 // curtain profile samples (fluid::FluxFrames: x along the curtain, y across, frame by frame). CPU,
 // serial and deterministic: every rank computes the same bytes, or reads them from the table cache.
-#include "components/fluid_detail/curtain_detail.h"
 #include "components/fluid_detail/simulation/curtain_detail.h"
+#include "components/roles/curtain_detail.h"
 #include "components/plasma/simulation/electron_sheet.h"
 
 #include <string>
@@ -28,7 +28,7 @@ std::vector<float> sheetFrameDensity(const SheetFramesSpec& spec, const aurorawa
 
 // Frame 0's shape for the aurora's curtain model: its measured standard deviation across, its reach,
 // the strip's length, and 1/(frame 0's largest value), which makes the smooth strip's peak 1.
-fluid_detail::DetailShape sheetDetailShape(const SheetFramesSpec& spec, const fluid::FluxFrames& frames);
+roles::DetailShape sheetDetailShape(const SheetFramesSpec& spec, const fluid::FluxFrames& frames);
 
 struct CachedSheetFrames {
     fluid::FluxFrames frames;
