@@ -14,11 +14,12 @@ const char* kPrelude[] = {"physics/constants.glsl", "render/work_counts.glsl", "
 const char* kPixel = "render/pixel.glsl"; // after the generated shadeRay
 const char* entryPoint(MarchStage stage) { return stage == MarchStage::Compute ? "render/main.comp" : "render/main.frag"; }
 
-std::string defineOf(const scene::Component& c)
+// HAS_<NAME> for a component or a role: upper case, spaces as underscores ("curtain detail":
+// HAS_CURTAIN_DETAIL).
+std::string defineOf(std::string name)
 {
-    std::string name = c.name();
     for (char& ch : name)
-        ch = static_cast<char>(std::toupper(static_cast<unsigned char>(ch)));
+        ch = ch == ' ' ? '_' : static_cast<char>(std::toupper(static_cast<unsigned char>(ch)));
     return "HAS_" + name;
 }
 
@@ -69,8 +70,11 @@ std::string compositingSource(const scene::Scene& scene)
 gl::ShaderSource marchShaderSource(const scene::Scene& scene, const std::string& shaderDir, MarchStage stage)
 {
     gl::ShaderSource source;
-    for (const scene::Component* c : scene.components())
-        source.defines.push_back(defineOf(*c));
+    for (const scene::Component* c : scene.components()) {
+        source.defines.push_back(defineOf(c->name()));
+        for (const std::string& role : c->provides())
+            source.defines.push_back(defineOf(role));
+    }
     for (const std::string& name : marchModuleNames(scene, stage)) {
         if (name == kPixel)
             source.modules.push_back({"generated shadeRay", compositingSource(scene)});

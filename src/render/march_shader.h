@@ -5,7 +5,8 @@
 // shading (render/pixel.glsl) and the entry point of the stage it runs in: a fragment shader over a
 // full-screen triangle (render/main.frag) or a compute shader (render/main.comp), the same text but
 // for how each finds its pixel and writes it. A component the scene does not list contributes no
-// code: neither its modules, nor its #define HAS_<NAME>, nor a call.
+// code: neither its modules, nor its #define HAS_<NAME>, nor those of the roles it provides
+// (HAS_CURTAIN_DETAIL for "curtain detail"), nor a call.
 #include "gl/shader_program.h"
 #include "scene/scene.h"
 

@@ -221,9 +221,17 @@ true
 
 
 def answer_after(browser, prefix):
-    """The page's answer line once it shows the answer to a command beginning with `prefix`."""
-    return poll(f"the page's answer to '{prefix}'",
-                lambda: (lambda t: t if t.startswith(prefix) and " → " in t else None)(browser.evaluate("awTest.text('answer')")))
+    """The page's answer line once it shows the answer to a command beginning with `prefix` (on a
+    timeout, the Failure names the line it showed last)."""
+    shown = [None]
+
+    def probe():
+        shown[0] = browser.evaluate("awTest.text('answer')")
+        return shown[0] if shown[0].startswith(prefix) and " → " in shown[0] else None
+    try:
+        return poll(f"the page's answer to '{prefix}'", probe)
+    except Failure as e:
+        raise Failure(f"{e}; the page showed: {shown[0]!r}") from None
 
 
 def check_pause_and_play(browser, wall):
@@ -316,6 +324,7 @@ def check_steering(browser, wall):
     browser.call("Input.dispatchMouseEvent", {"type": "mouseMoved", "x": x + 50, "y": y, "button": "left", "buttons": 1})
     browser.call("Input.dispatchMouseEvent", {"type": "mouseReleased", "x": x + 50, "y": y, "button": "left", "buttons": 0, "clickCount": 1})
     after = poll("/status turned 10 degrees right by a 50 px drag", turned_by(before, 10))
+    answer_after(browser, f"look {after['heading_deg']:.0f}")  # the drag's look answered: none in flight
     print(f"drag: heading {before['heading_deg']:.6f} -> {after['heading_deg']:.6f}")
 
 

@@ -100,19 +100,22 @@ TEST(FragmentShader, GloryOnlyWhereListed)
 }
 
 // The plasma adds no module of its own: its frames reach the aurora's curtain profile under
-// HAS_PLASMA, which only a scene listing it defines (and its renderer, the simulation, is made only
-// for listed components); such a scene does not list fluid_detail.
+// HAS_CURTAIN_DETAIL, the define of the role it provides, which only a scene listing a provider (the
+// plasma or fluid_detail) defines; HAS_PLASMA only a scene listing it (and its renderer, the
+// simulation, is made only for listed components); such a scene does not list fluid_detail.
 TEST(FragmentShader, PlasmaOnlyWhereListed)
 {
     const std::string dir = std::string(AURORAWALL_SOURCE_DIR) + "/config/scenes/";
     const gl::ShaderSource curls =
         render::marchShaderSource(components::loadScene(dir + "plasma-curls.toml"), kShaders);
     EXPECT_TRUE(contains(curls.defines, "HAS_PLASMA"));
+    EXPECT_TRUE(contains(curls.defines, "HAS_CURTAIN_DETAIL"));
     EXPECT_FALSE(contains(curls.defines, "HAS_FLUID_DETAIL"));
     for (const char* file : {"quiet-arc.toml", "substorm.toml", "airglow-limb.toml", "lunar-glory.toml"}) {
         const scene::Scene s = components::loadScene(dir + file);
         const gl::ShaderSource source = render::marchShaderSource(s, kShaders);
         EXPECT_FALSE(contains(source.defines, "HAS_PLASMA")) << file;
+        EXPECT_EQ(contains(source.defines, "HAS_CURTAIN_DETAIL"), s.has("fluid_detail")) << file;
         for (const gl::ShaderModule& m : source.modules)
             EXPECT_EQ(m.file.find("components/plasma"), std::string::npos) << file << ": " << m.file;
     }

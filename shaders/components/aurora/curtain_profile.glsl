@@ -11,7 +11,7 @@ uniform vec4 uCurtainDetail[MAX_CURTAINS];
 // (a step that runs along it). (∫ profile, ∫ (q − q0) profile, the profile's mean at both ends) over that
 // coordinate q, in km, km² and 1.
 
-#if defined(HAS_FLUID_DETAIL) || defined(HAS_PLASMA)
+#ifdef HAS_CURTAIN_DETAIL // a listed component provides the role "curtain detail" (its frames)
 uniform sampler2DArray uFluxTables; // the running integrals of the frames' flux (1/km) across and along at the
                                     // cell centres, both tables in one texture
                                     // (src/components/fluid_detail/simulation/flux_columns.h)

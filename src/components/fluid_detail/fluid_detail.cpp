@@ -11,7 +11,7 @@ namespace aurorawall::components::fluid_detail {
 namespace {
 
 // It provides the curtain detail: the aurora's curtain profile samples these frames
-// (shaders/components/aurora/curtain_profile.glsl under HAS_FLUID_DETAIL), and the aurora's reference
+// (shaders/components/aurora/curtain_profile.glsl under HAS_CURTAIN_DETAIL), and the aurora's reference
 // samples them in double: the component adds no shader module and no reference step of its own.
 class FluidDetail : public scene::ComponentWith<Settings>, public roles::CurtainDetailProvider {
 public:

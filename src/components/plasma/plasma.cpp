@@ -73,7 +73,7 @@ void readBox(const config::TableReader& t, Settings& p)
 }
 
 // It provides the curtain detail: the aurora's curtain profile samples the strip's frames
-// (curtain_profile.glsl under HAS_PLASMA), and the aurora's reference samples them in double
+// (curtain_profile.glsl under HAS_CURTAIN_DETAIL), and the aurora's reference samples them in double
 // (referenceFrames): the curls add no reference step of their own; the box adds its emission
 // (box_reference.h).
 class Plasma : public scene::ComponentWith<Settings>, public roles::CurtainDetailProvider {
