@@ -48,6 +48,29 @@ elapsed() { awk -v a="$(now)" -v b="$1" 'BEGIN { printf "%.2f", a - b }'; }
 # web_port LOG JOB: the same for --web-port's "web: listening on 127.0.0.1:PORT".
 control_port() { listening_port control "$@"; }
 web_port() { listening_port web "$@"; }
+
+# start_web_wall OUT [RENDER ARGS...]: a 2-rank headless wall of tiny screens (two per rank) on $SCENE
+# serving the browser console on a free port (--frames 0 --web-port 0 --quiet --out OUT, the log in
+# $WORK/log), in the background; sets job (the aw_mpirun subshell), port and url.
+start_web_wall() {
+    local out="$1" wall="$WORK/tiny-2-ranks.toml"
+    shift
+    { cat "$DATA/tiny-2x2.toml"; printf '\n[ranks]\nscreens_per_rank = 2\n'; } > "$wall"
+    aw_mpirun 2 render --wall "$wall" --scene "$SCENE" --frames 0 --web-port 0 --quiet --out "$out" "$@" \
+        > "$WORK/log" 2>&1 &
+    job=$!
+    port=$(web_port "$WORK/log" "$job")
+    url="http://127.0.0.1:$port"
+    note "console on $url"
+}
+# Ends a start_web_wall job on a failure: mpirun, started by the aw_mpirun subshell $job, and the subshell.
+stop_wall() { pkill -P "$job" 2>/dev/null; kill "$job" 2>/dev/null; }
+# A secret for --control-token-file: $secret, written to $WORK/token (owner only).
+make_token() {
+    secret="s3cret-$$"
+    echo "$secret" > "$WORK/token"
+    chmod 600 "$WORK/token"
+}
 listening_port() {
     local what="$1" log="$2" job="$3" port
     for _ in $(seq 600); do

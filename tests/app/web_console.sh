@@ -7,20 +7,8 @@
 source "$(dirname "$0")/lib.sh"
 command -v curl >/dev/null || { echo "SKIP: curl is not installed"; exit 77; }
 
-wall="$WORK/tiny-2-ranks.toml"
-{ cat "$DATA/tiny-2x2.toml"; printf '\n[ranks]\nscreens_per_rank = 2\n'; } > "$wall"
-secret="s3cret-$$"
-echo "$secret" > "$WORK/token"
-chmod 600 "$WORK/token"
-
-aw_mpirun 2 render --wall "$wall" --scene "$SCENE" --frames 0 --web-port 0 --control-token-file "$WORK/token" \
-    --quiet --out "$WORK" > "$WORK/log" 2>&1 &
-job=$!
-port=$(web_port "$WORK/log" "$job")
-url="http://127.0.0.1:$port"
-note "console on $url"
-# On a failure: mpirun, started by the aw_mpirun's subshell $job, and the subshell.
-stop_wall() { pkill -P "$job" 2>/dev/null; kill "$job" 2>/dev/null; }
+make_token
+start_web_wall "$WORK" --control-token-file "$WORK/token"
 check() { "$@" || { stop_wall; fail "$*"; }; }
 
 # get PATH [CURL ARGS...]: the status code, the body in $WORK/body.

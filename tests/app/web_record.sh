@@ -10,8 +10,6 @@
 source "$(dirname "$0")/lib.sh"
 command -v curl >/dev/null || { echo "SKIP: curl is not installed"; exit 77; }
 
-wall="$WORK/tiny-2-ranks.toml"
-{ cat "$DATA/tiny-2x2.toml"; printf '\n[ranks]\nscreens_per_rank = 2\n'; } > "$wall"
 out="$WORK/out"
 mkdir -p "$out"
 disk="$out/full"
@@ -22,12 +20,7 @@ if mount -t tmpfs -o size=8k tmpfs "$disk" 2>/dev/null; then
     trap 'umount "$disk" 2>/dev/null; cleanup' EXIT
 fi
 
-aw_mpirun 2 render --wall "$wall" --scene "$SCENE" --frames 0 --web-port 0 --dt 0.25 --start-time 100 \
-    --quiet --out "$out" > "$WORK/log" 2>&1 &
-job=$!
-port=$(web_port "$WORK/log" "$job")
-url="http://127.0.0.1:$port"
-stop_wall() { pkill -P "$job" 2>/dev/null; kill "$job" 2>/dev/null; }
+start_web_wall "$out" --dt 0.25 --start-time 100
 check() { "$@" || { stop_wall; cat "$WORK/log"; fail "$*"; }; }
 
 # post LINE: the command's answer line (status 200 checked).
