@@ -47,7 +47,6 @@ async function command(line) {
 
 function showStatus(s) {
   paused = s.paused;
-  camera = s;
   $("play").textContent = paused ? "play" : "pause";
   $("status").textContent =
     `frame ${s.frame}  t=${Number(s.time_s).toFixed(1)} s  ${s.fps.toPrecision(3)} fps  ` +
@@ -60,9 +59,12 @@ function showStatus(s) {
 
 async function pollStatus() {
   try {
+    const askedAt = performance.now();
     const response = await request("/status");
     if (!response.ok) throw new Error((await response.text()).trim());
-    showStatus(await response.json());
+    const s = await response.json();
+    showStatus(s);
+    if (askedAt > steeredAt) camera = s; // a /status asked before a steer's answer is older than it
     lastAnswerAt = Date.now();
   } catch (e) {
     // the alarm below says it once the silence lasts
@@ -215,6 +217,7 @@ const DRAG_DEG_PER_PX = 0.2;
 let camera = null;   // the last /status (lat_deg, lon_deg, alt_km, heading_deg, pitch_deg), or a steer's answer
 let steering = false; // one steering command at a time: a held key or stick never floods the wall
 let nextSteer = null;  // the latest asked for meanwhile (camera => line), sent when the one in flight ends
+let steeredAt = -1;    // performance.now() when the last steer's answer updated the camera
 
 const radians = (deg) => deg * Math.PI / 180;
 const degrees = (rad) => rad * 180 / Math.PI;
@@ -251,6 +254,7 @@ async function steer(make) {
   const answer = await command(make(camera));
   for (const [, key, value] of answer.matchAll(/(\w+)=(-?[\d.e+-]+)/g))
     if (key in camera) camera = { ...camera, [key]: Number(value) };
+  steeredAt = performance.now();
   steering = false;
   const next = nextSteer;
   nextSteer = null;
@@ -296,6 +300,17 @@ setInterval(() => {
   if (lx || ly) steer((c) => moveLine(c, -ly, lx, 1));
   else if (rx || ry) steer((c) => lookLine(c, rx * LOOK_STEP_DEG, -ry * LOOK_STEP_DEG));
 }, 100);
+
+// Orbit: the camera turns to the pivot (latitude, longitude, altitude; an empty latitude or longitude
+// is the camera's own, so the default pivot is the sky 110 km above it, where the aurora glows) and
+// circles it as the protocol's `orbit` does; W/S then move toward and away from it. Steering with
+// goto or look ends it, as `orbit off` does.
+$("orbit").onclick = () => {
+  if (!camera) return;
+  const pivot = (id, own) => ($(id).value === "" ? own : Number($(id).value));
+  command(`orbit ${pivot("pivot-lat", camera.lat_deg)} ${pivot("pivot-lon", camera.lon_deg)} ${pivot("pivot-alt", 110)}`);
+};
+$("orbit-off").onclick = () => command("orbit off");
 
 $("token-set").onclick = () => {
   token = $("token").value;

@@ -286,6 +286,14 @@ def great_circle_km(a, b):
     return 2 * 6371 * math.asin(math.sqrt(h))
 
 
+def initial_bearing_deg(a, b):
+    """The great circle's bearing from camera a to camera b at a, clockwise from north."""
+    la1, lo1, la2, lo2 = (math.radians(v) for v in (a["lat_deg"], a["lon_deg"], b["lat_deg"], b["lon_deg"]))
+    y = math.sin(lo2 - lo1) * math.cos(la2)
+    x = math.cos(la1) * math.sin(la2) - math.sin(la1) * math.cos(la2) * math.cos(lo2 - lo1)
+    return math.degrees(math.atan2(y, x)) % 360
+
+
 def check_steering(browser, wall):
     """An arrow key turns the camera 5 degrees, W moves it a tenth of its altitude (at least 1 km)
     forward at the same altitude, a drag of 50 px across the preview turns it 10 degrees."""
@@ -313,9 +321,14 @@ def check_steering(browser, wall):
         raise Failure(f"W: the page's goto answered {answer}")
     after = poll("/status moved forward by W", lambda: (lambda s: s if great_circle_km(before, s) > 0.5 * step_km else None)(wall.status()))
     moved = great_circle_km(before, after)
-    print(f"W: moved {moved:.6f} km (a move: {step_km:.6f} km), altitude {before['alt_km']:.6f} -> {after['alt_km']:.6f} km")
+    bearing = initial_bearing_deg(before, after)
+    print(f"W: moved {moved:.6f} km toward {bearing:.4f} deg (a move: {step_km:.6f} km toward the heading "
+          f"{before['heading_deg']:.4f}), altitude {before['alt_km']:.6f} -> {after['alt_km']:.6f} km")
     if abs(moved - step_km) > 1e-3 * step_km or abs(after["alt_km"] - before["alt_km"]) > 1e-5:
         raise Failure(f"W moved {moved} km at altitude {after['alt_km']}, expected {step_km} km at {before['alt_km']}")
+    # The goto's 6 decimals of a degree (0.1 m) leave the bearing of a 1 km move within 0.01 degree.
+    if abs((bearing - before["heading_deg"] + 180) % 360 - 180) > 0.05:
+        raise Failure(f"W moved toward {bearing} deg, not along the heading {before['heading_deg']}")
     before = after
     box = browser.evaluate("(() => { const r = document.getElementById('preview').getBoundingClientRect(); "
                            "return [r.left + r.width / 2, r.top + r.height / 2]; })()")
@@ -341,6 +354,20 @@ def check_narrow_screen(browser, work_dir):
         " null; })()"))
     browser.screenshot(os.path.join(work_dir, "console-phone.png"))
     print(f"phone: the page fits {fits} px, every control within it")
+
+
+def check_orbit(browser, wall):
+    """The orbit button with the pivot's latitude and longitude left empty: the sky 110 km above the
+    camera, so the camera turns to look straight up at it; orbit off ends it."""
+    browser.evaluate("awTest.click('orbit')")
+    answer = answer_after(browser, "orbit ").split(" → ", 1)[1]
+    if not answer.startswith("ok orbit ") or "alt_km=110 " not in answer:
+        raise Failure(f"orbit answered {answer}")
+    status = poll("/status looking up at the pivot", lambda: (lambda s: s if s["pitch_deg"] > 89.9 else None)(wall.status()))
+    print(f"orbit -> {answer}; pitch {status['pitch_deg']:.4f}")
+    browser.evaluate("awTest.click('orbit-off')")
+    if answer_after(browser, "orbit off").split(" → ", 1)[1] != "ok orbit off":
+        raise Failure("orbit off was not answered ok")
 
 
 def check_recording(browser, wall, work_dir):
@@ -416,6 +443,7 @@ def main():
         check_pause_and_play(browser, wall)
         check_preset_and_preview(browser, wall, preset)
         check_steering(browser, wall)
+        check_orbit(browser, wall)
         check_recording(browser, wall, work_dir)
         check_silent_rank(browser, wall, int(rank1_pid))
         shot = os.path.join(work_dir, "console.png")
