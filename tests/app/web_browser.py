@@ -181,6 +181,13 @@ window.awTest = {
   click(id) { document.getElementById(id).click(); return true; },
   text(id) { return document.getElementById(id).textContent; },
   shown(id) { return getComputedStyle(document.getElementById(id)).display !== "none"; },
+  // A number typed into field `id`: its value, then the change event the page listens to.
+  type(id, value) {
+    const f = document.getElementById(id);
+    f.value = value;
+    f.dispatchEvent(new Event("change", { bubbles: true }));
+    return f.value;
+  },
   // The time slider moved as a hand would: its value, then the events the page listens to.
   slide(value) {
     const s = document.getElementById("time-slider");
@@ -260,6 +267,12 @@ def check_pause_and_play(browser, wall):
     if not after["time_s"] > before["time_s"] >= 1234:
         raise Failure(f"playing, yet the time went from {before['time_s']} to {after['time_s']}")
     print(f"playing: time_s {before['time_s']} at frame {before['frame']} -> {after['time_s']} at frame {after['frame']}")
+    # The speed field, typed into as a hand would: the wall's speed, then back to 1.
+    for speed in (4, 1):
+        browser.evaluate(f"awTest.type('speed', {speed})")
+        answer = answer_after(browser, f"speed {speed}").split(" → ", 1)[1]
+        poll(f"/status speed {speed}", lambda: wall.status()["speed"] == speed)
+        print(f"speed {speed} -> {answer}")
 
 
 def check_preset_and_preview(browser, wall, preset):
@@ -356,6 +369,23 @@ def check_narrow_screen(browser, work_dir):
     print(f"phone: the page fits {fits} px, every control within it")
 
 
+def check_gamepad(browser, wall):
+    """The page's gamepad polling, fed by a stand-in for navigator.getGamepads (a headless browser has
+    no pad, and DevTools cannot plug one in): the left stick pushed forward moves the camera forward,
+    released it stops."""
+    before = wall.status()
+    browser.evaluate("(() => { window.awPad = { connected: true, axes: [0, -1, 0, 0] };"
+                     " navigator.getGamepads = () => [window.awPad]; return true; })()")
+    moved = poll("/status moved by the gamepad's left stick",
+                 lambda: (lambda s: s if great_circle_km(before, s) > 0.5 else None)(wall.status()))
+    browser.evaluate("(() => { window.awPad.axes = [0, 0, 0, 0]; return true; })()")
+    bearing = initial_bearing_deg(before, moved)
+    print(f"gamepad: moved {great_circle_km(before, moved):.3f} km toward {bearing:.3f} deg (heading {before['heading_deg']:.3f})")
+    if abs((bearing - before["heading_deg"] + 180) % 360 - 180) > 0.05:
+        raise Failure(f"the stick moved the camera toward {bearing} deg, not along the heading {before['heading_deg']}")
+    answer_after(browser, "goto ")  # its last move answered: none in flight
+
+
 def check_orbit(browser, wall):
     """The orbit button with the pivot's latitude and longitude left empty: the sky 110 km above the
     camera, so the camera turns to look straight up at it; orbit off ends it."""
@@ -443,6 +473,7 @@ def main():
         check_pause_and_play(browser, wall)
         check_preset_and_preview(browser, wall, preset)
         check_steering(browser, wall)
+        check_gamepad(browser, wall)
         check_orbit(browser, wall)
         check_recording(browser, wall, work_dir)
         check_silent_rank(browser, wall, int(rank1_pid))
