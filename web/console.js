@@ -59,12 +59,11 @@ function showStatus(s) {
 
 async function pollStatus() {
   try {
-    const askedAt = performance.now();
     const response = await request("/status");
     if (!response.ok) throw new Error((await response.text()).trim());
     const s = await response.json();
     showStatus(s);
-    if (askedAt > steeredAt) camera = s; // a /status asked before a steer's answer is older than it
+    camera = s;
     lastAnswerAt = Date.now();
   } catch (e) {
     // the alarm below says it once the silence lasts
@@ -214,10 +213,9 @@ $("replay").onclick = async () => {
 const PLANET_RADIUS_KM = 6371; // the moves' great circles; the wall keeps its own sphere for the altitude
 const LOOK_STEP_DEG = 5;
 const DRAG_DEG_PER_PX = 0.2;
-let camera = null;   // the last /status (lat_deg, lon_deg, alt_km, heading_deg, pitch_deg), or a steer's answer
+let camera = null;   // the last /status (lat_deg, lon_deg, alt_km, heading_deg, pitch_deg)
 let steering = false; // one steering command at a time: a held key or stick never floods the wall
 let nextSteer = null;  // the latest asked for meanwhile (camera => line), sent when the one in flight ends
-let steeredAt = -1;    // performance.now() when the last steer's answer updated the camera
 
 const radians = (deg) => deg * Math.PI / 180;
 const degrees = (rad) => rad * 180 / Math.PI;
@@ -241,20 +239,25 @@ function lookLine(c, turnDeg, tiltDeg) {
   return `look ${(((c.heading_deg + turnDeg) % 360) + 360) % 360} ${pitch}`;
 }
 
-// Sends the steering line `make(camera)`; the answer's values (e.g. "ok look heading_deg=.. pitch_deg=..")
-// update the camera at once, so that the next press starts from it before /status shows it. While one
-// is in flight, only the latest asked for waits (a press is never lost, a held key never piles up).
+// Sends the steering line `make(camera)` for the camera as the wall has it now: /status asked first,
+// which also reports what a command has just set before a frame shows it, so a move right after a
+// turn or a preset starts from them. While one is in flight, only the latest asked for waits (a
+// press is never lost, a held key never piles up).
 async function steer(make) {
-  if (!camera) return;
   if (steering) {
     nextSteer = make;
     return;
   }
   steering = true;
-  const answer = await command(make(camera));
-  for (const [, key, value] of answer.matchAll(/(\w+)=(-?[\d.e+-]+)/g))
-    if (key in camera) camera = { ...camera, [key]: Number(value) };
-  steeredAt = performance.now();
+  try {
+    const response = await request("/status");
+    if (response.ok) {
+      camera = await response.json();
+      await command(make(camera));
+    }
+  } catch (e) {
+    // the alarm says so when the wall stops answering
+  }
   steering = false;
   const next = nextSteer;
   nextSteer = null;
@@ -306,9 +309,8 @@ setInterval(() => {
 // circles it as the protocol's `orbit` does; W/S then move toward and away from it. Steering with
 // goto or look ends it, as `orbit off` does.
 $("orbit").onclick = () => {
-  if (!camera) return;
   const pivot = (id, own) => ($(id).value === "" ? own : Number($(id).value));
-  command(`orbit ${pivot("pivot-lat", camera.lat_deg)} ${pivot("pivot-lon", camera.lon_deg)} ${pivot("pivot-alt", 110)}`);
+  steer((c) => `orbit ${pivot("pivot-lat", c.lat_deg)} ${pivot("pivot-lon", c.lon_deg)} ${pivot("pivot-alt", 110)}`);
 };
 $("orbit-off").onclick = () => command("orbit off");
 
