@@ -133,6 +133,8 @@ if [ $mounted = 1 ]; then
         { stop_wall; fail "movie start on a full disk answered '$answer'"; }
     frames 40 # 8 KiB hold about 30 keys
     check grep -q "^error record stop: .*long.toml" <(post "record stop")
+    # The master's stderr reaches the log through mpirun's forwarding, which can lag the answer.
+    for _ in $(seq 100); do grep -q 'record: .*long.toml' "$WORK/log" && break; sleep 0.1; done
     check grep -q 'record: .*long.toml' "$WORK/log"
 fi
 
