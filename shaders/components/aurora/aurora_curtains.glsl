@@ -16,6 +16,7 @@ uniform int uCurtainCount;
 uniform sampler2D uCurtainPolylines; // RGBA32F, row c: xyz unit vector, w arclength km
 uniform vec4 uCurtainState[MAX_CURTAINS];  // peak energy flux erg cm^-2 s^-1, energy keV (the emission rows' key), point count,
                                            // reach km: beyond it from its centre line and its ends the curtain does not emit
+uniform float uCurtainLengthKm[MAX_CURTAINS]; // the polyline's arclength, its last point's (a uniform: no fetch)
 uniform float uCurtainReachKm;       // the largest reach: beyond it from every centre line nothing emits
 
 uniform sampler2D uFootprintMap;     // RGBA32F, nearest: curtain id, point index, distance km, other curtain
@@ -110,11 +111,13 @@ vec2 intersectLinearBand(vec2 range, float xm, float rate, float tm, float lo, f
     return vec2(max(range.x, min(ta, tb)), min(range.y, max(ta, tb)));
 }
 
-// What the footprint map says of the step [t0, t1] of the ray o + t d (km): from the step's midpoint, a
-// distance within which no curtain emits, and the curtains that can reach the step: (curtain, polyline
-// point) of the nearest curtain and, where curtains overlap, of the nearest point of another (the map's
-// fourth channel, src/components/aurora/physics/footprint_map.h); curtain −1 where there is none, or
-// where that curtain has no flux or lies farther than its reach + step/2 from the midpoint.
+// What the footprint map says of the step [t0, t1] of the ray o + t d (km): skipKm, how much farther along
+// the ray the following steps' midpoints must lie before a curtain can reach them (the map's lower bound
+// from this midpoint less the largest reach and half a step: the footprint moves at most 1 km a ray km),
+// and the curtains that can reach the step: (curtain, polyline point) of the nearest curtain and, where
+// curtains overlap, of the nearest point of another (the map's fourth channel,
+// src/components/aurora/physics/footprint_map.h); curtain −1 where there is none, or where that curtain
+// has no flux or lies farther than its reach + step/2 from the midpoint.
 struct StepCandidates {
     float skipKm;
     vec4 candidates;
@@ -194,8 +197,7 @@ vec3 integrateCurtains(vec3 o, vec3 d, float t0, float t1, vec4 candidates)
         CurtainCoordinates cc = curtainCoordinates(c, int(candidate.y), n);
         if (cc.distance - 0.5 * len > reach)
             continue;
-        float lengthKm = texelFetch(uCurtainPolylines, ivec2(int(uCurtainState[c].z) - 1, c), 0).w;
-        COUNT_WORK(w, 1);
+        float lengthKm = uCurtainLengthKm[c];
         // u = R asin(n·normal), so du/dt = R (normal·dn/dt) / √(1 − (n·normal)²); s runs along
         // cross(normal, n), the direction from the segment's start to its end.
         float across = dot(n, cc.normal);
@@ -289,7 +291,8 @@ vec3 auroraSegment(vec3 o, vec3 d, vec2 seg)
     while (k < steps) {
         float t0 = 0.0, t1 = 0.0;
         StepCandidates step;
-        for (; k < steps; k += uSkipEmptySpace != 0 ? int(clamp(floor(step.skipKm / uAuroraStepKm), 1.0, 4.0e6)) : 1) {
+        // A step j steps on can emit only where j·step ≥ skipKm: the next one to read is ceil(skipKm / step) on.
+        for (; k < steps; k += uSkipEmptySpace != 0 ? int(clamp(ceil(step.skipKm / uAuroraStepKm), 1.0, 4.0e6)) : 1) {
             t0 = seg.x + float(k) * uAuroraStepKm;
             t1 = min(t0 + uAuroraStepKm, seg.y);
             step = stepCandidates(o, d, t0, t1);

@@ -88,6 +88,9 @@ void CurtainField::upload(const CurtainBuild& build)
     controlPoints_ = build.controlPoints;
     pointCounts_ = build.pointCounts;
     pointTotal_ = build.pointTotal;
+    lengthsKm_.clear();
+    for (const physics::CurtainPolyline& polyline : build.polylines)
+        lengthsKm_.push_back(static_cast<float>(polyline.arclengthKm.back()));
     sized(polylines_, build.polylineWidth, build.polylineRows).upload(build.polylineTexels);
     // The GPU's map has its own frame (its margin holds the float allowance); the CPU's is uploaded
     // as built (a reference: its texels are 4 MiB at 512²).
@@ -114,6 +117,7 @@ void CurtainField::bind(gl::Program& program) const
     if (!state_.empty()) {
         program.set("uCurtainState", state_);
         program.set("uCurtainDetail", detailUniform_);
+        program.set("uCurtainLengthKm", lengthsKm_);
     }
     program.set("uCurtainReachKm", reachKm_);
     program.set("uFootprintCentre", centre_);

@@ -67,7 +67,8 @@ private:
     double angularRadiusDeg_ = 0.0;
     std::unique_ptr<gl::Texture> polylines_;
     std::unique_ptr<gl::Texture> footprint_;
-    std::vector<glm::vec4> state_;  // per curtain: peak flux, energy keV, point count, 0
+    std::vector<glm::vec4> state_;  // per curtain: peak flux, energy keV, point count, reach km
+    std::vector<float> lengthsKm_;  // per curtain: its polyline's arclength (km), as the last point's texel holds it
     std::vector<glm::vec4> detailUniform_; // per curtain: offset km, phase, lateral scale, 0
     float reachKm_ = 0.0f;
     glm::vec3 centre_{0.0f}, east_{0.0f};
