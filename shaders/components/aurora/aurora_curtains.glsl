@@ -16,7 +16,9 @@ uniform int uCurtainCount;
 uniform sampler2D uCurtainPolylines; // RGBA32F, row c: xyz unit vector, w arclength km
 uniform vec4 uCurtainState[MAX_CURTAINS];  // peak energy flux erg cm^-2 s^-1, energy keV (the emission rows' key), point count,
                                            // reach km: beyond it from its centre line and its ends the curtain does not emit
-uniform float uCurtainLengthKm[MAX_CURTAINS]; // the polyline's arclength, its last point's (a uniform: no fetch)
+uniform float uCurtainLengthKm[MAX_CURTAINS];    // the polyline's arclength, its last point's (a uniform: no fetch)
+uniform float uCurtainCornerSlope[MAX_CURTAINS]; // tan(θ/2) of its polyline's largest turn θ between segments, with
+                                                 // room for the float segment normals' tilt (CurtainField)
 uniform float uCurtainReachKm;       // the largest reach: beyond it from every centre line nothing emits
 
 uniform sampler2D uFootprintMap;     // RGBA32F, nearest: curtain id, point index, distance km, other curtain
@@ -61,9 +63,11 @@ CurtainCoordinates curtainCoordinates(int c, int i, vec3 n)
         if (next == j || step * direction < 0)
             break;
         direction = step;
+        // A jump to the next or previous segment keeps the point it shares with this one.
+        vec4 start = next == j + 1 ? b : polylinePoint(c, next);
+        b = next == j - 1 ? a : polylinePoint(c, next + 1);
+        a = start;
         j = next;
-        a = polylinePoint(c, j);
-        b = polylinePoint(c, j + 1);
         normal = segmentNormal(a.xyz, b.xyz);
         p = projectOnSegmentWithNormal(a.xyz, normal, b.w - a.w, n, uPlanetRadiusKm);
     }
@@ -72,14 +76,16 @@ CurtainCoordinates curtainCoordinates(int c, int i, vec3 n)
     best.u = p.z;
     best.s = a.w + p.x;
     best.normal = normal;
-    // The segments before (point j − 1 to a) and after (b to point j + 2), where they exist.
-    vec4 before = polylinePoint(c, max(j - 1, 0));
-    vec4 after = polylinePoint(c, min(j + 2, last + 1));
+    // The segments before (point j − 1 to a) and after (b to point j + 2), where they exist. A neighbour
+    // turning by θ at the shared end can be nearer only where n projects within |u| tan(θ/2) of that end (on
+    // the corner's inner side; on its outer side the shared end is the neighbour's nearest point, no nearer
+    // than |u|), so it is read only there; 50 m more covers the float distances' ties.
+    float endZoneKm = abs(p.z) * uCurtainCornerSlope[c] + 0.05;
     for (int side = 0; side < 2; ++side) {
-        if (side == 0 ? j == 0 : j == last)
+        if (side == 0 ? j == 0 || p.x > endZoneKm : j == last || p.x < p.y - endZoneKm)
             continue;
-        vec4 start = side == 0 ? before : b;
-        vec4 end = side == 0 ? a : after;
+        vec4 start = side == 0 ? polylinePoint(c, j - 1) : b;
+        vec4 end = side == 0 ? a : polylinePoint(c, j + 2);
         vec3 sideNormal = segmentNormal(start.xyz, end.xyz);
         vec4 q = projectOnSegmentWithNormal(start.xyz, sideNormal, end.w - start.w, n, uPlanetRadiusKm);
         float distance = length(vec2(q.z, q.w));

@@ -69,6 +69,7 @@ private:
     std::unique_ptr<gl::Texture> footprint_;
     std::vector<glm::vec4> state_;  // per curtain: peak flux, energy keV, point count, reach km
     std::vector<float> lengthsKm_;  // per curtain: its polyline's arclength (km), as the last point's texel holds it
+    std::vector<float> cornerSlopes_; // per curtain: tan(θ/2) of its polyline's largest turn θ, with room for float
     std::vector<glm::vec4> detailUniform_; // per curtain: offset km, phase, lateral scale, 0
     float reachKm_ = 0.0f;
     glm::vec3 centre_{0.0f}, east_{0.0f};
