@@ -24,13 +24,42 @@ function headers() {
   return token ? { Authorization: "Bearer " + token } : {};
 }
 
+// A request with the secret; a 401 for the secret in use shows the prompt (one answered late for a
+// secret since replaced does not).
 async function request(path, options = {}) {
+  const used = token;
   const response = await fetch(path, { ...options, headers: headers(), cache: "no-store" });
   if (response.status === 401) {
-    $("login").hidden = false;
+    if (used === token) askForSecret();
     throw new Error("the wall asks for its secret");
   }
   return response;
+}
+
+function askForSecret() {
+  $("login-note").textContent = token
+    ? "The wall refused this secret: enter the right one (its --control-token-file)."
+    : "The wall asks for its secret (its --control-token-file).";
+  if ($("login").hidden) {
+    $("login").hidden = false;
+    $("token").focus();
+  }
+}
+
+// Fetches a file the wall wrote (with the secret, hence not a plain link) and saves it as `name`.
+async function download(path, name) {
+  try {
+    const response = await request(path);
+    if (!response.ok) throw new Error((await response.text()).trim());
+    const a = document.createElement("a");
+    a.href = URL.createObjectURL(await response.blob());
+    a.download = name;
+    a.click();
+    setTimeout(() => URL.revokeObjectURL(a.href), 10000);
+    $("answer").textContent = "downloaded " + name;
+  } catch (err) {
+    $("answer").textContent = "download " + name + " → " + err.message;
+  }
 }
 
 async function command(line) {
@@ -123,7 +152,7 @@ async function pollRanks() {
 
 function checkAlive() {
   const silentS = (Date.now() - lastAnswerAt) / 1000;
-  $("alarm").hidden = silentS * 1000 < STALE_MS;
+  $("alarm").hidden = silentS * 1000 < STALE_MS || !$("login").hidden; // refused, not silent
   $("alarm").textContent = `The wall has not answered for ${silentS.toFixed(0)} s: ` +
     "it may have quit, crashed or be busy; the picture above is the last one.";
 }
@@ -148,7 +177,12 @@ $("speed").onchange = () => command("speed " + $("speed").value);
 $("time-set").onclick = () => command("time " + $("time").value);
 $("time").onkeydown = (e) => { if (e.key === "Enter") command("time " + $("time").value); };
 $("time-slider").onchange = () => command("time " + $("time-slider").value);
-$("screenshot").onclick = () => command(`screenshot console-${stamp()}.png`);
+// The screenshot is written into the wall's output folder, then downloaded (GET /screenshots/NAME).
+$("screenshot").onclick = async () => {
+  const name = `console-${stamp()}.png`;
+  if ((await command("screenshot " + name)).startsWith("ok screenshot "))
+    await download("/screenshots/" + encodeURIComponent(name), name);
+};
 // Recording: `record start` / `record stop` of a camera path and `movie start` / `movie stop` into the
 // wall's output folder, named by the time pressed. The stopped path can be downloaded (GET
 // /recordings/NAME, with the secret, hence fetched) and replayed: `preset FILE` at its first time.
@@ -186,20 +220,9 @@ $("movie").onclick = async () => {
   showRecording();
 };
 
-$("download").onclick = async (e) => {
+$("download").onclick = (e) => {
   e.preventDefault();
-  try {
-    const response = await request("/recordings/" + encodeURIComponent(recorded.name));
-    if (!response.ok) throw new Error((await response.text()).trim());
-    const a = document.createElement("a");
-    a.href = URL.createObjectURL(await response.blob());
-    a.download = recorded.name;
-    a.click();
-    setTimeout(() => URL.revokeObjectURL(a.href), 10000);
-    $("answer").textContent = "downloaded " + recorded.name;
-  } catch (err) {
-    $("answer").textContent = "download " + recorded.name + " → " + err.message;
-  }
+  download("/recordings/" + encodeURIComponent(recorded.name), recorded.name);
 };
 
 $("replay").onclick = async () => {
@@ -314,12 +337,23 @@ $("orbit").onclick = () => {
 };
 $("orbit-off").onclick = () => command("orbit off");
 
-$("token-set").onclick = () => {
+// The secret typed in is tried on /status: kept if the wall takes it, else the prompt says so.
+async function useSecret() {
   token = $("token").value;
+  try {
+    const response = await request("/status");
+    if (!response.ok) throw new Error((await response.text()).trim());
+  } catch (e) {
+    return; // refused: the prompt stays, saying why; or the wall did not answer: the alarm says so
+  }
   sessionStorage.setItem("token", token);
   $("login").hidden = true;
+  $("token").value = "";
+  $("answer").textContent = "the wall accepted the secret";
   loadPresets();
-};
+}
+$("token-set").onclick = useSecret;
+$("token").onkeydown = (e) => { if (e.key === "Enter") useSecret(); };
 
 // Polls `poll` again POLL_MS after each answer: one request at a time each, so a slow wall is not
 // flooded; each on its own, so the ranks' heartbeats still show while the wall's frame loop waits

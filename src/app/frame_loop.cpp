@@ -19,6 +19,7 @@
 #include "wall/tile_rays.h"
 
 #include <algorithm>
+#include <filesystem>
 #include <map>
 #include <cstdio>
 #include <optional>
@@ -70,6 +71,10 @@ void writeScreenshots(WallSession& session, control::CommandChannel& channel, co
                 if (gatherStatus != 0)
                     throw std::runtime_error("the wall could not be read back");
                 io::writePng(shot.path, canvas, session.toneMap); // atomic: a temporary name, then renamed
+                if (session.web) // GET /screenshots/NAME serves it, NAME as asked
+                    session.web->addScreenshot(
+                        std::filesystem::path(shot.path).lexically_relative(session.options.outDir).generic_string(),
+                        shot.path);
             } catch (const std::exception& e) {
                 it->second = "error screenshot " + shot.path + ": " + e.what();
             }

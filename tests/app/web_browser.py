@@ -1,19 +1,24 @@
 #!/usr/bin/env python3
 """Presses the browser console's buttons in headless Chromium and checks the wall obeys.
 
-Usage: web_browser.py URL SECRET WORK_DIR PRESET RANK1_PID
+Usage: web_browser.py URL SECRET WORK_DIR PRESET RANK1_PID WALL_SIZE
 
 URL is the console of a running wall (http://127.0.0.1:PORT) at the default --rank-timeout (10 s:
-a heartbeat every second), SECRET its token, PRESET a preset whose camera differs from the wall's,
-RANK1_PID the process of its rank 1. Chromium is driven through the DevTools protocol over
---remote-debugging-pipe (JSON messages ending in a NUL byte: it reads fd 3, writes fd 4); the page
-is opened with #token=SECRET and its real controls are used through Runtime.evaluate: the
+a heartbeat every second), SECRET its token, WORK_DIR its --out, PRESET a preset whose camera
+differs from the wall's, RANK1_PID the process of its rank 1, WALL_SIZE its whole canvas (WxH).
+Chromium is driven through the DevTools protocol over --remote-debugging-pipe (JSON messages ending
+in a NUL byte: it reads fd 3, writes fd 4). First the secret's prompt: the page opened without
+#token asks for it, a wrong one typed in is refused with a line saying so, the right one (Enter)
+makes the console work (status, presets, pause and play); a wrong #token is refused too. Then the
+page is opened with #token=SECRET and its real controls are used through Runtime.evaluate: the
 pause/play button, the time slider (its value set, then the input and change events the page
 listens to), a preset's button. After each, GET /status must show what was asked: paused with
 the time standing still, the slider's time, playing with the time running, the camera the preset's
-answer reports. The recording buttons: a path recorded and stopped, downloaded through the page's
-fetch (the file's bytes, application/toml), a movie recorded and stopped (its PNGs in WORK_DIR, the
-wall's --out), the path replayed. The preview on the page must change when the camera moves. While rank 1 is
+answer reports. The screenshot button: the browser downloads (Browser.setDownloadBehavior into
+WORK_DIR/downloads) the PNG the wall wrote, WALL_SIZE. The recording buttons: a path recorded and
+stopped, downloaded (the recorded file with its base scene made absolute) and the downloaded copy
+replayed with `preset COPY`, a movie recorded and stopped (its PNGs in WORK_DIR), the path
+replayed. The preview on the page must change when the camera moves. While rank 1 is
 stopped (SIGSTOP, for at most 6 s), GET /ranks and the page must show its heartbeat's age growing
 past two periods and draw the rank red; once it runs again (SIGCONT), no longer. Writes
 WORK_DIR/console.png (Page.captureScreenshot) and WORK_DIR/chromium.log. Standard library only.
@@ -117,10 +122,37 @@ class Chromium:
 
     def open(self, url):
         target = self.call("Target.createTarget", {"url": "about:blank"}, page=False)["targetId"]
+        self.target = target
         self.session = self.call("Target.attachToTarget", {"targetId": target, "flatten": True}, page=False)["sessionId"]
         self.call("Runtime.enable")
         self.call("Page.enable")
         self.call("Page.navigate", {"url": url})
+
+    def close_page(self):
+        """Closes the page opened last (its polling stops)."""
+        self.call("Target.closeTarget", {"targetId": self.target}, page=False)
+        self.session = None
+
+    def allow_downloads(self, folder):
+        """Downloads are saved into folder under their names, and reported as Browser.download* events."""
+        self.call("Browser.setDownloadBehavior", {"behavior": "allow", "downloadPath": folder, "eventsEnabled": True},
+                  page=False)
+
+    def downloaded(self, folder, name):
+        """The bytes of the download named `name`, once Chromium reports it completed (Failure if it
+        was cancelled or never came)."""
+        def probe():
+            self.evaluate("true")  # events arrive with answers
+            guids = [e["params"]["guid"] for e in self.events if e.get("method") == "Browser.downloadWillBegin"
+                     and e["params"].get("suggestedFilename") == name]
+            states = [e["params"]["state"] for e in self.events if e.get("method") == "Browser.downloadProgress"
+                      and e["params"]["guid"] in guids and e["params"]["state"] != "inProgress"]
+            if "canceled" in states:
+                raise Failure(f"the download of {name} was cancelled")
+            return "completed" in states and os.path.isfile(os.path.join(folder, name))
+        poll(f"the browser's download of {name} into {folder}", probe)
+        with open(os.path.join(folder, name), "rb") as f:
+            return f.read()
 
     def evaluate(self, expression):
         """The value of a JavaScript expression in the page (promises awaited); Failure if it throws."""
@@ -168,6 +200,12 @@ class Wall:
         request = urllib.request.Request(self.url + "/ranks", headers={"Authorization": "Bearer " + self.secret})
         with urllib.request.urlopen(request, timeout=15) as r:
             return json.load(r)
+
+    def command(self, line):
+        request = urllib.request.Request(self.url + "/command", data=line.encode(), method="POST",
+                                         headers={"Authorization": "Bearer " + self.secret})
+        with urllib.request.urlopen(request, timeout=15) as r:
+            return r.read().decode().strip()
 
     def frames_later(self, count):
         """The status once the wall has drawn `count` more frames."""
@@ -400,7 +438,100 @@ def check_orbit(browser, wall):
         raise Failure("orbit off was not answered ok")
 
 
-def check_recording(browser, wall, work_dir):
+def load_page(browser, url):
+    browser.open(url)
+    poll("the page's script loaded", lambda: browser.evaluate("typeof command === 'function' && document.readyState === 'complete'"))
+    browser.evaluate(PAGE_HELPERS)
+
+
+def check_secret_prompt(browser, wall, url, secret):
+    """Opened without the secret, the page asks for it; a wrong one typed in is refused with a line
+    saying so, the right one (typed, then Enter) makes the console work; a wrong one in the address
+    is refused the same way."""
+    def type_secret(text):
+        browser.evaluate("(() => { const f = document.getElementById('token'); f.value = ''; f.focus(); return true; })()")
+        browser.call("Input.insertText", {"text": text})
+
+    def note(words):
+        return lambda: (lambda n: n if awshown() and words in n else None)(browser.evaluate("awTest.text('login-note')"))
+    awshown = lambda: browser.evaluate("awTest.shown('login')")
+
+    load_page(browser, f"{url}/")
+    print("no secret:", poll("the page asking for the secret", note("asks for its secret")))
+    type_secret("wrong-" + secret)
+    browser.evaluate("awTest.click('token-set')")
+    print("a wrong secret:", poll("the page refusing a wrong secret", note("refused")))
+    if browser.evaluate("awTest.text('status')").startswith("frame "):
+        raise Failure("the page showed the wall's status without the secret")
+    type_secret(secret)
+    for kind in ("keyDown", "keyUp"):
+        browser.call("Input.dispatchKeyEvent", {"type": kind, "key": "Enter", "code": "Enter", "windowsVirtualKeyCode": 13})
+    poll("the prompt gone after the right secret", lambda: not awshown())
+    poll("the page accepting the secret", lambda: browser.evaluate("awTest.text('answer')") == "the wall accepted the secret")
+    poll("the status line filled after the secret", lambda: browser.evaluate("awTest.text('status')").startswith("frame "))
+    poll("the preset buttons after the secret", lambda: browser.evaluate("document.querySelectorAll('#presets button').length"))
+    # A command from the page: pause, then play again.
+    for press, paused in (("pause", True), ("play", False)):
+        poll(f"the page's {press} button", lambda: browser.evaluate("awTest.text('play')") == press)
+        browser.evaluate("awTest.click('play')")
+        answer_after(browser, press)
+        poll(f"/status paused={paused} after the page's {press}", lambda: wall.status()["paused"] == paused)
+    if awshown():
+        raise Failure("the page asks for the secret again after accepting it")
+    print("the right secret: accepted, status, presets, pause and play from the page")
+    browser.close_page()
+    load_page(browser, f"{url}/#token=wrong-{secret}")
+    print("a wrong secret in the address:", poll("the page refusing the address's secret", note("refused")))
+    browser.close_page()
+
+
+def png_size(data):
+    """(width, height) of PNG bytes, from the IHDR chunk; Failure if they are not a PNG."""
+    if data[:8] != b"\x89PNG\r\n\x1a\n" or data[12:16] != b"IHDR":
+        raise Failure(f"not a PNG: {data[:16]!r}")
+    return int.from_bytes(data[16:20], "big"), int.from_bytes(data[20:24], "big")
+
+
+def check_screenshot(browser, work_dir, downloads, wall_size):
+    """The screenshot button: the wall writes the file into its output folder and the browser
+    downloads the same bytes, a PNG of the whole wall."""
+    browser.evaluate("awTest.click('screenshot')")
+    # The command's answer, then (at once) the download's: "downloaded NAME" only if both went well.
+    def done():
+        line = browser.evaluate("awTest.text('answer')")
+        if line.startswith("screenshot ") and " → error" in line or line.startswith("download "):
+            raise Failure(f"screenshot: {line}")
+        return line if line.startswith("downloaded console-") else None
+    answer = poll("the page's screenshot downloaded", done)
+    name = answer.split()[1]
+    data = browser.downloaded(downloads, name)
+    with open(os.path.join(work_dir, name), "rb") as f:
+        if f.read() != data:
+            raise Failure(f"the downloaded {name} differs from the wall's file")
+    size = "%dx%d" % png_size(data)
+    if size != wall_size:
+        raise Failure(f"the downloaded screenshot is {size}, the wall {wall_size}")
+    print(f"screenshot: the page: {answer}; {len(data)} bytes, a {size} PNG, the file the wall wrote")
+
+
+def check_downloaded_recording(text, recorded, work_dir, name):
+    """The downloaded path is the recorded file but for its base scene, made absolute: the same file
+    as the recorded one names relative to its folder."""
+    def base(lines):
+        found = [l for l in lines if l.startswith("base = ")]
+        if len(found) != 1:
+            raise Failure(f"{name}: {len(found)} base lines")
+        return json.loads(found[0][len("base = "):])
+    got, had = text.splitlines(), recorded.splitlines()
+    if [l for l in got if not l.startswith("base = ")] != [l for l in had if not l.startswith("base = ")]:
+        raise Failure(f"the downloaded {name} differs from the recorded file beyond its base scene")
+    absolute, relative = base(got), base(had)
+    if not os.path.isabs(absolute) or not os.path.samefile(absolute, os.path.join(work_dir, os.path.dirname(name), relative)):
+        raise Failure(f"the downloaded {name} names the base {absolute!r}, the recorded one {relative!r}")
+    return absolute
+
+
+def check_recording(browser, wall, work_dir, downloads):
     """Record path, stop, download (the file's bytes), record movie, stop (its PNGs), replay path."""
     browser.evaluate("awTest.click('record')")
     started = answer_after(browser, "record start")
@@ -415,11 +546,19 @@ def check_recording(browser, wall, work_dir):
     status, kind, text = browser.evaluate(
         "(async () => { const r = await request('/recordings/' + encodeURIComponent(recorded.name));"
         " return [r.status, r.headers.get('content-type'), await r.text()]; })()")
+    if (status, kind) != (200, "application/toml"):
+        raise Failure(f"GET /recordings/{name}: {status} {kind}")
     with open(os.path.join(work_dir, name)) as f:
-        if (status, kind, text) != (200, "application/toml", f.read()):
-            raise Failure(f"GET /recordings/{name}: {status} {kind}, {len(text)} characters unlike the file's")
+        base = check_downloaded_recording(text, f.read(), work_dir, name)
     browser.evaluate("awTest.click('download')")
+    copy = os.path.join(downloads, name)
+    if browser.downloaded(downloads, name).decode() != text:
+        raise Failure(f"the browser's download of {name} differs from GET /recordings/{name}")
     poll("the page's download", lambda: browser.evaluate("awTest.text('answer')") == "downloaded " + name)
+    replayed = wall.command("preset " + copy)  # the downloaded copy, outside the output folder
+    if not replayed.startswith("ok preset " + copy):
+        raise Failure(f"preset {copy} (the downloaded path) answered {replayed}")
+    print(f"downloaded {copy} (base {base}); preset it -> {replayed}")
     browser.evaluate("awTest.click('movie')")
     if "→ ok movie start" not in answer_after(browser, "movie start"):
         raise Failure("record movie: " + browser.evaluate("awTest.text('answer')"))
@@ -458,14 +597,16 @@ def check_silent_rank(browser, wall, pid):
 
 
 def main():
-    url, secret, work_dir, preset, rank1_pid = sys.argv[1:6]
+    url, secret, work_dir, preset, rank1_pid, wall_size = sys.argv[1:7]
     wall = Wall(url, secret)
+    downloads = os.path.join(work_dir, "downloads")  # one folder deeper: a relative base would miss from there
+    os.makedirs(downloads, exist_ok=True)
     browser = Chromium(work_dir)
     try:
         browser.call("Browser.getVersion", page=False)
-        browser.open(f"{url}/#token={secret}")
-        poll("the page's script loaded", lambda: browser.evaluate("typeof command === 'function' && document.readyState === 'complete'"))
-        browser.evaluate(PAGE_HELPERS)
+        browser.allow_downloads(downloads)
+        check_secret_prompt(browser, wall, url, secret)
+        load_page(browser, f"{url}/#token={secret}")
         poll("the status line filled", lambda: browser.evaluate("awTest.text('status')").startswith("frame "))
         poll("the preset buttons", lambda: browser.evaluate("document.querySelectorAll('#presets button').length"))
         if browser.evaluate("awTest.shown('login')"):
@@ -475,7 +616,8 @@ def main():
         check_steering(browser, wall)
         check_gamepad(browser, wall)
         check_orbit(browser, wall)
-        check_recording(browser, wall, work_dir)
+        check_screenshot(browser, work_dir, downloads, wall_size)
+        check_recording(browser, wall, work_dir, downloads)
         check_silent_rank(browser, wall, int(rank1_pid))
         shot = os.path.join(work_dir, "console.png")
         browser.screenshot(shot)

@@ -1,9 +1,10 @@
 #!/bin/bash
 # The browser console's buttons pressed in headless Chromium (web_browser.py, over the DevTools
-# protocol): on a 2-rank headless wall with --web-port 0 --frames 0 and a token file, pause, the time
-# slider, play and a preset change what GET /status reports, the preview on the page changes with the
-# camera, rank 1 stopped for a few seconds is drawn red with its heartbeat's age, and a screenshot of
-# the page is taken (WEB_BROWSER_SCREENSHOT=FILE keeps a copy); then POST
+# protocol): on a 2-rank headless wall with --web-port 0 --frames 0 and a token file, the page asks
+# for the secret and refuses a wrong one, pause, the time slider, play and a preset change what GET
+# /status reports, the preview on the page changes with the camera, the screenshot and the recorded
+# path are downloaded, rank 1 stopped for a few seconds is drawn red with its heartbeat's age, and a
+# screenshot of the page is taken (WEB_BROWSER_SCREENSHOT=FILE keeps a copy); then POST
 # quit ends the job with 0.
 source "$(dirname "$0")/lib.sh"
 [ -x /usr/bin/chromium ] || { echo "SKIP: /usr/bin/chromium is not installed"; exit 77; }
@@ -20,7 +21,8 @@ done
 [ -n "$rank1" ] || { stop_wall; fail "rank 1's process not found"; }
 
 # The scene's camera is at 65 N 15 E, 0.5 km; the preset ground-65n's at 65 N 20 E, 0.3 km.
-python3 "$HERE/web_browser.py" "$url" "$secret" "$WORK" ground-65n "$rank1" || {
+# The tiny wall's canvas: 2x2 screens of 32x18 px without bezels.
+python3 "$HERE/web_browser.py" "$url" "$secret" "$WORK" ground-65n "$rank1" 64x36 || {
     stop_wall; tail -20 "$WORK/chromium.log" >&2; fail "the page's buttons in Chromium"; }
 [ -n "${WEB_BROWSER_SCREENSHOT:-}" ] && cp "$WORK/console.png" "$WEB_BROWSER_SCREENSHOT"
 

@@ -1,7 +1,8 @@
 #!/bin/bash
 # The browser console: a 2-rank headless wall with --web-port 0 --frames 0 and a token file serves
 # the page, a PNG preview that changes while the wall plays, /status as JSON and POST /command with
-# the control port's commands (pause, time, preset, screenshot); a malformed request, a huge body,
+# the control port's commands (pause, time, preset, screenshot, the screenshot then served at GET
+# /screenshots/NAME); a malformed request, a huge body,
 # a path leaving the page's folder, a missing or wrong secret, 100 requests at once and a client that
 # never reads are refused or served and the wall keeps drawing; POST quit ends the job with 0.
 source "$(dirname "$0")/lib.sh"
@@ -84,6 +85,12 @@ check grep -q "^error unknown command 'xyzzy'" <(post "xyzzy 1")
 check grep -q "^error screenshot \.\./x\.png: '\.\.' would leave the output folder" <(post "screenshot ../x.png")
 check grep -q '^ok screenshot .*/web\.png$' <(post "screenshot web.png")
 check [ -s "$WORK/web.png" ]
+# The screenshot for download: the same bytes, with the secret only; no other file.
+check [ "$(get /screenshots/web.png -D "$WORK/headers")" = 200 ]
+check cmp "$WORK/body" "$WORK/web.png"
+check grep -qi '^content-type: image/png' "$WORK/headers"
+check [ "$(curl -s -o /dev/null -w '%{http_code}' "$url/screenshots/web.png")" = 401 ]
+check [ "$(get /screenshots/other.png)" = 404 ]
 
 # Bad requests: one clear refusal each, and the wall goes on.
 check [ "$(curl -s -o /dev/null -w '%{http_code}' "$url/status")" = 401 ]

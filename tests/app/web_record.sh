@@ -1,8 +1,9 @@
 #!/bin/bash
 # Recording from the console: on a 2-rank headless wall (--web-port, no secret), POST /command
 # `record start flight.toml`, frames pass while the camera is steered, `record stop`; the file is
-# downloaded from GET /recordings/flight.toml (the same bytes, application/toml; other names and
-# paths leaving the folder 404), replayed with `preset OUT/flight.toml` and `time FROM`, and recorded
+# downloaded from GET /recordings/flight.toml (application/toml, the same bytes but for its base scene,
+# made absolute; other names and paths leaving the folder 404) into another folder, that copy
+# replayed with `preset COPY` and `time FROM`, and recorded
 # again: every key's position comes back bit-identical (17 digits), its direction and up within 1e-15. `movie start`/`movie stop`
 # write PNG frames and none after the stop. Bad paths, a second start, a stop with nothing running are
 # refused; on a full disk (a small tmpfs, skipped where it cannot be mounted) the commands answer
@@ -70,20 +71,27 @@ note "$keys keys from $from s to $to s"
 refused "record stop" "record stop: no recording runs"
 [ -z "$(find "$out" -name '*.tmp*')" ] || { stop_wall; fail "a temporary file was left"; }
 
-note "download"
-code=$(curl -s -o "$WORK/download.toml" -w '%{http_code} %{content_type}' "$url/recordings/flight.toml")
+note "download: the file with its base scene made absolute, saved elsewhere (the relative base would miss there)"
+copy="$WORK/downloads/deeper/flight.toml"
+mkdir -p "$(dirname "$copy")"
+code=$(curl -s -o "$copy" -w '%{http_code} %{content_type}' "$url/recordings/flight.toml")
 check [ "$code" = "200 application/toml" ]
-check cmp "$out/flight.toml" "$WORK/download.toml"
+check cmp <(grep -v '^base = ' "$out/flight.toml") <(grep -v '^base = ' "$copy")
+base=$(sed -n 's/^base = "\(.*\)"$/\1/p' "$copy")
+echo "recorded: $(grep '^base = ' "$out/flight.toml"); downloaded: base = \"$base\""
+check [ "${base:0:1}" = / ]
+check [ "$base" -ef "$SCENE" ]
 for path in /recordings/other.toml /recordings/../flight.toml /recordings/..%2fout%2fflight.toml \
-    /recordings/%2e%2e/%2e%2e/etc/passwd /recordings/ /recordings/screenshot.png; do
+    /recordings/%2e%2e/%2e%2e/etc/passwd /recordings/ /recordings/screenshot.png \
+    /screenshots/flight.toml /screenshots/x.png /screenshots/..%2fout%2fflight.toml; do
     code=$(curl -s -o "$WORK/body" -w '%{http_code}' --path-as-is "$url$path")
     echo "GET $path -> $code $(cat "$WORK/body")"
     check [ "$code" = 404 ]
 done
 
-note "replay: preset the recorded file at its first time, recorded again"
+note "replay: preset the downloaded copy at its first time, recorded again"
 check grep -q '^ok paused' <(post pause)
-check grep -q "^ok preset $out/flight.toml " <(post "preset $out/flight.toml")
+check grep -q "^ok preset $copy " <(post "preset $copy")
 check grep -qx "ok time_s=$from" <(post "time $from")
 check grep -qx "ok record start $out/replay.toml" <(post "record start replay.toml")
 check grep -q '^ok playing' <(post play)

@@ -2,6 +2,7 @@
 // loop, the channels joined for serveCommands, and the status line as JSON.
 #include "app/control/command_channel.h"
 #include "app/web/command_mailbox.h"
+#include "app/web/downloads.h"
 #include "app/web/status_json.h"
 
 #include <gtest/gtest.h>
@@ -104,4 +105,23 @@ TEST(RanksJson, EachRanksFrameTimesAndHeartbeatAge)
               R"({"frame":7,"imbalance":1.2,"heartbeat_period_s":null,"ranks":[)"
               R"({"frame":7,"render_ms":20,"wait_ms":1.5,"heartbeat_age_s":null},)"
               R"({"frame":6,"render_ms":30,"wait_ms":0.25,"heartbeat_age_s":null}]})");
+}
+
+TEST(RecordingForDownload, TheBaseSceneBecomesAbsolute)
+{
+    const std::string text = "# comment\n[scene]\nbase = \"../config/scenes/a \\\"b\\\".toml\"\nstart_time_s = 0.0\n"
+                             "\n[[camera.key]]\nbase = \"x\"\n";
+    EXPECT_EQ(aw::app::web::recordingForDownload(text, "/out/rec"),
+              "# comment\n[scene]\nbase = \"/out/config/scenes/a \\\"b\\\".toml\"\nstart_time_s = 0.0\n"
+              "\n[[camera.key]]\nbase = \"x\"\n");
+}
+
+TEST(RecordingForDownload, AnAbsoluteBaseOrNoneStaysAsItIs)
+{
+    const std::string absolute = "[scene]\nbase = \"/data/s.toml\"\ntime_step_s = 0.5";
+    EXPECT_EQ(aw::app::web::recordingForDownload(absolute, "/out"), absolute);
+    const std::string none = "[scene]\nstart_time_s = 1.0\n";
+    EXPECT_EQ(aw::app::web::recordingForDownload(none, "/out"), none);
+    const std::string odd = "[scene]\nbase = \"a\\tb\"\n"; // an escape the recorder never writes
+    EXPECT_EQ(aw::app::web::recordingForDownload(odd, "/out"), odd);
 }

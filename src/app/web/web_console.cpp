@@ -2,6 +2,7 @@
 
 #include "app/console_view.h"
 #include "app/web/command_mailbox.h"
+#include "app/web/downloads.h"
 #include "app/web/status_json.h"
 #include "common/input_error.h"
 #include "io/png.h"
@@ -67,6 +68,7 @@ struct WebConsole::Impl {
     std::shared_ptr<const std::string> png;  // the last encoded preview
     std::optional<cluster::FrameRecord> lastFrame; // GET /ranks: the last frame's reports (previewMutex)
     std::map<std::string, std::string> recordings;  // GET /recordings/NAME: name as recorded -> file (previewMutex)
+    std::map<std::string, std::string> screenshots; // GET /screenshots/NAME: name as asked -> file (previewMutex)
 
     bool authorized(const httplib::Request& req, httplib::Response& res) const
     {
@@ -124,26 +126,51 @@ struct WebConsole::Impl {
         res.set_content(frame ? ranksJson(*frame, ages, settings.heartbeatPeriodS) : "{}", "application/json");
     }
 
-    // A recorded camera path, looked up by the name it was recorded under: no other file can be named,
-    // so no path leaves the output folder.
-    void recording(const std::string& name, httplib::Response& res)
+    // A file the wall wrote, looked up by the name it was asked for under: no other file can be
+    // named, so no path leaves the output folder. Empty if there is none.
+    std::string written(const std::map<std::string, std::string>& table, const std::string& name,
+                        std::string& file)
     {
-        std::string file;
         {
             std::lock_guard<std::mutex> lock(previewMutex);
-            const auto it = recordings.find(name);
-            if (it != recordings.end())
+            const auto it = table.find(name);
+            if (it != table.end())
                 file = it->second;
         }
         std::ifstream in(file, std::ios::binary);
         if (file.empty() || !in)
-            return reply(res, 404, "error 404 no such recording (only the paths this wall recorded)");
-        const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+            return "";
+        return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    }
+
+    static void attach(httplib::Response& res, const std::string& name, std::string&& bytes, const char* type)
+    {
         std::string base = std::filesystem::path(name).filename().string();
         std::replace_if(base.begin(), base.end(), [](char c) { return c == '"' || c == '\\'; }, '_'); // quoted below
         res.set_header("Content-Disposition", "attachment; filename=\"" + base + "\"");
         res.set_header("Cache-Control", "no-store");
-        res.set_content(text, "application/toml");
+        res.set_content(std::move(bytes), type);
+    }
+
+    // A recorded camera path, its base scene made absolute so that the copy replays anywhere on
+    // this machine.
+    void recording(const std::string& name, httplib::Response& res)
+    {
+        std::string file;
+        const std::string text = written(recordings, name, file);
+        if (text.empty())
+            return reply(res, 404, "error 404 no such recording (only the paths this wall recorded)");
+        attach(res, name, recordingForDownload(text, std::filesystem::path(file).parent_path().string()),
+               "application/toml");
+    }
+
+    void screenshot(const std::string& name, httplib::Response& res)
+    {
+        std::string file;
+        std::string bytes = written(screenshots, name, file);
+        if (bytes.empty())
+            return reply(res, 404, "error 404 no such screenshot (only the files this wall wrote for `screenshot`)");
+        attach(res, name, std::move(bytes), "image/png");
     }
 
     void preview(httplib::Response& res)
@@ -210,6 +237,10 @@ WebConsole::WebConsole(WebSettings settings) : impl_(std::make_unique<Impl>())
         if (w.authorized(req, res))
             w.recording(req.matches[1], res);
     });
+    s.Get(R"(/screenshots/(.+))", [&w](const httplib::Request& req, httplib::Response& res) {
+        if (w.authorized(req, res))
+            w.screenshot(req.matches[1], res);
+    });
     s.Get("/preview.png", [&w](const httplib::Request& req, httplib::Response& res) {
         if (w.authorized(req, res))
             w.preview(res);
@@ -255,6 +286,12 @@ void WebConsole::addRecording(const std::string& name, const std::string& file)
 {
     std::lock_guard<std::mutex> lock(impl_->previewMutex);
     impl_->recordings[name] = file;
+}
+
+void WebConsole::addScreenshot(const std::string& name, const std::string& file)
+{
+    std::lock_guard<std::mutex> lock(impl_->previewMutex);
+    impl_->screenshots[name] = file;
 }
 
 int WebConsole::port() const { return impl_->port; }

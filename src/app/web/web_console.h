@@ -3,7 +3,8 @@
 // HTTP server on the master, on a thread of its own, serving the page from the data directory's
 // web/ folder, POST /command, GET /status, GET /presets, GET /preview.png, GET /ranks (each
 // rank's last frame: the frame it drew, its render and wait times, the age of its last heartbeat;
-// the master's frame and the imbalance) and GET /recordings/NAME (a camera path the wall recorded).
+// the master's frame and the imbalance), GET /recordings/NAME (a camera path the wall recorded, its
+// base scene made absolute) and GET /screenshots/NAME (a screenshot the wall wrote).
 // It never touches the wall itself: commands and status go through a CommandMailbox that the frame
 // loop serves with the control port's lines, and the preview is the last wall the frame loop
 // handed over, downsampled and encoded here, on request.
@@ -64,6 +65,8 @@ public:
     // a file the wall has recorded (`record start NAME`), for GET /recordings/NAME: only such files
     // are served.
     void addRecording(const std::string& name, const std::string& file);
+    // a screenshot the wall has written (`screenshot NAME`), for GET /screenshots/NAME, the same way.
+    void addScreenshot(const std::string& name, const std::string& file);
 
 private:
     struct Impl;
