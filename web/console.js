@@ -214,7 +214,7 @@ $("record").onclick = async () => {
 };
 
 $("movie").onclick = async () => {
-  const answer = await command(movie ? "movie stop" : `movie start movie-${stamp()}`);
+  const answer = await command(movie ? "movie stop" : `movie start ${$("movie-exr").checked ? "exr " : ""}movie-${stamp()}`);
   if (answer.startsWith("ok movie start")) movie = true;
   else if (answer.startsWith("ok movie stop") || answer.startsWith("error movie stop")) movie = false;
   showRecording();

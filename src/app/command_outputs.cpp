@@ -108,7 +108,7 @@ void CommandOutputs::startMovie(const control::OutputRequest& request, control::
         channel.answer(request.client, "error movie start " + request.name + ": " + request.path + ": " + error.message());
         return;
     }
-    movie_.emplace(Movie{request.path, MovieWriter(request.path, false, toneMap_), request.client, 0, ""});
+    movie_.emplace(Movie{request.path, MovieWriter(request.path, request.exr, toneMap_), request.client, 0, ""});
 }
 
 void CommandOutputs::stopMovie(const control::OutputRequest& request, control::CommandChannel& channel)

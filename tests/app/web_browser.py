@@ -17,7 +17,7 @@ the time standing still, the slider's time, playing with the time running, the c
 answer reports. The screenshot button: the browser downloads (Browser.setDownloadBehavior into
 WORK_DIR/downloads) the PNG the wall wrote, WALL_SIZE. The recording buttons: a path recorded and
 stopped, downloaded (the recorded file with its base scene made absolute) and the downloaded copy
-replayed with `preset COPY`, a movie recorded and stopped (its PNGs in WORK_DIR), the path
+replayed with `preset COPY`, a movie recorded and stopped with its EXR box ticked (its PNGs and EXRs in WORK_DIR), the path
 replayed. The preview on the page must change when the camera moves. While rank 1 is
 stopped (SIGSTOP, for at most 6 s), GET /ranks and the page must show its heartbeat's age growing
 past two periods and draw the rank red; once it runs again (SIGCONT), no longer. Writes
@@ -559,6 +559,7 @@ def check_recording(browser, wall, work_dir, downloads):
     if not replayed.startswith("ok preset " + copy):
         raise Failure(f"preset {copy} (the downloaded path) answered {replayed}")
     print(f"downloaded {copy} (base {base}); preset it -> {replayed}")
+    browser.evaluate("awTest.click('movie-exr')")  # the "EXR too" box: PNG and OpenEXR frames
     browser.evaluate("awTest.click('movie')")
     if "→ ok movie start" not in answer_after(browser, "movie start"):
         raise Failure("record movie: " + browser.evaluate("awTest.text('answer')"))
@@ -567,8 +568,9 @@ def check_recording(browser, wall, work_dir, downloads):
     movie = answer_after(browser, "movie stop")
     folder, frames = movie.split("ok movie stop ")[1].rsplit(" frames=", 1)
     pngs = [f for f in os.listdir(folder) if f.endswith(".png")]
-    if len(pngs) != int(frames) or int(frames) < 3:
-        raise Failure(f"stop movie: {movie}, {len(pngs)} PNGs in {folder}")
+    exrs = [f for f in os.listdir(folder) if f.endswith(".exr")]
+    if len(pngs) != int(frames) or len(exrs) != int(frames) or int(frames) < 3:
+        raise Failure(f"stop movie: {movie}, {len(pngs)} PNGs and {len(exrs)} EXRs in {folder}")
     browser.evaluate("awTest.click('replay')")
     replayed = answer_after(browser, "time ")
     if "→ ok time_s=" not in replayed:

@@ -5,7 +5,7 @@
 # made absolute; other names and paths leaving the folder 404) into another folder, that copy
 # replayed with `preset COPY` and `time FROM`, and recorded
 # again: every key's position comes back bit-identical (17 digits), its direction and up within 1e-15. `movie start`/`movie stop`
-# write PNG frames and none after the stop. Bad paths, a second start, a stop with nothing running are
+# write PNG frames and none after the stop, `movie start exr` OpenEXR frames as well. Bad paths, a second start, a stop with nothing running are
 # refused; on a full disk (a small tmpfs, skipped where it cannot be mounted) the commands answer
 # errors. The wall keeps drawing throughout, and exits 0 on quit.
 source "$(dirname "$0")/lib.sh"
@@ -130,6 +130,15 @@ frames 3
 check [ "$(ls "$out/clip"/frame-*.png | wc -l)" = "$n" ]
 note "$n movie frames, none after the stop"
 refused "movie start clip" "movie start clip: .*/clip already holds a movie"
+check [ -z "$(ls "$out/clip"/frame-*.exr 2>/dev/null)" ]
+check grep -qx "ok movie start $out/clip-exr" <(post "movie start exr clip-exr")
+frames 2
+answer=$(post "movie stop")
+n=$(sed -n "s|^ok movie stop $out/clip-exr frames=\([0-9]*\)\$|\1|p" <<< "$answer")
+[ -n "$n" ] && [ "$n" -ge 2 ] || { stop_wall; fail "movie stop answered '$answer'"; }
+check [ "$(ls "$out/clip-exr"/frame-*.exr | wc -l)" = "$n" ]
+check [ "$(ls "$out/clip-exr"/frame-*.png | wc -l)" = "$n" ]
+note "movie start exr: $n frames as PNG and OpenEXR"
 
 if [ $mounted = 1 ]; then
     note "a full disk"

@@ -76,6 +76,15 @@ TEST(Command, RecordAndMovieStartTakeTheRestOfTheLine)
     const Command movie = parseCommand("movie start clips/take 1");
     EXPECT_EQ(movie.kind, CommandKind::MovieStart);
     EXPECT_EQ(movie.path, "clips/take 1");
+    EXPECT_FALSE(movie.exr);
+    const Command exr = parseCommand("movie start  exr  clips/take 2");
+    EXPECT_TRUE(exr.exr);
+    EXPECT_EQ(exr.path, "clips/take 2");
+    const Command folderExr = parseCommand("movie start exr"); // alone, the word is the folder
+    EXPECT_FALSE(folderExr.exr);
+    EXPECT_EQ(folderExr.path, "exr");
+    EXPECT_TRUE(parseCommand("movie start exr exr").exr);
+    EXPECT_EQ(parseCommand("movie start exr exr").path, "exr");
     EXPECT_EQ(parseCommand("movie\tstop ").kind, CommandKind::MovieStop);
     EXPECT_EQ(parseCommand("record start start.toml").path, "start.toml"); // a name may be the subcommand's word
 }
@@ -145,7 +154,7 @@ TEST(Command, RefusedLinesSayWhy)
         {"record start x.png", "record start x.png: the file name must end in .toml"},
         {"record start .toml", "must end in .toml"},
         {"record stop now", "record stop: no argument expected"},
-        {"movie", "movie: start or stop expected (usage: movie start DIR | movie stop)"},
+        {"movie", "movie: start or stop expected (usage: movie start [exr] DIR | movie stop)"},
         {"movie start  ", "movie: missing the path"},
         {"movie stop x", "movie stop: no argument expected"},
     };

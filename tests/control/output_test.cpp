@@ -88,6 +88,11 @@ TEST(OutputPath, RecordAndMovieRefusedByWhatRuns)
     EXPECT_EQ(r.outputs[0].name, "a.toml");
     EXPECT_EQ(r.outputs[0].path, out + "/a.toml");
     EXPECT_EQ(r.outputs[1].path, out + "/m");
+    EXPECT_FALSE(r.outputs[1].exr);
+    r = serve({"movie start exr e"}, {}, out, answers);
+    ASSERT_EQ(r.outputs.size(), 1u);
+    EXPECT_EQ(r.outputs[0].path, out + "/e");
+    EXPECT_TRUE(r.outputs[0].exr);
 
     // Asked twice in one frame: the second start refused; a stop then a start again accepted.
     r = serve({"record start a.toml", "record start b.toml", "record stop", "record start c.toml"}, {}, out, answers);

@@ -34,7 +34,7 @@ const Grammar kGrammar[] = {
     {"orbit", CommandKind::Orbit, 3, false, "orbit LAT_DEG LON_DEG ALT_KM | orbit off"},
     {"screenshot", CommandKind::Screenshot, 0, true, "screenshot PATH.png"},
     {"record", CommandKind::RecordStart, 0, true, "record start PATH.toml | record stop"},
-    {"movie", CommandKind::MovieStart, 0, true, "movie start DIR | movie stop"},
+    {"movie", CommandKind::MovieStart, 0, true, "movie start [exr] DIR | movie stop"},
     {"quit", CommandKind::Quit, 0, false, "quit"},
 };
 
@@ -74,7 +74,7 @@ bool endsWith(const std::string& text, const std::string& end)
     return text.size() > end.size() && text.compare(text.size() - end.size(), end.size(), end) == 0;
 }
 
-// A path argument: the rest of the line after `word` (the line's first word, or the subcommand after
+// A path argument: the rest of the line after `word` (the line's first word, or a word after
 // it), blanks at its ends removed (a name may hold spaces).
 std::string restOfLine(const std::string& line, const std::string& word, const Grammar& g)
 {
@@ -88,7 +88,8 @@ std::string restOfLine(const std::string& line, const std::string& word, const G
     return line.substr(start, last + 1 - start);
 }
 
-// `record start PATH.toml`, `record stop`, `movie start DIR`, `movie stop`.
+// `record start PATH.toml`, `record stop`, `movie start [exr] DIR`, `movie stop`. A movie's folder named
+// exr needs the word twice (`movie start exr exr`): alone after start, it is the folder.
 Command startOrStop(const std::string& line, const std::vector<std::string>& words, const Grammar& g)
 {
     const bool record = g.kind == CommandKind::RecordStart;
@@ -102,7 +103,8 @@ Command startOrStop(const std::string& line, const std::vector<std::string>& wor
     if (words.size() < 2 || words[1] != "start")
         throw CommandError(std::string(g.word) + ": start or stop expected (usage: " + g.usage + ")");
     c.kind = g.kind;
-    c.path = restOfLine(line, "start", g);
+    c.exr = !record && words.size() >= 4 && words[2] == "exr";
+    c.path = restOfLine(line, c.exr ? "exr" : "start", g);
     if (record)
         checkRange(endsWith(c.path, ".toml"), "record start " + c.path + ": the file name must end in .toml");
     return c;

@@ -28,6 +28,7 @@ struct Command {
     // screenshot: the PNG to write; preset: the preset's name or scene file; record start: the TOML to
     // write; movie start: the folder to write into
     std::string path;
+    bool exr = false; // movie start exr: each frame also as OpenEXR (linear, half float), as --movie-exr
 };
 
 // A line that is not a command; what() is the reason, one line, without the "error " of the answer.

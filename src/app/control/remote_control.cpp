@@ -126,7 +126,7 @@ OutputRequest outputRequest(const Command& command, std::uint64_t client, const 
         throw CommandError(what + ": " + full.string() + " is not a folder");
     if (!record && std::filesystem::exists(full / "frames.csv", error))
         throw CommandError(what + ": " + full.string() + " already holds a movie (frames.csv); give another folder");
-    return {command.kind, client, command.path, full.string()};
+    return {command.kind, client, command.path, full.string(), command.exr};
 }
 
 // Carries out one command; returns its answer ("" for a screenshot, answered once written).

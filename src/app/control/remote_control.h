@@ -45,6 +45,7 @@ struct OutputRequest {
     std::uint64_t client = 0;
     std::string name; // as given: relative to the output folder
     std::string path; // the output folder's path joined with it
+    bool exr = false; // movie start: OpenEXR frames too
 };
 
 // What the wall's commands need to know of it.
