@@ -105,7 +105,7 @@ scene::Camera MasterClock::cameraAt(double timeS) const
 {
     scene::Camera c = camera_;
     if (!c.path.empty()) { // a keyed flight: the pose at this animation time, held still
-        const scene::CameraFrame frame = scene::frameOf(c.path.orientationAt(timeS));
+        const scene::CameraFrame frame = c.path.frameAt(timeS);
         c.positionKm = c.path.positionAt(timeS);
         c.forward = frame.forward;
         c.up = frame.up;

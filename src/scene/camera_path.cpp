@@ -172,6 +172,19 @@ double CameraPath::zoomAt(double timeS, double wallTanHalfFov) const
                     b.h11 * h * tangent(i + 1));
 }
 
+CameraFrame CameraPath::frameAt(double timeS) const
+{
+    const auto at = std::lower_bound(keys_.begin(), keys_.end(), timeS,
+                                     [](const CameraKey& k, double t) { return k.timeS < t; });
+    const CameraKey* key = timeS <= keys_.front().timeS ? &keys_.front()
+                           : timeS >= keys_.back().timeS ? &keys_.back()
+                           : at != keys_.end() && at->timeS == timeS ? &*at
+                                                                      : nullptr;
+    if (key && key->frame)
+        return *key->frame;
+    return frameOf(orientationAt(timeS));
+}
+
 glm::dquat CameraPath::orientationAt(double timeS) const
 {
     if (timeS <= keys_.front().timeS)

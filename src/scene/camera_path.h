@@ -20,6 +20,7 @@
 #include <glm/glm.hpp>
 #include <glm/gtc/quaternion.hpp>
 
+#include <optional>
 #include <vector>
 
 namespace aurorawall::scene {
@@ -38,6 +39,7 @@ struct CameraKey {
     double timeS = 0.0;           // animation time, s
     glm::dvec3 positionKm{0.0};   // planet frame, km
     glm::dquat orientation{1.0, 0.0, 0.0, 0.0};
+    std::optional<CameraFrame> frame = std::nullopt; // the orientation as read: the path's frame at the key's time, bit for bit
     double fieldOfViewDeg = 0.0;  // vertical, in (0, 180); 0: none, the zoom below instead
     double zoom = 1.0;            // > 0, relative to the wall's own view; used without a field of view
 };
@@ -59,6 +61,9 @@ public:
 
     glm::dvec3 positionAt(double timeS) const;
     glm::dquat orientationAt(double timeS) const;
+    // The camera's axes at timeS: at a key's time (or beyond the ends) that key's frame as read, so a
+    // recorded flight replays its frames bit for bit; elsewhere frameOf(orientationAt(timeS)).
+    CameraFrame frameAt(double timeS) const;
     // The zoom at timeS on a wall whose vertical field of view W has tan(W/2) = wallTanHalfFov; exactly
     // each key's zoomOf at its time, held before the first key and after the last.
     double zoomAt(double timeS, double wallTanHalfFov) const;

@@ -56,6 +56,15 @@ glm::dvec3 readPoint(const TableReader& t, const std::string& prefix, double pla
 // point (look_at_km, or look_at_latitude_deg/look_at_longitude_deg/look_at_altitude_km), or explicit
 // direction/up vectors; roll_deg (clockwise as seen from behind) turns the first two about the view;
 // field_of_view_deg or zoom (optional) zooms the wall (camera_path.h).
+// Unit and perpendicular to a few doubles' rounding (1e-15): as a camera's own frame, and as written
+// with 17 digits.
+bool orthonormal(const CameraFrame& frame)
+{
+    const double eps = 1e-15;
+    return std::abs(glm::length(frame.forward) - 1.0) <= eps && std::abs(glm::length(frame.up) - 1.0) <= eps &&
+           std::abs(glm::dot(frame.forward, frame.up)) <= eps;
+}
+
 CameraKey readCameraKey(const TableReader& k, double planetRadiusKm)
 {
     CameraKey key;
@@ -83,11 +92,13 @@ CameraKey readCameraKey(const TableReader& k, double planetRadiusKm)
         frame.up = k.vector3("up");
         if (glm::length(frame.forward) < 1e-12)
             k.fail("direction", "must not be zero");
-        frame.forward = glm::normalize(frame.forward);
-        frame.up -= frame.forward * glm::dot(frame.up, frame.forward);
-        if (glm::length(frame.up) < 1e-9)
-            k.fail("up", "must not be parallel to the view direction");
-        frame.up = glm::normalize(frame.up);
+        if (!orthonormal(frame)) { // a recorded frame is kept as written, so that it replays bit for bit
+            frame.forward = glm::normalize(frame.forward);
+            frame.up -= frame.forward * glm::dot(frame.up, frame.forward);
+            if (glm::length(frame.up) < 1e-9)
+                k.fail("up", "must not be parallel to the view direction");
+            frame.up = glm::normalize(frame.up);
+        }
     } else {
         if (given == "heading_deg") {
             const double heading = k.number("heading_deg", -360, 360) * kDegree;
@@ -108,6 +119,7 @@ CameraKey readCameraKey(const TableReader& k, double planetRadiusKm)
         frame.up = std::cos(roll) * frame.up + std::sin(roll) * right;
     }
     key.orientation = orientationOf(frame);
+    key.frame = frame;
     if (k.has("field_of_view_deg") && k.has("zoom"))
         k.fail("zoom", "give field_of_view_deg or zoom, not both");
     key.zoom = k.numberAbove("zoom", 0.0, 1e6, 1.0);
@@ -150,7 +162,7 @@ Camera readCamera(const TableReader& t, double planetRadiusKm)
     if (t.has("key")) {
         c.path = readCameraPath(t, planetRadiusKm);
         const CameraKey& first = c.path.keys().front();
-        const CameraFrame frame = frameOf(first.orientation);
+        const CameraFrame frame = c.path.frameAt(first.timeS);
         c.positionKm = first.positionKm;
         c.forward = frame.forward;
         c.up = frame.up;

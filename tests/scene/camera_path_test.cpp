@@ -351,6 +351,34 @@ TEST(CameraPath, SceneKeysInEachForm)
     EXPECT_NEAR(glm::dot(third.forward, glm::normalize(glm::dvec3(100.0, 0.0, 100.0))), 1.0, 1e-12);
 }
 
+// A key's frame as read comes back bit for bit at the key's time and beyond the ends (a recorded flight
+// replays its frames exactly); between keys the frame is the quaternions' SQUAD.
+TEST(CameraPath, FrameAtAKeysTimeIsTheKeysFrameAsRead)
+{
+    std::vector<CameraKey> keys;
+    for (int i = 0; i < 3; ++i) {
+        CameraKey k;
+        k.timeS = 0.1 * i;
+        const CameraFrame f = turned(0.3 * i);
+        k.orientation = scene::orientationOf(f);
+        k.frame = f;
+        keys.push_back(k);
+    }
+    const CameraPath path(keys);
+    for (const CameraKey& k : keys) {
+        const CameraFrame at = path.frameAt(k.timeS);
+        EXPECT_EQ(at.forward, k.frame->forward);
+        EXPECT_EQ(at.up, k.frame->up);
+        EXPECT_NE(scene::frameOf(k.orientation).forward, k.frame->forward); // the quaternion's round trip is not exact
+    }
+    EXPECT_EQ(path.frameAt(-1.0).forward, keys.front().frame->forward);
+    EXPECT_EQ(path.frameAt(9.0).up, keys.back().frame->up);
+    const CameraFrame between = path.frameAt(0.05);
+    const CameraFrame squad = scene::frameOf(path.orientationAt(0.05));
+    EXPECT_EQ(between.forward, squad.forward);
+    EXPECT_EQ(between.up, squad.up);
+}
+
 TEST(CameraPathErrors, OneLineNamingFileLineAndKey)
 {
     EXPECT_EQ(loadError(kData + "/path_one_key.toml"),
