@@ -1,5 +1,6 @@
 #pragma once
-// `aurorawall tables deposition --energy-kev E [--maxwellian]`: the Lazarev deposition profile as CSV.
+// `aurorawall tables deposition --energy-kev E [--maxwellian]`: the Lazarev deposition profile as CSV;
+// `aurorawall tables NAME --scene FILE`: a component's table of a scene (components/tools.h).
 #include <iosfwd>
 
 namespace aurorawall::app {

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-namespace aurorawall::app {
+namespace aurorawall::components::plasma::tools {
 
 // The relative RMS of n/n₀ − 1 over the nodes at t = 0, against the closed form for a uniform random
 // start deposited by CIC: each node sums the tensor-product hat weights W of N independent uniform
@@ -73,4 +73,4 @@ HeatingRow heatingRate(int particlesPerCell, double wpDt, int seed);
 // line). Returns the exit status (app/cli/exit_status.h).
 int runPlasmaAccuracyCommand(int argc, char** argv, std::ostream& out, std::ostream& err);
 
-} // namespace aurorawall::app
+} // namespace aurorawall::components::plasma::tools

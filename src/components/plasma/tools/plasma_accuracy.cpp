@@ -1,5 +1,5 @@
 #include "common/constants.h"
-#include "app/plasma_accuracy.h"
+#include "components/plasma/tools/plasma_accuracy.h"
 
 #include "app/cli/command_line.h"
 #include "app/cli/exit_status.h"
@@ -23,10 +23,13 @@
 #include <ostream>
 #include <stdexcept>
 
-namespace aurorawall::app {
+namespace aurorawall::components::plasma::tools {
+
+namespace cli = app::cli;
+namespace pic = aurorawall::plasma;
+
 namespace {
 
-namespace pic = aurorawall::plasma;
 
 constexpr double kDensity = 1e12;      // m⁻³
 constexpr double kThermalSpeed = 4.19e5; // m/s: 1 eV electrons
@@ -267,4 +270,4 @@ int runPlasmaAccuracyCommand(int argc, char** argv, std::ostream& out, std::ostr
     });
 }
 
-} // namespace aurorawall::app
+} // namespace aurorawall::components::plasma::tools

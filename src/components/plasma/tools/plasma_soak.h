@@ -12,20 +12,20 @@
 #include <string>
 #include <vector>
 
-namespace aurorawall::app {
+namespace aurorawall::components::plasma::tools {
 
 // One of a scene's simulations at time 0, as the component starts it.
 struct SoakSimulation {
     std::string name; // "strip" or "box"
-    plasma::PeriodicGrid grid;
-    plasma::Particles electrons;
+    aurorawall::plasma::PeriodicGrid grid;
+    aurorawall::plasma::Particles electrons;
     glm::dvec3 magneticField; // T
     double dt;                // s
 };
 
 // The strip (electron_sheet.h, from sheetFramesSpec) and, with kind = "box", the box's two seeded
 // beams (box_frames.h, from boxFramesSpec).
-std::vector<SoakSimulation> soakSimulations(const components::plasma::Settings& plasma);
+std::vector<SoakSimulation> soakSimulations(const Settings& plasma);
 
 // Throws std::runtime_error "NAME: step N: QUANTITY ..." at the first position that is not finite or
 // lies outside the box [0, L] (per axis, m), or the first velocity or node field value that is not finite.
@@ -41,4 +41,4 @@ void checkSoakState(const std::string& name, long step, const std::vector<glm::d
 // quantity at the first check that fails; 2 for a bad option or a scene without plasma.
 int runPlasmaSoakCommand(int argc, char** argv, std::ostream& out, std::ostream& err);
 
-} // namespace aurorawall::app
+} // namespace aurorawall::components::plasma::tools

@@ -2,7 +2,7 @@
 // `aurorawall mie --n N --k K --x X [--angles-deg LIST]`: exact Mie scattering by one sphere, as CSV.
 #include <iosfwd>
 
-namespace aurorawall::app {
+namespace aurorawall::components::glory::tools {
 
 // argv[0] is the command's name ("mie"). Prints the CSV header
 // `x,n,k,terms,qext,qsca,qabs,qback,g,s1_0_re,s1_0_im,s1_180_re,s1_180_im` and one row (10 significant
@@ -13,4 +13,4 @@ namespace aurorawall::app {
 // cannot be written.
 int runMieCommand(int argc, char** argv, std::ostream& out, std::ostream& err);
 
-} // namespace aurorawall::app
+} // namespace aurorawall::components::glory::tools

@@ -1,4 +1,4 @@
-#include "app/plasma_soak.h"
+#include "components/plasma/tools/plasma_soak.h"
 
 #include "app/cli/command_line.h"
 #include "app/cli/exit_status.h"
@@ -19,11 +19,14 @@
 #include <ostream>
 #include <stdexcept>
 
-namespace aurorawall::app {
+namespace aurorawall::components::plasma::tools {
+
+namespace cli = app::cli;
+namespace pic = aurorawall::plasma;
+
 namespace {
 
 namespace po = boost::program_options;
-namespace pic = aurorawall::plasma;
 using components::plasma::BoxFramesSpec;
 
 enum class Device { Cpu, Gpu };
@@ -165,4 +168,4 @@ int runPlasmaSoakCommand(int argc, char** argv, std::ostream& out, std::ostream&
     });
 }
 
-} // namespace aurorawall::app
+} // namespace aurorawall::components::plasma::tools

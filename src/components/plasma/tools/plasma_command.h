@@ -3,7 +3,7 @@
 // verification cases as CSV (docs/PLASMA.md).
 #include <iosfwd>
 
-namespace aurorawall::app {
+namespace aurorawall::components::plasma::tools {
 
 // argv[0] is the command's name ("plasma"), then the action ("verify") and the options. Prints
 // `case,parameter,measured,expected,rel_error`, one row per measured quantity (expected computed
@@ -12,4 +12,4 @@ namespace aurorawall::app {
 // is printed on `out`), 1 if a run fails or the output cannot be written.
 int runPlasmaCommand(int argc, char** argv, std::ostream& out, std::ostream& err);
 
-} // namespace aurorawall::app
+} // namespace aurorawall::components::plasma::tools

@@ -1,4 +1,4 @@
-#include "app/mie_command.h"
+#include "components/glory/tools/mie_command.h"
 
 #include "app/cli/command_line.h"
 #include "app/cli/exit_status.h"
@@ -12,7 +12,10 @@
 #include <string>
 #include <vector>
 
-namespace aurorawall::app {
+namespace aurorawall::components::glory::tools {
+
+namespace cli = app::cli;
+
 namespace {
 
 namespace po = boost::program_options;
@@ -115,4 +118,4 @@ int runMieCommand(int argc, char** argv, std::ostream& out, std::ostream& err)
     });
 }
 
-} // namespace aurorawall::app
+} // namespace aurorawall::components::glory::tools
