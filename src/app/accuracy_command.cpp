@@ -1,8 +1,8 @@
 #include "app/accuracy_command.h"
 
 #include "app/accuracy_scene.h"
-#include "app/cli/command_line.h"
-#include "app/cli/exit_status.h"
+#include "cli/command_line.h"
+#include "cli/exit_status.h"
 #include "atmosphere/accuracy_report.h"
 #include "components/tools.h"
 

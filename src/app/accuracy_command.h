@@ -8,7 +8,7 @@
 namespace aurorawall::app {
 
 // argv[0] is the command's name ("accuracy"); see --help. Returns the exit status
-// (app/cli/exit_status.h): 2 with one line on `err` for a bad option, 1 with one line when a file
+// (cli/exit_status.h): 2 with one line on `err` for a bad option, 1 with one line when a file
 // cannot be read or is malformed or when no GL context or shader can be made.
 int runAccuracyCommand(int argc, char** argv, std::ostream& out, std::ostream& err);
 

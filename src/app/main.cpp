@@ -1,7 +1,7 @@
 // aurorawall: one binary, several commands.
 #include "app/accuracy_command.h"
 #include "app/airmass_command.h"
-#include "app/cli/exit_status.h"
+#include "cli/exit_status.h"
 #include "app/render_command.h"
 #include "app/tables_command.h"
 #include "common/input_error.h"
@@ -80,18 +80,18 @@ int main(int argc, char** argv)
     const std::string seeHelp = " (see aurorawall --help)";
     if (command == "--help" || command == "-h") {
         std::cout << usage();
-        return app::cli::kSuccess;
+        return cli::kSuccess;
     }
     for (const Command& c : allCommands())
         if (command == c.name)
             return c.run(argc - 1, argv + 1, std::cout, std::cerr);
     if (command.empty())
-        std::cerr << app::cli::errorLine("", "missing command (allowed: " + commandNames() + ")" + seeHelp) << "\n";
+        std::cerr << cli::errorLine("", "missing command (allowed: " + commandNames() + ")" + seeHelp) << "\n";
     else if (command[0] == '-')
-        std::cerr << app::cli::errorLine("", "unrecognised option '" + echoedInput(command) + "'" + seeHelp) << "\n";
+        std::cerr << cli::errorLine("", "unrecognised option '" + echoedInput(command) + "'" + seeHelp) << "\n";
     else
-        std::cerr << app::cli::errorLine("", "unknown command '" + echoedInput(command) + "' (allowed: " + commandNames() +
+        std::cerr << cli::errorLine("", "unknown command '" + echoedInput(command) + "' (allowed: " + commandNames() +
                                             ")" + seeHelp)
                   << "\n";
-    return app::cli::kUsageError;
+    return cli::kUsageError;
 }

@@ -1,7 +1,7 @@
 #include "app/tables_command.h"
 
-#include "app/cli/command_line.h"
-#include "app/cli/exit_status.h"
+#include "cli/command_line.h"
+#include "cli/exit_status.h"
 #include "components/aurora/physics/deposition_table.h"
 #include "components/tools.h"
 

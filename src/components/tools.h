@@ -12,7 +12,7 @@
 
 namespace aurorawall::components {
 
-// One command: argv[0] is its name; it returns the exit status (app/cli/exit_status.h).
+// One command: argv[0] is its name; it returns the exit status (cli/exit_status.h).
 struct Command {
     const char* name;
     const char* summary; // after the name in `aurorawall --help`; further lines indented by 12

@@ -1,9 +1,9 @@
-// The command front ends without a GL context or MPI: the command-line convention (app/cli), the
+// The command front ends without a GL context or MPI: the command-line convention (src/cli), the
 // options of `render`, and the `tables`, `airmass` and `accuracy` commands up to their first GL call.
 #include "app/accuracy_command.h"
 #include "app/airmass_command.h"
-#include "app/cli/command_line.h"
-#include "app/cli/exit_status.h"
+#include "cli/command_line.h"
+#include "cli/exit_status.h"
 #include "app/control/command.h"
 #include "app/cost_map.h"
 #include "app/path_recorder.h"

@@ -1,7 +1,7 @@
 #include "components/glory/tools/mie_command.h"
 
-#include "app/cli/command_line.h"
-#include "app/cli/exit_status.h"
+#include "cli/command_line.h"
+#include "cli/exit_status.h"
 #include "common/constants.h"
 #include "components/glory/mie/mie_scattering.h"
 
@@ -13,8 +13,6 @@
 #include <vector>
 
 namespace aurorawall::components::glory::tools {
-
-namespace cli = app::cli;
 
 namespace {
 

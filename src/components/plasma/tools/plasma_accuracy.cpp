@@ -1,8 +1,8 @@
 #include "common/constants.h"
 #include "components/plasma/tools/plasma_accuracy.h"
 
-#include "app/cli/command_line.h"
-#include "app/cli/exit_status.h"
+#include "cli/command_line.h"
+#include "cli/exit_status.h"
 #include "components/plasma/simulation/discrete_laplacian.h"
 #include "components/plasma/simulation/electrostatic_pic.h"
 #include "components/plasma/simulation/fft_poisson_solver.h"
@@ -25,7 +25,6 @@
 
 namespace aurorawall::components::plasma::tools {
 
-namespace cli = app::cli;
 namespace pic = aurorawall::plasma;
 
 namespace {

@@ -70,7 +70,7 @@ struct HeatingRow {
 HeatingRow heatingRate(int particlesPerCell, double wpDt, int seed);
 
 // argv[0] is the action's name ("accuracy"). Prints the chosen table (or all, each after a blank
-// line). Returns the exit status (app/cli/exit_status.h).
+// line). Returns the exit status (cli/exit_status.h).
 int runPlasmaAccuracyCommand(int argc, char** argv, std::ostream& out, std::ostream& err);
 
 } // namespace aurorawall::components::plasma::tools

@@ -1,7 +1,7 @@
 #include "components/plasma/tools/plasma_command.h"
 
-#include "app/cli/command_line.h"
-#include "app/cli/exit_status.h"
+#include "cli/command_line.h"
+#include "cli/exit_status.h"
 #include "components/plasma/tools/plasma_accuracy.h"
 #include "components/plasma/tools/plasma_soak.h"
 #include "common/data_dir.h"
@@ -23,7 +23,6 @@
 
 namespace aurorawall::components::plasma::tools {
 
-namespace cli = app::cli;
 namespace pic = aurorawall::plasma;
 
 namespace {

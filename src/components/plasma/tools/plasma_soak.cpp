@@ -1,7 +1,7 @@
 #include "components/plasma/tools/plasma_soak.h"
 
-#include "app/cli/command_line.h"
-#include "app/cli/exit_status.h"
+#include "cli/command_line.h"
+#include "cli/exit_status.h"
 #include "common/data_dir.h"
 #include "components/plasma/gpu/gpu_verify_cases.h"
 #include "components/plasma/simulation/electron_sheet.h"
@@ -21,7 +21,6 @@
 
 namespace aurorawall::components::plasma::tools {
 
-namespace cli = app::cli;
 namespace pic = aurorawall::plasma;
 
 namespace {

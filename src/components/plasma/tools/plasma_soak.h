@@ -37,7 +37,7 @@ void checkSoakState(const std::string& name, long step, const std::vector<glm::d
 // simulation,step,time_s,field_energy_j,kinetic_energy_j,total_energy_j,max_abs_e_v_per_m,max_density_over_n0
 // at step 0, every M steps and at step N, for each simulation in turn, after checking that every
 // electron's position is finite and inside the box and every velocity and node field value finite.
-// Returns the exit status (app/cli/exit_status.h): 1 with one line naming the simulation, step and
+// Returns the exit status (cli/exit_status.h): 1 with one line naming the simulation, step and
 // quantity at the first check that fails; 2 for a bad option or a scene without plasma.
 int runPlasmaSoakCommand(int argc, char** argv, std::ostream& out, std::ostream& err);
 
