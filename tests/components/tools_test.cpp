@@ -16,7 +16,9 @@ TEST(ComponentTools, CommandsAreNamedOnceInAlphabeticalOrder)
     for (size_t i = 0; i < commands.size(); ++i) {
         names += (i ? " " : "") + std::string(commands[i].name);
         EXPECT_NE(commands[i].run, nullptr) << commands[i].name;
-        if (i > 0) EXPECT_LT(std::string(commands[i - 1].name), std::string(commands[i].name));
+        if (i > 0) {
+            EXPECT_LT(std::string(commands[i - 1].name), std::string(commands[i].name));
+        }
     }
     EXPECT_EQ(names, "mie plasma");
 }
