@@ -1,9 +1,8 @@
 #include "app/accuracy_command.h"
 
-#include "app/accuracy_scene.h"
+#include "atmosphere/accuracy_report.h"
 #include "cli/command_line.h"
 #include "cli/exit_status.h"
-#include "atmosphere/accuracy_report.h"
 #include "components/tools.h"
 
 #include <cstdio>
@@ -188,8 +187,10 @@ void runSceneKnobs(const cli::CommandLine& cli, AccuracyOptions& o, std::ostream
     }
     if (table)
         table->run(scene, out);
+    else if (const components::SceneSweep sweep = components::componentSceneSweep())
+        sweep(scene, out);
     else
-        runSceneAccuracy(scene, out);
+        throw cli.usageError("--scene: no compiled-in component sweeps a scene's knobs");
 }
 
 // --airmass and/or --sky: the options checked, then the tables on one GL context.

@@ -1,7 +1,7 @@
 #pragma once
 // What components add to the aurorawall binary: their own commands (`aurorawall NAME ...`), their
-// tables of error against run time (`aurorawall accuracy --OPTION FILE`) and their tables of a scene
-// (`aurorawall tables NAME --scene FILE`). A component with a
+// tables of error against run time (`aurorawall accuracy --OPTION FILE`, and the sweep of
+// `accuracy --scene FILE`) and their tables of a scene (`aurorawall tables NAME --scene FILE`). A component with a
 // tools/ folder defines `const Tools& NAME::tools::registered()` there; src/components/CMakeLists.txt
 // compiles them into aw_component_tools and lists them.
 #include "accuracy/scene_view.h"
@@ -37,10 +37,15 @@ struct SceneTable {
     void (*print)(const std::string& sceneFile, std::ostream& out);
 };
 
+// The sweep of `aurorawall accuracy --scene FILE` (all of SceneAccuracySettings): the quality knobs
+// of the march against error and run time, the features' costs or the march's work.
+using SceneSweep = void (*)(const accuracy::SceneAccuracySettings& settings, std::ostream& out);
+
 struct Tools {
     std::vector<Command> commands;
     std::vector<AccuracyTable> accuracyTables;
     std::vector<SceneTable> sceneTables;
+    SceneSweep sceneSweep = nullptr; // the component whose march it is
 };
 
 // The commands of every compiled-in component, in alphabetical order of their names.
@@ -48,5 +53,7 @@ const std::vector<Command>& componentCommands();
 // The accuracy tables and scene tables of every compiled-in component, in registry order.
 const std::vector<AccuracyTable>& componentAccuracyTables();
 const std::vector<SceneTable>& componentSceneTables();
+// The first component's sweep of `accuracy --scene` in registry order, or nullptr.
+SceneSweep componentSceneSweep();
 
 } // namespace aurorawall::components

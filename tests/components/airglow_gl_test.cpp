@@ -1,9 +1,9 @@
 // The airglow on the GPU (EGL; Mesa llvmpipe in CI) against the double-precision CPU reference,
 // whose airglow part integrates both exponentials of each layer exactly (adaptive Gauss-Kronrod):
 // from orbit at the limb and from the ground toward the horizon, every pixel.
-#include "app/accuracy_scene.h"
 #include "components/airglow/airglow.h"
 #include "components/atmosphere/atmosphere.h"
+#include "components/aurora/tools/aurora_accuracy.h"
 #include "components/registry.h"
 #include "gl/context.h"
 #include "render/float_bounds.h"
@@ -27,7 +27,7 @@ const std::string kSource = AURORAWALL_SOURCE_DIR;
 // aurora and stars are tested elsewhere.
 scene::Scene airglowOnly(const std::string& file)
 {
-    scene::Scene s = app::withoutUnmodelled(components::loadScene(kSource + "/config/scenes/" + file));
+    scene::Scene s = components::aurora::tools::withoutUnmodelled(components::loadScene(kSource + "/config/scenes/" + file));
     s.remove("aurora");
     return s;
 }

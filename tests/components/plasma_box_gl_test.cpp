@@ -1,7 +1,7 @@
 // The plasma box on the GPU against the double-precision CPU reference (box_reference.h), which
 // reads the same frames and integrates their column exactly (tests/app/data/plasma-box-side.toml:
 // the box's bands seen from the side, across the field).
-#include "app/accuracy_scene.h"
+#include "components/aurora/tools/aurora_accuracy.h"
 #include "components/plasma/box_frames.h"
 #include "components/plasma/box_reference.h"
 #include "components/plasma/box_reference.h"
@@ -97,8 +97,8 @@ struct Comparison {
 // own (u = 2^-24).
 Comparison compare(int stepsPerCell)
 {
-    scene::Scene s = app::withoutUnmodelled(components::loadScene(kSource + "/tests/app/data/plasma-box-side.toml"));
-    app::applyFinestSettings(s);
+    scene::Scene s = components::aurora::tools::withoutUnmodelled(components::loadScene(kSource + "/tests/app/data/plasma-box-side.toml"));
+    components::aurora::tools::applyFinestSettings(s);
     auto& plasma = s.settings<components::plasma::Settings>();
     plasma.boxStepsPerCell = stepsPerCell;
     const accuracy::SceneView view = accuracy::sceneView(s, kSource + "/config/walls/single.toml", {64, 36});
@@ -189,7 +189,7 @@ TEST(PlasmaBoxOnTheGpu, AccuracyTableHasTheBoxKnob)
     settings.pixels = 16;
     settings.runs = 1;
     std::ostringstream out;
-    app::runSceneAccuracy(settings, out);
+    components::aurora::tools::runSceneAccuracy(settings, out);
     std::map<int, double> rmsGpu; // steps per cell -> rms_rel_gpu
     std::istringstream lines(out.str());
     for (std::string line; std::getline(lines, line);) {

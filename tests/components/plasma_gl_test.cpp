@@ -1,7 +1,7 @@
 // The plasma's curtain detail on the GPU against the double-precision CPU reference, which samples
 // the same electron-density frames (tests/app/data/plasma-seam.toml at the renderer's finest
 // settings: the curls at the zenith).
-#include "app/accuracy_scene.h"
+#include "components/aurora/tools/aurora_accuracy.h"
 #include "components/plasma/plasma.h"
 #include "components/plasma/sheet_frames.h"
 #include "components/registry.h"
@@ -30,8 +30,8 @@ const std::string kSource = AURORAWALL_SOURCE_DIR;
 TEST(PlasmaOnTheGpu, AgreesWithTheReference)
 {
     const std::unique_ptr<gl::Context> context = gl::createContext(gl::Backend::Egl);
-    scene::Scene s = app::withoutUnmodelled(components::loadScene(kSource + "/tests/app/data/plasma-seam.toml"));
-    app::applyFinestSettings(s);
+    scene::Scene s = components::aurora::tools::withoutUnmodelled(components::loadScene(kSource + "/tests/app/data/plasma-seam.toml"));
+    components::aurora::tools::applyFinestSettings(s);
     const accuracy::SceneView view = accuracy::sceneView(s, kSource + "/config/walls/single.toml", {64, 36});
     const io::Image gpu = accuracy::renderView(s, view, kSource + "/shaders", 0).image;
     const double floor = 1.0 / (255.0 * s.exposure);

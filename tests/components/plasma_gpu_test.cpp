@@ -2,7 +2,7 @@
 // against the CPU step in double (ElectrostaticPic), its bit-for-bit determinism, and the verify
 // cases on the GPU against theory.
 #include "common/constants.h"
-#include "app/accuracy_scene.h"
+#include "components/aurora/tools/aurora_accuracy.h"
 #include "components/plasma/gpu/gpu_limits.h"
 #include "components/plasma/gpu/gpu_pic.h"
 #include "components/plasma/gpu/gpu_poisson.h"
@@ -949,8 +949,8 @@ TEST(PlasmaLive, AgreesWithTheCpuFramesBeforeTheRollUp)
 TEST(PlasmaLive, RenderAgreesWithTheReference)
 {
     const std::unique_ptr<gl::Context> context = gl::createContext(gl::Backend::Egl);
-    scene::Scene s = app::withoutUnmodelled(components::loadScene(kSource + "/tests/app/data/plasma-seam.toml"));
-    app::applyFinestSettings(s);
+    scene::Scene s = components::aurora::tools::withoutUnmodelled(components::loadScene(kSource + "/tests/app/data/plasma-seam.toml"));
+    components::aurora::tools::applyFinestSettings(s);
     s.settings<component::Settings>().device = component::Settings::Device::Gpu;
     const accuracy::SceneView view = accuracy::sceneView(s, kSource + "/config/walls/single.toml", {64, 36});
     const io::Image gpu = accuracy::renderView(s, view, kShaders, 0).image;

@@ -2,7 +2,7 @@
 // CPU reference (render/reference_ray.h) at sampled pixels: the test that vouches for a GPU's
 // images (launch/gpu-check runs it on each device). The components the reference does not model
 // (stars, planet_texture, sky) are left out of both.
-#include "app/accuracy_scene.h"
+#include "components/aurora/tools/aurora_accuracy.h"
 #include "components/registry.h"
 #include "components/roles/curtain_detail.h"
 #include "gl/context.h"
@@ -43,7 +43,7 @@ std::unique_ptr<gl::Context> ShippedScene::context_;
 // not compared.
 TEST_P(ShippedScene, DefaultsAgreeWithTheCpuReference)
 {
-    scene::Scene s = app::withoutUnmodelled(components::loadScene(kSource + "/config/scenes/" + GetParam() + ".toml"));
+    scene::Scene s = components::aurora::tools::withoutUnmodelled(components::loadScene(kSource + "/config/scenes/" + GetParam() + ".toml"));
     const accuracy::SceneView view = accuracy::sceneView(s, kSource + "/config/walls/single.toml", {64, 36});
     const io::Image gpu = accuracy::renderView(s, view, kSource + "/shaders", 0).image;
     const double floor = 1.0 / (255.0 * s.exposure);

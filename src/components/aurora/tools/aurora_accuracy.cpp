@@ -1,4 +1,4 @@
-#include "app/accuracy_scene.h"
+#include "components/aurora/tools/aurora_accuracy.h"
 
 #include "common/data_dir.h"
 #include "components/fluid_detail/simulation/curtain_detail.h"
@@ -20,7 +20,7 @@
 #include <memory>
 #include <ostream>
 
-namespace aurorawall::app {
+namespace aurorawall::components::aurora::tools {
 
 using AuroraSettings = components::aurora::Settings;
 using FluidSettings = components::fluid_detail::Settings;
@@ -337,4 +337,4 @@ void runSceneAccuracy(const SceneAccuracySettings& settings, std::ostream& out)
         printKnobTable(scene, view, dataDir + "/shaders", settings, out);
 }
 
-} // namespace aurorawall::app
+} // namespace aurorawall::components::aurora::tools

@@ -1,13 +1,14 @@
 #pragma once
-// `aurorawall accuracy --scene FILE`: error against run time of the aurora's quality knobs and the
-// cost of each feature (Lawlor & Genetti's table 2), on one headless EGL context in one
-// process (no MPI), with the means of accuracy/scene_view.h.
+// The aurora's sweep of `aurorawall accuracy --scene FILE` (components/tools.h): error against run
+// time of the march's quality knobs (with fluid_cells and box_steps_per_cell where the scene has
+// fluid_detail or the plasma box) and the cost of each feature (Lawlor & Genetti's table 2), on one
+// headless EGL context in one process (no MPI), with the means of accuracy/scene_view.h.
 #include "accuracy/scene_view.h"
 #include "scene/scene.h"
 
 #include <iosfwd>
 
-namespace aurorawall::app {
+namespace aurorawall::components::aurora::tools {
 
 // The scene without the components the CPU reference does not model (stars, planet_texture, sky).
 scene::Scene withoutUnmodelled(scene::Scene scene);
@@ -23,4 +24,4 @@ void applyFinestSettings(scene::Scene& scene);
 // `out`. Throws when a file cannot be read or is malformed, and when no GL context or shader can be made.
 void runSceneAccuracy(const accuracy::SceneAccuracySettings& settings, std::ostream& out);
 
-} // namespace aurorawall::app
+} // namespace aurorawall::components::aurora::tools
