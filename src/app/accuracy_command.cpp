@@ -1,10 +1,9 @@
 #include "app/accuracy_command.h"
 
-#include "app/accuracy_scene.h"
-#include "app/cli/command_line.h"
-#include "app/cli/exit_status.h"
-#include "app/glory_accuracy.h"
 #include "atmosphere/accuracy_report.h"
+#include "cli/command_line.h"
+#include "cli/exit_status.h"
+#include "components/tools.h"
 
 #include <cstdio>
 #include <ostream>
@@ -20,15 +19,15 @@ namespace po = boost::program_options;
 const std::vector<std::string> kShaderOptions = {"repeat", "copies", "view-steps", "light-steps"};
 const std::vector<std::string> kSceneOptions = {"wall", "size", "pixels", "frame", "runs",
                                                 "threads", "reference-step-km", "feature-costs", "work-stats"};
-// The --scene options that --glory does not take (it compares every pixel with a GPU render).
-const std::vector<std::string> kAuroraOnlyOptions = {"pixels", "threads", "reference-step-km", "feature-costs",
-                                                     "work-stats"};
+// The --scene options that the components' tables (components/tools.h) do not take.
+const std::vector<std::string> kSceneOnlyOptions = {"pixels", "threads", "reference-step-km", "feature-costs",
+                                                    "work-stats"};
 
-const char* kUsage =
+const char* kUsageHead =
     "Usage: aurorawall accuracy --airmass | --sky [options]\n"
     "       aurorawall accuracy --scene FILE [--wall FILE] [--size WxH] [--pixels N] [--frame K] [--feature-costs]\n"
-    "       aurorawall accuracy --scene FILE --work-stats [--wall FILE] [--size WxH] [--frame K]\n"
-    "       aurorawall accuracy --glory FILE [--wall FILE] [--size WxH] [--runs N]\n"
+    "       aurorawall accuracy --scene FILE --work-stats [--wall FILE] [--size WxH] [--frame K]\n";
+const char* kUsageBody =
     "Error against cost of the approximations (docs/ACCURACY.md), on one headless EGL context in one\n"
     "process (no mpirun).\n"
     "--airmass: every airmass method over the sweep's rays; --sky: the single-scattering sky with 1, 2, 4 and\n"
@@ -45,13 +44,40 @@ const char* kUsage =
     "feature toggled alone, the full scene (the paper's table 2). --work-stats: instead, the work of the\n"
     "march per pixel, counted on the GPU: march steps, curtains evaluated, sub-steps and texture fetches, as\n"
     "the mean per pixel and the mean over 8x4-pixel blocks of each block's largest (what a 32-lane warp\n"
-    "waits for), for the full scene with its defaults (CSV).\n"
-    "--glory: error against cost of the glory's knobs on a scene that lists it: the table's resolution (glory\n"
-    "angles, wavelengths, size-parameter step) against the error of its colour per angle and the time to build\n"
-    "it, compared with the finer table of the CPU reference; then the colour per pixel (the colour table, or 1\n"
-    "to 32 wavelengths per pixel spaced evenly or importance sampled) against the error of the image and the\n"
-    "time per frame, compared with the GPU render from the reference's table.\n"
-    "Exit status: 0 success, 1 runtime failure (a file, no GL context, a shader), 2 usage error.\n";
+    "waits for), for the full scene with its defaults (CSV).\n";
+
+// The usage text: the generic runs, then each component's table.
+std::string usage()
+{
+    std::string text = kUsageHead;
+    for (const components::AccuracyTable& t : components::componentAccuracyTables())
+        text += "       aurorawall accuracy --" + std::string(t.option) + " FILE [--wall FILE] [--size WxH] [--runs N]\n";
+    text += kUsageBody;
+    for (const components::AccuracyTable& t : components::componentAccuracyTables())
+        text += "--" + std::string(t.option) + ": " + t.description;
+    return text + "Exit status: 0 success, 1 runtime failure (a file, no GL context, a shader), 2 usage error.\n";
+}
+
+// "--airmass, --sky, --scene FILE or --OPTION FILE" with each component's table.
+std::string runChoices()
+{
+    std::vector<std::string> runs = {"--airmass", "--sky", "--scene FILE"};
+    for (const components::AccuracyTable& t : components::componentAccuracyTables())
+        runs.push_back("--" + std::string(t.option) + " FILE");
+    std::string text = runs.front();
+    for (size_t i = 1; i < runs.size(); ++i)
+        text += (i + 1 == runs.size() ? " or " : ", ") + runs[i];
+    return text;
+}
+
+// The component's table whose option is given, or none.
+const components::AccuracyTable* givenTable(const cli::CommandLine& cli)
+{
+    for (const components::AccuracyTable& t : components::componentAccuracyTables())
+        if (cli.given(t.option))
+            return &t;
+    return nullptr;
+}
 
 // The CPU reference's step where a curtain is in reach, km: at most the GPU reference's 0.25 km (a
 // coarser one is no reference), at least 0.001 km (50 times the default's steps; its run time grows as
@@ -74,19 +100,21 @@ bool parseSize(const std::string& text, glm::ivec2& size)
 struct AccuracyOptions {
     bool airmass = false, sky = false;
     AccuracyReportSettings shader;  // --airmass, --sky
-    SceneAccuracySettings scene;    // --scene, --glory
+    accuracy::SceneAccuracySettings scene; // --scene, a component's table
     std::string size = "320x180"; // --size, parsed into scene.sizePx
 };
 
 void declareOptions(cli::CommandLine& cli, AccuracyOptions& o)
 {
     AccuracyReportSettings& shader = o.shader;
-    SceneAccuracySettings& scene = o.scene;
+    accuracy::SceneAccuracySettings& scene = o.scene;
     cli.add()
         ("airmass", po::bool_switch(&o.airmass), "the airmass methods")
         ("sky", po::bool_switch(&o.sky), "the several-lights sky")
-        ("scene", po::value(&scene.sceneFile), "the aurora's quality knobs on this scene file")
-        ("glory", po::value(&scene.sceneFile), "the glory's quality knobs on this scene file")
+        ("scene", po::value(&scene.sceneFile), "the aurora's quality knobs on this scene file");
+    for (const components::AccuracyTable& t : components::componentAccuracyTables())
+        cli.add()(t.option, po::value(&scene.sceneFile), t.help);
+    cli.add()
         ("repeat", po::value(&shader.airmassRepeat)->default_value(shader.airmassRepeat),
          "--airmass: airmass evaluations per shader invocation")
         ("copies", po::value(&shader.copies),
@@ -117,31 +145,35 @@ void declareOptions(cli::CommandLine& cli, AccuracyOptions& o)
 // and every option given applies to it.
 void checkRunKind(const cli::CommandLine& cli, const AccuracyOptions& o)
 {
-    const bool gloryRun = cli.given("glory");
-    if (gloryRun && cli.given("scene"))
-        throw cli.usageError("--glory cannot be combined with --scene");
-    const bool sceneRun = cli.given("scene") || gloryRun;
+    const components::AccuracyTable* table = givenTable(cli);
+    for (const components::AccuracyTable& t : components::componentAccuracyTables())
+        if (table && table != &t && cli.given(t.option))
+            throw cli.usageError("--" + std::string(table->option) + " cannot be combined with --" + t.option);
+    if (table && cli.given("scene"))
+        throw cli.usageError("--" + std::string(table->option) + " cannot be combined with --scene");
+    const std::string runName = table ? "--" + std::string(table->option) : "--scene";
+    const bool sceneRun = cli.given("scene") || table;
     if (sceneRun && (o.airmass || o.sky))
-        throw cli.usageError(std::string(gloryRun ? "--glory" : "--scene") + " cannot be combined with --airmass or --sky");
+        throw cli.usageError(runName + " cannot be combined with --airmass or --sky");
     if (!sceneRun && !o.airmass && !o.sky)
-        throw cli.usageError("choose --airmass, --sky, --scene FILE or --glory FILE");
+        throw cli.usageError("choose " + runChoices());
     for (const std::string& option : sceneRun ? kShaderOptions : kSceneOptions)
         if (cli.given(option))
             throw cli.usageError("--" + option + " applies to " + (sceneRun ? "--airmass and --sky" : "--scene") +
                                  " only");
-    if (gloryRun)
-        for (const std::string& option : kAuroraOnlyOptions)
+    if (table)
+        for (const std::string& option : kSceneOnlyOptions)
             if (cli.given(option))
                 throw cli.usageError("--" + option + " applies to --scene only");
 }
 
-// --scene or --glory: the options checked, then the sweep.
+// --scene or a component's table: the options checked, then the run.
 void runSceneKnobs(const cli::CommandLine& cli, AccuracyOptions& o, std::ostream& out)
 {
-    const bool gloryRun = cli.given("glory");
-    SceneAccuracySettings& scene = o.scene;
+    const components::AccuracyTable* table = givenTable(cli);
+    accuracy::SceneAccuracySettings& scene = o.scene;
     if (scene.sceneFile.empty())
-        throw cli.usageError(std::string(gloryRun ? "--glory" : "--scene") + " needs a file name");
+        throw cli.usageError((table ? "--" + std::string(table->option) : std::string("--scene")) + " needs a file name");
     if (!parseSize(o.size, scene.sizePx))
         throw cli.usageError("--size must be WxH with positive whole W and H (got '" + echoedInput(o.size) + "')");
     if (scene.frame < 0 || scene.frame > 100000000)
@@ -153,10 +185,12 @@ void runSceneKnobs(const cli::CommandLine& cli, AccuracyOptions& o, std::ostream
         std::snprintf(got, sizeof got, "%g", scene.referenceStepKm);
         throw cli.usageError("--reference-step-km must be in [0.001, 0.25] km (got " + std::string(got) + ")");
     }
-    if (gloryRun)
-        runGloryAccuracy(scene, out);
+    if (table)
+        table->run(scene, out);
+    else if (const components::SceneSweep sweep = components::componentSceneSweep())
+        sweep(scene, out);
     else
-        runSceneAccuracy(scene, out);
+        throw cli.usageError("--scene: no compiled-in component sweeps a scene's knobs");
 }
 
 // --airmass and/or --sky: the options checked, then the tables on one GL context.
@@ -166,7 +200,7 @@ void runShaderTables(const cli::CommandLine& cli, const AccuracyOptions& o, std:
     if (shader.airmassRepeat < 1 || shader.viewSteps < 1 || shader.lightSteps < 1 ||
         (cli.given("copies") && shader.copies < 1))
         throw cli.usageError("--repeat, --copies, --view-steps and --light-steps must be >= 1");
-    const auto context = openAccuracyContext(out);
+    const auto context = accuracy::openAccuracyContext(out);
     if (o.airmass)
         printAirmassAccuracy(shader, out);
     if (o.sky)
@@ -178,7 +212,7 @@ void runShaderTables(const cli::CommandLine& cli, const AccuracyOptions& o, std:
 int runAccuracyCommand(int argc, char** argv, std::ostream& out, std::ostream& err)
 {
     return cli::runCommand("accuracy", out, err, [&] {
-        cli::CommandLine cli("accuracy", kUsage);
+        cli::CommandLine cli("accuracy", usage());
         AccuracyOptions options;
         declareOptions(cli, options);
         if (!cli.parse(argc, argv)) {
@@ -186,7 +220,7 @@ int runAccuracyCommand(int argc, char** argv, std::ostream& out, std::ostream& e
             return;
         }
         checkRunKind(cli, options);
-        if (cli.given("scene") || cli.given("glory"))
+        if (cli.given("scene") || givenTable(cli))
             runSceneKnobs(cli, options, out);
         else
             runShaderTables(cli, options, out);

@@ -1,7 +1,7 @@
 #include "app/airmass_command.h"
 
-#include "app/cli/command_line.h"
-#include "app/cli/exit_status.h"
+#include "cli/command_line.h"
+#include "cli/exit_status.h"
 #include "atmosphere/airmass.h"
 #include "common/input_error.h"
 

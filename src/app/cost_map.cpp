@@ -1,6 +1,6 @@
 #include "app/cost_map.h"
 
-#include "app/cli/exit_status.h"
+#include "cli/exit_status.h"
 #include "io/png.h"
 
 #include <algorithm>

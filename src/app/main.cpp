@@ -1,44 +1,46 @@
 // aurorawall: one binary, several commands.
 #include "app/accuracy_command.h"
 #include "app/airmass_command.h"
-#include "app/cli/exit_status.h"
-#include "app/mie_command.h"
-#include "app/plasma_command.h"
+#include "cli/exit_status.h"
 #include "app/render_command.h"
 #include "app/tables_command.h"
 #include "common/input_error.h"
+#include "components/tools.h"
 
 #include <iostream>
+#include <iterator>
 #include <string>
+#include <vector>
 
 namespace {
 
 using namespace aurorawall;
 
-// Every command: its name, its lines in `aurorawall --help`, and how it runs (it sees its own name
-// as argv[0]). The usage text and the list of allowed names come from this one table.
-struct Command {
-    const char* name;
-    const char* summary; // after the name; further lines indented by 12
-    int (*run)(int argc, char** argv);
-};
+using components::Command;
 
-const Command kCommands[] = {
+// The generic commands: their names, their lines in `aurorawall --help`, and how they run (each sees
+// its own name as argv[0]). The components' commands follow them (components/tools.h); the usage
+// text and the list of allowed names come from both.
+const Command kGenericCommands[] = {
     {"render", "render a scene on a display wall, one MPI rank per group of screens\n"
                "            (mpirun -n RANKS aurorawall render --wall FILE --scene FILE ...)",
-     [](int argc, char** argv) { return app::runRenderCommand(argc, argv); }},
+     [](int argc, char** argv, std::ostream&, std::ostream&) { return app::runRenderCommand(argc, argv); }},
     {"airmass", "airmass integrals along rays read from standard input (CSV), by a chosen method",
-     [](int argc, char** argv) { return app::runAirmassCommand(argc, argv, std::cin, std::cout, std::cerr); }},
-    {"tables", "print the precomputed physics tables (e.g. tables deposition --energy-kev 5)",
-     [](int argc, char** argv) { return app::runTablesCommand(argc, argv, std::cout, std::cerr); }},
+     [](int argc, char** argv, std::ostream& out, std::ostream& err) {
+         return app::runAirmassCommand(argc, argv, std::cin, out, err);
+     }},
+    {"tables", "print the precomputed physics tables (e.g. tables deposition --energy-kev 5)", app::runTablesCommand},
     {"accuracy", "error against cost of the approximations (accuracy --airmass | --sky | --scene FILE)",
-     [](int argc, char** argv) { return app::runAccuracyCommand(argc, argv, std::cout, std::cerr); }},
-    {"mie", "exact Mie scattering by one sphere (mie --n 1.33 --k 0 --x 100 [--angles-deg 0,180])",
-     [](int argc, char** argv) { return app::runMieCommand(argc, argv, std::cout, std::cerr); }},
-    {"plasma", "the particle-in-cell plasma: verify [--case NAME] against theory, soak --scene F (long\n"
-               "            runs of a scene's plasma), accuracy (error against run time)",
-     [](int argc, char** argv) { return app::runPlasmaCommand(argc, argv, std::cout, std::cerr); }},
+     app::runAccuracyCommand},
 };
+
+std::vector<Command> allCommands()
+{
+    std::vector<Command> all(std::begin(kGenericCommands), std::end(kGenericCommands));
+    const std::vector<Command>& tools = components::componentCommands();
+    all.insert(all.end(), tools.begin(), tools.end());
+    return all;
+}
 
 std::string usage()
 {
@@ -47,7 +49,7 @@ std::string usage()
                        "Usage: aurorawall <command> [options]   (aurorawall <command> --help for its options)\n"
                        "\n"
                        "Commands:\n";
-    for (const Command& c : kCommands)
+    for (const Command& c : allCommands())
         text += "  " + std::string(c.name) + std::string(10 - std::string(c.name).size(), ' ') + c.summary + "\n";
     return text +
            "\n"
@@ -65,7 +67,7 @@ std::string usage()
 std::string commandNames()
 {
     std::string names;
-    for (const Command& c : kCommands)
+    for (const Command& c : allCommands())
         names += (names.empty() ? "" : ", ") + std::string(c.name);
     return names;
 }
@@ -78,18 +80,18 @@ int main(int argc, char** argv)
     const std::string seeHelp = " (see aurorawall --help)";
     if (command == "--help" || command == "-h") {
         std::cout << usage();
-        return app::cli::kSuccess;
+        return cli::kSuccess;
     }
-    for (const Command& c : kCommands)
+    for (const Command& c : allCommands())
         if (command == c.name)
-            return c.run(argc - 1, argv + 1);
+            return c.run(argc - 1, argv + 1, std::cout, std::cerr);
     if (command.empty())
-        std::cerr << app::cli::errorLine("", "missing command (allowed: " + commandNames() + ")" + seeHelp) << "\n";
+        std::cerr << cli::errorLine("", "missing command (allowed: " + commandNames() + ")" + seeHelp) << "\n";
     else if (command[0] == '-')
-        std::cerr << app::cli::errorLine("", "unrecognised option '" + echoedInput(command) + "'" + seeHelp) << "\n";
+        std::cerr << cli::errorLine("", "unrecognised option '" + echoedInput(command) + "'" + seeHelp) << "\n";
     else
-        std::cerr << app::cli::errorLine("", "unknown command '" + echoedInput(command) + "' (allowed: " + commandNames() +
+        std::cerr << cli::errorLine("", "unknown command '" + echoedInput(command) + "' (allowed: " + commandNames() +
                                             ")" + seeHelp)
                   << "\n";
-    return app::cli::kUsageError;
+    return cli::kUsageError;
 }

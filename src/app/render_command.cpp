@@ -1,6 +1,6 @@
 #include "app/render_command.h"
 
-#include "app/cli/exit_status.h"
+#include "cli/exit_status.h"
 #include "app/frame_loop.h"
 #include "app/stop_signal.h"
 #include "app/wall_output.h"

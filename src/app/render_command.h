@@ -1,7 +1,7 @@
 #pragma once
 namespace aurorawall::app {
 
-// `aurorawall render ...` under mpirun. Returns the exit status (app/cli/exit_status.h), the same
+// `aurorawall render ...` under mpirun. Returns the exit status (cli/exit_status.h), the same
 // on every rank: the largest over the ranks, so a usage error on any rank makes every rank exit 2.
 int runRenderCommand(int argc, char** argv);
 

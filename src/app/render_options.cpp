@@ -1,6 +1,6 @@
 #include "app/render_options.h"
 
-#include "app/cli/command_line.h"
+#include "cli/command_line.h"
 
 #include <cmath>
 

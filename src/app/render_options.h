@@ -1,5 +1,5 @@
 #pragma once
-// The options of `aurorawall render`, parsed through app/cli/command_line.h.
+// The options of `aurorawall render`, parsed through cli/command_line.h.
 #include "cluster/rank_message.h"
 #include "gl/backend.h"
 #include "io/tone_map.h"

@@ -1,6 +1,6 @@
 #include "app/wall_output.h"
 
-#include "app/cli/exit_status.h"
+#include "cli/exit_status.h"
 #include "app/cost_map.h"
 #include "io/atomic_file.h"
 #include "io/exr.h"

@@ -1,6 +1,6 @@
 #include "app/wall_session.h"
 
-#include "app/cli/exit_status.h"
+#include "cli/exit_status.h"
 #include "components/registry.h"
 #include "common/data_dir.h"
 #include "common/input_error.h"

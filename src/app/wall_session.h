@@ -50,7 +50,7 @@ struct WallSession {
 };
 
 // Runs one step on every rank and agrees on its outcome: the largest exit status over the ranks
-// (app/cli/exit_status.h: 0 if no rank threw, 2 for a usage error, 1 for any other), on every rank;
+// (cli/exit_status.h: 0 if no rank threw, 2 for a usage error, 1 for any other), on every rank;
 // rank 0 has printed each distinct reason once.
 int agreedStep(const cluster::MpiWorld& world, const std::function<void()>& step);
 

@@ -16,7 +16,7 @@ public:
 // A mistake on the command line itself: an unknown, missing or repeated option, a malformed value, a
 // value out of range or not among the allowed words, options that contradict each other, or (render)
 // a number of MPI ranks other than the wall file's. Commands exit with status 2 for it and 1 for any
-// other error, a malformed file included (app/cli/exit_status.h).
+// other error, a malformed file included (cli/exit_status.h).
 class UsageError : public InputError {
 public:
     using InputError::InputError;

@@ -1,14 +1,12 @@
-// The command front ends without a GL context or MPI: the command-line convention (app/cli), the
+// The command front ends without a GL context or MPI: the command-line convention (src/cli), the
 // options of `render`, and the `tables`, `airmass` and `accuracy` commands up to their first GL call.
 #include "app/accuracy_command.h"
 #include "app/airmass_command.h"
-#include "app/cli/command_line.h"
-#include "app/cli/exit_status.h"
+#include "cli/command_line.h"
+#include "cli/exit_status.h"
 #include "app/control/command.h"
 #include "app/cost_map.h"
-#include "app/mie_command.h"
 #include "app/path_recorder.h"
-#include "app/plasma_command.h"
 #include "app/render_options.h"
 #include "app/tables_command.h"
 #include "atmosphere/airmass.h"
@@ -16,7 +14,7 @@
 #include "common/input_error.h"
 #include "components/registry.h"
 #include "components/aurora/physics/deposition_table.h"
-#include "run_in_process.h"
+#include "common/run_in_process.h"
 
 #include <gtest/gtest.h>
 
@@ -393,134 +391,6 @@ TEST(AccuracyCommand, UnreadableSceneIsARuntimeFailure)
     EXPECT_EQ(lines(r.err).size(), 1u) << r.err;
 }
 
-// ---- mie ----
-
-Result runMie(std::vector<std::string> words)
-{
-    words.insert(words.begin(), "mie");
-    return test::runInProcess(runMieCommand, std::move(words));
-}
-
-std::vector<double> csvNumbers(const std::string& row)
-{
-    std::vector<double> values;
-    std::istringstream in(row);
-    for (std::string cell; std::getline(in, cell, ',');) values.push_back(std::strtod(cell.c_str(), nullptr)); // stod throws on subnormals
-    return values;
-}
-
-// Wiscombe's MIEV0 values for water, m = 1.33 − 1e-5 i, x = 100, through the command line.
-TEST(MieCommand, PrintsEfficienciesAndAmplitudes)
-{
-    Result r = runMie({"--n", "1.33", "--k", "1e-5", "--x", "100", "--angles-deg", "0,1,2.5,180"});
-    ASSERT_EQ(r.status, 0) << r.err;
-    EXPECT_TRUE(r.err.empty());
-    const std::vector<std::string> rows = lines(r.out);
-    ASSERT_EQ(rows.size(), 8u) << r.out;
-    EXPECT_EQ(rows[0], "x,n,k,terms,qext,qsca,qabs,qback,g,s1_0_re,s1_0_im,s1_180_re,s1_180_im");
-    const std::vector<double> row = csvNumbers(rows[1]);
-    ASSERT_EQ(row.size(), 13u);
-    EXPECT_EQ(row[3], 120.0);
-    EXPECT_NEAR(row[4], 2.101321, 0.5e-6);
-    EXPECT_NEAR(row[5], 2.096594, 0.5e-6);
-    EXPECT_NEAR(row[8], 0.868959, 0.5e-6);
-    EXPECT_NEAR(row[9], 5253.302, 0.5e-3);
-    EXPECT_NEAR(row[10], -124.3188, 0.5e-4);
-    EXPECT_NEAR(row[11], -56.59205, 0.5e-5);
-    EXPECT_NEAR(row[12], 46.50974, 0.5e-5);
-    EXPECT_EQ(rows[2], "");
-    EXPECT_EQ(rows[3], "angle_deg,i_parallel,i_perpendicular,s1_re,s1_im,s2_re,s2_im");
-    const std::vector<double> forward = csvNumbers(rows[4]), backward = csvNumbers(rows[7]);
-    EXPECT_EQ(forward[0], 0.0);
-    EXPECT_EQ(forward[3], row[9]);
-    EXPECT_EQ(forward[4], row[10]);
-    EXPECT_EQ(backward[0], 180.0);
-    EXPECT_EQ(backward[3], row[11]);
-    EXPECT_EQ(backward[5], -row[11]); // S2(180°) = −S1(180°)
-    EXPECT_EQ(csvNumbers(rows[5])[0], 1.0);
-    EXPECT_EQ(csvNumbers(rows[6])[0], 2.5);
-}
-
-TEST(MieCommand, WithoutAnglesOneBlock)
-{
-    Result r = runMie({"--n", "1.5", "--k", "0", "--x", "10"});
-    ASSERT_EQ(r.status, 0) << r.err;
-    ASSERT_EQ(lines(r.out).size(), 2u) << r.out;
-    EXPECT_NEAR(csvNumbers(lines(r.out)[1])[4], 2.881999, 0.5e-6);
-}
-
-TEST(MieCommand, BadOptionsNameTheOptionAndExit2)
-{
-    const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
-        {{"--n", "1.33", "--k", "0", "--x", "0"}, "--x"},
-        {{"--n", "1.33", "--k", "0", "--x", "-2"}, "--x"},
-        {{"--n", "0.9", "--k", "0", "--x", "1"}, "--n"},
-        {{"--n", "1.33", "--k", "-0.1", "--x", "1"}, "--k"},
-        {{"--n", "nan", "--k", "0", "--x", "1"}, "--n"},
-        {{"--n", "1.33", "--k", "0", "--x", "nan"}, "--x"},
-        {{"--n", "1.33", "--k", "0", "--x", "inf"}, "--x"},
-        {{"--n", "1.33", "--k", "0", "--x"}, "'--x'"},
-        {{"--n", "1.33", "--x", "1"}, "'--k'"},
-        {{"--n", "1.33", "--k", "0", "--x", "abc"}, "'--x'"},
-        {{"--n", "1.33", "--k", "0", "--x", "1", "--angles-deg", "0,,3"}, "--angles-deg"},
-        {{"--n", "1.33", "--k", "0", "--x", "1", "--angles-deg", "0,200"}, "--angles-deg"},
-        {{"--n", "1.33", "--k", "0", "--x", "1", "--angles-deg", "1;2"}, "--angles-deg"},
-        {{"--n", "1.33", "--k", "0", "--x", "1", "--angles-deg", "nan"}, "--angles-deg"},
-        {{"--n", "1.33", "--k", "0", "--x", "1", "--bogus"}, "--bogus"},
-    };
-    for (const auto& [words, named] : cases) {
-        Result r = runMie(words);
-        EXPECT_EQ(r.status, 2) << named;
-        EXPECT_TRUE(r.out.empty()) << named;
-        EXPECT_NE(r.err.find(named), std::string::npos) << r.err;
-        EXPECT_EQ(r.err.rfind("aurorawall mie: ", 0), 0u) << r.err;
-        EXPECT_EQ(lines(r.err).size(), 1u) << r.err;
-    }
-}
-
-// An angle is any number in [0, 180], a subnormal one too (strtod's ERANGE rejected 4.9e-324).
-TEST(MieCommand, SubnormalAnglesAreAngles)
-{
-    const Result r = runMie({"--n", "1.33", "--k", "0", "--x", "1", "--angles-deg", "4.9e-324,1e-310"});
-    ASSERT_EQ(r.status, 0) << r.err;
-    ASSERT_EQ(lines(r.out).size(), 6u) << r.out;
-    EXPECT_EQ(csvNumbers(lines(r.out)[4])[0], 4.9e-324);
-    EXPECT_EQ(csvNumbers(lines(r.out)[5])[0], 1e-310);
-    EXPECT_EQ(runMie({"--n", "1.33", "--k", "0", "--x", "1", "--angles-deg", "1e999"}).status, 2);
-}
-
-// ---- plasma verify ----
-
-Result runPlasma(std::vector<std::string> words)
-{
-    words.insert(words.begin(), "plasma");
-    return test::runInProcess(runPlasmaCommand, std::move(words));
-}
-
-// Time steps and spacings where a case cannot measure are usage errors naming the option: at
-// --wp-dt 1e-300 the step count overflowed and langmuir printed NaN, exb did at --wc-dt 1e300 and
-// 1e-300, heating at --dx-lambda-d 1e300 (and failed with no option named at 5e-324).
-TEST(PlasmaCommand, TimeStepsAndSpacingsOutsideTheirRangesNameTheOption)
-{
-    const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
-        {{"--case", "langmuir", "--wp-dt", "1e-300"}, "--wp-dt must be in [0.01, 2)"},
-        {{"--case", "langmuir", "--wp-dt", "0.0099999"}, "--wp-dt must be in [0.01, 2)"},
-        {{"--case", "exb", "--wc-dt", "1e300"}, "--wc-dt must be in [1e-06, 1000000]"},
-        {{"--case", "exb", "--wc-dt", "1e-300"}, "--wc-dt must be in [1e-06, 1000000]"},
-        {{"--case", "heating", "--dx-lambda-d", "1e300"}, "--dx-lambda-d must be in [0.01, 100]"},
-        {{"--case", "heating", "--dx-lambda-d", "5e-324"}, "--dx-lambda-d must be in [0.01, 100]"},
-    };
-    for (const auto& [words, expected] : cases) {
-        std::vector<std::string> args = {"verify"};
-        args.insert(args.end(), words.begin(), words.end());
-        const Result r = runPlasma(args);
-        EXPECT_EQ(r.status, 2) << expected;
-        EXPECT_TRUE(r.out.empty()) << r.out;
-        EXPECT_EQ(r.err.rfind("aurorawall plasma: " + expected, 0), 0u) << r.err;
-        EXPECT_EQ(lines(r.err).size(), 1u) << r.err;
-    }
-}
-
 // ---- what error messages echo of the input ----
 
 TEST(EchoedInput, LongTextIsCutWithItsLengthAndControlCharactersEscaped)
@@ -536,7 +406,7 @@ TEST(EchoedInput, LongTextIsCutWithItsLengthAndControlCharactersEscaped)
 // However long a value, the error that quotes it is one short line with the value's start and length.
 TEST(EchoedInput, ErrorsQuotingAHugeValueStayOneShortLine)
 {
-    const std::string huge(1 << 20, '7'), word(1 << 20, 'w');
+    const std::string word(1 << 20, 'w');
     const std::string length = "(1048576 bytes)";
     const auto expectShort = [&](const std::string& error, const std::string& what) {
         EXPECT_EQ(lines(error).size(), 1u) << what;
@@ -546,12 +416,8 @@ TEST(EchoedInput, ErrorsQuotingAHugeValueStayOneShortLine)
     std::string out, err;
     EXPECT_EQ(runAirmass({"airmass"}, "0,6371,0,0,1,0,0,100,8," + word + "\n", out, err), 1);
     expectShort(err, "airmass field");
-    expectShort(runMie({"--n", "1.33", "--k", "0", "--x", word}).err, "mie --x");
-    expectShort(runMie({"--n", "1.33", "--k", "0", "--x", "1", "--angles-deg", huge}).err, "mie --angles-deg");
-    expectShort(runMie({"--n", "1.33", "--k", "0", "--x", "1", "--" + word.substr(2), "1"}).err, "unknown option");
     expectShort(runTables({word, "--energy-kev", "5"}).err, "tables TABLE");
     expectShort(runAccuracy({"--scene", "s.toml", "--size", word}).err, "accuracy --size");
-    expectShort(runPlasma({word}).err, "plasma ACTION");
     try {
         parseRender({"--wall", "w.toml", "--scene", "s.toml", "--backend", word});
         ADD_FAILURE() << "render --backend: no error";
@@ -577,11 +443,6 @@ TEST(EchoedInput, ErrorsQuotingAHugeValueStayOneShortLine)
         expectShort(e.what(), "scene component");
     }
     std::filesystem::remove(scene);
-    // A control character typed into a value stays inside the one line.
-    const Result angles = runMie({"--n", "1.33", "--k", "0", "--x", "1", "--angles-deg", "1,2\n,3"});
-    EXPECT_EQ(angles.status, 2);
-    EXPECT_EQ(lines(angles.err).size(), 1u) << angles.err;
-    EXPECT_NE(angles.err.find("'2\\n'"), std::string::npos) << angles.err;
 }
 
 // ---- render --cost-map: option, colour map and scale bar ----

@@ -1,9 +1,9 @@
 // The airglow on the GPU (EGL; Mesa llvmpipe in CI) against the double-precision CPU reference,
 // whose airglow part integrates both exponentials of each layer exactly (adaptive Gauss-Kronrod):
 // from orbit at the limb and from the ground toward the horizon, every pixel.
-#include "app/accuracy_scene.h"
 #include "components/airglow/airglow.h"
 #include "components/atmosphere/atmosphere.h"
+#include "components/aurora/tools/aurora_accuracy.h"
 #include "components/registry.h"
 #include "gl/context.h"
 #include "render/float_bounds.h"
@@ -27,7 +27,7 @@ const std::string kSource = AURORAWALL_SOURCE_DIR;
 // aurora and stars are tested elsewhere.
 scene::Scene airglowOnly(const std::string& file)
 {
-    scene::Scene s = app::withoutUnmodelled(components::loadScene(kSource + "/config/scenes/" + file));
+    scene::Scene s = components::aurora::tools::withoutUnmodelled(components::loadScene(kSource + "/config/scenes/" + file));
     s.remove("aurora");
     return s;
 }
@@ -48,8 +48,8 @@ scene::Scene airglowOnly(const std::string& file)
 // - the ray itself rounded to float: test::rayRoundingBound.
 test::BoundedError gpuAgainstReference(const scene::Scene& s)
 {
-    const app::SceneView view = app::sceneView(s, kSource + "/config/walls/single.toml", {48, 27});
-    const io::Image gpu = app::renderView(s, view, kSource + "/shaders", 0).image;
+    const accuracy::SceneView view = accuracy::sceneView(s, kSource + "/config/walls/single.toml", {48, 27});
+    const io::Image gpu = accuracy::renderView(s, view, kSource + "/shaders", 0).image;
     scene::Scene withoutAirglow = s, withoutAtmosphere = s;
     withoutAirglow.remove("airglow");
     withoutAtmosphere.remove("atmosphere");
@@ -71,7 +71,7 @@ test::BoundedError gpuAgainstReference(const scene::Scene& s)
     test::BoundedError b;
     for (int y = 0; y < gpu.height; ++y)
         for (int x = 0; x < gpu.width; ++x) {
-            const glm::dvec3 d = app::pixelDirection(view, x, y), o = view.frame.cameraPositionKm;
+            const glm::dvec3 d = accuracy::pixelDirection(view, x, y), o = view.frame.cameraPositionKm;
             const glm::dvec3 reference = model.radiance(o, d);
             const double r = glm::length(reference);
             if (!(r >= floor))
@@ -85,7 +85,7 @@ test::BoundedError gpuAgainstReference(const scene::Scene& s)
                               air.skyGlow[c] * T * transmittanceError + 2.0 * u * glow[c];
             }
             const double bound = (glm::length(channels) + test::rayRoundingBound(model, view, x, y)) / r;
-            b.add(glm::length(app::pixelRadiance(gpu, x, y) - reference) / r, bound);
+            b.add(glm::length(accuracy::pixelRadiance(gpu, x, y) - reference) / r, bound);
         }
     return b;
 }

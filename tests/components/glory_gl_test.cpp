@@ -2,7 +2,7 @@
 // deck's geometry and light in double, the colour from a table with twice the angles, every 5 nm and
 // half the size-parameter step), and its stiff cases: the Sun exactly behind and exactly in front of
 // the camera, the camera above, inside and below the deck.
-#include "app/accuracy_scene.h"
+#include "accuracy/scene_view.h"
 #include "atmosphere/airmass_exact.h"
 #include "components/atmosphere/atmosphere.h"
 #include "components/glory/glory.h"
@@ -33,14 +33,14 @@ scene::Scene gloryScene()
 }
 
 struct Render {
-    app::SceneView view;
+    accuracy::SceneView view;
     io::Image image;
 };
 
 Render renderScene(const scene::Scene& s, glm::ivec2 size)
 {
-    Render r{app::sceneView(s, kSource + "/config/walls/single.toml", size), {}};
-    r.image = app::renderView(s, r.view, kSource + "/shaders", 0).image;
+    Render r{accuracy::sceneView(s, kSource + "/config/walls/single.toml", size), {}};
+    r.image = accuracy::renderView(s, r.view, kSource + "/shaders", 0).image;
     return r;
 }
 
@@ -104,7 +104,7 @@ ColourTables colourTables(const GlorySettings& s)
 //   and exp's (6 + 4τ)u, τ from the exact airmass of the reference's geometry.
 class PixelBound {
 public:
-    PixelBound(const scene::Scene& s, const render::ReferenceModel& model, const app::SceneView& view)
+    PixelBound(const scene::Scene& s, const render::ReferenceModel& model, const accuracy::SceneView& view)
         : s_(s), model_(model), view_(view), glory_(s.settings<GlorySettings>()), tables_(colourTables(glory_)),
           air_(s.settings<components::atmosphere::Settings>())
     {
@@ -116,7 +116,7 @@ public:
         const double airmassError = test::floatAirmassError(air_.topKm / air_.scaleHeightKm) +
                                     test::closedFormAirmassError(air_.scaleHeightKm, R);
         const glm::dvec3 o = view_.frame.cameraPositionKm, light = glory_.lightDirection;
-        const glm::dvec3 d = app::pixelDirection(view_, x, y);
+        const glm::dvec3 d = accuracy::pixelDirection(view_, x, y);
         // The deck point and its cosines, in double.
         const double altitude = glm::length(o) - R;
         const double t = aurorawall::f64::raySphere(o, d, R + glory_.deckTopKm, altitude - glory_.deckTopKm).x;
@@ -155,7 +155,7 @@ public:
 private:
     const scene::Scene& s_;
     const render::ReferenceModel& model_;
-    const app::SceneView& view_;
+    const accuracy::SceneView& view_;
     const GlorySettings& glory_;
     const ColourTables tables_;
     const components::atmosphere::Settings& air_;
@@ -170,10 +170,10 @@ test::BoundedError gpuAgainstReference(const scene::Scene& s)
     test::BoundedError b;
     for (int y = 0; y < r.image.height; ++y)
         for (int x = 0; x < r.image.width; ++x) {
-            const glm::dvec3 d = app::pixelDirection(r.view, x, y);
+            const glm::dvec3 d = accuracy::pixelDirection(r.view, x, y);
             const glm::dvec3 reference = model.radiance(r.view.frame.cameraPositionKm, d);
             if (glm::length(reference) >= 1.0)
-                b.add(glm::length(app::pixelRadiance(r.image, x, y) - reference) / glm::length(reference),
+                b.add(glm::length(accuracy::pixelRadiance(r.image, x, y) - reference) / glm::length(reference),
                       bound.relative(x, y, reference));
         }
     return b;
@@ -223,14 +223,14 @@ TEST(GloryOnTheGpu, SunExactlyBehindAndInFront)
             const Render r = renderScene(s, {33, 33});
             for (int y = 0; y < r.image.height; ++y)
                 for (int x = 0; x < r.image.width; ++x)
-                    ASSERT_TRUE(finite(app::pixelRadiance(r.image, x, y))) << altitudeKm << " km, " << x << "," << y;
+                    ASSERT_TRUE(finite(accuracy::pixelRadiance(r.image, x, y))) << altitudeKm << " km, " << x << "," << y;
             const glm::dvec3 axis = model.radiance(s.camera.positionKm, sign * sun);
             EXPECT_TRUE(finite(axis)) << altitudeKm;
             if (altitudeKm > 1.0 && sign < 0.0) {
                 // Looking down the antisolar direction from above: the deck and its glory.
                 EXPECT_GT(axis.g, 100.0);
-                const glm::dvec3 centre = model.radiance(s.camera.positionKm, app::pixelDirection(r.view, 16, 16));
-                const double error = glm::length(app::pixelRadiance(r.image, 16, 16) - centre) / glm::length(centre);
+                const glm::dvec3 centre = model.radiance(s.camera.positionKm, accuracy::pixelDirection(r.view, 16, 16));
+                const double error = glm::length(accuracy::pixelRadiance(r.image, 16, 16) - centre) / glm::length(centre);
                 const double bound = PixelBound(s, model, r.view).relative(16, 16, centre);
                 std::printf("glory's centre from %g km: error %.3g, bound %.3g\n", altitudeKm, error, bound);
                 EXPECT_LT(error, bound);
@@ -251,7 +251,7 @@ TEST(GloryOnTheGpu, WavelengthsPerPixelEstimateTheColourTable)
     std::vector<glm::dvec3> expected;
     for (int y = 0; y < table.image.height; ++y)
         for (int x = 0; x < table.image.width; ++x)
-            expected.push_back(app::pixelRadiance(table.image, x, y));
+            expected.push_back(accuracy::pixelRadiance(table.image, x, y));
     for (auto sampling : {components::glory::WavelengthSampling::Uniform, components::glory::WavelengthSampling::Importance}) {
         auto& glory = s.settings<GlorySettings>();
         glory.sampling = sampling;
@@ -260,8 +260,8 @@ TEST(GloryOnTheGpu, WavelengthsPerPixelEstimateTheColourTable)
         std::vector<glm::dvec3> values;
         for (int y = 0; y < summed.image.height; ++y)
             for (int x = 0; x < summed.image.width; ++x)
-                values.push_back(app::pixelRadiance(summed.image, x, y));
-        const app::RelativeError e = app::relativeError(values, expected, 1.0);
+                values.push_back(accuracy::pixelRadiance(summed.image, x, y));
+        const accuracy::RelativeError e = accuracy::relativeError(values, expected, 1.0);
         std::printf("32 wavelengths per pixel (%s) against the colour table: rms %.3g, max %.3g\n",
                     sampling == components::glory::WavelengthSampling::Uniform ? "uniform" : "importance", e.rms, e.max);
         EXPECT_GT(e.pixels, 2000u);

@@ -1,7 +1,7 @@
 // The plasma box on the GPU against the double-precision CPU reference (box_reference.h), which
 // reads the same frames and integrates their column exactly (tests/app/data/plasma-box-side.toml:
 // the box's bands seen from the side, across the field).
-#include "app/accuracy_scene.h"
+#include "components/aurora/tools/aurora_accuracy.h"
 #include "components/plasma/box_frames.h"
 #include "components/plasma/box_reference.h"
 #include "components/plasma/box_reference.h"
@@ -38,7 +38,7 @@ std::vector<glm::ivec2> brightestPixels(const io::Image& image, size_t count)
         for (int x = 0; x < image.width; ++x)
             pixels.emplace_back(x, y);
     std::sort(pixels.begin(), pixels.end(), [&](glm::ivec2 a, glm::ivec2 b) {
-        return glm::length(app::pixelRadiance(image, a.x, a.y)) > glm::length(app::pixelRadiance(image, b.x, b.y));
+        return glm::length(accuracy::pixelRadiance(image, a.x, a.y)) > glm::length(accuracy::pixelRadiance(image, b.x, b.y));
     });
     pixels.resize(std::min(count, pixels.size()));
     return pixels;
@@ -85,7 +85,7 @@ double filterError(const components::plasma::BoxFrames& frames, double position,
 
 struct Comparison {
     test::BoundedError error;        // each pixel against its bound
-    app::RelativeError otherFrame;   // against the reference one frame earlier
+    accuracy::RelativeError otherFrame;   // against the reference one frame earlier
 };
 
 // The scene rendered with `stepsPerCell` against the reference at the view's time and at the time one
@@ -97,23 +97,23 @@ struct Comparison {
 // own (u = 2^-24).
 Comparison compare(int stepsPerCell)
 {
-    scene::Scene s = app::withoutUnmodelled(components::loadScene(kSource + "/tests/app/data/plasma-box-side.toml"));
-    app::applyFinestSettings(s);
+    scene::Scene s = components::aurora::tools::withoutUnmodelled(components::loadScene(kSource + "/tests/app/data/plasma-box-side.toml"));
+    components::aurora::tools::applyFinestSettings(s);
     auto& plasma = s.settings<components::plasma::Settings>();
     plasma.boxStepsPerCell = stepsPerCell;
-    const app::SceneView view = app::sceneView(s, kSource + "/config/walls/single.toml", {64, 36});
-    const io::Image gpu = app::renderView(s, view, kSource + "/shaders", 0).image;
+    const accuracy::SceneView view = accuracy::sceneView(s, kSource + "/config/walls/single.toml", {64, 36});
+    const io::Image gpu = accuracy::renderView(s, view, kSource + "/shaders", 0).image;
     const std::vector<glm::ivec2> pixels = brightestPixels(gpu, 32);
     std::vector<glm::dvec3> values;
     for (const glm::ivec2& p : pixels)
-        values.push_back(app::pixelRadiance(gpu, p.x, p.y));
+        values.push_back(accuracy::pixelRadiance(gpu, p.x, p.y));
     const double floor = 1.0 / (255.0 * s.exposure);
     const std::shared_ptr<const fluid::FluxFrames> strip = components::roles::curtainDetailFrames(s);
     const scene::RoleData detail = components::roles::curtainDetailData(strip.get());
     const render::ReferenceModel model(s, view.frame.timeS, detail);
     const double frameS = plasma.boxPlayS / (plasma.boxFrames - 1);
     const render::ReferenceModel earlier(s, view.frame.timeS - frameS, detail);
-    const std::vector<glm::dvec3> reference = app::referencePixels(model, view, pixels, 2);
+    const std::vector<glm::dvec3> reference = accuracy::referencePixels(model, view, pixels, 2);
 
     namespace box = components::plasma;
     const box::BoxFrames frames = box::cachedBoxFrames(box::boxFramesSpec(plasma), io::defaultCacheDirectory()).frames;
@@ -131,7 +131,7 @@ Comparison compare(int stepsPerCell)
         if (!(r >= floor))
             continue;
         const glm::dvec3 o = glm::transpose(axes) * (view.frame.cameraPositionKm - centre);
-        const glm::dvec3 d = glm::transpose(axes) * app::pixelDirection(view, pixels[i].x, pixels[i].y);
+        const glm::dvec3 d = glm::transpose(axes) * accuracy::pixelDirection(view, pixels[i].x, pixels[i].y);
         glm::dvec2 segment = components::plasma::boxSegment(o, d, 0.5 * plasma.boxSideKm);
         segment.x = std::max(segment.x, 0.0);
         double march = 0.0, filter = 0.0;
@@ -142,7 +142,7 @@ Comparison compare(int stepsPerCell)
         }
         c.error.add(glm::length(values[i] - reference[i]) / r, march + filter + arithmetic);
     }
-    c.otherFrame = app::relativeError(values, app::referencePixels(earlier, view, pixels, 2), floor);
+    c.otherFrame = accuracy::relativeError(values, accuracy::referencePixels(earlier, view, pixels, 2), floor);
     return c;
 }
 
@@ -182,14 +182,14 @@ TEST(PlasmaBoxOnTheGpu, AgreesWithTheReference)
 // noise, is held: above 1e-5, the knob reaches the shader. The order of the finer rows is noise.
 TEST(PlasmaBoxOnTheGpu, AccuracyTableHasTheBoxKnob)
 {
-    app::SceneAccuracySettings settings;
+    accuracy::SceneAccuracySettings settings;
     settings.sceneFile = kSource + "/tests/app/data/plasma-box-side.toml";
     settings.wallFile = kSource + "/config/walls/single.toml";
     settings.sizePx = {32, 18};
     settings.pixels = 16;
     settings.runs = 1;
     std::ostringstream out;
-    app::runSceneAccuracy(settings, out);
+    components::aurora::tools::runSceneAccuracy(settings, out);
     std::map<int, double> rmsGpu; // steps per cell -> rms_rel_gpu
     std::istringstream lines(out.str());
     for (std::string line; std::getline(lines, line);) {

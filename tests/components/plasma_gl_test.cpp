@@ -1,7 +1,7 @@
 // The plasma's curtain detail on the GPU against the double-precision CPU reference, which samples
 // the same electron-density frames (tests/app/data/plasma-seam.toml at the renderer's finest
 // settings: the curls at the zenith).
-#include "app/accuracy_scene.h"
+#include "components/aurora/tools/aurora_accuracy.h"
 #include "components/plasma/plasma.h"
 #include "components/plasma/sheet_frames.h"
 #include "components/registry.h"
@@ -30,10 +30,10 @@ const std::string kSource = AURORAWALL_SOURCE_DIR;
 TEST(PlasmaOnTheGpu, AgreesWithTheReference)
 {
     const std::unique_ptr<gl::Context> context = gl::createContext(gl::Backend::Egl);
-    scene::Scene s = app::withoutUnmodelled(components::loadScene(kSource + "/tests/app/data/plasma-seam.toml"));
-    app::applyFinestSettings(s);
-    const app::SceneView view = app::sceneView(s, kSource + "/config/walls/single.toml", {64, 36});
-    const io::Image gpu = app::renderView(s, view, kSource + "/shaders", 0).image;
+    scene::Scene s = components::aurora::tools::withoutUnmodelled(components::loadScene(kSource + "/tests/app/data/plasma-seam.toml"));
+    components::aurora::tools::applyFinestSettings(s);
+    const accuracy::SceneView view = accuracy::sceneView(s, kSource + "/config/walls/single.toml", {64, 36});
+    const io::Image gpu = accuracy::renderView(s, view, kSource + "/shaders", 0).image;
     const double floor = 1.0 / (255.0 * s.exposure);
     // The 16 brightest pixels of the view: on the curls.
     std::vector<glm::ivec2> pixels;
@@ -41,25 +41,25 @@ TEST(PlasmaOnTheGpu, AgreesWithTheReference)
         for (int x = 0; x < gpu.width; ++x)
             pixels.emplace_back(x, y);
     std::sort(pixels.begin(), pixels.end(), [&](glm::ivec2 a, glm::ivec2 b) {
-        return glm::length(app::pixelRadiance(gpu, a.x, a.y)) > glm::length(app::pixelRadiance(gpu, b.x, b.y));
+        return glm::length(accuracy::pixelRadiance(gpu, a.x, a.y)) > glm::length(accuracy::pixelRadiance(gpu, b.x, b.y));
     });
     pixels.resize(16);
     const fluid::FluxFrames frames = components::plasma::simulateSheetFrames(
         components::plasma::sheetFramesSpec(s.settings<components::plasma::Settings>()));
     const render::ReferenceModel model(s, view.frame.timeS, components::roles::curtainDetailData(&frames));
-    const std::vector<glm::dvec3> reference = app::referencePixels(model, view, pixels, 2);
+    const std::vector<glm::dvec3> reference = accuracy::referencePixels(model, view, pixels, 2);
     std::vector<glm::dvec3> values;
     for (const glm::ivec2& p : pixels)
-        values.push_back(app::pixelRadiance(gpu, p.x, p.y));
-    const app::RelativeError e = app::relativeError(values, reference, floor);
+        values.push_back(accuracy::pixelRadiance(gpu, p.x, p.y));
+    const accuracy::RelativeError e = accuracy::relativeError(values, reference, floor);
     // The same reference with the frames of a strip seeded with one more wave: the test sees the curls.
     components::plasma::Settings other = s.settings<components::plasma::Settings>();
     other.seedMode += 1;
     const fluid::FluxFrames otherFrames =
         components::plasma::simulateSheetFrames(components::plasma::sheetFramesSpec(other));
     const render::ReferenceModel otherModel(s, view.frame.timeS, components::roles::curtainDetailData(&otherFrames));
-    const app::RelativeError wrong =
-        app::relativeError(values, app::referencePixels(otherModel, view, pixels, 2), floor);
+    const accuracy::RelativeError wrong =
+        accuracy::relativeError(values, accuracy::referencePixels(otherModel, view, pixels, 2), floor);
     std::printf("plasma: GPU (finest) vs CPU reference at the %zu brightest pixels: rms %.3g, max %.3g; "
                 "against other frames: rms %.3g\n",
                 e.pixels, e.rms, e.max, wrong.rms);

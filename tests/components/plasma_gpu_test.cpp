@@ -2,7 +2,7 @@
 // against the CPU step in double (ElectrostaticPic), its bit-for-bit determinism, and the verify
 // cases on the GPU against theory.
 #include "common/constants.h"
-#include "app/accuracy_scene.h"
+#include "components/aurora/tools/aurora_accuracy.h"
 #include "components/plasma/gpu/gpu_limits.h"
 #include "components/plasma/gpu/gpu_pic.h"
 #include "components/plasma/gpu/gpu_poisson.h"
@@ -949,11 +949,11 @@ TEST(PlasmaLive, AgreesWithTheCpuFramesBeforeTheRollUp)
 TEST(PlasmaLive, RenderAgreesWithTheReference)
 {
     const std::unique_ptr<gl::Context> context = gl::createContext(gl::Backend::Egl);
-    scene::Scene s = app::withoutUnmodelled(components::loadScene(kSource + "/tests/app/data/plasma-seam.toml"));
-    app::applyFinestSettings(s);
+    scene::Scene s = components::aurora::tools::withoutUnmodelled(components::loadScene(kSource + "/tests/app/data/plasma-seam.toml"));
+    components::aurora::tools::applyFinestSettings(s);
     s.settings<component::Settings>().device = component::Settings::Device::Gpu;
-    const app::SceneView view = app::sceneView(s, kSource + "/config/walls/single.toml", {64, 36});
-    const io::Image gpu = app::renderView(s, view, kShaders, 0).image;
+    const accuracy::SceneView view = accuracy::sceneView(s, kSource + "/config/walls/single.toml", {64, 36});
+    const io::Image gpu = accuracy::renderView(s, view, kShaders, 0).image;
     const double floor = 1.0 / (255.0 * s.exposure);
     // The middle half of the view: the arc's ends (near x = 10 and 53 of 64) lie outside it.
     std::vector<glm::ivec2> pixels;
@@ -961,23 +961,23 @@ TEST(PlasmaLive, RenderAgreesWithTheReference)
         for (int x = gpu.width / 4; x < 3 * gpu.width / 4; ++x)
             pixels.emplace_back(x, y);
     std::sort(pixels.begin(), pixels.end(), [&](glm::ivec2 a, glm::ivec2 b) {
-        return glm::length(app::pixelRadiance(gpu, a.x, a.y)) > glm::length(app::pixelRadiance(gpu, b.x, b.y));
+        return glm::length(accuracy::pixelRadiance(gpu, a.x, a.y)) > glm::length(accuracy::pixelRadiance(gpu, b.x, b.y));
     });
     pixels.resize(16);
     const fluid::FluxFrames frames = component::simulateSheetFrames(seamStrip());
     const render::ReferenceModel model(s, view.frame.timeS, components::roles::curtainDetailData(&frames));
     std::vector<glm::dvec3> values;
     for (const glm::ivec2& p : pixels)
-        values.push_back(app::pixelRadiance(gpu, p.x, p.y));
-    const app::RelativeError e = app::relativeError(values, app::referencePixels(model, view, pixels, 2), floor);
+        values.push_back(accuracy::pixelRadiance(gpu, p.x, p.y));
+    const accuracy::RelativeError e = accuracy::relativeError(values, accuracy::referencePixels(model, view, pixels, 2), floor);
     std::printf("plasma live on the GPU (finest) vs CPU reference at the %zu brightest pixels: rms %.3g, max %.3g\n",
                 e.pixels, e.rms, e.max);
     component::Settings other = s.settings<component::Settings>();
     other.seedMode += 1;
     const fluid::FluxFrames otherFrames = component::simulateSheetFrames(component::sheetFramesSpec(other));
     const render::ReferenceModel otherModel(s, view.frame.timeS, components::roles::curtainDetailData(&otherFrames));
-    const app::RelativeError wrong =
-        app::relativeError(values, app::referencePixels(otherModel, view, pixels, 2), floor);
+    const accuracy::RelativeError wrong =
+        accuracy::relativeError(values, accuracy::referencePixels(otherModel, view, pixels, 2), floor);
     std::printf("against the frames of a strip with one more wave: rms %.3g\n", wrong.rms);
     EXPECT_EQ(e.pixels, pixels.size());
     EXPECT_LT(e.rms, 6e-3);

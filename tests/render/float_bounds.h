@@ -5,7 +5,7 @@
 // u = 2^-24. GLSL 4.60 (§4.7.1) allows: +, −, × and conversions correctly rounded (u relative); a
 // division 2.5 ULP (5u); exp and exp2 3 + 2|x| ULP ((6 + 4|x|)u); inversesqrt 2 ULP (4u); sqrt as
 // 1/inversesqrt (9u); log and log2 3 ULP (6u) away from 1. One ULP is at most 2u.
-#include "app/accuracy_scene.h"
+#include "accuracy/scene_view.h"
 #include "render/reference_ray.h"
 
 #include <glm/glm.hpp>
@@ -77,7 +77,7 @@ private:
 // most (5S + 3)·u. The change is the reference's own derivative along each of the three axes of the
 // camera position and the two directions across the ray (central differences at the rounding's
 // size) times that rounding.
-inline double rayRoundingBound(const render::ReferenceModel& model, const app::SceneView& view, int x, int y)
+inline double rayRoundingBound(const render::ReferenceModel& model, const accuracy::SceneView& view, int x, int y)
 {
     const double u = kUnitRoundoff;
     const wall::TileRays& r = view.rays;
@@ -86,7 +86,7 @@ inline double rayRoundingBound(const render::ReferenceModel& model, const app::S
     const double terms = (glm::length(r.originDir) + canvas.x * glm::length(r.stepRight) +
                           canvas.y * glm::length(r.stepDown)) / glm::length(wallDirection);
     const double angle = (5.0 * terms + 3.0) * u;
-    const glm::dvec3 o = view.frame.cameraPositionKm, d = app::pixelDirection(view, x, y);
+    const glm::dvec3 o = view.frame.cameraPositionKm, d = accuracy::pixelDirection(view, x, y);
     const auto change = [&](glm::dvec3 originShift, glm::dvec3 directionShift) {
         return 0.5 * glm::length(model.radiance(o + originShift, d + directionShift) -
                                  model.radiance(o - originShift, d - directionShift));

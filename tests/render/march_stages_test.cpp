@@ -1,6 +1,6 @@
 // The march as a compute shader and as a fragment shader (render/march_shader.h) gives the same
 // image on every shipped scene: the same text but for how each stage finds its pixel and writes it.
-#include "app/accuracy_scene.h"
+#include "accuracy/scene_view.h"
 #include "components/registry.h"
 #include "gl/context.h"
 #include "gl/float_target.h"
@@ -44,17 +44,17 @@ std::unique_ptr<gl::Context> MarchStages::context_;
 TEST_P(MarchStages, ComputeAndFragmentGiveTheSameImage)
 {
     const scene::Scene s = components::loadScene(kSource + "/config/scenes/" + GetParam() + ".toml");
-    const app::SceneView view = app::sceneView(s, kSource + "/config/walls/single.toml", {48, 27});
-    const io::Image compute = app::renderView(s, view, kSource + "/shaders", 0, render::MarchStage::Compute).image;
-    const io::Image fragment = app::renderView(s, view, kSource + "/shaders", 0, render::MarchStage::Fragment).image;
+    const accuracy::SceneView view = accuracy::sceneView(s, kSource + "/config/walls/single.toml", {48, 27});
+    const io::Image compute = accuracy::renderView(s, view, kSource + "/shaders", 0, render::MarchStage::Compute).image;
+    const io::Image fragment = accuracy::renderView(s, view, kSource + "/shaders", 0, render::MarchStage::Fragment).image;
     ASSERT_EQ(compute.rgba.size(), fragment.rgba.size());
     std::vector<glm::dvec3> a, b;
     for (int y = 0; y < compute.height; ++y)
         for (int x = 0; x < compute.width; ++x) {
-            a.push_back(app::pixelRadiance(compute, x, y));
-            b.push_back(app::pixelRadiance(fragment, x, y));
+            a.push_back(accuracy::pixelRadiance(compute, x, y));
+            b.push_back(accuracy::pixelRadiance(fragment, x, y));
         }
-    const app::RelativeError e = app::relativeError(a, b, 1.0 / (255.0 * s.exposure));
+    const accuracy::RelativeError e = accuracy::relativeError(a, b, 1.0 / (255.0 * s.exposure));
     const bool identical = compute.rgba == fragment.rgba;
     std::printf("%s: compute vs fragment over %zu lit pixels: rms %.3g, max %.3g, %s\n", GetParam().c_str(), e.pixels,
                 e.rms, e.max, identical ? "bit-identical" : "not bit-identical");
@@ -78,7 +78,7 @@ struct CountedFrame {
 CountedFrame countedFrame(const std::string& sceneName, render::PixelWork pixelWork = render::PixelWork::Samples)
 {
     const scene::Scene s = components::loadScene(kSource + "/config/scenes/" + sceneName + ".toml");
-    const app::SceneView view = app::sceneView(s, kSource + "/config/walls/single.toml", {48, 27});
+    const accuracy::SceneView view = accuracy::sceneView(s, kSource + "/config/walls/single.toml", {48, 27});
     render::TileRenderer renderer(s, kSource + "/shaders", render::MarchStage::Compute, render::CountWork::Yes,
                                   pixelWork);
     const glm::ivec2 size(48, 27);

@@ -1,7 +1,7 @@
 // The double-precision CPU reference of the model (src/render/reference_ray.h) against the GPU
 // render at its finest settings, and the reference's own convergence, on the substorm scene
 // (without stars and planet_texture, which the reference does not model).
-#include "app/accuracy_scene.h"
+#include "components/aurora/tools/aurora_accuracy.h"
 #include "components/fluid_detail/simulation/curtain_detail.h"
 #include "gl/context.h"
 #include "components/fluid_detail/curtain_detail.h"
@@ -31,8 +31,8 @@ const std::string kSource = AURORAWALL_SOURCE_DIR;
 // tables and footprint map, 1 km polylines.
 scene::Scene finestSubstorm()
 {
-    scene::Scene s = app::withoutUnmodelled(components::loadScene(kSource + "/config/scenes/substorm.toml"));
-    app::applyFinestSettings(s);
+    scene::Scene s = components::aurora::tools::withoutUnmodelled(components::loadScene(kSource + "/config/scenes/substorm.toml"));
+    components::aurora::tools::applyFinestSettings(s);
     return s;
 }
 
@@ -42,7 +42,7 @@ protected:
     {
         context_ = gl::createContext(gl::Backend::Egl);
         scene_ = new scene::Scene(finestSubstorm());
-        view_ = new app::SceneView(app::sceneView(*scene_, kSource + "/config/walls/single.toml", {64, 36}));
+        view_ = new accuracy::SceneView(accuracy::sceneView(*scene_, kSource + "/config/walls/single.toml", {64, 36}));
         frames_ = new fluid::FluxFrames(fluid::simulateCurtainDetail(components::fluid_detail::curtainDetailSpec(scene_->settings<components::fluid_detail::Settings>())));
     }
     static void TearDownTestSuite()
@@ -57,13 +57,13 @@ protected:
 
     static std::unique_ptr<gl::Context> context_;
     static scene::Scene* scene_;
-    static app::SceneView* view_;
+    static accuracy::SceneView* view_;
     static fluid::FluxFrames* frames_;
 };
 
 std::unique_ptr<gl::Context> ReferenceRay::context_;
 scene::Scene* ReferenceRay::scene_ = nullptr;
-app::SceneView* ReferenceRay::view_ = nullptr;
+accuracy::SceneView* ReferenceRay::view_ = nullptr;
 fluid::FluxFrames* ReferenceRay::frames_ = nullptr;
 
 } // namespace
@@ -80,14 +80,14 @@ fluid::FluxFrames* ReferenceRay::frames_ = nullptr;
 // which only float is left.
 TEST_F(ReferenceRay, GpuAtItsFinestSettingsAgreesWithTheReference)
 {
-    const io::Image gpu = app::renderView(*scene_, *view_, kSource + "/shaders", 0).image;
+    const io::Image gpu = accuracy::renderView(*scene_, *view_, kSource + "/shaders", 0).image;
     const std::vector<glm::ivec2> pixels = litPixels(gpu, floor(), 16);
     const render::ReferenceModel model(*scene_, view_->frame.timeS, curtainDetailData(frames_));
-    const std::vector<glm::dvec3> reference = app::referencePixels(model, *view_, pixels, 2);
+    const std::vector<glm::dvec3> reference = accuracy::referencePixels(model, *view_, pixels, 2);
     std::vector<glm::dvec3> values;
     for (const glm::ivec2& p : pixels)
-        values.push_back(app::pixelRadiance(gpu, p.x, p.y));
-    const app::RelativeError e = app::relativeError(values, reference, floor());
+        values.push_back(accuracy::pixelRadiance(gpu, p.x, p.y));
+    const accuracy::RelativeError e = accuracy::relativeError(values, reference, floor());
     std::printf("GPU (0.25 km, finest tables) vs CPU reference at %zu pixels: rms %.3g, max %.3g\n",
                 e.pixels, e.rms, e.max);
     EXPECT_EQ(e.pixels, pixels.size());
@@ -99,13 +99,13 @@ TEST_F(ReferenceRay, GpuAtItsFinestSettingsAgreesWithTheReference)
 // brightest aurora pixels (where the emission integral dominates).
 TEST_F(ReferenceRay, ReferenceConverges)
 {
-    const io::Image gpu = app::renderView(*scene_, *view_, kSource + "/shaders", 0).image;
+    const io::Image gpu = accuracy::renderView(*scene_, *view_, kSource + "/shaders", 0).image;
     std::vector<glm::ivec2> all;
     for (int y = 0; y < gpu.height; ++y)
         for (int x = 0; x < gpu.width; ++x)
             all.emplace_back(x, y);
     std::sort(all.begin(), all.end(), [&](glm::ivec2 a, glm::ivec2 b) {
-        return glm::length(app::pixelRadiance(gpu, a.x, a.y)) > glm::length(app::pixelRadiance(gpu, b.x, b.y));
+        return glm::length(accuracy::pixelRadiance(gpu, a.x, a.y)) > glm::length(accuracy::pixelRadiance(gpu, b.x, b.y));
     });
     // Four of the brightest twenty, spread out.
     const std::vector<glm::ivec2> pixels = {all[0], all[6], all[12], all[19]};
@@ -114,10 +114,10 @@ TEST_F(ReferenceRay, ReferenceConverges)
     finer.stepKm = 0.025;
     const scene::RoleData detail = curtainDetailData(frames_);
     const std::vector<glm::dvec3> a =
-        app::referencePixels(render::ReferenceModel(*scene_, view_->frame.timeS, detail, fine), *view_, pixels, 2);
+        accuracy::referencePixels(render::ReferenceModel(*scene_, view_->frame.timeS, detail, fine), *view_, pixels, 2);
     const std::vector<glm::dvec3> b =
-        app::referencePixels(render::ReferenceModel(*scene_, view_->frame.timeS, detail, finer), *view_, pixels, 2);
-    const app::RelativeError e = app::relativeError(a, b, 0.0);
+        accuracy::referencePixels(render::ReferenceModel(*scene_, view_->frame.timeS, detail, finer), *view_, pixels, 2);
+    const accuracy::RelativeError e = accuracy::relativeError(a, b, 0.0);
     std::printf("reference 0.05 km vs 0.025 km at the brightest pixels: max %.3g\n", e.max);
     EXPECT_LT(e.max, 1e-3);
 }
@@ -139,23 +139,23 @@ TEST_F(ReferenceRay, RejectsWhatItDoesNotModel)
 TEST_F(ReferenceRay, CoarseStepsIntegratedAcrossTheCurtainStayNearTheReference)
 {
     for (long long frame : {0LL, 28LL, 60LL}) {
-        scene::Scene s = app::withoutUnmodelled(components::loadScene(kSource + "/config/scenes/benchmark-view.toml"));
-        const app::SceneView view = app::sceneView(s, kSource + "/config/walls/single.toml", {64, 36}, frame);
+        scene::Scene s = components::aurora::tools::withoutUnmodelled(components::loadScene(kSource + "/config/scenes/benchmark-view.toml"));
+        const accuracy::SceneView view = accuracy::sceneView(s, kSource + "/config/walls/single.toml", {64, 36}, frame);
         const render::ReferenceModel model(s, view.frame.timeS, curtainDetailData(frames_));
         std::vector<glm::ivec2> pixels;
         std::vector<glm::dvec3> reference;
         auto& aurora = s.settings<components::aurora::Settings>();
         for (double resolveKm : {aurora.resolveKm, 0.25}) {
             aurora.resolveKm = resolveKm;
-            const io::Image gpu = app::renderView(s, view, kSource + "/shaders", 0).image;
+            const io::Image gpu = accuracy::renderView(s, view, kSource + "/shaders", 0).image;
             if (pixels.empty()) {
                 pixels = litPixels(gpu, floor(), 16);
-                reference = app::referencePixels(model, view, pixels, 2);
+                reference = accuracy::referencePixels(model, view, pixels, 2);
             }
             std::vector<glm::dvec3> values;
             for (const glm::ivec2& p : pixels)
-                values.push_back(app::pixelRadiance(gpu, p.x, p.y));
-            const app::RelativeError e = app::relativeError(values, reference, floor());
+                values.push_back(accuracy::pixelRadiance(gpu, p.x, p.y));
+            const accuracy::RelativeError e = accuracy::relativeError(values, reference, floor());
             std::printf("frame %lld, %g km steps, %.2f km sub-steps vs CPU reference at %zu pixels: rms %.3g, max %.3g\n",
                         frame, aurora.stepKm, resolveKm, e.pixels, e.rms, e.max);
             EXPECT_EQ(e.pixels, pixels.size());
@@ -169,20 +169,20 @@ TEST_F(ReferenceRay, CoarseStepsIntegratedAcrossTheCurtainStayNearTheReference)
 // the ground. Measured: RMS 1.3e-4, max 4.9e-4. Held to RMS 1e-3.
 TEST_F(ReferenceRay, SmoothCurtainsIntegratedAcrossStayNearTheReference)
 {
-    scene::Scene s = app::withoutUnmodelled(components::loadScene(kSource + "/config/scenes/quiet-arc.toml"));
+    scene::Scene s = components::aurora::tools::withoutUnmodelled(components::loadScene(kSource + "/config/scenes/quiet-arc.toml"));
     ASSERT_FALSE(s.has("fluid_detail"));
     s.settings<components::aurora::Settings>().stepKm = 8.0;
     s.settings<components::aurora::Settings>().resolveKm = 0.5;
-    const app::SceneView view = app::sceneView(s, kSource + "/config/walls/single.toml", {64, 36});
-    const io::Image gpu = app::renderView(s, view, kSource + "/shaders", 0).image;
+    const accuracy::SceneView view = accuracy::sceneView(s, kSource + "/config/walls/single.toml", {64, 36});
+    const io::Image gpu = accuracy::renderView(s, view, kSource + "/shaders", 0).image;
     const double floor = 1.0 / (255.0 * s.exposure);
     const std::vector<glm::ivec2> pixels = litPixels(gpu, floor, 16);
     const render::ReferenceModel model(s, view.frame.timeS, {});
-    const std::vector<glm::dvec3> reference = app::referencePixels(model, view, pixels, 2);
+    const std::vector<glm::dvec3> reference = accuracy::referencePixels(model, view, pixels, 2);
     std::vector<glm::dvec3> values;
     for (const glm::ivec2& p : pixels)
-        values.push_back(app::pixelRadiance(gpu, p.x, p.y));
-    const app::RelativeError e = app::relativeError(values, reference, floor);
+        values.push_back(accuracy::pixelRadiance(gpu, p.x, p.y));
+    const accuracy::RelativeError e = accuracy::relativeError(values, reference, floor);
     std::printf("quiet arc, 8 km steps, 0.5 km sub-steps vs CPU reference at %zu pixels: rms %.3g, max %.3g\n",
                 e.pixels, e.rms, e.max);
     EXPECT_EQ(e.pixels, pixels.size());
@@ -234,21 +234,21 @@ energy_kev = 3.0
     const scene::Scene withThick = load("with-thick.toml", thin + thick);
     std::filesystem::remove_all(dir);
 
-    const app::SceneView view = app::sceneView(alone, kSource + "/config/walls/single.toml", {64, 36});
+    const accuracy::SceneView view = accuracy::sceneView(alone, kSource + "/config/walls/single.toml", {64, 36});
     const double floor = 1.0 / (255.0 * alone.exposure);
-    const io::Image a = app::renderView(alone, view, kSource + "/shaders", 0).image;
-    const io::Image b = app::renderView(withThick, view, kSource + "/shaders", 0).image;
+    const io::Image a = accuracy::renderView(alone, view, kSource + "/shaders", 0).image;
+    const io::Image b = accuracy::renderView(withThick, view, kSource + "/shaders", 0).image;
     std::vector<glm::dvec3> valuesA, valuesB;
     for (int y = 0; y < 36; ++y)
         for (int x = 0; x < 64; ++x) {
-            valuesA.push_back(app::pixelRadiance(a, x, y));
-            valuesB.push_back(app::pixelRadiance(b, x, y));
+            valuesA.push_back(accuracy::pixelRadiance(a, x, y));
+            valuesB.push_back(accuracy::pixelRadiance(b, x, y));
         }
-    const app::RelativeError gpu = app::relativeError(valuesB, valuesA, floor);
+    const accuracy::RelativeError gpu = accuracy::relativeError(valuesB, valuesA, floor);
     const std::vector<glm::ivec2> pixels = litPixels(a, floor, 8);
-    const app::RelativeError cpu =
-        app::relativeError(app::referencePixels(render::ReferenceModel(withThick, view.frame.timeS, {}), view, pixels, 2),
-                           app::referencePixels(render::ReferenceModel(alone, view.frame.timeS, {}), view, pixels, 2),
+    const accuracy::RelativeError cpu =
+        accuracy::relativeError(accuracy::referencePixels(render::ReferenceModel(withThick, view.frame.timeS, {}), view, pixels, 2),
+                           accuracy::referencePixels(render::ReferenceModel(alone, view.frame.timeS, {}), view, pixels, 2),
                            floor);
     std::printf("thin curtain's end with a thick one far away against alone: GPU %zu pixels, max %.3g; "
                 "CPU reference %zu pixels, max %.3g\n",

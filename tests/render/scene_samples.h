@@ -1,6 +1,6 @@
 #pragma once
 // What the render tests sample: the shipped scenes, and lit pixels of an image.
-#include "app/accuracy_scene.h"
+#include "accuracy/scene_view.h"
 #include "io/image.h"
 
 #include <algorithm>
@@ -34,7 +34,7 @@ inline std::vector<glm::ivec2> litPixels(const io::Image& image, double floor, i
     std::vector<glm::ivec2> lit, chosen;
     for (int y = 0; y < image.height; ++y)
         for (int x = 0; x < image.width; ++x)
-            if (glm::length(app::pixelRadiance(image, x, y)) >= floor)
+            if (glm::length(accuracy::pixelRadiance(image, x, y)) >= floor)
                 lit.emplace_back(x, y);
     for (int i = 0; i < count && !lit.empty(); ++i)
         chosen.push_back(lit[std::size_t(i) * lit.size() / std::size_t(count)]);

@@ -2,7 +2,7 @@
 // CPU reference (render/reference_ray.h) at sampled pixels: the test that vouches for a GPU's
 // images (launch/gpu-check runs it on each device). The components the reference does not model
 // (stars, planet_texture, sky) are left out of both.
-#include "app/accuracy_scene.h"
+#include "components/aurora/tools/aurora_accuracy.h"
 #include "components/registry.h"
 #include "components/roles/curtain_detail.h"
 #include "gl/context.h"
@@ -43,9 +43,9 @@ std::unique_ptr<gl::Context> ShippedScene::context_;
 // not compared.
 TEST_P(ShippedScene, DefaultsAgreeWithTheCpuReference)
 {
-    scene::Scene s = app::withoutUnmodelled(components::loadScene(kSource + "/config/scenes/" + GetParam() + ".toml"));
-    const app::SceneView view = app::sceneView(s, kSource + "/config/walls/single.toml", {64, 36});
-    const io::Image gpu = app::renderView(s, view, kSource + "/shaders", 0).image;
+    scene::Scene s = components::aurora::tools::withoutUnmodelled(components::loadScene(kSource + "/config/scenes/" + GetParam() + ".toml"));
+    const accuracy::SceneView view = accuracy::sceneView(s, kSource + "/config/walls/single.toml", {64, 36});
+    const io::Image gpu = accuracy::renderView(s, view, kSource + "/shaders", 0).image;
     const double floor = 1.0 / (255.0 * s.exposure);
     const std::vector<glm::ivec2> pixels = test::litPixels(gpu, floor, 12);
     if (pixels.empty())
@@ -58,11 +58,11 @@ TEST_P(ShippedScene, DefaultsAgreeWithTheCpuReference)
     } catch (const std::invalid_argument& e) {
         GTEST_SKIP() << GetParam() << ": the CPU reference does not model it (" << e.what() << ")";
     }
-    const std::vector<glm::dvec3> reference = app::referencePixels(*model, view, pixels, 2);
+    const std::vector<glm::dvec3> reference = accuracy::referencePixels(*model, view, pixels, 2);
     std::vector<glm::dvec3> values;
     for (const glm::ivec2& p : pixels)
-        values.push_back(app::pixelRadiance(gpu, p.x, p.y));
-    const app::RelativeError e = app::relativeError(values, reference, floor);
+        values.push_back(accuracy::pixelRadiance(gpu, p.x, p.y));
+    const accuracy::RelativeError e = accuracy::relativeError(values, reference, floor);
     std::printf("%s: GPU defaults vs CPU reference at %zu lit pixels: rms %.3g, max %.3g\n", GetParam().c_str(),
                 e.pixels, e.rms, e.max);
     EXPECT_LT(e.rms, 1e-2);

@@ -3,7 +3,7 @@
 // footprint map's conservative distance allows, so it never crosses an emitting region, and it
 // jumps over whole steps of the naive march's grid, so the samples it takes are the naive march's.
 // So the image is also the same whether the CPU or the GPU built the map.
-#include "app/accuracy_scene.h"
+#include "accuracy/scene_view.h"
 #include "gl/context.h"
 #include "components/aurora/aurora.h"
 #include "components/fluid_detail/fluid_detail.h"
@@ -21,7 +21,7 @@ namespace {
 const std::string kSource = AURORAWALL_SOURCE_DIR;
 
 struct Difference {
-    app::RelativeError error;
+    accuracy::RelativeError error;
     double skipMs = 0.0, naiveMs = 0.0;
 };
 
@@ -31,18 +31,18 @@ Difference skipAgainstNaive(const std::string& preset, double stepKm)
 {
     scene::Scene s = components::loadScene(kSource + "/config/scenes/" + preset);
     s.settings<components::aurora::Settings>().stepKm = stepKm;
-    const app::SceneView view = app::sceneView(s, kSource + "/config/walls/single.toml", {64, 36});
+    const accuracy::SceneView view = accuracy::sceneView(s, kSource + "/config/walls/single.toml", {64, 36});
     s.settings<components::aurora::Settings>().skipEmptySpace = true;
-    const app::TimedRender skip = app::renderView(s, view, kSource + "/shaders", 1);
+    const accuracy::TimedRender skip = accuracy::renderView(s, view, kSource + "/shaders", 1);
     s.settings<components::aurora::Settings>().skipEmptySpace = false;
-    const app::TimedRender naive = app::renderView(s, view, kSource + "/shaders", 1);
+    const accuracy::TimedRender naive = accuracy::renderView(s, view, kSource + "/shaders", 1);
     std::vector<glm::dvec3> a, b;
     for (int y = 0; y < 36; ++y)
         for (int x = 0; x < 64; ++x) {
-            a.push_back(app::pixelRadiance(skip.image, x, y));
-            b.push_back(app::pixelRadiance(naive.image, x, y));
+            a.push_back(accuracy::pixelRadiance(skip.image, x, y));
+            b.push_back(accuracy::pixelRadiance(naive.image, x, y));
         }
-    Difference d{app::relativeError(a, b, 1.0 / (255.0 * s.exposure)), skip.msPerFrame, naive.msPerFrame};
+    Difference d{accuracy::relativeError(a, b, 1.0 / (255.0 * s.exposure)), skip.msPerFrame, naive.msPerFrame};
     std::printf("%-20s step %.2f km: %zu pixels, rms %.3g, max %.3g; %.0f ms skipping, %.0f ms naive\n",
                 preset.c_str(), stepKm, d.error.pixels, d.error.rms, d.error.max, d.skipMs, d.naiveMs);
     return d;
@@ -75,16 +75,16 @@ TEST_P(Skipping, EqualsTheNaiveMarch)
 TEST_P(Skipping, MapBuiltOnTheGpuGivesTheSameImage)
 {
     scene::Scene s = components::loadScene(kSource + "/config/scenes/" + GetParam());
-    const app::SceneView view = app::sceneView(s, kSource + "/config/walls/single.toml", {64, 36});
+    const accuracy::SceneView view = accuracy::sceneView(s, kSource + "/config/walls/single.toml", {64, 36});
     auto& aurora = s.settings<components::aurora::Settings>();
     aurora.footprintMapBuild = components::aurora::MapBuilder::Cpu;
-    const app::TimedRender cpu = app::renderView(s, view, kSource + "/shaders", 0);
+    const accuracy::TimedRender cpu = accuracy::renderView(s, view, kSource + "/shaders", 0);
     aurora.footprintMapBuild = components::aurora::MapBuilder::Gpu;
-    const app::TimedRender gpu = app::renderView(s, view, kSource + "/shaders", 0);
+    const accuracy::TimedRender gpu = accuracy::renderView(s, view, kSource + "/shaders", 0);
     size_t lit = 0;
     for (int y = 0; y < 36; ++y)
         for (int x = 0; x < 64; ++x) {
-            const glm::dvec3 a = app::pixelRadiance(cpu.image, x, y), b = app::pixelRadiance(gpu.image, x, y);
+            const glm::dvec3 a = accuracy::pixelRadiance(cpu.image, x, y), b = accuracy::pixelRadiance(gpu.image, x, y);
             ASSERT_EQ(a, b) << "pixel " << x << "," << y;
             lit += a != glm::dvec3(0.0);
         }

@@ -1,7 +1,7 @@
 // The stars on the GPU: each star's light, summed over its neighbourhood of pixels, does not depend
 // on where within a pixel the star falls, so a last-bit difference between two devices' rays can
 // only share a star's light differently between neighbouring pixels, never switch it on or off.
-#include "app/accuracy_scene.h"
+#include "accuracy/scene_view.h"
 #include "components/registry.h"
 #include "gl/context.h"
 #include "scene/scene.h"
@@ -22,7 +22,7 @@ constexpr int kHalfWindow = 4; // the neighbourhood: 9x9 pixels about a star's b
 
 double luminance(const io::Image& image, int x, int y)
 {
-    const glm::dvec3 c = app::pixelRadiance(image, x, y);
+    const glm::dvec3 c = accuracy::pixelRadiance(image, x, y);
     return c.r + c.g + c.b;
 }
 
@@ -81,23 +81,23 @@ TEST(Stars, FluxOverANeighbourhoodDoesNotDependOnTheSubPixelPosition)
 {
     const auto context = gl::createContext(gl::Backend::Egl);
     const scene::Scene scene = components::loadScene(kSource + "/tests/render/data/stars-from-orbit.toml");
-    app::SceneView view = app::sceneView(scene, kSource + "/config/walls/single.toml", {256, 144});
+    accuracy::SceneView view = accuracy::sceneView(scene, kSource + "/config/walls/single.toml", {256, 144});
     view.frame.zoom = 16.0; // about 6e-4 rad per pixel: σ a fifth of a star cell
-    const io::Image reference = app::renderView(scene, view, kSource + "/shaders", 0).image;
+    const io::Image reference = accuracy::renderView(scene, view, kSource + "/shaders", 0).image;
     const double floor = 1e-3 / scene.exposure;
     const std::vector<glm::ivec2> peaks = starPeaks(reference, floor);
     std::printf("%zu stars\n", peaks.size());
     ASSERT_GE(peaks.size(), 20u);
     const double pixelAngle = glm::length(view.rays.stepRight) / glm::length(view.rays.originDir) / view.frame.zoom;
     for (const double fraction : {0.25, 0.5, 0.75}) {
-        app::SceneView turned = view;
+        accuracy::SceneView turned = view;
         const double angle = fraction * pixelAngle;
         const glm::dmat4 turn = glm::rotate(glm::rotate(glm::dmat4(1.0), angle, view.frame.cameraUp), angle,
                                             view.frame.cameraRight);
         turned.frame.cameraRight = glm::dvec3(turn * glm::dvec4(view.frame.cameraRight, 0.0));
         turned.frame.cameraUp = glm::dvec3(turn * glm::dvec4(view.frame.cameraUp, 0.0));
         turned.frame.cameraBack = glm::dvec3(turn * glm::dvec4(view.frame.cameraBack, 0.0));
-        const io::Image image = app::renderView(scene, turned, kSource + "/shaders", 0).image;
+        const io::Image image = accuracy::renderView(scene, turned, kSource + "/shaders", 0).image;
         double largest = 0.0;
         for (const glm::ivec2& p : peaks) {
             const double before = windowSum(reference, p), after = windowSum(image, p);

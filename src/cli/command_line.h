@@ -8,7 +8,7 @@
 //   cli.addChoice("spectrum", &spectrum, kSpectra, "...");
 //   if (!cli.parse(argc, argv)) { out << cli.help(); return; }   // --help
 //   if (energyKeV <= 0) throw cli.usageError("--energy-kev must be > 0");
-#include "app/cli/choices.h"
+#include "cli/choices.h"
 #include "common/input_error.h"
 
 #include <boost/program_options.hpp>
@@ -16,7 +16,7 @@
 #include <memory>
 #include <string>
 
-namespace aurorawall::app::cli {
+namespace aurorawall::cli {
 
 namespace po = boost::program_options;
 
@@ -77,4 +77,4 @@ void CommandLine::addChoice(const char* option, E* target, const Choices<E>& cho
     visible_.add_options()(option, value, help.c_str());
 }
 
-} // namespace aurorawall::app::cli
+} // namespace aurorawall::cli

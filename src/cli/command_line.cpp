@@ -1,8 +1,8 @@
-#include "app/cli/command_line.h"
+#include "cli/command_line.h"
 
 #include <sstream>
 
-namespace aurorawall::app::cli {
+namespace aurorawall::cli {
 namespace {
 
 // Boost.Program_options' messages quote what was typed (an option, its value) from substitutions that
@@ -66,4 +66,4 @@ UsageError CommandLine::usageError(const std::string& message) const
     return UsageError(message + " (see aurorawall" + (command_.empty() ? "" : " " + command_) + " --help)");
 }
 
-} // namespace aurorawall::app::cli
+} // namespace aurorawall::cli

@@ -1,7 +1,7 @@
-#include "app/mie_command.h"
+#include "components/glory/tools/mie_command.h"
 
-#include "app/cli/command_line.h"
-#include "app/cli/exit_status.h"
+#include "cli/command_line.h"
+#include "cli/exit_status.h"
 #include "common/constants.h"
 #include "components/glory/mie/mie_scattering.h"
 
@@ -12,7 +12,8 @@
 #include <string>
 #include <vector>
 
-namespace aurorawall::app {
+namespace aurorawall::components::glory::tools {
+
 namespace {
 
 namespace po = boost::program_options;
@@ -115,4 +116,4 @@ int runMieCommand(int argc, char** argv, std::ostream& out, std::ostream& err)
     });
 }
 
-} // namespace aurorawall::app
+} // namespace aurorawall::components::glory::tools

@@ -1,8 +1,8 @@
 #include "common/constants.h"
-#include "app/plasma_accuracy.h"
+#include "components/plasma/tools/plasma_accuracy.h"
 
-#include "app/cli/command_line.h"
-#include "app/cli/exit_status.h"
+#include "cli/command_line.h"
+#include "cli/exit_status.h"
 #include "components/plasma/simulation/discrete_laplacian.h"
 #include "components/plasma/simulation/electrostatic_pic.h"
 #include "components/plasma/simulation/fft_poisson_solver.h"
@@ -23,10 +23,12 @@
 #include <ostream>
 #include <stdexcept>
 
-namespace aurorawall::app {
-namespace {
+namespace aurorawall::components::plasma::tools {
 
 namespace pic = aurorawall::plasma;
+
+namespace {
+
 
 constexpr double kDensity = 1e12;      // m⁻³
 constexpr double kThermalSpeed = 4.19e5; // m/s: 1 eV electrons
@@ -267,4 +269,4 @@ int runPlasmaAccuracyCommand(int argc, char** argv, std::ostream& out, std::ostr
     });
 }
 
-} // namespace aurorawall::app
+} // namespace aurorawall::components::plasma::tools

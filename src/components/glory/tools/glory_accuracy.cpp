@@ -1,4 +1,4 @@
-#include "app/glory_accuracy.h"
+#include "components/glory/tools/glory_accuracy.h"
 
 #include "components/glory/glory.h"
 #include "components/registry.h"
@@ -12,12 +12,13 @@
 #include <ostream>
 #include <stdexcept>
 
-namespace aurorawall::app {
+namespace aurorawall::components::glory::tools {
 
 namespace {
 
-using GlorySettings = components::glory::Settings;
+using GlorySettings = glory::Settings;
 namespace optics = aurorawall::glory;
+using namespace accuracy;
 
 double secondsSince(std::chrono::steady_clock::time_point start)
 {
@@ -94,9 +95,9 @@ ColourError colourError(const ColourTable& table, const ColourTable& reference)
 void printTableKnobs(const GlorySettings& base, std::ostream& out)
 {
     GlorySettings fine = base;
-    fine.table = components::glory::referenceTableSpec(base.table);
+    fine.table = glory::referenceTableSpec(base.table);
     // The reference's table through the cache: the renders below use the same one.
-    const components::glory::GloryTables tables = components::glory::gloryTables(fine);
+    const glory::GloryTables tables = glory::gloryTables(fine);
     const ColourTable reference{tables.phase.angles, optics::gloryLinearSrgb(optics::gloryXyz(tables.phase, fine.light)),
                                 tables.seconds, tables.phase.mieSeries};
     char line[256];
@@ -133,17 +134,17 @@ void printWavelengthSampling(const scene::Scene& base, const SceneView& view, co
 {
     scene::Scene finest = base;
     auto& fine = finest.settings<GlorySettings>();
-    fine.table = components::glory::referenceTableSpec(fine.table);
+    fine.table = glory::referenceTableSpec(fine.table);
     const std::vector<glm::dvec3> reference = allPixels(renderView(finest, view, shaderDir, 1).image);
     const double floor = 1.0 / (255.0 * base.exposure);
     out << "colour per pixel (error against the GPU render with the reference's table and colour table, every pixel)\n";
     out << "sampling       wavelengths rms_rel  max_rel  ms_per_frame\n";
     struct Variant {
-        components::glory::WavelengthSampling sampling;
+        glory::WavelengthSampling sampling;
         int count;
     };
-    std::vector<Variant> variants = {{components::glory::WavelengthSampling::ColourTable, 0}};
-    for (auto sampling : {components::glory::WavelengthSampling::Uniform, components::glory::WavelengthSampling::Importance})
+    std::vector<Variant> variants = {{glory::WavelengthSampling::ColourTable, 0}};
+    for (auto sampling : {glory::WavelengthSampling::Uniform, glory::WavelengthSampling::Importance})
         for (int count : {1, 2, 4, 8, 16, 32})
             variants.push_back({sampling, count});
     for (const Variant& v : variants) {
@@ -154,8 +155,8 @@ void printWavelengthSampling(const scene::Scene& base, const SceneView& view, co
             glory.wavelengthsPerPixel = v.count;
         const TimedRender render = renderView(s, view, shaderDir, settings.runs);
         const RelativeError e = relativeError(allPixels(render.image), reference, floor);
-        const char* name = v.sampling == components::glory::WavelengthSampling::ColourTable ? "colour-table"
-                           : v.sampling == components::glory::WavelengthSampling::Uniform   ? "uniform"
+        const char* name = v.sampling == glory::WavelengthSampling::ColourTable ? "colour-table"
+                           : v.sampling == glory::WavelengthSampling::Uniform   ? "uniform"
                                                                                             : "importance";
         char line[160];
         std::snprintf(line, sizeof line, "%-14s %-11s %-8.3g %-8.3g %.1f\n", name,
@@ -166,7 +167,7 @@ void printWavelengthSampling(const scene::Scene& base, const SceneView& view, co
 
 } // namespace
 
-void runGloryAccuracy(const SceneAccuracySettings& settings, std::ostream& out)
+void runGloryAccuracy(const accuracy::SceneAccuracySettings& settings, std::ostream& out)
 {
     const std::string dataDir = dataDirectory();
     const std::string wallFile = settings.wallFile.empty() ? dataDir + "/config/walls/single.toml" : settings.wallFile;
@@ -184,4 +185,4 @@ void runGloryAccuracy(const SceneAccuracySettings& settings, std::ostream& out)
     printWavelengthSampling(scene, view, dataDir + "/shaders", settings, out);
 }
 
-} // namespace aurorawall::app
+} // namespace aurorawall::components::glory::tools

@@ -12,20 +12,20 @@
 #include <string>
 #include <vector>
 
-namespace aurorawall::app {
+namespace aurorawall::components::plasma::tools {
 
 // One of a scene's simulations at time 0, as the component starts it.
 struct SoakSimulation {
     std::string name; // "strip" or "box"
-    plasma::PeriodicGrid grid;
-    plasma::Particles electrons;
+    aurorawall::plasma::PeriodicGrid grid;
+    aurorawall::plasma::Particles electrons;
     glm::dvec3 magneticField; // T
     double dt;                // s
 };
 
 // The strip (electron_sheet.h, from sheetFramesSpec) and, with kind = "box", the box's two seeded
 // beams (box_frames.h, from boxFramesSpec).
-std::vector<SoakSimulation> soakSimulations(const components::plasma::Settings& plasma);
+std::vector<SoakSimulation> soakSimulations(const Settings& plasma);
 
 // Throws std::runtime_error "NAME: step N: QUANTITY ..." at the first position that is not finite or
 // lies outside the box [0, L] (per axis, m), or the first velocity or node field value that is not finite.
@@ -37,8 +37,8 @@ void checkSoakState(const std::string& name, long step, const std::vector<glm::d
 // simulation,step,time_s,field_energy_j,kinetic_energy_j,total_energy_j,max_abs_e_v_per_m,max_density_over_n0
 // at step 0, every M steps and at step N, for each simulation in turn, after checking that every
 // electron's position is finite and inside the box and every velocity and node field value finite.
-// Returns the exit status (app/cli/exit_status.h): 1 with one line naming the simulation, step and
+// Returns the exit status (cli/exit_status.h): 1 with one line naming the simulation, step and
 // quantity at the first check that fails; 2 for a bad option or a scene without plasma.
 int runPlasmaSoakCommand(int argc, char** argv, std::ostream& out, std::ostream& err);
 
-} // namespace aurorawall::app
+} // namespace aurorawall::components::plasma::tools

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-namespace aurorawall::app {
+namespace aurorawall::components::plasma::tools {
 
 // The relative RMS of n/n₀ − 1 over the nodes at t = 0, against the closed form for a uniform random
 // start deposited by CIC: each node sums the tensor-product hat weights W of N independent uniform
@@ -70,7 +70,7 @@ struct HeatingRow {
 HeatingRow heatingRate(int particlesPerCell, double wpDt, int seed);
 
 // argv[0] is the action's name ("accuracy"). Prints the chosen table (or all, each after a blank
-// line). Returns the exit status (app/cli/exit_status.h).
+// line). Returns the exit status (cli/exit_status.h).
 int runPlasmaAccuracyCommand(int argc, char** argv, std::ostream& out, std::ostream& err);
 
-} // namespace aurorawall::app
+} // namespace aurorawall::components::plasma::tools

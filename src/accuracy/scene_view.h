@@ -1,8 +1,8 @@
 #pragma once
-// `aurorawall accuracy --scene FILE`: error against run time of the aurora's quality knobs and the
-// cost of each feature (Lawlor & Genetti's table 2), on one headless EGL context in one
-// process (no MPI). The renders and the CPU reference (render/reference_ray.h) are also the tools of
-// tests/render/reference_ray_test.cpp and skipping_test.cpp.
+// What the accuracy runs of a scene share (`aurorawall accuracy --scene FILE` and the components'
+// tables, components/tools.h): a small view of the scene, timed renders of it on one headless EGL
+// context, relative errors, the double-precision CPU reference (render/reference_ray.h) at chosen
+// pixels. Also the tools of tests/render/reference_ray_test.cpp and skipping_test.cpp.
 #include "cluster/frame_state.h"
 #include "gl/context.h"
 #include "io/image.h"
@@ -19,7 +19,7 @@
 #include <string>
 #include <vector>
 
-namespace aurorawall::app {
+namespace aurorawall::accuracy {
 
 // One small view of a scene: the wall file's single-screen equivalent with the same physical screen
 // and eye (so the same field of view) at sizePx pixels, and the scene's frame `frame` as `render`
@@ -63,16 +63,6 @@ glm::dvec3 pixelRadiance(const io::Image& image, int x, int y);
 std::vector<glm::dvec3> referencePixels(const render::ReferenceModel& model, const SceneView& view,
                                         const std::vector<glm::ivec2>& pixels, int threads);
 
-// The scene without the components the CPU reference does not model (stars, planet_texture, sky).
-scene::Scene withoutUnmodelled(scene::Scene scene);
-
-// The GPU reference's settings: 0.25 km steps, the finest tables, footprint map and polylines of the
-// knob ranges, 16 steps per cell in the plasma box. With empty-space skipping, which gives the naive
-// march's image (tests/render/skipping_test.cpp) in a fraction of its loop iterations: llvmpipe ends
-// every loop of a shader invocation after 65535 iterations of all its loops together, which the naive
-// 0.25 km march reaches on long rays near curtains.
-void applyFinestSettings(scene::Scene& scene);
-
 // Opens the headless EGL context of the accuracy runs and prints "renderer: NAME, GL VERSION".
 std::unique_ptr<gl::Context> openAccuracyContext(std::ostream& out);
 
@@ -89,8 +79,4 @@ struct SceneAccuracySettings {
     bool workStats = false;       // the march's work per pixel and per 8x4 block instead of the knobs
 };
 
-// The knob table (or, with featureCosts, the feature costs; with workStats, the work counts) on `out`. Throws when a file cannot be
-// read or is malformed, and when no GL context or shader can be made.
-void runSceneAccuracy(const SceneAccuracySettings& settings, std::ostream& out);
-
-} // namespace aurorawall::app
+} // namespace aurorawall::accuracy

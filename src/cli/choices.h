@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-namespace aurorawall::app::cli {
+namespace aurorawall::cli {
 
 template <class E>
 struct Choice {
@@ -47,4 +47,4 @@ bool findChoice(const Choices<E>& choices, const std::string& word, E& value)
     return false;
 }
 
-} // namespace aurorawall::app::cli
+} // namespace aurorawall::cli

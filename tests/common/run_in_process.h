@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-namespace aurorawall::app::test {
+namespace aurorawall::test {
 
 struct CommandOutput {
     int status;
@@ -25,4 +25,4 @@ CommandOutput runInProcess(const Command& command, std::vector<std::string> word
     return {status, out.str(), err.str()};
 }
 
-} // namespace aurorawall::app::test
+} // namespace aurorawall::test

@@ -1,9 +1,9 @@
-#include "app/plasma_command.h"
+#include "components/plasma/tools/plasma_command.h"
 
-#include "app/cli/command_line.h"
-#include "app/cli/exit_status.h"
-#include "app/plasma_accuracy.h"
-#include "app/plasma_soak.h"
+#include "cli/command_line.h"
+#include "cli/exit_status.h"
+#include "components/plasma/tools/plasma_accuracy.h"
+#include "components/plasma/tools/plasma_soak.h"
 #include "common/data_dir.h"
 #include "components/plasma/gpu/gpu_verify_cases.h"
 #include "components/plasma/simulation/verify_cases.h"
@@ -21,7 +21,10 @@
 #include <string>
 #include <vector>
 
-namespace aurorawall::app {
+namespace aurorawall::components::plasma::tools {
+
+namespace pic = aurorawall::plasma;
+
 namespace {
 
 namespace po = boost::program_options;
@@ -48,13 +51,13 @@ constexpr double kDiocotronWcDt = 5.0;
 enum class Device { Cpu, Gpu };
 const cli::Choices<Device> kDevices = {{"cpu", Device::Cpu}, {"gpu", Device::Gpu}};
 
-const cli::Choices<plasma::GpuPicSolver> kSolvers = {{"fft-cpu", plasma::GpuPicSolver::FftCpu},
-                                                      {"jacobi", plasma::GpuPicSolver::Jacobi},
-                                                      {"sor", plasma::GpuPicSolver::RedBlackSor},
-                                                      {"multigrid", plasma::GpuPicSolver::Multigrid}};
+const cli::Choices<pic::GpuPicSolver> kSolvers = {{"fft-cpu", pic::GpuPicSolver::FftCpu},
+                                                      {"jacobi", pic::GpuPicSolver::Jacobi},
+                                                      {"sor", pic::GpuPicSolver::RedBlackSor},
+                                                      {"multigrid", pic::GpuPicSolver::Multigrid}};
 
-const cli::Choices<plasma::ParticleShape> kShapes = {{"cic", plasma::ParticleShape::CloudInCell},
-                                                      {"tsc", plasma::ParticleShape::TriangularShapedCloud}};
+const cli::Choices<pic::ParticleShape> kShapes = {{"cic", pic::ParticleShape::CloudInCell},
+                                                      {"tsc", pic::ParticleShape::TriangularShapedCloud}};
 
 // The heating case's grid spacings in Debye lengths when --dx-lambda-d is not given.
 const std::vector<double> kHeatingSpacings = {0.5, 2.0, 8.0};
@@ -68,14 +71,14 @@ std::string number(double value)
 
 // A case's rows; a value that came out NaN or infinite ends the run (exit status 1) instead of being
 // printed as if measured.
-void printRows(std::ostream& out, const std::string& name, const std::vector<plasma::VerifyRow>& rows)
+void printRows(std::ostream& out, const std::string& name, const std::vector<pic::VerifyRow>& rows)
 {
-    for (const plasma::VerifyRow& row : rows)
+    for (const pic::VerifyRow& row : rows)
         if (!std::isfinite(row.measured) || (row.expected && !std::isfinite(row.relativeError())))
             throw std::runtime_error(name + ": " + row.parameter + " came out " +
                                      number(std::isfinite(row.measured) ? row.relativeError() : row.measured) +
                                      " (the case's measurement failed at these settings)");
-    for (const plasma::VerifyRow& row : rows) {
+    for (const pic::VerifyRow& row : rows) {
         out << name << ',' << row.parameter << ',' << number(row.measured) << ',';
         if (row.expected)
             out << number(*row.expected) << ',' << number(row.relativeError());
@@ -97,13 +100,13 @@ void requireWritableDirectory(const std::string& directory)
 
 // A case's history as DIRECTORY/NAME.csv, written atomically (io/atomic_file.h): no file is left
 // half-written.
-void writeHistory(const std::string& directory, const std::string& name, const plasma::VerifyHistory& history)
+void writeHistory(const std::string& directory, const std::string& name, const pic::VerifyHistory& history)
 {
     const std::string path = (std::filesystem::path(directory) / (name + ".csv")).string();
     try {
         io::writeFileAtomically(path, [&history](const std::string& temporary) {
             std::ofstream file(temporary);
-            plasma::writeHistoryCsv(file, history);
+            pic::writeHistoryCsv(file, history);
             file.close();
             if (!file)
                 throw std::runtime_error("cannot write");
@@ -132,12 +135,12 @@ struct VerifyOptions {
     std::string actionName;
     Case chosen = Case::All;
     Device device = Device::Cpu;
-    plasma::GpuPicSolver solver = plasma::GpuPicSolver::FftCpu;
+    pic::GpuPicSolver solver = pic::GpuPicSolver::FftCpu;
     double kDebye = 0.5;      // k λ_D of the landau case
     double wpDt = 0.2;        // ω_p Δt
     double wcDt = 1.0;        // ω_c Δt of boris and exb
     double dxOverDebye = 0.0; // --dx-lambda-d, used only when given
-    plasma::ParticleShape shape = plasma::ParticleShape::CloudInCell;
+    pic::ParticleShape shape = pic::ParticleShape::CloudInCell;
     std::string historyDirectory;
     std::vector<double> heatingSpacings = kHeatingSpacings; // Δx/λ_D of the heating runs
 };
@@ -152,8 +155,8 @@ void declareOptions(cli::CommandLine& cli, VerifyOptions& o)
                   "jacobi (20 Jacobi sweeps on the GPU, does not converge), sor (red-black SOR on the GPU "
                   "to 1e-6) or multigrid (6 V-cycles on the GPU)");
     cli.add()("k-lambda-d", po::value<double>(&o.kDebye)->default_value(0.5, "0.5"),
-              ("the landau case's wave number times the Debye length, in [" + number(plasma::kLandauMinKDebye) +
-               ", " + number(plasma::kLandauMaxKDebye) + "]").c_str());
+              ("the landau case's wave number times the Debye length, in [" + number(pic::kLandauMinKDebye) +
+               ", " + number(pic::kLandauMaxKDebye) + "]").c_str());
     cli.add()("wp-dt", po::value<double>(&o.wpDt)->default_value(0.2, "0.2"),
               "omega_p dt of langmuir, langmuir-2d, langmuir-3d, two-stream, energy, heating and landau, in [0.01, 2): "
               "the leapfrog is unstable from 2 on, and the runs' steps grow as 1/(omega_p dt)")(
@@ -180,29 +183,29 @@ void checkOptions(const cli::CommandLine& cli, VerifyOptions& o)
         throw cli.usageError("missing the action (allowed: " + cli::wordsOf(kActions) + ")");
     if (!cli::findChoice(kActions, o.actionName, action))
         throw cli.usageError("unknown action '" + echoedInput(o.actionName) + "' (allowed: " + cli::wordsOf(kActions) + ")");
-    if (!(o.kDebye >= plasma::kLandauMinKDebye && o.kDebye <= plasma::kLandauMaxKDebye))
-        throw cli.usageError("--k-lambda-d must be in [" + number(plasma::kLandauMinKDebye) + ", " +
-                             number(plasma::kLandauMaxKDebye) + "] (got " + number(o.kDebye) + ")");
+    if (!(o.kDebye >= pic::kLandauMinKDebye && o.kDebye <= pic::kLandauMaxKDebye))
+        throw cli.usageError("--k-lambda-d must be in [" + number(pic::kLandauMinKDebye) + ", " +
+                             number(pic::kLandauMaxKDebye) + "] (got " + number(o.kDebye) + ")");
     if (cli.given("k-lambda-d") && o.chosen != Case::Landau)
         throw cli.usageError("--k-lambda-d applies only to --case landau");
-    if (!(o.wpDt >= plasma::kMinVerifyWpDt && o.wpDt < 2.0))
-        throw cli.usageError("--wp-dt must be in [" + number(plasma::kMinVerifyWpDt) +
+    if (!(o.wpDt >= pic::kMinVerifyWpDt && o.wpDt < 2.0))
+        throw cli.usageError("--wp-dt must be in [" + number(pic::kMinVerifyWpDt) +
                              ", 2): the leapfrog is unstable for omega_p dt >= 2, and the runs' steps grow as "
                              "1/(omega_p dt) (got " + number(o.wpDt) + ")");
-    if (!(o.wcDt >= plasma::kMinVerifyWcDt && o.wcDt <= plasma::kMaxVerifyWcDt))
-        throw cli.usageError("--wc-dt must be in [" + number(plasma::kMinVerifyWcDt) + ", " +
-                             number(plasma::kMaxVerifyWcDt) + "] (got " + number(o.wcDt) + ")");
+    if (!(o.wcDt >= pic::kMinVerifyWcDt && o.wcDt <= pic::kMaxVerifyWcDt))
+        throw cli.usageError("--wc-dt must be in [" + number(pic::kMinVerifyWcDt) + ", " +
+                             number(pic::kMaxVerifyWcDt) + "] (got " + number(o.wcDt) + ")");
     if (cli.given("dx-lambda-d")) {
-        if (!(o.dxOverDebye >= plasma::kMinHeatingDxDebye && o.dxOverDebye <= plasma::kMaxHeatingDxDebye))
-            throw cli.usageError("--dx-lambda-d must be in [" + number(plasma::kMinHeatingDxDebye) + ", " +
-                                 number(plasma::kMaxHeatingDxDebye) + "] (got " + number(o.dxOverDebye) + ")");
+        if (!(o.dxOverDebye >= pic::kMinHeatingDxDebye && o.dxOverDebye <= pic::kMaxHeatingDxDebye))
+            throw cli.usageError("--dx-lambda-d must be in [" + number(pic::kMinHeatingDxDebye) + ", " +
+                                 number(pic::kMaxHeatingDxDebye) + "] (got " + number(o.dxOverDebye) + ")");
         o.heatingSpacings = {o.dxOverDebye};
     }
     if (o.device != Device::Gpu && cli.given("solver"))
         throw cli.usageError("--solver applies only to --device gpu");
     if (cli.given("shape") && o.chosen != Case::Heating)
         throw cli.usageError("--shape applies only to --case heating");
-    if (o.shape != plasma::ParticleShape::CloudInCell && o.device == Device::Gpu)
+    if (o.shape != pic::ParticleShape::CloudInCell && o.device == Device::Gpu)
         throw cli.usageError("--shape tsc runs only on --device cpu (the GPU step deposits by cloud-in-cell)");
 }
 
@@ -211,41 +214,41 @@ template <typename Verify>
 void runCase(const VerifyOptions& o, std::ostream& out, const std::string& name, const std::string& file,
              const Verify& verify)
 {
-    plasma::VerifyHistory history;
+    pic::VerifyHistory history;
     printRows(out, name, verify(o.historyDirectory.empty() ? nullptr : &history));
     if (!o.historyDirectory.empty() && !history.columns.empty())
         writeHistory(o.historyDirectory, file, history);
 }
 
 // The header, then the chosen cases (all: each in turn) on one device.
-void runCases(const VerifyOptions& o, const plasma::PicDevice& on, std::ostream& out)
+void runCases(const VerifyOptions& o, const pic::PicDevice& on, std::ostream& out)
 {
     const auto runs = [&o](Case c) { return o.chosen == Case::All || o.chosen == c; };
     out << "case,parameter,measured,expected,rel_error\n";
     if (runs(Case::Langmuir))
-        runCase(o, out, "langmuir", "langmuir", [&](auto h) { return plasma::verifyLangmuir(o.wpDt, on, h); });
+        runCase(o, out, "langmuir", "langmuir", [&](auto h) { return pic::verifyLangmuir(o.wpDt, on, h); });
     if (runs(Case::Langmuir2D))
         runCase(o, out, "langmuir-2d", "langmuir-2d",
-                [&](auto h) { return plasma::verifyLangmuir2D(o.wpDt, 256, on, h); });
+                [&](auto h) { return pic::verifyLangmuir2D(o.wpDt, 256, on, h); });
     if (runs(Case::Langmuir3D))
         runCase(o, out, "langmuir-3d", "langmuir-3d",
-                [&](auto h) { return plasma::verifyLangmuir3D(o.wpDt, 32, on, h); });
-    if (runs(Case::Boris)) printRows(out, "boris", plasma::verifyBoris(o.wcDt, 1000, on));
-    if (runs(Case::ExB)) printRows(out, "exb", plasma::verifyExB(o.wcDt, on));
+                [&](auto h) { return pic::verifyLangmuir3D(o.wpDt, 32, on, h); });
+    if (runs(Case::Boris)) printRows(out, "boris", pic::verifyBoris(o.wcDt, 1000, on));
+    if (runs(Case::ExB)) printRows(out, "exb", pic::verifyExB(o.wcDt, on));
     if (runs(Case::TwoStream))
-        runCase(o, out, "two-stream", "two-stream", [&](auto h) { return plasma::verifyTwoStream(o.wpDt, on, h); });
+        runCase(o, out, "two-stream", "two-stream", [&](auto h) { return pic::verifyTwoStream(o.wpDt, on, h); });
     if (runs(Case::Energy))
-        runCase(o, out, "energy", "energy", [&](auto h) { return plasma::verifyEnergy(o.wpDt, on, h); });
+        runCase(o, out, "energy", "energy", [&](auto h) { return pic::verifyEnergy(o.wpDt, on, h); });
     if (runs(Case::Heating))
         for (const double spacing : o.heatingSpacings)
             runCase(o, out, "heating", "heating-dx" + number(spacing),
-                    [&](auto h) { return plasma::verifyHeating(o.wpDt, spacing, 1, on, 64, h); });
+                    [&](auto h) { return pic::verifyHeating(o.wpDt, spacing, 1, on, 64, h); });
     if (runs(Case::Landau))
         runCase(o, out, "landau", "landau",
-                [&](auto h) { return plasma::verifyLandau(o.wpDt, o.kDebye, 1 << 20, on, h); });
+                [&](auto h) { return pic::verifyLandau(o.wpDt, o.kDebye, 1 << 20, on, h); });
     if (runs(Case::Diocotron))
         runCase(o, out, "diocotron", "diocotron",
-                [&](auto h) { return plasma::verifyDiocotron(kDiocotronWcDt, 0.1, on, h); });
+                [&](auto h) { return pic::verifyDiocotron(kDiocotronWcDt, 0.1, on, h); });
 }
 
 } // namespace
@@ -266,11 +269,11 @@ int runPlasmaCommand(int argc, char** argv, std::ostream& out, std::ostream& err
         if (cli.given("history")) requireWritableDirectory(options.historyDirectory);
         if (options.device == Device::Gpu) {
             const auto context = gl::createContext(gl::Backend::Egl);
-            runCases(options, plasma::GpuPicDevice(dataDirectory() + "/shaders", options.solver), out);
+            runCases(options, pic::GpuPicDevice(dataDirectory() + "/shaders", options.solver), out);
         } else {
-            runCases(options, plasma::cpuDevice(options.shape), out);
+            runCases(options, pic::cpuDevice(options.shape), out);
         }
     });
 }
 
-} // namespace aurorawall::app
+} // namespace aurorawall::components::plasma::tools

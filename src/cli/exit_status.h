@@ -12,7 +12,7 @@
 #include <iosfwd>
 #include <string>
 
-namespace aurorawall::app::cli {
+namespace aurorawall::cli {
 
 enum ExitStatus : int { kSuccess = 0, kRuntimeFailure = 1, kUsageError = 2 };
 
@@ -26,4 +26,4 @@ std::string errorLine(const std::string& command, const std::string& message);
 // Output that could not be written (a full disk, a closed pipe) is a runtime failure too.
 int runCommand(const std::string& command, std::ostream& out, std::ostream& err, const std::function<void()>& body);
 
-} // namespace aurorawall::app::cli
+} // namespace aurorawall::cli

@@ -1,11 +1,11 @@
-#include "app/cli/exit_status.h"
+#include "cli/exit_status.h"
 
 #include "common/input_error.h"
 
 #include <ostream>
 #include <stdexcept>
 
-namespace aurorawall::app::cli {
+namespace aurorawall::cli {
 
 int exitStatusOf(const std::exception& error)
 {
@@ -31,4 +31,4 @@ int runCommand(const std::string& command, std::ostream& out, std::ostream& err,
     return kSuccess;
 }
 
-} // namespace aurorawall::app::cli
+} // namespace aurorawall::cli

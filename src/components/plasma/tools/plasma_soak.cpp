@@ -1,7 +1,7 @@
-#include "app/plasma_soak.h"
+#include "components/plasma/tools/plasma_soak.h"
 
-#include "app/cli/command_line.h"
-#include "app/cli/exit_status.h"
+#include "cli/command_line.h"
+#include "cli/exit_status.h"
 #include "common/data_dir.h"
 #include "components/plasma/gpu/gpu_verify_cases.h"
 #include "components/plasma/simulation/electron_sheet.h"
@@ -19,11 +19,13 @@
 #include <ostream>
 #include <stdexcept>
 
-namespace aurorawall::app {
+namespace aurorawall::components::plasma::tools {
+
+namespace pic = aurorawall::plasma;
+
 namespace {
 
 namespace po = boost::program_options;
-namespace pic = aurorawall::plasma;
 using components::plasma::BoxFramesSpec;
 
 enum class Device { Cpu, Gpu };
@@ -165,4 +167,4 @@ int runPlasmaSoakCommand(int argc, char** argv, std::ostream& out, std::ostream&
     });
 }
 
-} // namespace aurorawall::app
+} // namespace aurorawall::components::plasma::tools

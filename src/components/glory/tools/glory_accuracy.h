@@ -4,12 +4,12 @@
 // quadrature) against the error of its colour and the cost of building it; then the per-pixel colour
 // (the colour table, or 1 to 32 wavelengths per pixel spaced evenly or importance sampled) against
 // the error of the rendered image and the time per frame.
-#include "app/accuracy_scene.h"
+#include "accuracy/scene_view.h"
 
 #include <iosfwd>
 
-namespace aurorawall::app {
+namespace aurorawall::components::glory::tools {
 
-void runGloryAccuracy(const SceneAccuracySettings& settings, std::ostream& out);
+void runGloryAccuracy(const accuracy::SceneAccuracySettings& settings, std::ostream& out);
 
-} // namespace aurorawall::app
+} // namespace aurorawall::components::glory::tools

@@ -1,0 +1,44 @@
+#include "components/glory/tools/glory_table_csv.h"
+
+#include "common/constants.h"
+#include "components/glory/glory.h"
+#include "components/registry.h"
+
+#include <cstdio>
+#include <ostream>
+#include <stdexcept>
+#include <vector>
+
+namespace aurorawall::components::glory::tools {
+
+namespace optics = aurorawall::glory;
+
+void printGloryTable(const std::string& sceneFile, std::ostream& out)
+{
+    const scene::Scene scene = components::loadScene(sceneFile);
+    if (!scene.has("glory"))
+        throw std::runtime_error(sceneFile + ": the scene does not list glory");
+    const auto& settings = scene.settings<Settings>();
+    const optics::PhaseTable table = gloryTables(settings).phase;
+    const std::vector<glm::dvec3> rgb = optics::gloryLinearSrgb(optics::gloryXyz(table, settings.light));
+    out << "gamma_deg";
+    for (double nm : table.wavelengthsNm) {
+        char name[32];
+        std::snprintf(name, sizeof name, ",p_%gnm", nm);
+        out << name;
+    }
+    out << ",r,g,b\n";
+    for (int a = 0; a < table.angles.size(); ++a) {
+        char cell[40];
+        std::snprintf(cell, sizeof cell, "%.6f", table.angles.angle(a) / kDegree);
+        out << cell;
+        for (size_t w = 0; w < table.wavelengthsNm.size(); ++w) {
+            std::snprintf(cell, sizeof cell, ",%.8g", table.at(int(w), a));
+            out << cell;
+        }
+        std::snprintf(cell, sizeof cell, ",%.8g,%.8g,%.8g\n", rgb[size_t(a)].r, rgb[size_t(a)].g, rgb[size_t(a)].b);
+        out << cell;
+    }
+}
+
+} // namespace aurorawall::components::glory::tools
