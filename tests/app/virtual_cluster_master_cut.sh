@@ -1,17 +1,19 @@
 #!/bin/bash
-# The master's host cut off on the virtual cluster (launch/virtual-cluster, 4 hosts x 1 rank, so rank 0
-# and mpirun are alone on host 0; --rank-timeout 3): once frames flow, host 0's link is taken down
-# (`ip -n PREFIXh0 link set eth0 down`, as a pulled cable). The job must end within 15 s of the cut
-# with exit status 3, the master's line naming every other rank and its host as silent (the workers'
-# own lines, which name the master, cannot reach mpirun over the cut link), and no process or
-# namespace may be left. MASTER_CUT_RUNS=N repeats the case N times (default 1). Everything runs
-# under `timeout`, so nothing can hang. Skipped (77) where namespaces cannot be made.
+# The master's host cut off on the virtual cluster (launch/virtual-cluster, --rank-timeout 3), on 4
+# hosts x 1 rank (rank 0 and mpirun alone on host 0) and on 2 hosts x 2 ranks (rank 1 beside them):
+# once frames flow, and after a random 0-3 s so the cut falls anywhere in a frame, host 0's link is
+# taken down (`ip -n PREFIXh0 link set eth0 down`). The job must end within 15 s of the cut with exit
+# status 3, the master's line naming silent ranks on the other hosts (the workers' own lines, which
+# name the master, cannot reach mpirun over the cut link), and no process or namespace may be left.
+# MASTER_CUT_RUNS=N repeats each layout N times (default 1); MASTER_CUT_LAYOUTS picks layouts
+# (default "4x1 2x2"). Everything runs under `timeout`. Skipped (77) where namespaces cannot be made.
 source "$(dirname "$0")/lib.sh"
 require_network_namespaces
 timeout_s=3
 limit_s=15
-runs="${MASTER_CUT_RUNS:-1}"
-read -r hosts per_host <<<"${MASTER_CUT_LAYOUT:-4 1}" # hosts, ranks per host (4 ranks in all)
+runs_each="${MASTER_CUT_RUNS:-1}"
+layouts=(${MASTER_CUT_LAYOUTS:-4x1 2x2}) # HOSTSxRANKS_PER_HOST, 4 ranks in all
+runs=$(( runs_each * ${#layouts[@]} ))
 base="awmc$(( $$ % 100000 ))" # + the run's number + e0: within the 15 characters of an interface name
 
 # The namespaces of a run the script could not clean up (killed), and their processes.
@@ -26,6 +28,8 @@ trap 'remove_namespaces; cleanup' EXIT
 
 failures=0
 for run in $(seq "$runs"); do
+    layout=${layouts[$(( (run - 1) % ${#layouts[@]} ))]}
+    hosts=${layout%x*} per_host=${layout#*x}
     prefix="$base$run"
     log="$WORK/$run.log" err="$WORK/$run.err"
     note "run $run of $runs: $hosts hosts x $per_host ranks, host 0's link down"
@@ -42,6 +46,7 @@ for run in $(seq "$runs"); do
     pids=$(sed -n 's/^rank [0-3]: pid \([0-9]*\)$/\1/p' "$log")
     [ "$(wc -w <<<"$pids")" -eq 4 ] || fail "run $run: not every rank printed its pid"
 
+    sleep "$(awk -v r=$RANDOM 'BEGIN { print r % 3000 / 1000 }')"
     ip -n "${prefix}h0" link set eth0 down
     cut=$(now)
     for _ in $(seq $(( limit_s * 10 ))); do kill -0 $job 2>/dev/null || break; sleep 0.1; done
