@@ -1,4 +1,4 @@
-// The cost and the diagnostics quoted in docs/fluid.md (benchmark; not run by ctest), one core:
+// The cost and the diagnostics of docs/fluid.md and bench/results/fluid (benchmark; not run by ctest), one core:
 // run time of simulateCurtainDetail for the default and the two quality knobs with each pressure
 // solver, how far the two runs' flux frames drift apart, and one projection side by side (error
 // against a multigrid solve to a residual of 1e-12, divergence left, milliseconds per projection).
