@@ -44,103 +44,123 @@ struct OpenBracket {
     bool pending = false;
 };
 
-// The text with a line break after every comma of an array (outside strings and comments, and not
-// in inline tables, where TOML allows none), and the file's line of each resulting line. Refuses an
-// array of more than kMaxTomlArrayElements elements, or more than kMaxTomlFileArrayElements in all.
-std::string breakArraysAfterCommas(const std::string& path, const std::string& text, std::vector<int>& lines)
-{
-    std::string out;
-    out.reserve(text.size() + text.size() / 8);
-    std::vector<OpenBracket> open;
-    std::size_t fileElements = 0;
-    const auto checkLength = [&path](const OpenBracket& array, std::size_t elements) {
-        if (elements > kMaxTomlArrayElements)
-            throw inputError(path, array.line, "an array of more than " + std::to_string(kMaxTomlArrayElements) +
-                                                   " elements, the most a config array may have");
-    };
-    const auto closeArray = [&](const OpenBracket& array) {
-        const std::size_t elements = array.commas + (array.pending ? 1 : 0);
-        checkLength(array, elements);
-        fileElements += elements;
-        if (fileElements > kMaxTomlFileArrayElements)
-            throw inputError(path, array.line, "more than " + std::to_string(kMaxTomlFileArrayElements) +
-                                                   " array elements in the file, the most a config file may hold");
-    };
-    // Something other than a comma or a closing bracket starts (or continues) an element.
-    const auto element = [&open] {
-        if (!open.empty())
-            open.back().pending = true;
-    };
-    int line = 1;
-    lines.assign(1, 1);
-    enum class In { Code, Comment, Basic, Literal, MultiBasic, MultiLiteral } in = In::Code;
-    const std::string basic3 = "\"\"\"", literal3 = "'''";
-    for (std::size_t i = 0; i < text.size(); ++i) {
-        const char c = text[i];
-        out += c;
-        if (c == '\n') {
-            lines.push_back(++line);
-            if (in == In::Comment || in == In::Basic || in == In::Literal)
-                in = In::Code;
-            continue;
+// Puts a line break after every comma of an array (outside strings and comments, and not in inline
+// tables, where TOML allows none), keeping the file's line of each resulting line. Refuses an array of
+// more than kMaxTomlArrayElements elements, or more than kMaxTomlFileArrayElements in all.
+class ArrayBreaker {
+public:
+    ArrayBreaker(const std::string& path, const std::string& text) : path_(path), text_(text)
+    {
+        out_.reserve(text.size() + text.size() / 8);
+    }
+
+    std::string run(std::vector<int>& lines)
+    {
+        lines_.assign(1, 1);
+        for (i_ = 0; i_ < text_.size(); ++i_) {
+            const char c = text_[i_];
+            out_ += c;
+            if (c == '\n')
+                newLine();
+            else if (in_ == In::Code)
+                code(c);
+            else if (in_ != In::Comment)
+                string(c);
         }
-        switch (in) {
-        case In::Comment:
-            break;
-        case In::Basic:
-        case In::MultiBasic:
-            if (c == '\\' && i + 1 < text.size() && text[i + 1] != '\n')
-                out += text[++i];
-            else if (in == In::Basic && c == '"')
-                in = In::Code;
-            else if (in == In::MultiBasic && text.compare(i, 3, basic3) == 0) {
-                out += "\"\"";
-                i += 2;
-                in = In::Code;
-            }
-            break;
-        case In::Literal:
-            if (c == '\'')
-                in = In::Code;
-            break;
-        case In::MultiLiteral:
-            if (text.compare(i, 3, literal3) == 0) {
-                out += "''";
-                i += 2;
-                in = In::Code;
-            }
-            break;
-        case In::Code:
-            if (c == '#') {
-                in = In::Comment;
-            } else if (c == '"' || c == '\'') {
-                element();
-                const bool triple = text.compare(i, 3, c == '"' ? basic3 : literal3) == 0;
-                in = c == '"' ? (triple ? In::MultiBasic : In::Basic) : (triple ? In::MultiLiteral : In::Literal);
-                if (triple) {
-                    out += std::string(2, c);
-                    i += 2;
-                }
-            } else if (c == '[' || c == '{') {
-                element();
-                open.push_back({c, line});
-            } else if ((c == ']' || c == '}') && !open.empty()) {
-                if (open.back().bracket == '[')
-                    closeArray(open.back());
-                open.pop_back();
-            } else if (c == ',' && !open.empty() && open.back().bracket == '[') {
-                checkLength(open.back(), ++open.back().commas);
-                open.back().pending = false;
-                out += '\n';
-                lines.push_back(line);
-            } else if (c != ',' && c != ' ' && c != '\t' && c != '\r') {
-                element();
-            }
-            break;
+        lines = std::move(lines_);
+        return std::move(out_);
+    }
+
+private:
+    enum class In { Code, Comment, Basic, Literal, MultiBasic, MultiLiteral };
+
+    void newLine()
+    {
+        lines_.push_back(++line_);
+        if (in_ == In::Comment || in_ == In::Basic || in_ == In::Literal)
+            in_ = In::Code;
+    }
+
+    // Inside a string: its end (a triple quote copied whole), or an escaped character copied with its backslash.
+    void string(char c)
+    {
+        const bool basic = in_ == In::Basic || in_ == In::MultiBasic;
+        const bool multi = in_ == In::MultiBasic || in_ == In::MultiLiteral;
+        const char quote = basic ? '"' : '\'';
+        if (basic && c == '\\' && i_ + 1 < text_.size() && text_[i_ + 1] != '\n') {
+            out_ += text_[++i_];
+        } else if (!multi && c == quote) {
+            in_ = In::Code;
+        } else if (multi && text_.compare(i_, 3, std::string(3, quote)) == 0) {
+            out_ += std::string(2, quote);
+            i_ += 2;
+            in_ = In::Code;
         }
     }
-    return out;
-}
+
+    void code(char c)
+    {
+        if (c == '#') {
+            in_ = In::Comment;
+        } else if (c == '"' || c == '\'') {
+            element();
+            const bool triple = text_.compare(i_, 3, std::string(3, c)) == 0;
+            in_ = c == '"' ? (triple ? In::MultiBasic : In::Basic) : (triple ? In::MultiLiteral : In::Literal);
+            if (triple) {
+                out_ += std::string(2, c);
+                i_ += 2;
+            }
+        } else if (c == '[' || c == '{') {
+            element();
+            open_.push_back({c, line_});
+        } else if ((c == ']' || c == '}') && !open_.empty()) {
+            if (open_.back().bracket == '[')
+                closeArray(open_.back());
+            open_.pop_back();
+        } else if (c == ',' && !open_.empty() && open_.back().bracket == '[') {
+            checkLength(open_.back(), ++open_.back().commas);
+            open_.back().pending = false;
+            out_ += '\n';
+            lines_.push_back(line_);
+        } else if (c != ',' && c != ' ' && c != '\t' && c != '\r') {
+            element();
+        }
+    }
+
+    // Something other than a comma or a closing bracket starts (or continues) an element.
+    void element()
+    {
+        if (!open_.empty())
+            open_.back().pending = true;
+    }
+
+    void checkLength(const OpenBracket& array, std::size_t elements) const
+    {
+        if (elements > kMaxTomlArrayElements)
+            throw inputError(path_, array.line, "an array of more than " + std::to_string(kMaxTomlArrayElements) +
+                                                    " elements, the most a config array may have");
+    }
+
+    void closeArray(const OpenBracket& array)
+    {
+        const std::size_t elements = array.commas + (array.pending ? 1 : 0);
+        checkLength(array, elements);
+        fileElements_ += elements;
+        if (fileElements_ > kMaxTomlFileArrayElements)
+            throw inputError(path_, array.line, "more than " + std::to_string(kMaxTomlFileArrayElements) +
+                                                    " array elements in the file, the most a config file may hold");
+    }
+
+    const std::string& path_;
+    const std::string& text_;
+    std::string out_;
+    std::vector<int> lines_;
+    std::vector<OpenBracket> open_;
+    std::size_t fileElements_ = 0;
+    std::size_t i_ = 0;
+    int line_ = 1;
+    In in_ = In::Code;
+};
 
 } // namespace
 
@@ -158,7 +178,7 @@ TomlFile parseTomlFile(const std::string& path)
     if (!in || !(text << in.rdbuf()))
         throw inputError(path, 0, "cannot read the file");
     auto lines = std::make_shared<std::vector<int>>();
-    std::istringstream broken(breakArraysAfterCommas(path, text.str(), *lines));
+    std::istringstream broken(ArrayBreaker(path, text.str()).run(*lines));
     const auto fileLine = [&lines](std::size_t parsed) {
         return parsed >= 1 && parsed <= lines->size() ? (*lines)[parsed - 1] : int(parsed);
     };
