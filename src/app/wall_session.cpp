@@ -69,7 +69,7 @@ void configure(const cluster::MpiWorld& world, int argc, char** argv, WallSessio
         io::ensureWritableDirectory(options.outDir, "--out");
     if (!options.movieDir.empty())
         io::ensureWritableDirectory(options.movieDir, "--movie");
-    // The master's files go into existing folders (docs/driving.md, "Outputs"); checked before any
+    // The master's files go into existing folders (README.md, "Outputs"); checked before any
     // frame, so that no run's data is lost to a path that cannot be written.
     if (world.isMaster()) {
         const std::pair<const std::string&, const char*> files[] = {
