@@ -183,8 +183,9 @@ test::BoundedError gpuAgainstReference(const scene::Scene& s)
 
 // Each pixel within its bound (gpuAgainstReference), with the reference's own table on the GPU and
 // with the scene's coarser one (21 wavelengths 20 nm apart for one drop size, whose phase function
-// changes fast with wavelength; docs/GLORY.md has the error of every table resolution). Measured
-// (llvmpipe): rms 5.1e-4, max 1.7e-3 and rms 1.3e-2, max 5.6e-2.
+// changes fast with wavelength; the error of every table resolution is in
+// bench/results/glory/error-against-run-time-2026-11-24.md). Measured (llvmpipe): rms 5.1e-4, max
+// 1.7e-3 and rms 1.3e-2, max 5.6e-2.
 TEST(GloryOnTheGpu, AgreesWithTheReference)
 {
     const auto context = gl::createContext(gl::Backend::Egl);
