@@ -46,6 +46,9 @@ struct Tools {
     std::vector<AccuracyTable> accuracyTables;
     std::vector<SceneTable> sceneTables;
     SceneSweep sceneSweep = nullptr; // the component whose march it is
+    // Whose quality knobs the sweep varies, in `accuracy --help` ("the quality knobs (...):"; lines of
+    // at most about 100 characters, the first at most 45).
+    const char* sceneSweepKnobs = "";
 };
 
 // The commands of every compiled-in component, in alphabetical order of their names.
@@ -55,5 +58,7 @@ const std::vector<AccuracyTable>& componentAccuracyTables();
 const std::vector<SceneTable>& componentSceneTables();
 // The first component's sweep of `accuracy --scene` in registry order, or nullptr.
 SceneSweep componentSceneSweep();
+// Its sceneSweepKnobs, or "" when there is none.
+const char* componentSceneSweepKnobs();
 
 } // namespace aurorawall::components

@@ -6,7 +6,9 @@ namespace aurorawall::components::aurora::tools {
 
 const Tools& registered()
 {
-    static const Tools tools{{}, {}, {}, runSceneAccuracy};
+    static const Tools tools{{}, {}, {}, runSceneAccuracy,
+                             "the aurora's;\n"
+                             "fluid_cells, box_steps_per_cell where the scene has fluid_detail or the plasma box"};
     return tools;
 }
 
