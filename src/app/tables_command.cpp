@@ -49,7 +49,7 @@ std::string usage()
     return text + "Exit status: 0 success, 1 output not written or the scene not read, 2 usage error.\n";
 }
 
-// "glory: the scene file whose glory table to print", with every component's table of a scene.
+// "NAME: the scene file whose NAME table to print", with every component's table of a scene.
 std::string sceneHelp()
 {
     std::string names;

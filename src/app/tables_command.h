@@ -1,7 +1,6 @@
 #pragma once
-// `aurorawall tables NAME --OPTION VALUE ...`: a component's table of options (the aurora's
-// `deposition --energy-kev E [--maxwellian]`); `aurorawall tables NAME --scene FILE`: a component's
-// table of a scene. Both kinds come from the components' tools (components/tools.h).
+// `aurorawall tables NAME --OPTION VALUE ...`: a component's table of options alone;
+// `aurorawall tables NAME --scene FILE`: a component's table of a scene. Both kinds come from the components' tools (components/tools.h).
 #include <iosfwd>
 
 namespace aurorawall::app {
