@@ -32,7 +32,7 @@ Ray boundByGround(Ray ray, real R, real altitude)
     return ray;
 }
 
-// Does the ray leave the planet's layers with nothing opaque ending it (stars are seen)?
+// Does the ray leave the planet's layers with nothing opaque ending it (space behind them is seen)?
 bool reachesSpace(Ray ray)
 {
     return ray.end >= real(1e30);

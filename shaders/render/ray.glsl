@@ -1,11 +1,11 @@
 // One pixel's ray as the components composite it, front to back (Lawlor & Genetti 2011,
 // section 3.1, figure 8). Shared by the shader and the C++ reference (src/common/glsl.h): the
-// generated shadeRay (src/render/fragment_shader.cpp) passes it through each listed component's
-// geometry step, then through each shading step in compositing order.
+// generated shadeRay (src/render/march_shader.cpp) passes it through each listed component's
+// geometry step, then through each shading step shell by shell, front to back (src/scene/shell.h).
 //
 // The ray x(t) = origin + t direction, t >= 0 in km, |direction| = 1, starts at the camera,
 // `altitude` km above the ground (from double precision). The layers are concentric shells that
-// never overlap (ground, lower atmosphere, airglow and aurora above it), so along any ray each
+// never overlap (ground, lower atmosphere, the emitting upper atmosphere above it), so along any ray each
 // emitting part lies wholly in front of or wholly behind the lower atmosphere.
 struct Ray {
     vec3 origin;

@@ -1,7 +1,7 @@
 // The march's work per pixel, counted only when the program is built with AURORAWALL_WORK_STATS
 // (accuracy --work-stats; src/render/work_counts.h) or AURORAWALL_WORK_FETCHES (the pixel's work is
 // its texture fetches, pixel.glsl), so that counting costs the march nothing otherwise: x the march's steps (footprint map reads), y the curtains evaluated near a step,
-// z the sub-steps integrated, w the texture fetches of the aurora's march (footprint map, polylines,
+// z the sub-steps integrated, w the texture fetches of the march (footprint map, polylines,
 // flux tables, emission table).
 #if defined(AURORAWALL_WORK_STATS) || defined(AURORAWALL_WORK_FETCHES)
 ivec4 gWork = ivec4(0);
@@ -11,5 +11,5 @@ ivec4 gWork = ivec4(0);
 #endif
 
 // The ray's work by which the load balancer shares out a draw's measured time (pixel.glsl: 1 + this):
-// each component that marches adds its steps (the aurora: the steps of auroraSegment).
+// each component that marches adds its steps.
 int gRayWork = 0;

@@ -34,13 +34,13 @@ const char* kUsageBody =
     "8 lights, closed form against nested march. Errors are against the double-precision reference, for the\n"
     "float results read back from the GPU and for the CPU float32/float64 evaluations of the same shader\n"
     "text. Costs are ns per evaluation inside a compute shader on this machine's GL renderer, an empty loop\n"
-    "subtracted.\n"
-    "--scene: error against run time of the quality knobs (the aurora's; fluid_cells, box_steps_per_cell where\n"
-    "the scene has fluid_detail or the plasma box): the scene's frame K (default 0, the first)\n"
-    "at a small size, each knob varied alone around the scene's defaults, compared with the GPU render at the\n"
-    "finest settings (every pixel) and the double-precision CPU reference (N sampled pixels). Stars,\n"
-    "planet_texture and sky are removed (the CPU reference does not model them). --feature-costs: instead,\n"
-    "the frame time of each\n"
+    "subtracted.\n";
+// After "--scene: error against run time of the quality knobs (" and those of the component whose march it is.
+const char* kSceneUsage =
+    "):\nthe scene's frame K (default 0, the first) at a small size, each knob varied alone around the scene's\n"
+    "defaults, compared with the GPU render at the\n"
+    "finest settings (every pixel) and the double-precision CPU reference (N sampled pixels). The components\n"
+    "the CPU reference does not model are removed. --feature-costs: instead, the frame time of each\n"
     "feature toggled alone, the full scene (the paper's table 2). --work-stats: instead, the work of the\n"
     "march per pixel, counted on the GPU: march steps, curtains evaluated, sub-steps and texture fetches, as\n"
     "the mean per pixel and the mean over 8x4-pixel blocks of each block's largest (what a 32-lane warp\n"
@@ -53,12 +53,15 @@ std::string usage()
     for (const components::AccuracyTable& t : components::componentAccuracyTables())
         text += "       aurorawall accuracy --" + std::string(t.option) + " FILE [--wall FILE] [--size WxH] [--runs N]\n";
     text += kUsageBody;
+    text += std::string("--scene: error against run time of the quality knobs (") + components::componentSceneSweepKnobs() +
+            kSceneUsage;
     for (const components::AccuracyTable& t : components::componentAccuracyTables())
         text += "--" + std::string(t.option) + ": " + t.description;
     return text + "Exit status: 0 success, 1 runtime failure (a file, no GL context, a shader), 2 usage error.\n";
 }
 
-// "--airmass, --sky, --scene FILE or --OPTION FILE" with each component's table.
+// The generic runs ("--airmass", "--sky" of the atmosphere physics, "--scene FILE"), then "--OPTION FILE" for
+// each component's table.
 std::string runChoices()
 {
     std::vector<std::string> runs = {"--airmass", "--sky", "--scene FILE"};
@@ -111,7 +114,7 @@ void declareOptions(cli::CommandLine& cli, AccuracyOptions& o)
     cli.add()
         ("airmass", po::bool_switch(&o.airmass), "the airmass methods")
         ("sky", po::bool_switch(&o.sky), "the several-lights sky")
-        ("scene", po::value(&scene.sceneFile), "the aurora's quality knobs on this scene file");
+        ("scene", po::value(&scene.sceneFile), "the march's quality knobs on this scene file");
     for (const components::AccuracyTable& t : components::componentAccuracyTables())
         cli.add()(t.option, po::value(&scene.sceneFile), t.help);
     cli.add()

@@ -57,7 +57,7 @@ void describeRenderingOptions(cli::CommandLine& cli, RenderOptions& o)
          "bands per screen for --balance (1 to 256; at most one per 8 rows)");
     cli.addChoice("balance-by", &o.balanceBy, kBandMeasures,
                   "what --balance equalizes: time (each band's measured CPU time) or work (each band's rays' work, "
-                  "1 + aurora samples per pixel: exact and free of timing noise, but not proportional to time)");
+                  "1 + march samples per pixel: exact and free of timing noise, but not proportional to time)");
 }
 
 // The options of the outputs, the remote control and the messages.

@@ -2,44 +2,54 @@
 
 #include "cli/command_line.h"
 #include "cli/exit_status.h"
-#include "components/aurora/physics/deposition_table.h"
 #include "components/tools.h"
 
-#include <cstdio>
+#include <functional>
 #include <ostream>
 #include <string>
+#include <vector>
 
 namespace aurorawall::app {
 namespace {
 
 namespace po = boost::program_options;
 
-constexpr double kMinEnergyKeV = 0.01;
-constexpr double kMaxEnergyKeV = 1000.0;
+// The components' tables: those of options first, then those of a scene (registry order each).
+struct Table {
+    const components::OptionTable* options = nullptr;
+    const components::SceneTable* scene = nullptr;
+};
 
-// The tables: deposition (nullptr) and each component's table of a scene.
-cli::Choices<const components::SceneTable*> tables()
+cli::Choices<Table> tables()
 {
-    cli::Choices<const components::SceneTable*> choices = {{"deposition", nullptr}};
+    cli::Choices<Table> choices;
+    for (const components::OptionTable& t : components::componentOptionTables())
+        choices.push_back({t.name, {&t, nullptr}});
     for (const components::SceneTable& t : components::componentSceneTables())
-        choices.push_back({t.name, &t});
+        choices.push_back({t.name, {nullptr, &t}});
     return choices;
 }
 
 std::string usage()
 {
-    std::string text = "Usage: aurorawall tables deposition --energy-kev E [--maxwellian]\n";
-    for (const components::SceneTable& t : components::componentSceneTables())
-        text += "       aurorawall tables " + std::string(t.name) + " --scene FILE\n";
-    text += "deposition: CSV altitude_km,rate from 60 to 600 km every 0.5 km: the Lazarev energy deposition rate\n"
-            "in keV cm^-3 s^-1 per erg cm^-2 s^-1 of incident energy flux, over the US Standard Atmosphere 1976\n"
-            "(docs/aurora-physics.md).\n";
+    std::string text;
+    const char* head = "Usage: ";
+    for (const components::OptionTable& t : components::componentOptionTables()) {
+        text += std::string(head) + "aurorawall tables " + t.name + " " + t.usage + "\n";
+        head = "       ";
+    }
+    for (const components::SceneTable& t : components::componentSceneTables()) {
+        text += std::string(head) + "aurorawall tables " + std::string(t.name) + " --scene FILE\n";
+        head = "       ";
+    }
+    for (const components::OptionTable& t : components::componentOptionTables())
+        text += std::string(t.name) + ": " + t.description;
     for (const components::SceneTable& t : components::componentSceneTables())
         text += std::string(t.name) + ": " + t.description;
     return text + "Exit status: 0 success, 1 output not written or the scene not read, 2 usage error.\n";
 }
 
-// "glory: the scene file whose glory table to print", with every component's table.
+// "NAME: the scene file whose NAME table to print", with every component's table of a scene.
 std::string sceneHelp()
 {
     std::string names;
@@ -48,16 +58,15 @@ std::string sceneHelp()
     return names + ": the scene file whose " + names + " table to print";
 }
 
-void printDeposition(double energyKeV, bool maxwellian, std::ostream& out)
+// Whether any option of a table of options other than `except` is on the command line.
+bool givenOtherOptions(const cli::CommandLine& cli, const components::OptionTable* except)
 {
-    const aurora::Spectrum spectrum = maxwellian ? aurora::Spectrum::Maxwellian : aurora::Spectrum::Monoenergetic;
-    out << "altitude_km,rate\n";
-    for (int i = 0; i <= 1080; ++i) {
-        const double altitudeKm = 60.0 + 0.5 * i;
-        char line[64];
-        std::snprintf(line, sizeof line, "%.1f,%.10g\n", altitudeKm, aurora::depositionRate(altitudeKm, energyKeV, spectrum));
-        out << line;
-    }
+    for (const components::OptionTable& t : components::componentOptionTables())
+        if (&t != except)
+            for (const std::string& option : t.options)
+                if (cli.given(option))
+                    return true;
+    return false;
 }
 
 } // namespace
@@ -66,39 +75,36 @@ int runTablesCommand(int argc, char** argv, std::ostream& out, std::ostream& err
 {
     return cli::runCommand("tables", out, err, [&] {
         cli::CommandLine cli("tables", usage());
-        double energyKeV = 0.0;
-        bool maxwellian = false;
+        std::vector<std::function<void(std::ostream&)>> printers;
+        for (const components::OptionTable& t : components::componentOptionTables())
+            printers.push_back(t.declare(cli));
         std::string tableName, sceneFile;
-        cli.add()("energy-kev", po::value<double>(&energyKeV),
-                  "electron energy E in keV (0.01 to 1000; Lazarev's fit is meant for 1-30 keV)")(
-            "maxwellian", po::bool_switch(&maxwellian),
-            "a Maxwellian spectrum with characteristic energy E (number flux ~ E exp(-E/E0)) instead of electrons "
-            "all at E")("scene", po::value<std::string>(&sceneFile), sceneHelp().c_str());
+        cli.add()("scene", po::value<std::string>(&sceneFile), sceneHelp().c_str());
         cli.addPositional("table", &tableName);
         if (!cli.parse(argc, argv)) {
             out << cli.help();
             return;
         }
-        const cli::Choices<const components::SceneTable*> choices = tables();
-        const components::SceneTable* table = nullptr;
+        const cli::Choices<Table> choices = tables();
+        Table table;
         if (tableName.empty())
             throw cli.usageError("missing the table name (allowed: " + cli::wordsOf(choices) + ")");
         if (!cli::findChoice(choices, tableName, table))
             throw cli.usageError("unknown table '" + echoedInput(tableName) + "' (allowed: " + cli::wordsOf(choices) + ")");
-        if (table) {
-            if (sceneFile.empty() || cli.given("energy-kev") || maxwellian)
-                throw cli.usageError(std::string(table->name) + " takes --scene FILE and nothing else");
-            table->print(sceneFile, out);
+        if (table.scene) {
+            if (sceneFile.empty() || givenOtherOptions(cli, nullptr))
+                throw cli.usageError(std::string(table.scene->name) + " takes --scene FILE and nothing else");
+            table.scene->print(sceneFile, out);
             return;
         }
-        if (!cli.given("energy-kev") || cli.given("scene"))
-            throw cli.usageError("deposition takes --energy-kev E [--maxwellian]");
-        if (!(energyKeV >= kMinEnergyKeV && energyKeV <= kMaxEnergyKeV)) {
-            char got[32];
-            std::snprintf(got, sizeof got, "%g", energyKeV);
-            throw cli.usageError("--energy-kev must be between 0.01 and 1000 keV (got " + std::string(got) + ")");
-        }
-        printDeposition(energyKeV, maxwellian, out);
+        const components::OptionTable& t = *table.options;
+        bool complete = !cli.given("scene") && !givenOtherOptions(cli, &t);
+        for (const std::string& option : t.required)
+            complete = complete && cli.given(option);
+        if (!complete)
+            throw cli.usageError(std::string(t.name) + " takes " + t.usage);
+        const auto index = static_cast<size_t>(&t - components::componentOptionTables().data());
+        printers[index](out);
     });
 }
 

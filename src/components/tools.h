@@ -1,11 +1,14 @@
 #pragma once
 // What components add to the aurorawall binary: their own commands (`aurorawall NAME ...`), their
 // tables of error against run time (`aurorawall accuracy --OPTION FILE`, and the sweep of
-// `accuracy --scene FILE`) and their tables of a scene (`aurorawall tables NAME --scene FILE`). A component with a
+// `accuracy --scene FILE`), their tables of a scene (`aurorawall tables NAME --scene FILE`) and their
+// tables of options (`aurorawall tables NAME --OPTION VALUE ...`). A component with a
 // tools/ folder defines `const Tools& NAME::tools::registered()` there; src/components/CMakeLists.txt
 // compiles them into aw_component_tools and lists them.
 #include "accuracy/scene_view.h"
+#include "cli/command_line.h"
 
+#include <functional>
 #include <iosfwd>
 #include <string>
 #include <vector>
@@ -37,6 +40,18 @@ struct SceneTable {
     void (*print)(const std::string& sceneFile, std::ostream& out);
 };
 
+// A table of `aurorawall tables NAME --OPTION VALUE ...`, computed from its options alone (no scene).
+struct OptionTable {
+    const char* name;
+    const char* usage;       // its options, after "aurorawall tables NAME " and "NAME takes "
+    const char* description; // its paragraph in `tables --help`, after "NAME: "
+    std::vector<std::string> options;  // the names of the options it declares
+    std::vector<std::string> required; // those that must be given
+    // Declares its options on the tables command's line; returns what, once the line is parsed,
+    // checks their values (throwing cli.usageError) and prints the table as CSV.
+    std::function<void(std::ostream& out)> (*declare)(cli::CommandLine& cli);
+};
+
 // The sweep of `aurorawall accuracy --scene FILE` (all of SceneAccuracySettings): the quality knobs
 // of the march against error and run time, the features' costs or the march's work.
 using SceneSweep = void (*)(const accuracy::SceneAccuracySettings& settings, std::ostream& out);
@@ -46,6 +61,10 @@ struct Tools {
     std::vector<AccuracyTable> accuracyTables;
     std::vector<SceneTable> sceneTables;
     SceneSweep sceneSweep = nullptr; // the component whose march it is
+    // Whose quality knobs the sweep varies, in `accuracy --help` ("the quality knobs (...):"; lines of
+    // at most about 100 characters, the first at most 45).
+    const char* sceneSweepKnobs = "";
+    std::vector<OptionTable> optionTables = {};
 };
 
 // The commands of every compiled-in component, in alphabetical order of their names.
@@ -53,7 +72,10 @@ const std::vector<Command>& componentCommands();
 // The accuracy tables and scene tables of every compiled-in component, in registry order.
 const std::vector<AccuracyTable>& componentAccuracyTables();
 const std::vector<SceneTable>& componentSceneTables();
+const std::vector<OptionTable>& componentOptionTables();
 // The first component's sweep of `accuracy --scene` in registry order, or nullptr.
 SceneSweep componentSceneSweep();
+// Its sceneSweepKnobs, or "" when there is none.
+const char* componentSceneSweepKnobs();
 
 } // namespace aurorawall::components

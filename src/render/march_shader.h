@@ -1,7 +1,7 @@
 #pragma once
 // The raymarcher's shader, assembled from the components a scene lists: their modules in registry
 // order, then shadeRay, generated to pass each pixel's ray through the components' geometry steps
-// and then their shading steps in compositing order (src/scene/component.h), then the pixel's
+// and then their shading steps in compositing order (src/scene/compositing_order.h), then the pixel's
 // shading (render/pixel.glsl) and the entry point of the stage it runs in: a fragment shader over a
 // full-screen triangle (render/main.frag) or a compute shader (render/main.comp), the same text but
 // for how each finds its pixel and writes it. A component the scene does not list contributes no

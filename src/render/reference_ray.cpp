@@ -1,8 +1,8 @@
 #include "render/reference_ray.h"
 
+#include "scene/compositing_order.h"
 #include "scene/ray_steps.h"
 
-#include <algorithm>
 #include <utility>
 
 namespace aurorawall::render {
@@ -17,14 +17,12 @@ ReferenceModel::ReferenceModel(const scene::Scene& scene, double timeS, scene::R
     for (const scene::Component* c : scene.components()) {
         std::unique_ptr<scene::ReferenceShader> shader = c->makeReference(scene, context);
         if (shader)
-            parts_.push_back({std::move(shader), c->compositingOrder()});
+            parts_.push_back({std::move(shader), c});
     }
-    std::vector<const Part*> byOrder;
-    for (const Part& p : parts_)
-        byOrder.push_back(&p);
-    std::stable_sort(byOrder.begin(), byOrder.end(), [](const Part* a, const Part* b) { return a->order < b->order; });
-    for (const Part* p : byOrder)
-        shading_.push_back(p->shader.get());
+    for (const scene::Component* c : scene::inCompositingOrder(scene.components()))
+        for (const Part& p : parts_)
+            if (p.component == c)
+                shading_.push_back(p.shader.get());
 }
 
 glm::dvec3 ReferenceModel::radiance(glm::dvec3 o, glm::dvec3 direction) const

@@ -4,8 +4,8 @@
 // Each listed component contributes its own part (scene::Component::makeReference): the same
 // geometry steps (the shared modules render/ray_sphere.glsl and layers.glsl compiled in double),
 // then the shading steps in the same compositing order, each evaluated exactly (exact airmass,
-// fine integration of emission, no lookup tables). Components the reference cannot model (stars,
-// planet_texture, sky) refuse, and the scene must not list them.
+// fine integration of emission, no lookup tables). Components the reference cannot model refuse
+// (scene::NotInReference), and the scene must not list them.
 #include "scene/scene.h"
 
 #include <glm/glm.hpp>
@@ -35,10 +35,10 @@ public:
 private:
     struct Part {
         std::unique_ptr<scene::ReferenceShader> shader;
-        int order = 0;
+        const scene::Component* component = nullptr;
     };
     std::vector<Part> parts_; // registry order (geometry steps)
-    std::vector<const scene::ReferenceShader*> shading_; // compositing order
+    std::vector<const scene::ReferenceShader*> shading_; // compositing order (scene/compositing_order.h)
 };
 
 } // namespace aurorawall::render

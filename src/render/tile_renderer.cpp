@@ -99,7 +99,7 @@ void TileRenderer::renderTile(const wall::TileRays& rays, gl::FloatTarget& targe
     program_.set("uSplitX", static_cast<float>(rays.splitPx));
     program_.set("uPixelOffset", glm::vec2(rays.pixelOffset)); // integers: exact in float below 2^24
     program_.set("uTileHeight", target.height());
-    // Angular size of one pixel at the canvas origin (dome: at the image centre), for drawing point-like stars.
+    // Angular size of one pixel at the canvas origin (dome: at the image centre), for drawing point-like light sources.
     const glm::dvec3 zoomed(1.0 / zoom_, 1.0 / zoom_, 1.0); // the zoom's scaling in the wall frame
     const double pixelAngle = rays.dome ? rays.domeRadiansPerPx
                                         : glm::length(zoomed * rays.stepRight) / glm::length(zoomed * rays.originDir);

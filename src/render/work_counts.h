@@ -15,7 +15,8 @@ namespace aurorawall::render {
 enum class CountWork { No, Yes };
 
 // What a pixel's work, the float target's second attachment (gl/float_target.h), holds:
-//   Samples         1 + the ray's aurora samples: the load balancer's measure;
+//   Samples         1 + the ray's march samples (shaders/render/work_counts.glsl, gRayWork): the load
+//                   balancer's measure;
 //   ShaderClock     the GPU clock cycles the pixel's ray took (GL_ARB_shader_clock, clock2x32ARB
 //                   around the ray; on a GPU a warp's lanes finish together, so neighbours share the
 //                   slowest's time, which is what they cost);

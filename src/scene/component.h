@@ -1,8 +1,8 @@
 #pragma once
-// The one interface a scene component implements (planet, atmosphere, aurora, airglow, ...).
+// The one interface a scene component implements (a planet, its atmosphere, an emitting layer, ...).
 // A component owns, in its own folder (src/components/NAME, shaders/components/NAME):
 //   - its settings, read from its table of the scene file ([NAME]) with units and bounds;
-//   - its GLSL modules and its place in the compositing order along a ray;
+//   - its GLSL modules and the shell its shading step belongs to along a ray (scene/shell.h);
 //   - its GPU part: precomputed tables, per-frame data, uniforms and textures (ComponentRenderer);
 //   - its part of the double-precision CPU reference of a ray (ReferenceShader), or a refusal.
 // The registry (src/components/registry.h) lists every component; the scene loader, the shader
@@ -14,6 +14,7 @@
 #include "cluster/frame_state.h"
 #include "common/glsl.h"
 #include "config/toml_reader.h"
+#include "scene/shell.h"
 
 #include <any>
 #include <functional>
@@ -117,10 +118,11 @@ public:
     // shading: what ends or blocks the ray) and the shading step. Empty: none.
     virtual std::string shaderGeometryCall() const { return {}; }
     virtual std::string shaderShadeCall() const { return {}; }
-    // Position of the shading step along the ray, front to back (lower first). The layers are
-    // concentric shells: 10 lower atmosphere, 20 its sky light, 30 airglow, 40 aurora,
-    // 58 a cloud deck, 60 ground, 61 ground lights, 70 stars behind everything.
-    virtual int compositingOrder() const { return 0; }
+    // The shell its shading step belongs to (scene/shell.h). The steps run shell by shell, front
+    // to back; within a shell, a component's step after those of the components it needs, else in
+    // registry order (scene/compositing_order.h). Every component declares one, also one without
+    // a shading step of its own (the shell of what it gives its detail to).
+    virtual Shell shell() const = 0;
 
     // The GPU part (needs a current GL context): precomputes its tables.
     virtual std::unique_ptr<ComponentRenderer> makeRenderer(const Scene& scene, const FindRenderer& find) const = 0;

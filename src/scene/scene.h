@@ -78,7 +78,7 @@ struct LocalFrame {
 LocalFrame localFrame(double latitudeDeg, double longitudeDeg);
 
 // The unit direction (planet frame) toward something seen from a site at an elevation above its
-// horizon and an azimuth clockwise from north (degrees): a light in the site's sky.
+// horizon and an azimuth clockwise from north (degrees): where a light appears from the site.
 glm::dvec3 directionInSky(double latitudeDeg, double longitudeDeg, double elevationDeg, double azimuthDeg);
 
 // Reads and validates a scene file whose components come from `registry`. Throws InputError

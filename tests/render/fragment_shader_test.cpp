@@ -7,6 +7,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <filesystem>
+#include <regex>
 
 using namespace aurorawall;
 
@@ -59,8 +61,8 @@ TEST(FragmentShader, MissingShaderFolderNamesTheFile)
 
 TEST(FragmentShader, ShadeRayCallsTheListedComponentsInCompositingOrder)
 {
-    // Registry order planet, atmosphere, aurora, stars; compositing order atmosphere (10),
-    // aurora (40), ground (60), stars (70), after the planet's geometry step.
+    // Registry order planet, atmosphere, aurora, stars; compositing order by shell: the lower
+    // atmosphere, the emitting structures, the ground, space, after the planet's geometry step.
     const scene::Scene s = components::loadScene(std::string(AURORAWALL_SOURCE_DIR) + "/config/scenes/quiet-arc.toml");
     const std::string code = render::compositingSource(s);
     const size_t ground = code.find("boundByGround("), atmosphere = code.find("shadeAtmosphere("),
@@ -119,4 +121,35 @@ TEST(FragmentShader, PlasmaOnlyWhereListed)
         for (const gl::ShaderModule& m : source.modules)
             EXPECT_EQ(m.file.find("components/plasma"), std::string::npos) << file << ": " << m.file;
     }
+}
+
+// Every shipped scene's shading steps run in the order they ran in when the order was a number per
+// component (10 atmosphere, 20 sky, 30 airglow, 40 aurora, 41 plasma box, 58 cloud deck, 60 ground,
+// 61 ground lights, 70 stars): the declared shells and their rule give the same images, bit for bit.
+TEST(FragmentShader, ShippedScenesKeepTheOrderOfTheirShadingSteps)
+{
+    const std::vector<std::string> former = {"shadeAtmosphere", "shadeSky",   "shadeAirglow",
+                                             "shadeAurora",     "shadePlasmaBox", "shadeGlory",
+                                             "shadeGround",     "shadeNightLights", "shadeStars"};
+    int scenes = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(std::string(AURORAWALL_SOURCE_DIR) + "/config/scenes")) {
+        if (entry.path().extension() != ".toml")
+            continue;
+        ++scenes;
+        const std::string code = render::compositingSource(components::loadScene(entry.path().string()));
+        const std::regex call(R"(ray = (shade\w+)\()");
+        std::vector<std::string> calls;
+        for (auto m = std::sregex_iterator(code.begin(), code.end(), call); m != std::sregex_iterator(); ++m)
+            calls.push_back((*m)[1]);
+        ASSERT_FALSE(calls.empty()) << entry.path();
+        size_t last = 0;
+        for (const std::string& c : calls) {
+            const auto at = std::find(former.begin(), former.end(), c);
+            ASSERT_NE(at, former.end()) << entry.path() << ": " << c;
+            const size_t index = static_cast<size_t>(at - former.begin());
+            EXPECT_GE(index, last) << entry.path() << ":\n" << code;
+            last = index;
+        }
+    }
+    EXPECT_EQ(scenes, 15);
 }

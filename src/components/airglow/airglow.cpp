@@ -118,7 +118,7 @@ public:
                 "components/airglow/airglow_layer.glsl", "components/airglow/airglow.glsl"};
     }
     std::string shaderShadeCall() const override { return "shadeAirglow(ray)"; }
-    int compositingOrder() const override { return 30; }
+    scene::Shell shell() const override { return scene::Shell::EmittingLayers; }
     std::unique_ptr<scene::ComponentRenderer> makeRenderer(const scene::Scene& scene,
                                                            const scene::FindRenderer&) const override
     {

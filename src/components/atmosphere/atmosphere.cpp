@@ -62,7 +62,7 @@ public:
                 "components/atmosphere/atmosphere.glsl"};
     }
     std::string shaderShadeCall() const override { return "shadeAtmosphere(ray)"; }
-    int compositingOrder() const override { return 10; }
+    scene::Shell shell() const override { return scene::Shell::LowerAtmosphere; }
     std::unique_ptr<scene::ComponentRenderer> makeRenderer(const scene::Scene& scene,
                                                            const scene::FindRenderer&) const override
     {

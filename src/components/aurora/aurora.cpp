@@ -167,7 +167,7 @@ public:
                 "components/aurora/aurora_curtains.glsl"};
     }
     std::string shaderShadeCall() const override { return "shadeAurora(ray)"; }
-    int compositingOrder() const override { return 40; }
+    scene::Shell shell() const override { return scene::Shell::EmittingStructures; }
     std::unique_ptr<scene::ComponentRenderer> makeRenderer(const scene::Scene& scene,
                                                            const scene::FindRenderer& find) const override
     {

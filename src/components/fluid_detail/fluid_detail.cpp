@@ -17,6 +17,8 @@ class FluidDetail : public scene::ComponentWith<Settings>, public roles::Curtain
 public:
     std::vector<std::string> needs() const override { return {"aurora"}; }
     std::vector<std::string> provides() const override { return {roles::kCurtainDetail}; }
+    // No shading step: the shell of the curtains it gives their detail to.
+    scene::Shell shell() const override { return scene::Shell::EmittingStructures; }
     void read(const config::TableReader& t, scene::Scene&, scene::ComponentSettings& settings) const override
     {
         auto& f = dynamic_cast<Settings&>(settings);

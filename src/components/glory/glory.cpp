@@ -305,7 +305,7 @@ public:
     }
     std::string shaderGeometryCall() const override { return "boundByCloudDeck(ray)"; }
     std::string shaderShadeCall() const override { return "shadeGlory(ray)"; }
-    int compositingOrder() const override { return 58; }
+    scene::Shell shell() const override { return scene::Shell::CloudDeck; }
     std::unique_ptr<scene::ComponentRenderer> makeRenderer(const scene::Scene& scene,
                                                            const scene::FindRenderer&) const override
     {

@@ -54,7 +54,7 @@ public:
     std::vector<std::string> shaderModules() const override { return {"components/planet/planet.glsl"}; }
     std::string shaderGeometryCall() const override { return "boundByGround(ray, uPlanetRadiusKm, uCameraAltitudeKm)"; }
     std::string shaderShadeCall() const override { return "shadeGround(ray)"; }
-    int compositingOrder() const override { return 60; }
+    scene::Shell shell() const override { return scene::Shell::Ground; }
     std::unique_ptr<scene::ComponentRenderer> makeRenderer(const scene::Scene& scene,
                                                            const scene::FindRenderer&) const override
     {

@@ -32,7 +32,8 @@ public:
         return {"components/planet_texture/night_lights.glsl"};
     }
     std::string shaderShadeCall() const override { return "shadeNightLights(ray)"; }
-    int compositingOrder() const override { return 61; }
+    // Lights on the ground: after the ground surface (it needs the planet).
+    scene::Shell shell() const override { return scene::Shell::Ground; }
     std::unique_ptr<scene::ComponentRenderer> makeRenderer(const scene::Scene& scene,
                                                            const scene::FindRenderer&) const override
     {

@@ -134,7 +134,8 @@ public:
                 "components/plasma/plasma_box.glsl"};
     }
     std::string shaderShadeCall() const override { return "shadePlasmaBox(ray)"; }
-    int compositingOrder() const override { return 41; }
+    // The box's emission: after the curtains in the same shell (it needs the aurora).
+    scene::Shell shell() const override { return scene::Shell::EmittingStructures; }
     std::unique_ptr<scene::ComponentRenderer> makeRenderer(const scene::Scene& scene,
                                                            const scene::FindRenderer&) const override
     {

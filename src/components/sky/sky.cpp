@@ -66,7 +66,8 @@ public:
         return {"atmosphere/sky.glsl", "components/sky/sky.glsl"};
     }
     std::string shaderShadeCall() const override { return "shadeSky(ray)"; }
-    int compositingOrder() const override { return 20; }
+    // The light the lower atmosphere scatters: after its extinction (it needs the atmosphere).
+    scene::Shell shell() const override { return scene::Shell::LowerAtmosphere; }
     std::unique_ptr<scene::ComponentRenderer> makeRenderer(const scene::Scene& scene,
                                                            const scene::FindRenderer&) const override
     {

@@ -30,7 +30,7 @@ public:
     }
     std::vector<std::string> shaderModules() const override { return {"components/stars/stars.glsl"}; }
     std::string shaderShadeCall() const override { return "shadeStars(ray)"; }
-    int compositingOrder() const override { return 70; }
+    scene::Shell shell() const override { return scene::Shell::Space; }
     std::unique_ptr<scene::ComponentRenderer> makeRenderer(const scene::Scene& scene,
                                                            const scene::FindRenderer&) const override
     {
