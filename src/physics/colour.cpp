@@ -10,7 +10,7 @@ namespace aurorawall::physics {
 
 namespace shared {
 AURORAWALL_GLSL_PRECISION(double)
-#include "render/colour.glsl"
+#include "physics/colour.glsl"
 } // namespace shared
 
 glm::dvec3 xyzToLinearSrgb(glm::dvec3 xyz) { return shared::xyzToLinearSrgb(xyz); }

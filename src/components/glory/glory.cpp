@@ -29,7 +29,7 @@ using namespace aurorawall::f64;
 #include "components/glory/cloud_deck.glsl"
 #include "components/glory/glory_angle.glsl"
 #include "render/angle.glsl"
-#include "render/colour.glsl"
+#include "physics/colour.glsl"
 } // namespace f64
 
 namespace {
@@ -300,7 +300,7 @@ public:
     }
     std::vector<std::string> shaderModules() const override
     {
-        return {"render/angle.glsl", "render/colour.glsl", "components/glory/glory_angle.glsl",
+        return {"render/angle.glsl", "physics/colour.glsl", "components/glory/glory_angle.glsl",
                 "components/glory/cloud_deck.glsl", "components/glory/glory.glsl"};
     }
     std::string shaderGeometryCall() const override { return "boundByCloudDeck(ray)"; }
