@@ -1,6 +1,6 @@
 #include "app/accuracy_command.h"
 
-#include "atmosphere/accuracy_report.h"
+#include "physics/atmosphere/accuracy_report.h"
 #include "cli/command_line.h"
 #include "cli/exit_status.h"
 #include "components/tools.h"
@@ -102,14 +102,14 @@ bool parseSize(const std::string& text, glm::ivec2& size)
 // The options of every kind of run; the initial values are the defaults --help shows.
 struct AccuracyOptions {
     bool airmass = false, sky = false;
-    AccuracyReportSettings shader;  // --airmass, --sky
+    physics::atmosphere::AccuracyReportSettings shader;  // --airmass, --sky
     accuracy::SceneAccuracySettings scene; // --scene, a component's table
     std::string size = "320x180"; // --size, parsed into scene.sizePx
 };
 
 void declareOptions(cli::CommandLine& cli, AccuracyOptions& o)
 {
-    AccuracyReportSettings& shader = o.shader;
+    physics::atmosphere::AccuracyReportSettings& shader = o.shader;
     accuracy::SceneAccuracySettings& scene = o.scene;
     cli.add()
         ("airmass", po::bool_switch(&o.airmass), "the airmass methods")
@@ -199,15 +199,15 @@ void runSceneKnobs(const cli::CommandLine& cli, AccuracyOptions& o, std::ostream
 // --airmass and/or --sky: the options checked, then the tables on one GL context.
 void runShaderTables(const cli::CommandLine& cli, const AccuracyOptions& o, std::ostream& out)
 {
-    const AccuracyReportSettings& shader = o.shader;
+    const physics::atmosphere::AccuracyReportSettings& shader = o.shader;
     if (shader.airmassRepeat < 1 || shader.viewSteps < 1 || shader.lightSteps < 1 ||
         (cli.given("copies") && shader.copies < 1))
         throw cli.usageError("--repeat, --copies, --view-steps and --light-steps must be >= 1");
     const auto context = accuracy::openAccuracyContext(out);
     if (o.airmass)
-        printAirmassAccuracy(shader, out);
+        physics::atmosphere::printAirmassAccuracy(shader, out);
     if (o.sky)
-        printSkyAccuracy(shader, out);
+        physics::atmosphere::printSkyAccuracy(shader, out);
 }
 
 } // namespace

@@ -1,7 +1,7 @@
 #pragma once
 // `aurorawall accuracy --airmass | --sky | --scene FILE`: error against cost of the approximations
 // (docs/ACCURACY.md), one command line that dispatches to the airmass and sky tables
-// (atmosphere/accuracy_report.h), to the sweep of a scene's quality knobs or to a component's table
+// (physics/atmosphere/accuracy_report.h), to the sweep of a scene's quality knobs or to a component's table
 // (components/tools.h).
 #include <iosfwd>
 

@@ -2,7 +2,7 @@
 
 #include "cli/command_line.h"
 #include "cli/exit_status.h"
-#include "atmosphere/airmass.h"
+#include "physics/atmosphere/airmass.h"
 #include "common/input_error.h"
 
 #include <algorithm>
@@ -20,6 +20,9 @@
 #include <vector>
 
 namespace aurorawall::app {
+
+using namespace physics::atmosphere; // the airmass methods
+
 namespace {
 
 // The input's columns, in order; a first line of exactly these names (any case) is a header.

@@ -1,7 +1,7 @@
 #include "app/navigation.h"
 
 #include "app/control/orbit.h"
-#include "common/constants.h"
+#include "physics/constants.h"
 #include "gl/context.h"
 
 #include <algorithm>
@@ -28,7 +28,7 @@ glm::dquat orientationOf(const scene::Camera& camera)
 // Turns the orientation by `deg` about one of the camera's own axes (right-handed).
 glm::dquat turned(const glm::dquat& orientation, const glm::dvec3& ownAxis, double deg)
 {
-    return glm::normalize(orientation * glm::angleAxis(deg * kDegree, ownAxis));
+    return glm::normalize(orientation * glm::angleAxis(deg * physics::kDegree, ownAxis));
 }
 
 // The camera at `position` with `orientation`, its speed along the view kept.
@@ -118,7 +118,7 @@ scene::Camera Navigation::orbited(const scene::Camera& camera, const cluster::In
     case 'E':
     case 'Q': {
         scene::Camera c = camera; // a roll about the view keeps the pivot at the centre
-        c.up = glm::normalize(glm::angleAxis((event.code == 'E' ? kTurnDeg : -kTurnDeg) * kDegree, c.forward) * c.up);
+        c.up = glm::normalize(glm::angleAxis((event.code == 'E' ? kTurnDeg : -kTurnDeg) * physics::kDegree, c.forward) * c.up);
         return c;
     }
     case gl::KeyPlus: speedPerS_ = std::min(2.0 * speedPerS_, kMaxSpeedPerS); return camera;
@@ -140,7 +140,7 @@ scene::Camera Navigation::apply(const scene::Camera& camera, const GamepadMotion
     if (pivot_) { // the right stick orbits, the left stick's forward/back approaches, the shoulders roll
         scene::Camera c = control::orbitTurned(camera, *pivot_, motion.turnRightDeg, motion.turnUpDeg,
                                                planetRadiusKm_ + kMinAltitudeKm);
-        c.up = glm::normalize(glm::angleAxis(motion.rollRightDeg * kDegree, c.forward) * c.up);
+        c.up = glm::normalize(glm::angleAxis(motion.rollRightDeg * physics::kDegree, c.forward) * c.up);
         speedPerS_ = std::clamp(speedPerS_ * motion.speedFactor, kMinSpeedPerS, kMaxSpeedPerS);
         return motion.moveS.y != 0.0 ? closer(c, motion.moveS.y) : c;
     }

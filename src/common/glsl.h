@@ -11,7 +11,7 @@
 //
 //   namespace aurorawall::f64 {
 //   AURORAWALL_GLSL_PRECISION(double)
-//   #include "atmosphere/airmass.glsl"
+//   #include "physics/atmosphere/airmass.glsl"
 //   }
 #include <cmath>
 #include <cstdint>

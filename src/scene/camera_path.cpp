@@ -1,6 +1,6 @@
 #include "scene/camera_path.h"
 
-#include "common/constants.h"
+#include "physics/constants.h"
 
 #include <algorithm>
 #include <cmath>
@@ -55,7 +55,7 @@ Hermite hermite(double s)
 
 double zoomOf(double fieldOfViewDeg, double wallTanHalfFov)
 {
-    return wallTanHalfFov / std::tan(0.5 * fieldOfViewDeg * kDegree);
+    return wallTanHalfFov / std::tan(0.5 * fieldOfViewDeg * physics::kDegree);
 }
 
 double zoomOf(const CameraKey& key, double wallTanHalfFov)

@@ -1,6 +1,6 @@
 #include "scene/scene.h"
 
-#include "common/constants.h"
+#include "physics/constants.h"
 #include "common/input_error.h"
 #include "common/planet_frame.h"
 #include "config/toml_reader.h"
@@ -101,8 +101,8 @@ CameraKey readCameraKey(const TableReader& k, double planetRadiusKm)
         }
     } else {
         if (given == "heading_deg") {
-            const double heading = k.number("heading_deg", -360, 360) * kDegree;
-            const double pitch = k.number("pitch_deg", -90, 90) * kDegree;
+            const double heading = k.number("heading_deg", -360, 360) * physics::kDegree;
+            const double pitch = k.number("pitch_deg", -90, 90) * physics::kDegree;
             const glm::dvec3 horizontal = std::cos(heading) * horizon.north + std::sin(heading) * horizon.east;
             frame = levelFrame(std::cos(pitch) * horizontal + std::sin(pitch) * horizon.up, horizon.up,
                                pitch > 0 ? -horizontal : horizontal);
@@ -114,7 +114,7 @@ CameraKey readCameraKey(const TableReader& k, double planetRadiusKm)
                 k.fail(field, "the look-at point is the camera's position");
             frame = levelFrame(target - key.positionKm, horizon.up, horizon.north);
         }
-        const double roll = k.number("roll_deg", -180, 180, 0.0) * kDegree;
+        const double roll = k.number("roll_deg", -180, 180, 0.0) * physics::kDegree;
         const glm::dvec3 right = glm::cross(frame.forward, frame.up);
         frame.up = std::cos(roll) * frame.up + std::sin(roll) * right;
     }
@@ -178,8 +178,8 @@ Camera readCamera(const TableReader& t, double planetRadiusKm)
         // Geographic: where the viewer stands and where they look.
         const double lat = t.number("latitude_deg", -90, 90), lon = t.number("longitude_deg", -360, 360);
         const double alt = t.number("altitude_km", -planetRadiusKm + 1, 1e9);
-        const double heading = t.number("heading_deg", -360, 360) * kDegree;
-        const double elevation = t.number("elevation_deg", -90, 90) * kDegree;
+        const double heading = t.number("heading_deg", -360, 360) * physics::kDegree;
+        const double elevation = t.number("elevation_deg", -90, 90) * physics::kDegree;
         c.positionKm = planetPoint(lat, lon, planetRadiusKm + alt);
         const LocalFrame local = localFrame(lat, lon);
         const glm::dvec3 zenith = local.up;

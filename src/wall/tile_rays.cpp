@@ -1,6 +1,6 @@
 #include "wall/tile_rays.h"
 
-#include "common/constants.h"
+#include "physics/constants.h"
 #include "common/glsl.h"
 
 #include <algorithm>
@@ -18,11 +18,11 @@ AURORAWALL_GLSL_PRECISION(double)
 // The dome master's constants, from the whole canvas so that every tile agrees (tile_rays.h).
 void setDome(TileRays& rays, const Wall& wall)
 {
-    const double tilt = wall.dome.tiltDeg * kDegree;
+    const double tilt = wall.dome.tiltDeg * physics::kDegree;
     rays.dome = true;
     rays.domeCentrePx = glm::dvec2(wall.canvasSizePx) / 2.0;
     rays.domeRadiusPx = wall.canvasSizePx.y / 2.0;
-    rays.domeRadiansPerPx = wall.dome.fieldOfViewDeg * kDegree / 2.0 / rays.domeRadiusPx;
+    rays.domeRadiansPerPx = wall.dome.fieldOfViewDeg * physics::kDegree / 2.0 / rays.domeRadiusPx;
     rays.domeAxis = {0.0, std::sin(tilt), -std::cos(tilt)};
     rays.domeRight = {1.0, 0.0, 0.0};
     rays.domeDown = {0.0, -std::cos(tilt), -std::sin(tilt)};

@@ -9,7 +9,7 @@
 #include "app/path_recorder.h"
 #include "app/render_options.h"
 #include "app/tables_command.h"
-#include "atmosphere/airmass.h"
+#include "physics/atmosphere/airmass.h"
 #include "cluster/master_clock.h"
 #include "common/input_error.h"
 #include "components/registry.h"
@@ -261,7 +261,7 @@ TEST(AirmassCommand, ListsMethodsAndComputes)
     std::string out, err;
     ASSERT_EQ(runAirmass({"airmass", "--method", "list"}, "", out, err), 0);
     EXPECT_NE(out.find("exact\n"), std::string::npos);
-    EXPECT_NE(out.find(std::string(kDefaultAirmassMethod) + "\n"), std::string::npos);
+    EXPECT_NE(out.find(std::string(aurorawall::physics::atmosphere::kDefaultAirmassMethod) + "\n"), std::string::npos);
     std::string input = "ox,oy,oz,dx,dy,dz,t0,t1,H,R\n\n0,6371,0,0,1,0,0,100,8,6371\n0,6371,0,0,1,0,100,0,8,6371\n";
     ASSERT_EQ(runAirmass({"airmass", "--method", "exact"}, input, out, err), 0);
     double expected = 8.0 * (1.0 - std::exp(-100.0 / 8.0));
@@ -292,7 +292,7 @@ TEST(AirmassCommand, MalformedLinesAreARuntimeFailureNamingTheLine)
     std::string out, err;
     EXPECT_EQ(runAirmass({"airmass", "--method", "nope"}, "", out, err), 2);
     EXPECT_NE(err.find("--method"), std::string::npos) << err;
-    EXPECT_NE(err.find(kDefaultAirmassMethod), std::string::npos) << err; // the allowed words
+    EXPECT_NE(err.find(aurorawall::physics::atmosphere::kDefaultAirmassMethod), std::string::npos) << err; // the allowed words
 }
 
 
@@ -336,7 +336,7 @@ TEST(AirmassCommand, FieldsBeyondFloatAndNonFiniteResultsAreErrors)
     EXPECT_EQ(runAirmass({"airmass", "--method", "lawlor-winitzki"}, fromTheCentre, out, err), 1);
     EXPECT_EQ(out, "");
     EXPECT_NE(err.find("line 2: lawlor-winitzki gives no finite airmass for this ray"), std::string::npos) << err;
-    for (const char* method : {kDefaultAirmassMethod, "exact", "lawlor-erfcx", "march16"}) {
+    for (const char* method : {aurorawall::physics::atmosphere::kDefaultAirmassMethod, "exact", "lawlor-erfcx", "march16"}) {
         EXPECT_EQ(runAirmass({"airmass", "--method", method}, fromTheCentre, out, err), 0) << method << err;
         EXPECT_EQ(lines(out).size(), 2u);
     }

@@ -5,7 +5,7 @@
 // The commands are called directly, not as processes.
 #include "app/airmass_command.h"
 #include "app/tables_command.h"
-#include "atmosphere/airmass.h"
+#include "physics/atmosphere/airmass.h"
 #include "common/finite_cells.h"
 #include "common/run_in_process.h"
 
@@ -59,10 +59,10 @@ TEST(FiniteOutput, AirmassEveryFieldOverItsRange)
     const std::vector<std::vector<double>> rays = {{0.0, 6371.0, 0.0, 1.0, 0.2, 0.0, 0.0, 100.0, 8.0, 6371.0},
                                                    {6771.0, 0.0, 0.0, -0.3, 1.0, 0.0, 0.0, 5000.0, 8.0, 6371.0},
                                                    {0.0, 0.0, 0.0, 0.0, 0.0, 1.0, -7000.0, 7000.0, 8.0, 6371.0}};
-    for (const AirmassMethod& method : airmassMethods()) {
+    for (const aurorawall::physics::atmosphere::AirmassMethod& method : aurorawall::physics::atmosphere::airmassMethods()) {
         // The default and the reference give a finite value for every accepted ray; the others may
         // refuse a ray they give none for (an error naming the line), never print a NaN.
-        const bool alwaysFinite = method.name == kDefaultAirmassMethod || method.name == "exact";
+        const bool alwaysFinite = method.name == aurorawall::physics::atmosphere::kDefaultAirmassMethod || method.name == "exact";
         for (int field = 0; field < 10; ++field) {
             const FieldRange& range = field == 8 ? kScaleHeight : field == 9 ? kRadius : kAnyFloat;
             for (const std::vector<double>& ray : rays)

@@ -3,7 +3,7 @@
 #include "app/control/geographic_camera.h"
 #include "app/gamepad.h"
 #include "app/navigation.h"
-#include "common/constants.h"
+#include "physics/constants.h"
 
 #include <gtest/gtest.h>
 
@@ -109,7 +109,7 @@ TEST(Gamepad, NavigationFliesTheMotion)
     look.turnUpDeg = 3.0;
     look.speedFactor = 1e6; // beyond the bound
     const scene::Camera up = nav.apply(c, look);
-    EXPECT_NEAR(std::acos(glm::dot(up.forward, c.forward)) / kDegree, 3.0, 1e-9);
+    EXPECT_NEAR(std::acos(glm::dot(up.forward, c.forward)) / aurorawall::physics::kDegree, 3.0, 1e-9);
     EXPECT_EQ(nav.speedPerS(), Navigation::kMaxSpeedPerS);
     EXPECT_EQ(nav.apply(c, GamepadMotion{}).positionKm, c.positionKm);
 }

@@ -3,7 +3,7 @@
 // compose without NaN or loss of orthonormality.
 #include "app/control/geographic_camera.h"
 #include "app/navigation.h"
-#include "common/constants.h"
+#include "physics/constants.h"
 #include "gl/context.h"
 
 #include <gtest/gtest.h>
@@ -105,7 +105,7 @@ TEST(Navigation, LookAndRollTurnAboutTheCameraAxes)
 {
     const scene::Camera c = cameraAt(100.0);
     const glm::dvec3 right = rightOf(c);
-    const double cos2 = std::cos(2 * kDegree), sin2 = std::sin(2 * kDegree);
+    const double cos2 = std::cos(2 * aurorawall::physics::kDegree), sin2 = std::sin(2 * aurorawall::physics::kDegree);
     Navigation nav(kR);
     const scene::Camera r = nav.apply(c, {key(gl::KeyRight)});
     EXPECT_NEAR(glm::dot(r.forward, c.forward), cos2, 1e-14);

@@ -4,7 +4,7 @@
 #include "app/control/geographic_camera.h"
 #include "app/control/orbit.h"
 #include "app/navigation.h"
-#include "common/constants.h"
+#include "physics/constants.h"
 #include "gl/context.h"
 
 #include <gtest/gtest.h>
@@ -29,7 +29,7 @@ double altitude(const scene::Camera& c) { return glm::length(c.positionKm) - kR;
 glm::dvec3 rightOf(const scene::Camera& c) { return glm::cross(c.forward, c.up); }
 double angleDeg(const glm::dvec3& a, const glm::dvec3& b)
 {
-    return std::atan2(glm::length(glm::cross(a, b)), glm::dot(a, b)) / kDegree;
+    return std::atan2(glm::length(glm::cross(a, b)), glm::dot(a, b)) / aurorawall::physics::kDegree;
 }
 
 // The pivot is at the centre of the view (1e-9 relative: rounding of ~6400 km positions through a few
@@ -113,7 +113,7 @@ TEST(Orbit, PassingOverThePivotsZenithDoesNotFlip)
     // The camera's angle over the pivot's horizon, counted from the south side across the zenith.
     const auto unfolded = [&](const scene::Camera& cam) {
         const glm::dvec3 d = glm::normalize(cam.positionKm - pivot);
-        return std::atan2(glm::dot(d, zenith), -glm::dot(d, north)) / kDegree;
+        return std::atan2(glm::dot(d, zenith), -glm::dot(d, north)) / aurorawall::physics::kDegree;
     };
     const double start = unfolded(now);
     for (int i = 1; i <= 60; ++i) { // 120 degrees: from ~45 over the zenith to ~15 on the north side
@@ -159,7 +159,7 @@ TEST(Orbit, TurnsStopAtTheGround)
         expectCentred(now, pivot, distanceKm, "press " + std::to_string(i));
     }
     // It stopped within one 2-degree turn of where it would pass below 1 m.
-    const double elevationDeg = std::asin(glm::dot(glm::normalize(now.positionKm - pivot), zenith)) / kDegree;
+    const double elevationDeg = std::asin(glm::dot(glm::normalize(now.positionKm - pivot), zenith)) / aurorawall::physics::kDegree;
     EXPECT_LT(elevationDeg, 2.0);
     EXPECT_LT(altitude(control::orbitTurned(now, pivot, 0.0, -2.0, 0.0)), Navigation::kMinAltitudeKm);
 }

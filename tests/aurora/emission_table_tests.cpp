@@ -1,5 +1,5 @@
 #include "components/aurora/physics/emission_table.h"
-#include "components/aurora/physics/colour.h"
+#include "physics/colour.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "components/aurora/physics/colour.h"
+#include "physics/colour.h"
 #include "components/aurora/physics/emission.h"
 #include "quadrature.h"
 

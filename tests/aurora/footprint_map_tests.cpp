@@ -1,5 +1,5 @@
 #include "components/aurora/physics/footprint_map.h"
-#include "common/constants.h"
+#include "physics/constants.h"
 #include "common/glsl.h"
 
 #include "random_curtains.h"
@@ -71,7 +71,7 @@ Nearest bruteForce(const std::vector<CurtainPolyline>& curtains, const glm::dvec
         }
     const double seedAngle = angle(p, curtains[best.curtain].points[best.point]);
     best.distanceKm = kR * seedAngle;
-    const double reach = std::cos(std::min(kPi, seedAngle + 0.5 * longestArc / kR)) - 1e-12;
+    const double reach = std::cos(std::min(aurorawall::physics::kPi, seedAngle + 0.5 * longestArc / kR)) - 1e-12;
     for (const CurtainPolyline& c : curtains)
         for (size_t k = 1; k < c.points.size(); ++k)
             if (std::max(glm::dot(p, c.points[k - 1]), glm::dot(p, c.points[k])) >= reach)
@@ -89,7 +89,7 @@ TEST(FootprintMap, ProjectionRoundTripDouble)
     std::mt19937_64 rng(1);
     double worstAngle = 0.0, worstCoord = 0.0;
     for (int k = 0; k < 20000; ++k) {
-        const double maxAngle = k % 2 ? kPi / 2 : 1e-6; // also very near the centre
+        const double maxAngle = k % 2 ? aurorawall::physics::kPi / 2 : 1e-6; // also very near the centre
         const glm::dvec3 d = randomInCap(rng, map.centre, map.east, maxAngle);
         const glm::dvec2 coord = f64::footprintMapCoord(d, map.centre, map.east, map.angularRadius);
         const glm::dvec3 back = f64::footprintMapDirection(coord, map.centre, map.east, map.angularRadius);
@@ -282,7 +282,7 @@ TEST(FootprintMap, ConservativeDistanceIsALowerBound)
     const std::vector<CurtainPolyline> curtains = randomCurtains(rng, 10, 1000.0, spacing);
     const FootprintMapSpec spec;
     const glm::dvec3 pole(0, 0, 1), east(0, -1, 0);
-    const double cap = spec.angularRadiusDeg * kPi / 180.0;
+    const double cap = spec.angularRadiusDeg * aurorawall::physics::kPi / 180.0;
     std::vector<glm::dvec3> points;
     std::vector<Nearest> truth;
     const int count = 100000;
@@ -348,7 +348,7 @@ TEST(FootprintMap, FarAndEmpty)
     spec.size = 128;
     const FootprintMap map = buildFootprintMap(curtains, spec, kR);
     for (int k = 0; k < 1000; ++k) {
-        const glm::dvec3 p = randomInCap(rng, map.centre, map.east, kPi);
+        const glm::dvec3 p = randomInCap(rng, map.centre, map.east, aurorawall::physics::kPi);
         const double theta = angle(p, map.centre);
         if (theta <= map.angularRadius)
             continue;
@@ -361,8 +361,8 @@ TEST(FootprintMap, FarAndEmpty)
     for (size_t t = 0; t < empty.texels.size(); t += 4) {
         ASSERT_EQ(empty.texels[t], -1.0f);
         ASSERT_EQ(empty.texels[t + 1], -1.0f);
-        ASSERT_LE(empty.texels[t + 2], kPi * kR);
-        ASSERT_GT(empty.texels[t + 2], kPi * kR - 1e-3);
+        ASSERT_LE(empty.texels[t + 2], aurorawall::physics::kPi * kR);
+        ASSERT_GT(empty.texels[t + 2], aurorawall::physics::kPi * kR - 1e-3);
     }
     EXPECT_EQ(empty.lookup(map.centre).curtainId, -1);
 

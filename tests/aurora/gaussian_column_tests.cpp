@@ -1,6 +1,6 @@
 // The smooth curtain's column across it (shaders/components/aurora/gaussian_column.glsl, shared
 // text) against std::erf / std::erfc in double, including the far tails where 1 − erf cancels.
-#include "common/constants.h"
+#include "physics/constants.h"
 #include "common/glsl.h"
 
 #include <gtest/gtest.h>
@@ -25,7 +25,7 @@ namespace {
 // keeps its relative precision in either tail.
 double exactMass(double a, double b)
 {
-    const double k = std::sqrt(kPi / 2.0), s = 1.0 / std::sqrt(2.0);
+    const double k = std::sqrt(aurorawall::physics::kPi / 2.0), s = 1.0 / std::sqrt(2.0);
     if (a >= 0.0)
         return k * (std::erfc(a * s) - std::erfc(b * s));
     if (b <= 0.0)
@@ -52,7 +52,7 @@ TEST(GaussianColumn, MassOfIntervalsEverywhere)
             const double exact = (b < a ? -1.0 : 1.0) * exactMass(lo, hi);
             // The fit's 1.2e-7 on each of two tails, relative to the larger tail, over the difference.
             const double tail = std::max(std::erfc(std::min(std::abs(lo), std::abs(hi)) / std::sqrt(2.0)), 1e-300);
-            const double allowed = 3e-7 * std::sqrt(kPi / 2.0) * tail + 1e-15;
+            const double allowed = 3e-7 * std::sqrt(aurorawall::physics::kPi / 2.0) * tail + 1e-15;
             EXPECT_NEAR(f64::gaussianMass(a, b), exact, allowed) << a << " " << b;
             // In float: within float rounding of the same (no 1 − erf cancellation in the tails).
             EXPECT_NEAR(f32::gaussianMass(float(a), float(b)), exact, allowed + 2e-6 * std::abs(exact) + 1e-30)

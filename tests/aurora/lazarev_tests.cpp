@@ -1,6 +1,6 @@
 #include "components/aurora/physics/atmosphere_profile.h"
 #include "components/aurora/physics/lazarev.h"
-#include "common/constants.h"
+#include "physics/constants.h"
 #include "quadrature.h"
 
 #include <gtest/gtest.h>
@@ -32,7 +32,7 @@ TEST(Lazarev, RateIntegralMatchesItsClosedForm)
 {
     // ∫_0^∞ 4.2 r e^{−r²−r} dr = 4.2 (½ − (√π/4) e^{1/4} erfc(½)) (complete the square, r + ½ = t);
     // ∫_0^∞ 0.48 e^{−17.4 r^1.37} dr = 0.48 Γ(1 + 1/1.37) / 17.4^{1/1.37}.
-    const double closedForm = 4.2 * (0.5 - std::sqrt(kPi) / 4.0 * std::exp(0.25) * std::erfc(0.5)) +
+    const double closedForm = 4.2 * (0.5 - std::sqrt(aurorawall::physics::kPi) / 4.0 * std::exp(0.25) * std::erfc(0.5)) +
                               0.48 * std::tgamma(1.0 + 1.0 / 1.37) / std::pow(17.4, 1.0 / 1.37);
     EXPECT_NEAR(lazarevRateIntegral() / closedForm, 1.0, 1e-14);
     EXPECT_NEAR(lazarevRateIntegral(), 1.0, 0.01); // Lazarev's L is normalised to about 1

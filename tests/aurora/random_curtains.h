@@ -2,7 +2,7 @@
 // Random curtains for the footprint map's tests (CPU and GPU builds): polylines sampled from random
 // control points in the 30° cap around the north pole.
 #include "components/aurora/physics/curtain_geometry.h"
-#include "common/constants.h"
+#include "physics/constants.h"
 
 #include <glm/glm.hpp>
 
@@ -24,7 +24,7 @@ inline glm::dvec3 randomInCap(std::mt19937_64& rng, const glm::dvec3& centre, co
 {
     std::uniform_real_distribution<double> uniform(0.0, 1.0);
     const double theta = std::acos(1.0 - uniform(rng) * (1.0 - std::cos(maxAngle)));
-    const double azimuth = 2.0 * kPi * uniform(rng);
+    const double azimuth = 2.0 * aurorawall::physics::kPi * uniform(rng);
     const glm::dvec3 north = glm::cross(centre, east);
     return std::cos(theta) * centre + std::sin(theta) * (std::cos(azimuth) * east + std::sin(azimuth) * north);
 }
@@ -37,8 +37,8 @@ inline std::vector<CurtainPolyline> randomCurtains(std::mt19937_64& rng, int cou
     const glm::dvec3 pole(0, 0, 1), east(0, -1, 0);
     std::vector<CurtainPolyline> out;
     for (int c = 0; c < count; ++c) {
-        glm::dvec3 p = randomInCap(rng, pole, east, 30.0 * kPi / 180.0);
-        glm::dvec3 tangent = glm::normalize(glm::cross(p, randomInCap(rng, pole, east, kPi)));
+        glm::dvec3 p = randomInCap(rng, pole, east, 30.0 * aurorawall::physics::kPi / 180.0);
+        glm::dvec3 tangent = glm::normalize(glm::cross(p, randomInCap(rng, pole, east, aurorawall::physics::kPi)));
         const double step = lengthKm / 10.0 / kR;
         std::vector<glm::dvec2> control;
         for (int k = 0; k <= 10; ++k) {

@@ -12,8 +12,8 @@ namespace aurorawall::airglow_columns::f32 {
 AURORAWALL_GLSL_PRECISION(float)
 #include "render/ray_sphere.glsl"
 #include "physics/constants.glsl"
-#include "atmosphere/airmass_common.glsl"
-#include "atmosphere/airmass_chapman.glsl"
+#include "physics/atmosphere/airmass_common.glsl"
+#include "physics/atmosphere/airmass_chapman.glsl"
 #include "components/airglow/airglow_layer.glsl"
 } // namespace aurorawall::airglow_columns::f32
 

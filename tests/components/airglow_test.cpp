@@ -1,7 +1,7 @@
 // The airglow layers' column along a ray: the shader's closed form (airglow_layer.glsl, here in
 // float as on the GPU) against a fine march of the volume emission rate in double, the published
 // zenith brightness, the van Rhijn brightening toward the horizon and the limb seen from orbit.
-#include "common/constants.h"
+#include "physics/constants.h"
 #include "airglow_columns.h"
 #include "components/airglow/airglow.h"
 #include "components/registry.h"
@@ -39,7 +39,7 @@ double marchedColumn(const Layer& layer, glm::dvec3 o, glm::dvec3 d, double h)
 
 glm::dvec3 fromZenithAngle(double zenithDeg)
 {
-    const double z = zenithDeg * kPi / 180.0;
+    const double z = zenithDeg * aurorawall::physics::kPi / 180.0;
     return {std::sin(z), 0.0, std::cos(z)};
 }
 
@@ -124,7 +124,7 @@ TEST(Airglow, BrightensTowardTheHorizonAsVanRhijn)
     const double zenith = closedFormColumn(green, ground, {0, 0, 1});
     EXPECT_NEAR(zenith, green.zenithRayleigh, 2e-4 * green.zenithRayleigh);
     auto vanRhijn = [](double height, double z) {
-        const double s = R / (R + height) * std::sin(z * kPi / 180.0);
+        const double s = R / (R + height) * std::sin(z * aurorawall::physics::kPi / 180.0);
         return 1.0 / std::sqrt(1.0 - s * s);
     };
     for (double z : {30.0, 60.0, 75.0, 80.0, 85.0, 90.0}) {
@@ -186,6 +186,6 @@ TEST(Airglow, OnlyScenesThatListItCarryItsCode)
     EXPECT_LT(code.find("shadeAtmosphere("), code.find("shadeAirglow("));
     EXPECT_LT(code.find("shadeAirglow("), code.find("shadeAurora("));
     const std::vector<std::string> names = render::marchModuleNames(with);
-    EXPECT_EQ(std::count(names.begin(), names.end(), "atmosphere/airmass_chapman.glsl"), 1);
+    EXPECT_EQ(std::count(names.begin(), names.end(), "physics/atmosphere/airmass_chapman.glsl"), 1);
     EXPECT_EQ(std::count(names.begin(), names.end(), "components/airglow/airglow.glsl"), 1);
 }

@@ -3,7 +3,7 @@
 // half the size-parameter step), and its stiff cases: the Sun exactly behind and exactly in front of
 // the camera, the camera above, inside and below the deck.
 #include "accuracy/scene_view.h"
-#include "atmosphere/airmass_exact.h"
+#include "physics/atmosphere/airmass_exact.h"
 #include "components/atmosphere/atmosphere.h"
 #include "components/glory/glory.h"
 #include "components/registry.h"
@@ -124,8 +124,8 @@ public:
         const double mu0 = glm::dot(up, light), mu = -glm::dot(up, d);
         const double upError = (t * 30.0 * u + 2.0 * u * glm::length(p)) / glm::length(p) + 3.0 * u;
         const glm::dvec2 top = aurorawall::f64::raySphere(p, light, R + air_.topKm, glory_.deckTopKm - air_.topKm);
-        const double airmassLight = exactAirmass(p, light, 0.0, std::max(top.y, 0.0), air_.scaleHeightKm, R);
-        const double airmassView = exactAirmass(o, d, 0.0, t, air_.scaleHeightKm, R);
+        const double airmassLight = aurorawall::physics::atmosphere::exactAirmass(p, light, 0.0, std::max(top.y, 0.0), air_.scaleHeightKm, R);
+        const double airmassView = aurorawall::physics::atmosphere::exactAirmass(o, d, 0.0, t, air_.scaleHeightKm, R);
         double rest = 40.0 * u + (upError + 3.0 * u) * (1.0 / mu0 + 1.0 / mu);
         for (double tau : {extinction * airmassView, extinction * airmassLight})
             rest += tau * airmassError + test::glslExpError(tau);

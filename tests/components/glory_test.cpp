@@ -1,10 +1,11 @@
 // The glory's optics (src/components/glory/optics) against independent references, and the physics
 // of its rings: where the first red ring lies, what a spread of drop sizes and the Sun's disc do.
-#include "common/constants.h"
+#include "physics/constants.h"
 #include "components/glory/glory.h"
 #include "components/glory/mie/mie_scattering.h"
 #include "components/glory/mie/phase_function.h"
-#include "components/glory/optics/colour_matching.h"
+#include "physics/colour_matching.h"
+#include "physics/spectra.h"
 #include "components/glory/optics/glory_table.h"
 #include "components/glory/optics/light_source.h"
 #include "components/glory/optics/water.h"
@@ -28,7 +29,7 @@ namespace {
 GloryTableSpec ringSpec(int wavelengths)
 {
     GloryTableSpec spec;
-    spec.angles.glorySpanRad = 10.0 * kDegree;
+    spec.angles.glorySpanRad = 10.0 * aurorawall::physics::kDegree;
     spec.angles.gloryCount = 201;
     spec.angles.middleCount = 16;
     spec.angles.forwardCount = 16;
@@ -53,7 +54,7 @@ Rings rings(const PhaseTable& table, const LightSource& light)
     const int last = table.angles.gloryCount - 2;
     double previousMinimum = xyz[0].y;
     for (int i = 1; i <= last; ++i) {
-        const double gamma = table.angles.angle(i) / kDegree;
+        const double gamma = table.angles.angle(i) / aurorawall::physics::kDegree;
         if (xyz[i].y < xyz[i - 1].y && xyz[i].y <= xyz[i + 1].y && r.luminanceMaximaDeg.empty())
             previousMinimum = xyz[i].y;
         if (gamma > 0.3 && xyz[i].y > xyz[i - 1].y && xyz[i].y >= xyz[i + 1].y) {
@@ -65,7 +66,7 @@ Rings rings(const PhaseTable& table, const LightSource& light)
     auto redness = [&](int i) { return rgb[i].r / (rgb[i].r + rgb[i].g + rgb[i].b); };
     if (!r.luminanceMaximaDeg.empty())
         for (int i = 1; i <= last; ++i) {
-            const double gamma = table.angles.angle(i) / kDegree;
+            const double gamma = table.angles.angle(i) / aurorawall::physics::kDegree;
             if (gamma > r.luminanceMaximaDeg.front() && redness(i) > redness(i - 1) && redness(i) >= redness(i + 1)) {
                 r.firstRedRingDeg = gamma;
                 break;
@@ -89,13 +90,13 @@ Rings ringsOf(double radiusUm, double variance, double discDiameterDeg)
 
 TEST(ColourMatching, TableValuesAndInterpolation)
 {
-    EXPECT_DOUBLE_EQ(colourMatching(555.0).y, 1.0);
-    EXPECT_DOUBLE_EQ(colourMatching(380.0).z, 0.006450);
-    EXPECT_DOUBLE_EQ(colourMatching(600.0).x, 1.0622);
-    EXPECT_NEAR(colourMatching(602.5).x, 0.5 * (1.0622 + 1.0456), 1e-12);
-    EXPECT_EQ(colourMatching(379.0), glm::dvec3(0.0));
-    EXPECT_EQ(colourMatching(781.0), glm::dvec3(0.0));
-    EXPECT_EQ(colourMatching(std::nan("")), glm::dvec3(0.0));
+    EXPECT_DOUBLE_EQ(physics::colourMatching(555.0).y, 1.0);
+    EXPECT_DOUBLE_EQ(physics::colourMatching(380.0).z, 0.006450);
+    EXPECT_DOUBLE_EQ(physics::colourMatching(600.0).x, 1.0622);
+    EXPECT_NEAR(physics::colourMatching(602.5).x, 0.5 * (1.0622 + 1.0456), 1e-12);
+    EXPECT_EQ(physics::colourMatching(379.0), glm::dvec3(0.0));
+    EXPECT_EQ(physics::colourMatching(781.0), glm::dvec3(0.0));
+    EXPECT_EQ(physics::colourMatching(std::nan("")), glm::dvec3(0.0));
 }
 
 // Daimon & Masumura's fit against the handbook value of water at 20 °C at the sodium D line
@@ -118,15 +119,15 @@ TEST(LightSource, IlluminanceSpectrumAndMoon)
 {
     LightSource sun;
     double lux = 0.0;
-    for (double nm = kCieFirstNm; nm < kCieLastNm; nm += kCieStepNm)
+    for (double nm = physics::kCieFirstNm; nm < physics::kCieLastNm; nm += physics::kCieStepNm)
         lux += boost::math::quadrature::gauss_kronrod<double, 15>::integrate(
-            [&](double l) { return kLumensPerWatt * sun.spectralIrradiance(l) * colourMatching(l).y; }, nm, nm + kCieStepNm);
+            [&](double l) { return physics::kLumensPerWatt * sun.spectralIrradiance(l) * physics::colourMatching(l).y; }, nm, nm + physics::kCieStepNm);
     EXPECT_NEAR(lux / sun.sunIlluminanceLux, 1.0, 2e-4);
 
     double peakNm = 0.0, peak = 0.0;
     for (double nm = 300.0; nm <= 800.0; nm += 0.1)
-        if (planckRadiance(nm, 5778.0) > peak) {
-            peak = planckRadiance(nm, 5778.0);
+        if (physics::planckRadiance(nm, 5778.0) > peak) {
+            peak = physics::planckRadiance(nm, 5778.0);
             peakNm = nm;
         }
     EXPECT_NEAR(peakNm, 2.897771955e6 / 5778.0, 0.1); // Wien: λ_max T = 2.897771955e-3 m K
@@ -136,8 +137,8 @@ TEST(LightSource, IlluminanceSpectrumAndMoon)
     const double full = 1.28e5 * 0.12 * std::pow(1737.4 / 384400.0, 2);
     EXPECT_NEAR(moon.illuminanceLux(), full, 1e-12 * full);
     moon.moonPhaseAngleDeg = 90.0;
-    EXPECT_NEAR(moon.illuminanceLux(), full / kPi, 1e-12 * full);
-    EXPECT_NEAR(moon.spectralIrradiance(550.0) / sun.spectralIrradiance(550.0), full / kPi / 1.28e5, 1e-12);
+    EXPECT_NEAR(moon.illuminanceLux(), full / aurorawall::physics::kPi, 1e-12 * full);
+    EXPECT_NEAR(moon.spectralIrradiance(550.0) / sun.spectralIrradiance(550.0), full / aurorawall::physics::kPi / 1.28e5, 1e-12);
 }
 
 // One drop: the table equals the phase function from the Mie amplitudes summed independently at
@@ -145,13 +146,13 @@ TEST(LightSource, IlluminanceSpectrumAndMoon)
 TEST(GloryTable, SingleDropIsTheMiePhaseFunction)
 {
     GloryTableSpec spec = ringSpec(2);
-    spec.angles.glorySpanRad = 30.0 * kDegree;
+    spec.angles.glorySpanRad = 30.0 * aurorawall::physics::kDegree;
     spec.angles.middleCount = 3000;
     spec.angles.forwardCount = 600;
     const PhaseTable table = phaseTable(mie::DropSizeDistribution::singleSize(3.0), spec);
     for (int w = 0; w < 2; ++w) {
         const double nm = table.wavelengthsNm[size_t(w)];
-        const double x = 2.0 * kPi * 3.0 / (nm * 1e-3);
+        const double x = 2.0 * aurorawall::physics::kPi * 3.0 / (nm * 1e-3);
         const mie::MieCoefficients c = mie::mieCoefficients(x, {waterRefractiveIndex(nm), 0.0});
         const double qsca = mie::efficiencies(c).scattering;
         for (int a : {0, 1, 200, 400, 1000, spec.angles.size() - 1}) {
@@ -182,7 +183,7 @@ TEST(GloryTable, SizeAverageAgreesWithTheAdaptiveQuadrature)
         const PhaseTable table = phaseTable(drops, spec);
         std::vector<double> angles;
         for (int i : indices)
-            angles.push_back(kPi - table.angles.angle(i));
+            angles.push_back(aurorawall::physics::kPi - table.angles.angle(i));
         const mie::PhaseFunction exact = mie::sizeAveragedPhaseFunction(drops, 0.55, {waterRefractiveIndex(550.0), 0.0}, angles);
         double worst = 0.0;
         for (size_t k = 0; k < indices.size(); ++k)
@@ -201,7 +202,7 @@ TEST(GloryTable, DiscSmearingAveragesOverTheDisc)
         for (int a = 0; a < spec.angles.size(); ++a)
             table.values[size_t(w) * size_t(spec.angles.size()) + size_t(a)] =
                 w == 0 ? 1.0 : std::pow(table.angles.angle(a), 2);
-    const double rho = 0.25 * kDegree;
+    const double rho = 0.25 * aurorawall::physics::kDegree;
     const PhaseTable smeared = smearedByDisc(table, rho);
     for (int a : {0, 20, 100, 180}) { // at least ρ inside the span, where the grid is even
         const double gamma = table.angles.angle(a);
@@ -242,7 +243,7 @@ TEST(GloryRings, FivePercentSpreadRemovesTheFineStructure)
         spec.firstNm = spec.lastNm = 550.0;
         const PhaseTable table = phaseTable(drops, spec);
         std::vector<double> peaks;
-        for (int i = 1; i + 1 < spec.angles.gloryCount && table.angles.angle(i) < 5.0 * kDegree; ++i)
+        for (int i = 1; i + 1 < spec.angles.gloryCount && table.angles.angle(i) < 5.0 * aurorawall::physics::kDegree; ++i)
             if (table.at(0, i) > table.at(0, i - 1) && table.at(0, i) >= table.at(0, i + 1))
                 peaks.push_back(table.at(0, i));
         for (size_t k = 1; k < peaks.size(); ++k)

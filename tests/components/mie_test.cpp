@@ -2,7 +2,7 @@
 // and Appl. Opt. 19, 1505: MIEV0's test cases; Bohren & Huffman 1983, Appendix A, BHMIE's example),
 // closed forms (the exact-angle sums, the Rayleigh and anomalous-diffraction limits) and itself
 // (convergence of the series and of the recurrence start).
-#include "common/constants.h"
+#include "physics/constants.h"
 #include "components/glory/mie/drop_size_distribution.h"
 #include "components/glory/mie/mie_coefficients.h"
 #include "components/glory/mie/mie_scattering.h"
@@ -53,7 +53,7 @@ TEST(Mie, WiscombeWaterX100)
 
 TEST(Mie, BohrenHuffmanExample)
 {
-    const double x = 2.0 * kPi * 0.525 / 0.6328;
+    const double x = 2.0 * aurorawall::physics::kPi * 0.525 / 0.6328;
     const Efficiencies q = efficienciesAt(x, {1.55, 0.0});
     expectPublished("B&H Qext", q.extinction, 3.10543, 0.5e-5);
     expectPublished("B&H Qsca", q.scattering, 3.10543, 0.5e-5);
@@ -67,7 +67,7 @@ TEST(Mie, ExactAnglesMatchTheClosedForms)
 {
     for (double x : {0.5, 10.0, 100.0, 3000.0}) {
         const MieCoefficients c = mieCoefficients(x, {1.33, 0.01});
-        const Amplitudes forward = amplitudes(c, {0.0})[0], backward = amplitudes(c, {kPi})[0];
+        const Amplitudes forward = amplitudes(c, {0.0})[0], backward = amplitudes(c, {aurorawall::physics::kPi})[0];
         const std::complex<double> s0 = forwardAmplitude(c), s180 = backwardAmplitudeS1(c);
         double termMagnitudes = 0.0;
         for (size_t i = 0; i < c.a.size(); ++i) termMagnitudes += 0.5 * (2.0 * i + 3.0) * (std::abs(c.a[i]) + std::abs(c.b[i]));
@@ -227,7 +227,7 @@ void gaussLegendre(int count, std::vector<double>& nodes, std::vector<double>& w
     nodes.resize(count);
     weights.resize(count);
     for (int i = 0; i < count; ++i) {
-        double z = std::cos(kPi * (i + 0.75) / (count + 0.5)), derivative = 0.0;
+        double z = std::cos(aurorawall::physics::kPi * (i + 0.75) / (count + 0.5)), derivative = 0.0;
         for (int iteration = 0; iteration < 100; ++iteration) {
             double p0 = 1.0, p1 = z;
             for (int k = 2; k <= count; ++k) {
@@ -265,7 +265,7 @@ TEST(PhaseFunction, IsNormalised)
     const PhaseFunction single = sizeAveragedPhaseFunction(DropSizeDistribution::singleSize(5.0), wavelength, water, angles);
     EXPECT_NEAR(normalisation(single, weights), 1.0, 1e-12);
     const DropSizeDistribution cloud = DropSizeDistribution::gamma(1.0, 0.1);
-    EXPECT_LT(2.0 * kPi / wavelength * cloud.radiusRangeUm().second, 75.0);
+    EXPECT_LT(2.0 * aurorawall::physics::kPi / wavelength * cloud.radiusRangeUm().second, 75.0);
     const PhaseFunction averaged = sizeAveragedPhaseFunction(cloud, wavelength, water, angles, 1e-7);
     double worstError = 0.0;
     for (size_t i = 0; i < angles.size(); ++i) worstError = std::max(worstError, averaged.errorEstimate[i] / averaged.value[i]);
@@ -280,7 +280,7 @@ TEST(PhaseFunction, IsNormalised)
 TEST(PhaseFunction, NarrowGammaTendsToTheSingleSize)
 {
     std::vector<double> angles;
-    for (double degrees : {0.0, 10.0, 30.0, 90.0, 140.0, 170.0, 180.0}) angles.push_back(degrees * kDegree);
+    for (double degrees : {0.0, 10.0, 30.0, 90.0, 140.0, 170.0, 180.0}) angles.push_back(degrees * aurorawall::physics::kDegree);
     const RefractiveIndex water{1.333, 0.0};
     const double radius = 1.0, wavelength = 0.55;
     const PhaseFunction single = sizeAveragedPhaseFunction(DropSizeDistribution::singleSize(radius), wavelength, water, angles);

@@ -2,7 +2,7 @@
 // form (uniform: n times the chord; linear: its mean times the chord, the clamp along z included),
 // the shader's march converging to it, the frame position in time, the march's knob, and the strip's
 // frames the plasma gives the reference.
-#include "common/constants.h"
+#include "physics/constants.h"
 #include "components/plasma/box_reference.h"
 #include "components/plasma/plasma.h"
 #include "components/plasma/sheet_frames.h"
@@ -117,7 +117,7 @@ TEST(PlasmaBoxReference, LinearDensityMatchesTheClosedForm)
 TEST(PlasmaBoxReference, TheShadersMarchConvergesToTheExactColumn)
 {
     const int cells = 16;
-    const double side = 8.0, h = 4.0, pi = kPi;
+    const double side = 8.0, h = 4.0, pi = aurorawall::physics::kPi;
     const BoxFrames frames = framesOf(cells, 2, [&](int f, glm::dvec3 u) {
         return 1.0 + 0.6 * std::sin(2.0 * pi * (u.x + 0.3 * f)) * std::sin(4.0 * pi * u.y) * std::cos(6.0 * pi * u.z);
     });

@@ -1,7 +1,7 @@
 // The plasma box (kind = "box"): the march along a ray (the shared GLSL compiled as C++ on a
 // uniform density), its frames (the seed's density to first order, n/n₀ averaging 1, the same bits
 // twice and through the cache, finite over 10⁴ steps) and its settings' errors.
-#include "common/constants.h"
+#include "physics/constants.h"
 #include "common/glsl.h"
 #include "common/input_error.h"
 #include "components/plasma/box_frames.h"
@@ -112,12 +112,12 @@ TEST(PlasmaBoxFrames, FrameZeroIsTheSeededDensity)
     const BoxFramesSpec s = smallBox();
     const BoxFrames f = components::plasma::simulateBoxFrames(s);
     const int n = s.cells;
-    const double k = 2.0 * kPi * s.seedMode / s.sideM, dx = s.sideM / n;
+    const double k = 2.0 * aurorawall::physics::kPi * s.seedMode / s.sideM, dx = s.sideM / n;
     double worst = 0.0, worstFirstOrder = 0.0;
     for (int j = 0; j < n; ++j)
         for (int i = 0; i < n; ++i) {
             const double x = (i + 0.5) * dx, y = (j + 0.5) * dx;
-            const double phase = kPi * std::sin(2.0 * kPi * x / s.sideM) * std::sin(2.0 * kPi * y / s.sideM);
+            const double phase = aurorawall::physics::kPi * std::sin(2.0 * aurorawall::physics::kPi * x / s.sideM) * std::sin(2.0 * aurorawall::physics::kPi * y / s.sideM);
             std::vector<double> column(n, 0.0);
             for (int m = 0; m < n; ++m) {
                 const double z = (m + 0.5) * dx;
@@ -205,7 +205,7 @@ TEST(PlasmaBoxFrames, SeededModeGrowsAtTheTwoStreamRate)
     s.stepsPerFrame = 5;
     const BoxFrames f = components::plasma::simulateBoxFrames(s);
     const int n = s.cells;
-    const double k = 2.0 * kPi * s.seedMode / s.sideM, dx = s.sideM / n;
+    const double k = 2.0 * aurorawall::physics::kPi * s.seedMode / s.sideM, dx = s.sideM / n;
     auto amplitude = [&](int frame) {
         double sum = 0.0;
         for (int j = 0; j < n; ++j)

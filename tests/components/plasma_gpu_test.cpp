@@ -1,7 +1,7 @@
 // The plasma's particle-in-cell step in GLSL compute shaders (GpuPic, float, EGL; Mesa llvmpipe in CI)
 // against the CPU step in double (ElectrostaticPic), its bit-for-bit determinism, and the verify
 // cases on the GPU against theory.
-#include "common/constants.h"
+#include "physics/constants.h"
 #include "components/aurora/tools/aurora_accuracy.h"
 #include "components/plasma/gpu/gpu_limits.h"
 #include "components/plasma/gpu/gpu_pic.h"
@@ -296,7 +296,7 @@ TEST(PlasmaOnTheGpu, VerifyCasesAgreeWithTheory)
                 measured(exb, "drift_along_E_over_E_over_B").relativeError());
     EXPECT_LT(langmuir.relativeError(), 1e-4);
     // 64² cells: the error is the grid's dispersion −(|k|Δx)²/8 = −2.41e-3, as on the CPU.
-    const double kDx = std::sqrt(2.0) * 2.0 * kPi / 64.0;
+    const double kDx = std::sqrt(2.0) * 2.0 * aurorawall::physics::kPi / 64.0;
     const double dispersion = -kDx * kDx / 8.0;
     EXPECT_NEAR((langmuir2D.measured - *langmuir2D.expected) / *langmuir2D.expected, dispersion, 0.15 * -dispersion);
     const double u = std::ldexp(1.0, -24), theta = borisRotationPerStep(1.0);
@@ -369,7 +369,7 @@ TEST(PlasmaPoissonOnTheGpu, JacobiDampsTheLongestWaveAsTheClosedFormSays)
         for (int k = 0; k < grid.cells[2]; ++k)
             for (int j = 0; j < grid.cells[1]; ++j)
                 for (int i = 0; i < grid.cells[0]; ++i) {
-                    longest[grid.index(i, j, k)] = kVacuumPermittivity * std::cos(2.0 * kPi * i / grid.cells[0]);
+                    longest[grid.index(i, j, k)] = kVacuumPermittivity * std::cos(2.0 * aurorawall::physics::kPi * i / grid.cells[0]);
                     checkerboard[grid.index(i, j, k)] = kVacuumPermittivity * ((i + j + k) % 2 == 0 ? 1.0 : -1.0);
                 }
         const FftPoissonSolver fft(grid);
@@ -440,13 +440,13 @@ TEST(PlasmaPoissonOnTheGpu, LangmuirWithConvergingSolversAgreesWithTheory)
         return 0.0;
     };
     const double fft = omega(GpuPicSolver::FftCpu);
-    const double kDx = std::sqrt(2.0) * 2.0 * kPi / 32.0;
+    const double kDx = std::sqrt(2.0) * 2.0 * aurorawall::physics::kPi / 32.0;
     const double dispersion = -kDx * kDx / 8.0;
     const PeriodicGrid grid(2, {32, 32, 1}, {1.0 / 32.0, 1.0 / 32.0, 1.0});
     std::vector<double> wave(grid.nodeCount());
     for (int j = 0; j < 32; ++j)
         for (int i = 0; i < 32; ++i)
-            wave[grid.index(i, j, 0)] = kVacuumPermittivity * std::cos(2.0 * kPi * (i + j) / 32.0);
+            wave[grid.index(i, j, 0)] = kVacuumPermittivity * std::cos(2.0 * aurorawall::physics::kPi * (i + j) / 32.0);
     const double bound = 0.5 * (test::floatPoissonBounds(grid, wave, FftPoissonSolver(grid).solve(wave)).potential +
                                 std::ldexp(1.0, -24));
     for (const GpuPicSolver solver : {GpuPicSolver::Multigrid}) {
@@ -539,8 +539,8 @@ std::vector<double> sorFieldPowers(const PeriodicGrid& grid, int sweeps)
     for (int b = 0; b < grid.cells[1]; ++b)
         for (int a = 0; a < grid.cells[0]; ++a) {
             const double mu = jacobiFactor(grid, a, b, 0);
-            const double symbol = std::hypot(std::sin(2.0 * kPi * a / grid.cells[0]) / grid.spacing[0],
-                                             std::sin(2.0 * kPi * b / grid.cells[1]) / grid.spacing[1]);
+            const double symbol = std::hypot(std::sin(2.0 * aurorawall::physics::kPi * a / grid.cells[0]) / grid.spacing[0],
+                                             std::sin(2.0 * aurorawall::physics::kPi * b / grid.cells[1]) / grid.spacing[1]);
             const glm::dmat2 step(1.0 - omega, omega * mu * (1.0 - omega), omega * mu,
                                   1.0 - omega + omega * omega * mu * mu);
             glm::dmat2 power(1.0);
@@ -670,7 +670,7 @@ TEST(PlasmaOnTheGpu, Langmuir3DAgreesWithTheCpuAndTheGridDispersion)
     const auto context = gl::createContext(gl::Backend::Egl);
     const VerifyRow gpu = rowOf(verifyLangmuir3D(kWpDt, 16, GpuPicDevice(kShaders)), "omega_over_wp");
     const VerifyRow cpu = rowOf(verifyLangmuir3D(kWpDt, 16), "omega_over_wp");
-    const double kDx = std::sqrt(3.0) * 2.0 * kPi / 16.0;
+    const double kDx = std::sqrt(3.0) * 2.0 * aurorawall::physics::kPi / 16.0;
     const double dispersion = -kDx * kDx / 8.0;
     std::printf("langmuir-3d 16^3: GPU %.6g, CPU %.6g, dispersion %.6g\n", gpu.measured / *gpu.expected - 1.0,
                 cpu.measured / *cpu.expected - 1.0, dispersion);

@@ -2,7 +2,7 @@
 // (shaders/components/plasma/triangular_shaped_cloud.glsl, compiled as C++ in double) against the
 // spline's closed form and moments, the deposit and gather with them (charge, no self-force), the
 // Langmuir frequency, the random start's density noise against its closed form for CIC and TSC.
-#include "common/constants.h"
+#include "physics/constants.h"
 #include "common/glsl.h"
 #include "components/plasma/simulation/dispersion.h"
 #include "components/plasma/simulation/electrostatic_pic.h"
@@ -167,17 +167,17 @@ TEST(PlasmaShape, TscLangmuirFollowsTheLeapfrogRelation)
         ElectrostaticPic pic(grid, quietStart(grid, 8 * kCells, kDensity, {1, 0.01 / kCells}, glm::dvec3(0.0)),
                              glm::dvec3(0.0), wpDt / plasmaFrequency(kDensity), ParticleShape::TriangularShapedCloud);
         std::vector<double> s;
-        const long steps = long(std::ceil(20 * 2.0 * kPi / wpDt));
+        const long steps = long(std::ceil(20 * 2.0 * aurorawall::physics::kPi / wpDt));
         for (long n = 0; n <= steps; ++n) {
             double mode = 0.0;
             for (int j = 0; j < kCells; ++j)
-                mode += pic.nodeField()[j].x * std::sin(2.0 * kPi * j / kCells);
+                mode += pic.nodeField()[j].x * std::sin(2.0 * aurorawall::physics::kPi * j / kCells);
             s.push_back(mode);
             pic.step();
         }
         const double measured = sampledCosineFrequency(s) / wpDt, expected = leapfrogPlasmaFrequency(wpDt);
         EXPECT_LT(std::abs(measured - expected) / expected, 2e-5) << "omega_p dt = " << wpDt << ": " << measured;
-        const double kDx = 2.0 * kPi / kCells, gridDispersion = -kDx * kDx / 6.0;
+        const double kDx = 2.0 * aurorawall::physics::kPi / kCells, gridDispersion = -kDx * kDx / 6.0;
         if (wpDt == 0.2) {
             EXPECT_NEAR((measured - expected) / expected, gridDispersion, 0.05 * std::abs(gridDispersion));
         }

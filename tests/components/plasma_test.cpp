@@ -1,7 +1,7 @@
 // The particle-in-cell plasma's core in double: the shared kernels (shaders/components/plasma, here
 // compiled as C++ in double), the Poisson solvers, determinism, the plasma dispersion function, and
 // each case of `aurorawall plasma verify` against theory.
-#include "common/constants.h"
+#include "physics/constants.h"
 #include "common/glsl.h"
 #include "components/plasma/simulation/discrete_laplacian.h"
 #include "components/plasma/simulation/dispersion.h"
@@ -140,9 +140,9 @@ TEST(PlasmaPoisson, FftSolvesTheDiscreteEquation)
     const PeriodicGrid line(1, {32, 1, 1}, {0.05, 1.0, 1.0});
     std::vector<double> rho(32);
     const int mode = 3;
-    for (int j = 0; j < 32; ++j) rho[j] = std::cos(2.0 * kPi * mode * j / 32);
+    for (int j = 0; j < 32; ++j) rho[j] = std::cos(2.0 * aurorawall::physics::kPi * mode * j / 32);
     const std::vector<double> phi = FftPoissonSolver(line).solve(rho);
-    const double s = std::sin(kPi * mode / 32);
+    const double s = std::sin(aurorawall::physics::kPi * mode / 32);
     const double k2 = 4.0 * s * s / (0.05 * 0.05);
     for (int j = 0; j < 32; ++j)
         EXPECT_NEAR(phi[j], rho[j] / (kVacuumPermittivity * k2), 1e-12 / (kVacuumPermittivity * k2));
@@ -226,7 +226,7 @@ TEST(PlasmaSimulation, StaysFiniteOverAHundredThousandSteps)
 // axis, and Z' = −2(1 + ζZ) by central differences in the lower half plane.
 TEST(PlasmaDispersion, PlasmaDispersionFunction)
 {
-    const double sqrtPi = std::sqrt(kPi);
+    const double sqrtPi = std::sqrt(aurorawall::physics::kPi);
     EXPECT_NEAR(std::abs(plasmaDispersionZ(0.0) - std::complex<double>(0.0, sqrtPi)), 0.0, 1e-15);
     const double dawson[][2] = {{1.0, 0.5380795069127684}, {2.0, 0.3013403889237920}, {3.0, 0.1782710306105583}};
     for (const auto& [x, f] : dawson) {
@@ -398,7 +398,7 @@ TEST(PlasmaVerify, LandauAtACoarseTimeStepMeasuresAFiniteRate)
 TEST(PlasmaVerify, Langmuir2DFollowsTheLeapfrogRelationAndTheGridDispersion)
 {
     constexpr int kCells = 64;
-    const double kDx = std::sqrt(2.0) * 2.0 * kPi / kCells;
+    const double kDx = std::sqrt(2.0) * 2.0 * aurorawall::physics::kPi / kCells;
     const double gridDispersion = kDx * kDx / 8.0;
     for (const double wpDt : {0.2, 1.0}) {
         const VerifyRow r = row(verifyLangmuir2D(wpDt, kCells), "omega_over_wp");
@@ -453,7 +453,7 @@ TEST(PlasmaDispersion, DiocotronRateTendsToLevysStrip)
     EXPECT_GT(diocotronGrowthRate(0.63, 2e4), 0.0);
     EXPECT_EQ(diocotronGrowthRate(0.65, 2e4), 0.0);
     // A narrower box slows the growth: the background's shear and the images oppose it.
-    EXPECT_LT(diocotronGrowthRate(0.4, 2.0 * kPi * 0.5), diocotronGrowthRate(0.4, 2e4));
+    EXPECT_LT(diocotronGrowthRate(0.4, 2.0 * aurorawall::physics::kPi * 0.5), diocotronGrowthRate(0.4, 2e4));
     EXPECT_THROW(diocotronGrowthRate(0.4, 0.8), std::domain_error);
 }
 
@@ -475,7 +475,7 @@ TEST(PlasmaVerify, DiocotronGrowsAtTheGuidingCentreRate)
 TEST(PlasmaVerify, Langmuir3DFollowsTheLeapfrogRelationAndTheGridDispersion)
 {
     constexpr int kCells = 16;
-    const double kDx = std::sqrt(3.0) * 2.0 * kPi / kCells;
+    const double kDx = std::sqrt(3.0) * 2.0 * aurorawall::physics::kPi / kCells;
     const double gridDispersion = kDx * kDx / 8.0;
     for (const double wpDt : {0.2, 1.0}) {
         const VerifyRow r = row(verifyLangmuir3D(wpDt, kCells), "omega_over_wp");
@@ -534,7 +534,7 @@ TEST(PlasmaVerify, LangmuirHistoryHoldsTheSamplesTheFrequencyCameFrom)
     const WrittenHistory written = writtenHistory(history);
     const std::vector<double>& t = written.columns.at("t_wp");
     const std::vector<double>& s = written.columns.at("field_mode");
-    ASSERT_EQ(t.size(), std::size_t(std::ceil(20 * 2.0 * kPi / kWpDt)) + 1);
+    ASSERT_EQ(t.size(), std::size_t(std::ceil(20 * 2.0 * aurorawall::physics::kPi / kWpDt)) + 1);
     ASSERT_EQ(s.size(), t.size());
     for (std::size_t n = 0; n < t.size(); ++n)
         EXPECT_NEAR(t[n], double(n) * kWpDt, 1e-9 * t.back());

@@ -2,7 +2,7 @@
 // The charge density and the error measure of the GPU Poisson tests and of their cost table
 // (plasma_gpu_test.cpp, plasma_gpu_cost.cpp): one definition, so that the table measures what the
 // tests hold.
-#include "common/constants.h"
+#include "physics/constants.h"
 #include "components/plasma/simulation/periodic_grid.h"
 #include "components/plasma/simulation/plasma_parameters.h"
 
@@ -23,8 +23,8 @@ inline std::vector<double> modesAndNoise(const plasma::PeriodicGrid& grid)
     for (int k = 0; k < grid.cells[2]; ++k)
         for (int j = 0; j < grid.cells[1]; ++j)
             for (int i = 0; i < grid.cells[0]; ++i) {
-                const double x = 2.0 * kPi * i / grid.cells[0], y = 2.0 * kPi * j / grid.cells[1],
-                             z = 2.0 * kPi * k / grid.cells[2];
+                const double x = 2.0 * aurorawall::physics::kPi * i / grid.cells[0], y = 2.0 * aurorawall::physics::kPi * j / grid.cells[1],
+                             z = 2.0 * aurorawall::physics::kPi * k / grid.cells[2];
                 rho[grid.index(i, j, k)] = plasma::kVacuumPermittivity * (std::cos(x) + 0.5 * std::sin(2 * x + 3 * y + z) +
                                                                           0.25 * std::cos(5 * x + y - 2 * z) + noise(random));
             }
@@ -69,7 +69,7 @@ inline FloatPoissonBounds floatPoissonBounds(const plasma::PeriodicGrid& grid, c
         const double inverseSquare = 1.0 / (grid.spacing[d] * grid.spacing[d]);
         largest += 4.0 * inverseSquare;
         if (grid.cells[d] > 1)
-            smallest = std::min(smallest, 4.0 * std::pow(std::sin(kPi / grid.cells[d]), 2) * inverseSquare);
+            smallest = std::min(smallest, 4.0 * std::pow(std::sin(aurorawall::physics::kPi / grid.cells[d]), 2) * inverseSquare);
     }
     double mean = 0.0;
     for (double r : rho)

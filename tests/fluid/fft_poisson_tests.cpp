@@ -2,7 +2,7 @@
 // stencil, in agreement with a multigrid solve run to round-off, mean handling, and bit-for-bit
 // repeatable.
 #include "components/fluid_detail/simulation/fft_poisson.h"
-#include "common/constants.h"
+#include "physics/constants.h"
 #include "components/fluid_detail/simulation/multigrid.h"
 
 #include <gtest/gtest.h>
@@ -84,7 +84,7 @@ TEST(FftPoisson, AgreesWithMultigridSolvedToRoundOff)
     PeriodicField f = hashNoise(nx, ny, hx, hy, 5u);
     for (int j = 0; j < ny; ++j)
         for (int i = 0; i < nx; ++i)
-            f(i, j) += std::sin(2 * kPi * 3 * i / nx) * std::cos(2 * kPi * j / ny);
+            f(i, j) += std::sin(2 * aurorawall::physics::kPi * 3 * i / nx) * std::cos(2 * aurorawall::physics::kPi * j / ny);
     PeriodicField multigrid(nx, ny, hx, hy);
     ASSERT_TRUE(solvePoisson(multigrid, f, {60, 1e-13, 2, 2}).converged);
     PeriodicField fft(nx, ny, hx, hy);

@@ -1,6 +1,6 @@
 // The periodic multigrid Poisson solver: V-cycle convergence factor, second-order accuracy on a
 // manufactured problem, and the checkerboard mode that plain Jacobi cannot remove.
-#include "common/constants.h"
+#include "physics/constants.h"
 #include "components/fluid_detail/simulation/multigrid.h"
 
 #include <gtest/gtest.h>
@@ -19,13 +19,13 @@ namespace {
 // φ = sin(2πx/Lx) cos(4πy/Ly) + ½ cos(6πx/Lx + 0.3) sin(2πy/Ly + 1): zero mean, periodic.
 double phi(double x, double y, double lx, double ly)
 {
-    return std::sin(2 * kPi * x / lx) * std::cos(4 * kPi * y / ly) + 0.5 * std::cos(6 * kPi * x / lx + 0.3) * std::sin(2 * kPi * y / ly + 1.0);
+    return std::sin(2 * aurorawall::physics::kPi * x / lx) * std::cos(4 * aurorawall::physics::kPi * y / ly) + 0.5 * std::cos(6 * aurorawall::physics::kPi * x / lx + 0.3) * std::sin(2 * aurorawall::physics::kPi * y / ly + 1.0);
 }
 
 // Its Laplacian, analytically.
 double laplacianOfPhi(double x, double y, double lx, double ly)
 {
-    const double kx1 = 2 * kPi / lx, ky1 = 4 * kPi / ly, kx2 = 6 * kPi / lx, ky2 = 2 * kPi / ly;
+    const double kx1 = 2 * aurorawall::physics::kPi / lx, ky1 = 4 * aurorawall::physics::kPi / ly, kx2 = 6 * aurorawall::physics::kPi / lx, ky2 = 2 * aurorawall::physics::kPi / ly;
     return -(kx1 * kx1 + ky1 * ky1) * std::sin(kx1 * x) * std::cos(ky1 * y) -
            (kx2 * kx2 + ky2 * ky2) * 0.5 * std::cos(kx2 * x + 0.3) * std::sin(ky2 * y + 1.0);
 }

@@ -1,7 +1,7 @@
 // Stable Fluids on the MAC grid: the projection leaves a discretely divergence-free field and is
 // a Helmholtz–Hodge split; semi-Lagrangian advection moves things the right way and is monotone.
 #include "components/fluid_detail/simulation/stable_fluids.h"
-#include "common/constants.h"
+#include "physics/constants.h"
 #include "flow_metrics.h"
 
 #include <gtest/gtest.h>
@@ -34,8 +34,8 @@ MacVelocity roughVelocity(int nx, int ny, double h)
     for (int j = 0; j < ny; ++j)
         for (int i = 0; i < nx; ++i) {
             const double x = i * h, y = (j + 0.5) * h;
-            vel.u(i, j) = std::sin(2 * kPi * x / lx) + 0.3 * std::cos(2 * kPi * 3 * y / ly) + 0.2 * noise.next();
-            vel.v(i, j) = std::cos(2 * kPi * 2 * (x + 0.5 * h) / lx + 0.4) * std::sin(2 * kPi * j * h / ly) + 0.2 * noise.next();
+            vel.u(i, j) = std::sin(2 * aurorawall::physics::kPi * x / lx) + 0.3 * std::cos(2 * aurorawall::physics::kPi * 3 * y / ly) + 0.2 * noise.next();
+            vel.v(i, j) = std::cos(2 * aurorawall::physics::kPi * 2 * (x + 0.5 * h) / lx + 0.4) * std::sin(2 * aurorawall::physics::kPi * j * h / ly) + 0.2 * noise.next();
         }
     return vel;
 }
@@ -60,11 +60,11 @@ TEST(Projection, RemovesAGradientAndKeepsASolenoidalField)
     PeriodicField psi(nx, ny, h, h);
     for (int j = 0; j < ny; ++j)
         for (int i = 0; i < nx; ++i)
-            psi(i, j) = std::sin(2 * kPi * i / nx) * std::cos(2 * kPi * 2 * j / ny) + 0.3 * std::cos(2 * kPi * 5 * i / nx);
+            psi(i, j) = std::sin(2 * aurorawall::physics::kPi * i / nx) * std::cos(2 * aurorawall::physics::kPi * 2 * j / ny) + 0.3 * std::cos(2 * aurorawall::physics::kPi * 5 * i / nx);
     MacVelocity vel{PeriodicField(nx, ny, h, h), PeriodicField(nx, ny, h, h)};
     for (int j = 0; j < ny; ++j)
         for (int i = 0; i < nx; ++i) {
-            vel.u(i, j) = (psi(i, j) - psi(i - 1, j)) / h + std::sin(2 * kPi * j / ny);
+            vel.u(i, j) = (psi(i, j) - psi(i - 1, j)) / h + std::sin(2 * aurorawall::physics::kPi * j / ny);
             vel.v(i, j) = (psi(i, j) - psi(i, j - 1)) / h;
         }
     PeriodicField phi(nx, ny, h, h);
@@ -72,7 +72,7 @@ TEST(Projection, RemovesAGradientAndKeepsASolenoidalField)
     double error = 0.0;
     for (int j = 0; j < ny; ++j)
         for (int i = 0; i < nx; ++i)
-            error = std::max({error, std::abs(vel.u(i, j) - std::sin(2 * kPi * j / ny)), std::abs(vel.v(i, j))});
+            error = std::max({error, std::abs(vel.u(i, j) - std::sin(2 * aurorawall::physics::kPi * j / ny)), std::abs(vel.v(i, j))});
     EXPECT_LT(error, 1e-9);
 }
 
@@ -177,7 +177,7 @@ TEST(Advection, IsMonotoneInARotatingFlow)
 {
     // Cellular flow ψ = sin(kx) sin(ky) (divergence-free), rough scalar in [−½, ½).
     const int n = 64;
-    const double h = 1.0, k = 2 * kPi / (n * h);
+    const double h = 1.0, k = 2 * aurorawall::physics::kPi / (n * h);
     MacVelocity vel{PeriodicField(n, n, h, h), PeriodicField(n, n, h, h)};
     for (int j = 0; j < n; ++j)
         for (int i = 0; i < n; ++i) {

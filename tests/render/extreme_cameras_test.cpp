@@ -1,7 +1,7 @@
 // Numerical stability: the substorm scene rendered from extreme viewpoints and times has no NaN
 // or Inf pixel, and shows what it should (sky above, ground below, aurora where it is).
 #include "cluster/frame_state.h"
-#include "common/constants.h"
+#include "physics/constants.h"
 #include "gl/context.h"
 #include "gl/float_target.h"
 #include "gl/full_screen_triangle.h"
@@ -53,7 +53,7 @@ protected:
         wall::GridSpec grid;
         grid.screenPx = {64, 36};
         grid.screenMm = {64.0, 36.0};
-        grid.eyeFromCentreMm = {0.0, 0.0, 18.0 / std::tan(35.0 * kPi / 180.0)};
+        grid.eyeFromCentreMm = {0.0, 0.0, 18.0 / std::tan(35.0 * aurorawall::physics::kPi / 180.0)};
         const wall::Wall wall = wall::makeGridWall(grid);
         cluster::FrameState frame;
         frame.timeS = timeS;

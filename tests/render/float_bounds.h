@@ -21,7 +21,7 @@ inline const double kUnitRoundoff = std::ldexp(1.0, -24);
 // GLSL's exp of an argument of magnitude up to |x|, relative.
 inline double glslExpError(double x) { return (6.0 + 4.0 * std::abs(x)) * kUnitRoundoff; }
 
-// The closed-form airmass's own error (shaders/atmosphere/airmass_chapman.glsl), relative, for scale
+// The closed-form airmass's own error (shaders/physics/atmosphere/airmass_chapman.glsl), relative, for scale
 // height H on a sphere of radius r: the erfcx fit's 1.0e-6, the J₂ fit's 0.1% of the correction term
 // (at most 3/(8x), x = r/H) and the neglected O(1/x²) term, 7e-6 at x = 127. (Its safe form, the
 // trapezoid rule, is taken only on segments whose height varies by less than 0.08 H; each caller

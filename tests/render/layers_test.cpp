@@ -2,7 +2,7 @@
 // components compose them, for hand-built rays: every case of the
 // paper's figure 8 (viewer outside the atmosphere), plus viewers inside the aurora layer, inside
 // the lower atmosphere and below the ground.
-#include "common/constants.h"
+#include "physics/constants.h"
 #include "common/glsl.h"
 
 #include <gtest/gtest.h>
@@ -62,7 +62,7 @@ f64::RayLayers rayPassing(double distance, double tangentHeight)
 // A ray from `altitude` km above the ground at elevation `elevationDeg`.
 f64::RayLayers rayFrom(double altitude, double elevationDeg)
 {
-    const double e = elevationDeg * aurorawall::kPi / 180.0;
+    const double e = elevationDeg * aurorawall::physics::kPi / 180.0;
     return f64::rayLayers({0, 0, R + altitude}, {std::cos(e), 0, std::sin(e)}, R, altitude, kAtmosphereTop,
                           kAuroraBottom, kAuroraTop);
 }

@@ -1,6 +1,6 @@
 // The shared ray-sphere module (shaders/render/ray_sphere.glsl), compiled as C++ in float (as the
 // GPU runs it) and double (the reference).
-#include "common/constants.h"
+#include "physics/constants.h"
 #include "common/glsl.h"
 
 #include <gtest/gtest.h>
@@ -91,7 +91,7 @@ TEST(RaySphere, ShellSplitsAroundTheInnerSphere)
     // two segments. Looking up: one segment from the camera to the top.
     const double bottom = R + 85.0, top = R + 300.0;
     const glm::dvec3 o(0, 0, R + 100.0);
-    const double down = 10.0 * aurorawall::kPi / 180.0; // 10 deg below the horizontal: lowest point 6372.7 km
+    const double down = 10.0 * aurorawall::physics::kPi / 180.0; // 10 deg below the horizontal: lowest point 6372.7 km
     const glm::dvec3 slanting(std::cos(down), 0.0, -std::sin(down));
     const f64::ShellSegments level = f64::rayShell(o, slanting, bottom, 15.0, top, -200.0, 1e30);
     EXPECT_DOUBLE_EQ(level.first.x, 0.0);

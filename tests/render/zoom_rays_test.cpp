@@ -1,7 +1,7 @@
 // The zoom of a camera path's field of view, as the tile renderer applies it to every tile's rays
 // (cluster::wallToPlanet): a zoom of 2 shows the centre half of the unzoomed view, and a key's field of
 // view is the angle the zoomed wall spans from its eye.
-#include "common/constants.h"
+#include "physics/constants.h"
 #include "cluster/frame_state.h"
 #include "scene/camera_path.h"
 #include "wall/tile_rays.h"
@@ -50,7 +50,7 @@ glm::dvec3 direction(const wall::TileRays& rays, const cluster::FrameState& s, g
 
 double angleDeg(const glm::dvec3& a, const glm::dvec3& b)
 {
-    return std::atan2(glm::length(glm::cross(a, b)), glm::dot(a, b)) * 180.0 / kPi;
+    return std::atan2(glm::length(glm::cross(a, b)), glm::dot(a, b)) * 180.0 / aurorawall::physics::kPi;
 }
 
 } // namespace

@@ -1,7 +1,7 @@
 // Keyed camera paths: C1 positions and orientations (against slerp's and Shoemake's even-spacing
 // SQUAD's kinks), orientations without flips, exact at the keys, held outside them, independent of
 // the frame step; the benchmark flight as a path; errors naming file:line:key.
-#include "common/constants.h"
+#include "physics/constants.h"
 #include "cluster/master_clock.h"
 #include "common/input_error.h"
 #include "components/registry.h"
@@ -53,7 +53,7 @@ std::vector<CameraKey> curvedKeys()
         {0.0, 0.0, 6441.0}, {30.0, 80.0, 6450.0}, {70.0, 95.0, 6480.0}, {40.0, 200.0, 6520.0}, {45.0, 230.0, 6600.0}};
     std::vector<CameraKey> keys;
     for (int i = 0; i < 5; ++i)
-        keys.push_back({times[i], positions[i], scene::orientationOf(turned(i * kPi / 3.0))});
+        keys.push_back({times[i], positions[i], scene::orientationOf(turned(i * aurorawall::physics::kPi / 3.0))});
     return keys;
 }
 
@@ -103,7 +103,7 @@ TEST(CameraPath, ExactAtTheKeys)
     const CameraPath path(keys);
     for (std::size_t i = 0; i < keys.size(); ++i) {
         EXPECT_EQ(path.positionAt(keys[i].timeS), keys[i].positionKm) << "key " << i;
-        const CameraFrame want = turned(static_cast<double>(i) * kPi / 3.0);
+        const CameraFrame want = turned(static_cast<double>(i) * aurorawall::physics::kPi / 3.0);
         const CameraFrame got = scene::frameOf(path.orientationAt(keys[i].timeS));
         EXPECT_NEAR(glm::length(got.forward - want.forward), 0.0, 1e-14) << "key " << i;
         EXPECT_NEAR(glm::length(got.up - want.up), 0.0, 1e-14) << "key " << i;
@@ -165,7 +165,7 @@ std::vector<CameraKey> unevenTurns(const std::vector<double>& times)
     const double degrees[] = {0.0, 50.0, 130.0, 170.0, 260.0};
     std::vector<CameraKey> keys;
     for (std::size_t i = 0; i < times.size(); ++i)
-        keys.push_back({times[i], glm::dvec3(0.0), scene::orientationOf(turned(degrees[i] * kPi / 180.0))});
+        keys.push_back({times[i], glm::dvec3(0.0), scene::orientationOf(turned(degrees[i] * aurorawall::physics::kPi / 180.0))});
     return keys;
 }
 
@@ -218,7 +218,7 @@ TEST(CameraPath, NoOrientationFlipsEvenForKeysOfOppositeSign)
     // Samples dt apart stay in one hemisphere (no jump to -q) and turn by at most twice the fastest
     // key step, 60 deg in the 1 s segment, times dt: the spline's fastest turn is 1.24 times that
     // (measured); the long way round (300 deg) would be five times.
-    const double dt = 1e-3, fastest = kPi / 3.0;
+    const double dt = 1e-3, fastest = aurorawall::physics::kPi / 3.0;
     double largest = 0.0;
     glm::dquat last = path.orientationAt(-1.0);
     for (double t = -1.0 + dt; t < 14.0; t += dt) {
@@ -236,7 +236,7 @@ TEST(CameraPath, TurnsOfAlmostHalfAWayRoundGoTheShortWay)
     // Keys 179 deg apart about the planet's z axis at uneven times: the camera turns 358 deg one way
     // (never back), where the long way round for either step (181 deg the other way) would reverse it.
     const glm::dvec3 z(0.0, 0.0, 1.0);
-    const double step = 179.0 * kPi / 180.0;
+    const double step = 179.0 * aurorawall::physics::kPi / 180.0;
     for (const double sign : {1.0, -1.0}) {
         const CameraPath path({{0.0, glm::dvec3(0.0), glm::angleAxis(0.0, z)},
                                {1.0, glm::dvec3(0.0), sign * glm::angleAxis(step, z)},
@@ -334,7 +334,7 @@ TEST(CameraPath, SceneKeysInEachForm)
     const scene::LocalFrame local = scene::localFrame(67.85, 20.22);
     EXPECT_LT(glm::length(keys[0].positionKm - scene::planetPoint(67.85, 20.22, 6381.0)), 1e-9);
     const CameraFrame first = scene::frameOf(keys[0].orientation);
-    EXPECT_NEAR(std::asin(glm::dot(first.forward, local.up)) * 180.0 / kPi, 20.0, 1e-9);
+    EXPECT_NEAR(std::asin(glm::dot(first.forward, local.up)) * 180.0 / aurorawall::physics::kPi, 20.0, 1e-9);
     EXPECT_NEAR(glm::dot(first.forward, local.north), 0.0, 1e-12);
     EXPECT_GT(glm::dot(first.forward, local.east), 0.0);
     EXPECT_EQ(s.camera.positionKm, keys[0].positionKm);
@@ -345,7 +345,7 @@ TEST(CameraPath, SceneKeysInEachForm)
     EXPECT_NEAR(glm::dot(second.forward, glm::normalize(target - keys[1].positionKm)), 1.0, 1e-12);
     const glm::dvec3 zenith = glm::normalize(keys[1].positionKm);
     const glm::dvec3 level = glm::normalize(zenith - second.forward * glm::dot(zenith, second.forward));
-    EXPECT_NEAR(std::acos(glm::dot(second.up, level)) * 180.0 / kPi, 10.0, 1e-9);
+    EXPECT_NEAR(std::acos(glm::dot(second.up, level)) * 180.0 / aurorawall::physics::kPi, 10.0, 1e-9);
     // Looking at a point in the planet frame.
     const CameraFrame third = scene::frameOf(keys[2].orientation);
     EXPECT_NEAR(glm::dot(third.forward, glm::normalize(glm::dvec3(100.0, 0.0, 100.0))), 1.0, 1e-12);
@@ -397,7 +397,7 @@ TEST(CameraPathErrors, OneLineNamingFileLineAndKey)
 namespace {
 
 // A wall whose own vertical field of view is 70 deg (config/walls/desktop-2x2.toml).
-const double kWallTanHalf = std::tan(35.0 * kPi / 180.0);
+const double kWallTanHalf = std::tan(35.0 * aurorawall::physics::kPi / 180.0);
 
 // Keys with fields of view 60, none (the wall's), 20, 90 and 10 deg at uneven times.
 std::vector<CameraKey> zoomKeys()
@@ -422,7 +422,7 @@ TEST(CameraPathZoom, TheWallsOwnFieldOfViewIsZoomOne)
 {
     EXPECT_NEAR(scene::zoomOf(70.0, kWallTanHalf), 1.0, 1e-15);
     // Half the tangent of the half angle: zoom 2, the centre half of the wall's view.
-    EXPECT_NEAR(scene::zoomOf(2.0 * std::atan(0.5 * kWallTanHalf) * 180.0 / kPi, kWallTanHalf), 2.0, 1e-15);
+    EXPECT_NEAR(scene::zoomOf(2.0 * std::atan(0.5 * kWallTanHalf) * 180.0 / aurorawall::physics::kPi, kWallTanHalf), 2.0, 1e-15);
     EXPECT_NEAR(scene::zoomOf(90.0, kWallTanHalf), kWallTanHalf, 1e-15);
     EXPECT_EQ(scene::zoomOf(CameraKey{}, kWallTanHalf), 1.0); // a key with neither: the wall's
 }
@@ -479,7 +479,7 @@ TEST(CameraPathZoom, EvenlySpacedLnZoomIsGeometric)
         CameraKey k;
         k.timeS = 2.0 * i;
         k.positionKm = {0.0, 0.0, 6400.0 + i};
-        k.fieldOfViewDeg = 2.0 * std::atan(kWallTanHalf / std::pow(2.0, i)) * 180.0 / kPi;
+        k.fieldOfViewDeg = 2.0 * std::atan(kWallTanHalf / std::pow(2.0, i)) * 180.0 / aurorawall::physics::kPi;
         keys.push_back(k);
     }
     keys[0].fieldOfViewDeg = 70.0;

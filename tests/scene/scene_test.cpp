@@ -1,4 +1,4 @@
-#include "common/constants.h"
+#include "physics/constants.h"
 #include "common/input_error.h"
 #include "components/aurora/aurora.h"
 #include "components/fluid_detail/fluid_detail.h"
@@ -43,10 +43,10 @@ TEST(Scene, BenchmarkCameraIsThePapersView)
     const glm::dvec3 c = s.camera.positionKm;
     EXPECT_NEAR(glm::length(c) / 6371.0, 1.011017, 1e-6);
     EXPECT_NEAR(glm::length(c) - 6371.0, 70.0, 0.2);
-    const double latitude = std::asin(c.z / glm::length(c)) * 180.0 / kPi;
+    const double latitude = std::asin(c.z / glm::length(c)) * 180.0 / aurorawall::physics::kPi;
     EXPECT_NEAR(latitude, 59.2, 0.05);
     const glm::dvec3 zenith = glm::normalize(c);
-    const double elevation = std::asin(glm::dot(s.camera.forward, zenith)) * 180.0 / kPi;
+    const double elevation = std::asin(glm::dot(s.camera.forward, zenith)) * 180.0 / aurorawall::physics::kPi;
     EXPECT_NEAR(elevation, 10.4, 0.1);
     EXPECT_NEAR(glm::dot(s.camera.forward, s.camera.up), 0.0, 1e-12);
 }

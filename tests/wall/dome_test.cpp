@@ -1,6 +1,6 @@
 // Dome masters: the angular fisheye of the whole canvas, checked in double against its definition
 // (the angle from the axis is |offset| * FOV / canvas height, the azimuth that of the offset).
-#include "common/constants.h"
+#include "physics/constants.h"
 #include "wall/tile_rays.h"
 #include "wall/wall_file.h"
 
@@ -34,7 +34,7 @@ TEST(Dome, CentreRayIsTheAxisAndTheTiltRaisesIt)
         const TileRays rays = tileRays(domeWall(180.0, tilt), 1);
         const glm::dvec3 axis = domeDirection(rays, {256.0, 256.0});
         // The camera looks along -z with +y up; the tilt turns the axis up about +x.
-        const double t = tilt * kPi / 180.0;
+        const double t = tilt * aurorawall::physics::kPi / 180.0;
         EXPECT_NEAR(glm::length(axis - glm::dvec3(0.0, std::sin(t), -std::cos(t))), 0.0, 1e-15) << tilt;
     }
 }
@@ -46,13 +46,13 @@ TEST(Dome, RimIsAtHalfTheFieldOfView)
         const glm::dvec3 axis = domeDirection(rays, {256.0, 256.0});
         // The rim: 256 px (half the canvas height) from the centre, in eight directions.
         for (int k = 0; k < 8; ++k) {
-            const double phi = k * kPi / 4.0;
+            const double phi = k * aurorawall::physics::kPi / 4.0;
             const glm::dvec3 rim = domeDirection(rays, glm::dvec2(256.0) + 256.0 * glm::dvec2(std::cos(phi), std::sin(phi)));
             EXPECT_NEAR(glm::length(rim), 1.0, 1e-15);
-            EXPECT_NEAR(angleBetween(rim, axis), fov / 2.0 * kPi / 180.0, 1e-12) << fov << " deg, azimuth " << k;
+            EXPECT_NEAR(angleBetween(rim, axis), fov / 2.0 * aurorawall::physics::kPi / 180.0, 1e-12) << fov << " deg, azimuth " << k;
         }
         // Half way out: a quarter of the field of view.
-        EXPECT_NEAR(angleBetween(domeDirection(rays, {256.0 + 128.0, 256.0}), axis), fov / 4.0 * kPi / 180.0, 1e-12);
+        EXPECT_NEAR(angleBetween(domeDirection(rays, {256.0 + 128.0, 256.0}), axis), fov / 4.0 * aurorawall::physics::kPi / 180.0, 1e-12);
     }
 }
 
@@ -75,7 +75,7 @@ TEST(Dome, AzimuthRunsAsTheImage)
     EXPECT_GT(up.y, 0.0);
     EXPECT_NEAR(up.x, 0.0, 1e-15);
     for (double phiDeg : {10.0, 100.0, 200.0, 300.0}) {
-        const double phi = phiDeg * kPi / 180.0;
+        const double phi = phiDeg * aurorawall::physics::kPi / 180.0;
         const glm::dvec3 d = domeDirection(rays, glm::dvec2(256.0) + 150.0 * glm::dvec2(std::cos(phi), std::sin(phi)));
         // Image-down is -y for tilt 0.
         EXPECT_NEAR(std::atan2(-d.y, d.x), std::atan2(std::sin(phi), std::cos(phi)), 1e-12) << phiDeg;

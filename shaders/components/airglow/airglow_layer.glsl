@@ -1,5 +1,5 @@
 // The column of one airglow layer along a ray, in closed form (shared by the shader and the C++
-// tests, src/common/glsl.h; needs atmosphere/airmass_common.glsl and airmass_chapman.glsl).
+// tests, src/common/glsl.h; needs physics/atmosphere/airmass_common.glsl and airmass_chapman.glsl).
 //
 // A layer's volume emission rate (rayleigh per km) above its base height b is the difference of two
 // exponentials, zero below b (a Chapman-like layer: a sharp rise, a slower fall):

@@ -7,7 +7,7 @@ uniform vec3 uExtinctionPerKm;
 uniform vec3 uSkyGlow;
 
 // Airmass of the segment [t0, t1] of the ray o + t d: the default closed form
-// (shaders/atmosphere/airmass_chapman.glsl, docs/airmass.md): max relative error 3.7e-5 in float
+// (shaders/physics/atmosphere/airmass_chapman.glsl, docs/airmass.md): max relative error 3.7e-5 in float
 // (CPU and llvmpipe) over the whole test ray set, cheaper than a 16-step march.
 float airmassSegment(vec3 o, vec3 d, float t0, float t1)
 {

@@ -1,6 +1,6 @@
 // sky: single-scattering Rayleigh sky lit by up to SKY_MAX_LIGHTS sources (the Sun, the Moon,
 // or several Sun positions), each source's light-side optical depth from the closed-form airmass
-// (shaders/atmosphere/sky.glsl; after C. Davis, Tectonics.js): several lights for the price of one.
+// (shaders/physics/atmosphere/sky.glsl; after C. Davis, Tectonics.js): several lights for the price of one.
 // The air is the atmosphere component's (its top, scale height and extinction). Radiance in cd/m^2
 // for illuminances in lux.
 uniform int uSkyViewSteps;

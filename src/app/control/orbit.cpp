@@ -1,6 +1,6 @@
 #include "app/control/orbit.h"
 
-#include "common/constants.h"
+#include "physics/constants.h"
 
 #include <cmath>
 
@@ -68,14 +68,14 @@ scene::Camera orbitTurned(const scene::Camera& camera, const glm::dvec3& pivotKm
         // (view x up) when its up leans to z, to its left upside down, hence the sign.
         const glm::dvec3 zenith = glm::normalize(pivotKm);
         const double side = glm::dot(c.up, zenith) >= 0.0 ? 1.0 : -1.0;
-        const scene::Camera turned = rotatedAbout(c, pivotKm, glm::angleAxis(rightDeg * kDegree, side * zenith));
+        const scene::Camera turned = rotatedAbout(c, pivotKm, glm::angleAxis(rightDeg * physics::kDegree, side * zenith));
         if (glm::length(turned.positionKm) >= minRadiusKm)
             c = turned;
     }
     if (upDeg != 0.0) {
         // About the camera's right r the camera moves at angle x d (-up): a negative angle raises it.
         const glm::dvec3 right = glm::normalize(glm::cross(c.forward, c.up));
-        const scene::Camera turned = rotatedAbout(c, pivotKm, glm::angleAxis(-upDeg * kDegree, right));
+        const scene::Camera turned = rotatedAbout(c, pivotKm, glm::angleAxis(-upDeg * physics::kDegree, right));
         if (glm::length(turned.positionKm) >= minRadiusKm)
             c = turned;
     }

@@ -1,8 +1,8 @@
 #include "components/airglow/airglow.h"
 
-#include "atmosphere/airmass_exact.h"
-#include "components/aurora/physics/colour.h"
-#include "components/aurora/physics/emission.h"
+#include "physics/atmosphere/airmass_exact.h"
+#include "physics/colour.h"
+#include "physics/emission_lines.h"
 #include "components/atmosphere/atmosphere.h"
 #include "gl/shader_program.h"
 #include "scene/ray_steps.h"
@@ -24,7 +24,7 @@ public:
         for (const Layer& l : s.layers) {
             const LayerProfile p = layerProfile(l);
             layers_.emplace_back(p.baseKm, p.upperScaleHeightKm, p.lowerScaleHeightKm, p.rayleighPerKm);
-            rgb_.emplace_back(aurora::lineLinearSrgbPerRayleigh(wavelengthNm(l.line), cieXyz(l.line)));
+            rgb_.emplace_back(physics::lineLinearSrgbPerRayleigh(wavelengthNm(l.line), cieXyz(l.line)));
         }
     }
     void setFrame(gl::Program& program, const cluster::FrameState&) override
@@ -49,7 +49,7 @@ public:
     {
         for (const Layer& l : s.layers) {
             profiles_.push_back(layerProfile(l));
-            rgb_.push_back(aurora::lineLinearSrgbPerRayleigh(wavelengthNm(l.line), cieXyz(l.line)));
+            rgb_.push_back(physics::lineLinearSrgbPerRayleigh(wavelengthNm(l.line), cieXyz(l.line)));
         }
     }
     f64::Ray shade(f64::Ray ray) const override
@@ -63,9 +63,9 @@ public:
             for (const glm::dvec2 part : {shell.first, shell.second}) {
                 if (!(part.x < part.y))
                     continue;
-                const double upper = exactAirmass(ray.origin, ray.direction, part.x, part.y, p.upperScaleHeightKm,
+                const double upper = physics::atmosphere::exactAirmass(ray.origin, ray.direction, part.x, part.y, p.upperScaleHeightKm,
                                                   radiusKm_ + base);
-                const double lower = exactAirmass(ray.origin, ray.direction, part.x, part.y, p.lowerScaleHeightKm,
+                const double lower = physics::atmosphere::exactAirmass(ray.origin, ray.direction, part.x, part.y, p.lowerScaleHeightKm,
                                                   radiusKm_ + base);
                 ray.radiance += rgb_[i] * f64::transmittanceTo(ray, part) * (p.rayleighPerKm * (upper - lower));
             }
@@ -114,7 +114,7 @@ public:
     std::vector<std::string> shaderModules() const override
     {
         // The airmass modules may also come from the atmosphere component: each is included once.
-        return {"atmosphere/airmass_common.glsl", "atmosphere/airmass_chapman.glsl",
+        return {"physics/atmosphere/airmass_common.glsl", "physics/atmosphere/airmass_chapman.glsl",
                 "components/airglow/airglow_layer.glsl", "components/airglow/airglow.glsl"};
     }
     std::string shaderShadeCall() const override { return "shadeAirglow(ray)"; }
@@ -155,9 +155,9 @@ double volumeEmission(const LayerProfile& p, double altitudeKm)
 double wavelengthNm(Line line)
 {
     switch (line) {
-    case Line::Green5577: return aurora::lineInfo(aurora::EmissionLine::Green5577).wavelengthNm;
+    case Line::Green5577: return physics::lineInfo(physics::EmissionLine::Green5577).wavelengthNm;
     case Line::Sodium5893: return 589.3; // the D2/D1 doublet 589.0/589.6 nm, its mean
-    case Line::Red6300: return aurora::lineInfo(aurora::EmissionLine::Red6300).wavelengthNm;
+    case Line::Red6300: return physics::lineInfo(physics::EmissionLine::Red6300).wavelengthNm;
     }
     return 0.0;
 }
@@ -165,11 +165,11 @@ double wavelengthNm(Line line)
 glm::dvec3 cieXyz(Line line)
 {
     switch (line) {
-    case Line::Green5577: return aurora::lineInfo(aurora::EmissionLine::Green5577).cieXyz;
+    case Line::Green5577: return physics::lineInfo(physics::EmissionLine::Green5577).cieXyz;
     // CIE 1931 2° at 589.3 nm, linear between the 5 nm table's 585 nm (0.9786, 0.8163, 0.0014)
     // and 590 nm (1.0263, 0.7570, 0.0011).
     case Line::Sodium5893: return glm::mix(glm::dvec3(0.9786, 0.8163, 0.0014), glm::dvec3(1.0263, 0.7570, 0.0011), 0.86);
-    case Line::Red6300: return aurora::lineInfo(aurora::EmissionLine::Red6300).cieXyz;
+    case Line::Red6300: return physics::lineInfo(physics::EmissionLine::Red6300).cieXyz;
     }
     return glm::dvec3(0.0);
 }

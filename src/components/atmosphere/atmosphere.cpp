@@ -1,6 +1,6 @@
 #include "components/atmosphere/atmosphere.h"
 
-#include "atmosphere/airmass_exact.h"
+#include "physics/atmosphere/airmass_exact.h"
 #include "gl/shader_program.h"
 #include "scene/ray_steps.h"
 #include "scene/scene.h"
@@ -32,7 +32,7 @@ public:
     {
         ray.atmosphere = f64::lowerShellSegment(ray, radiusKm_, s_.topKm);
         if (ray.atmosphere.x < ray.atmosphere.y) {
-            const double airmass = exactAirmass(ray.origin, ray.direction, ray.atmosphere.x, ray.atmosphere.y,
+            const double airmass = physics::atmosphere::exactAirmass(ray.origin, ray.direction, ray.atmosphere.x, ray.atmosphere.y,
                                                 s_.scaleHeightKm, radiusKm_);
             ray.transmittance = glm::exp(-s_.extinctionPerKm * airmass);
             ray.radiance += s_.skyGlow * (1.0 - ray.transmittance);
@@ -58,7 +58,7 @@ public:
     }
     std::vector<std::string> shaderModules() const override
     {
-        return {"atmosphere/airmass_common.glsl", "atmosphere/airmass_chapman.glsl",
+        return {"physics/atmosphere/airmass_common.glsl", "physics/atmosphere/airmass_chapman.glsl",
                 "components/atmosphere/atmosphere.glsl"};
     }
     std::string shaderShadeCall() const override { return "shadeAtmosphere(ray)"; }

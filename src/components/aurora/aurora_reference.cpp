@@ -1,9 +1,9 @@
 #include "components/aurora/aurora_reference.h"
 
-#include "components/aurora/physics/colour.h"
+#include "physics/colour.h"
 #include "components/aurora/physics/deposition_table.h"
 #include "components/aurora/physics/emission.h"
-#include "common/constants.h"
+#include "physics/constants.h"
 #include "scene/ray_steps.h"
 
 namespace aurorawall::f64 {
@@ -38,7 +38,7 @@ AuroraReference::AuroraReference(const Settings& aurora, double planetRadiusKm, 
         curtains_.push_back(std::move(c));
     }
     for (int line = 0; line < physics::kLineCount; ++line)
-        lineRgb_[line] = physics::lineLinearSrgbPerRayleigh(static_cast<physics::EmissionLine>(line));
+        lineRgb_[line] = aurorawall::physics::lineLinearSrgbPerRayleigh(static_cast<aurorawall::physics::EmissionLine>(line));
 }
 
 // The nearest point of curtain `c` to footprint direction `unit` and the curtain coordinates
@@ -56,7 +56,7 @@ AuroraReference::Nearest AuroraReference::nearestOn(const Curtain& c, glm::dvec3
     const double nearestVertex = std::acos(std::clamp(maxDot, -1.0, 1.0));
     // 1 km of slack for the arclength-based segment length the shader's projection uses.
     const double limit = nearestVertex + (0.5 * c.maxSegmentKm + 1.0) / R;
-    const double minDot = limit >= kPi ? -2.0 : std::cos(limit);
+    const double minDot = limit >= aurorawall::physics::kPi ? -2.0 : std::cos(limit);
     for (size_t j = 0; j + 1 < c.points.size(); ++j) {
         const glm::dvec3& a = c.points[j];
         const glm::dvec3& b = c.points[j + 1];

@@ -1,7 +1,7 @@
 #include "components/aurora/curtain_build.h"
 
 #include "components/aurora/physics/curtain_geometry.h"
-#include "common/constants.h"
+#include "physics/constants.h"
 
 #include <algorithm>
 #include <cmath>
@@ -28,7 +28,7 @@ physics::FootprintMapSpec capAround(const std::vector<physics::CurtainPolyline>&
     const glm::dvec2 latLon = physics::latLonFromUnit(centre);
     spec.centreLatitudeDeg = latLon.x;
     spec.centreLongitudeDeg = latLon.y;
-    spec.angularRadiusDeg = std::min(90.0, (radius + extraKm / planetRadiusKm) / kDegree + 0.5);
+    spec.angularRadiusDeg = std::min(90.0, (radius + extraKm / planetRadiusKm) / aurorawall::physics::kDegree + 0.5);
     spec.size = size;
     return spec;
 }

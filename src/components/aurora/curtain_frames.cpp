@@ -1,7 +1,7 @@
 #include "components/aurora/curtain_frames.h"
 
 #include "components/aurora/physics/curtain_geometry.h"
-#include "common/constants.h"
+#include "physics/constants.h"
 
 #include <algorithm>
 #include <cmath>
@@ -27,7 +27,7 @@ CurtainState curtainAt(const Curtain& curtain, double timeS, double stripLengthK
     // Pulsating aurora: a raised-cosine dimming with the given period; the phase is reduced in double.
     if (curtain.pulsationPeriodS > 0.0) {
         const double cycle = std::fmod(timeS / curtain.pulsationPeriodS, 1.0);
-        s.energyFluxErgPerCm2S *= 1.0 - curtain.pulsationDepth * 0.5 * (1.0 - std::cos(2.0 * kPi * cycle));
+        s.energyFluxErgPerCm2S *= 1.0 - curtain.pulsationDepth * 0.5 * (1.0 - std::cos(2.0 * aurorawall::physics::kPi * cycle));
     }
     const double offset = std::fmod(curtain.driftKmPerS * timeS, stripLengthKm);
     s.detailOffsetKm = offset < 0.0 ? offset + stripLengthKm : offset;

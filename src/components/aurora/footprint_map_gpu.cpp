@@ -1,7 +1,7 @@
 #include "components/aurora/footprint_map_gpu.h"
 
 #include "components/aurora/aurora.h"
-#include "common/constants.h"
+#include "physics/constants.h"
 #include "gl/functions.h"
 
 #include <algorithm>
@@ -105,7 +105,7 @@ void FootprintMapGpu::build(const physics::FootprintMap& frame, const gl::Textur
     program_.set("uCoarseSize", coarse);
     program_.set("uPlanetRadiusKm", float(frame.planetRadiusKm));
     program_.set("uBandKm", float(frame.exactWithinKm));
-    const double bandChord = 2.0 * std::sin(0.5 * std::min(frame.exactWithinKm / frame.planetRadiusKm, kPi));
+    const double bandChord = 2.0 * std::sin(0.5 * std::min(frame.exactWithinKm / frame.planetRadiusKm, aurorawall::physics::kPi));
     program_.set("uBandChord2", float(bandChord * bandChord));
     program_.set("uBandBox", physics::footprintBandBoxTexels(frame, frame.exactWithinKm));
     program_.set("uCoarseSlackKm", float(physics::footprintCoarseSlackKm(frame)));

@@ -1,6 +1,6 @@
 #include "components/fluid_detail/curtain_detail.h"
 
-#include "common/constants.h"
+#include "physics/constants.h"
 #include "components/fluid_detail/cached_flux_frames.h"
 #include "io/table_cache.h"
 
@@ -44,7 +44,7 @@ DetailShape detailShape(const fluid::CurtainDetailSpec& spec, const fluid::FluxF
     d.fluxWidthKm = spec.fluxWidthKm;
     d.setFrameReaches(frameReachesKm(frames, spec.stripWidthKm));
     d.stripLengthKm = spec.stripLengthKm;
-    d.peakScale = spec.fluxWidthKm * std::sqrt(2.0 * kPi);
+    d.peakScale = spec.fluxWidthKm * std::sqrt(2.0 * physics::kPi);
     return d;
 }
 

@@ -1,11 +1,11 @@
-#include "common/constants.h"
+#include "physics/constants.h"
 #include "components/glory/glory.h"
 
-#include "atmosphere/airmass_exact.h"
+#include "physics/atmosphere/airmass_exact.h"
 #include "components/atmosphere/atmosphere.h"
 #include "components/glory/mie/mie_coefficients.h"
 #include "components/glory/mie/mie_scattering.h"
-#include "components/glory/optics/colour_matching.h"
+#include "physics/colour_matching.h"
 #include "components/glory/optics/water.h"
 #include "gl/shader_program.h"
 #include "gl/texture.h"
@@ -29,7 +29,7 @@ using namespace aurorawall::f64;
 #include "components/glory/cloud_deck.glsl"
 #include "components/glory/glory_angle.glsl"
 #include "render/angle.glsl"
-#include "render/colour.glsl"
+#include "physics/colour.glsl"
 } // namespace f64
 
 namespace {
@@ -41,10 +41,10 @@ glm::dvec3 lightRgb(const optics::LightSource& light)
 {
     const optics::LightSpectrum spectrum = light.spectrum();
     glm::dvec3 xyz(0.0);
-    for (double nm = optics::kCieFirstNm; nm <= optics::kCieLastNm; nm += 1.0)
-        xyz += ((nm == optics::kCieFirstNm || nm == optics::kCieLastNm) ? 0.5 : 1.0) * spectrum(nm) *
-               optics::colourMatching(nm);
-    return f64::desaturateIntoGamut(f64::xyzToLinearSrgb(xyz * optics::kLumensPerWatt));
+    for (double nm = physics::kCieFirstNm; nm <= physics::kCieLastNm; nm += 1.0)
+        xyz += ((nm == physics::kCieFirstNm || nm == physics::kCieLastNm) ? 0.5 : 1.0) * spectrum(nm) *
+               physics::colourMatching(nm);
+    return f64::desaturateIntoGamut(f64::xyzToLinearSrgb(xyz * physics::kLumensPerWatt));
 }
 
 std::string tableKey(const Settings& s)
@@ -88,7 +88,7 @@ std::vector<float> wavelengthSamples(const optics::PhaseTable& table, const opti
     const double first = nm.front(), last = nm.back(), range = last - first;
     std::vector<double> density(count), cumulative(count, 0.0);
     for (size_t w = 0; w < count; ++w) {
-        const glm::dvec3 cmf = optics::colourMatching(nm[w]);
+        const glm::dvec3 cmf = physics::colourMatching(nm[w]);
         density[w] = importance ? spectrum(nm[w]) * (cmf.x + cmf.y + cmf.z) : 1.0;
         if (w > 0)
             cumulative[w] = cumulative[w - 1] + 0.5 * (density[w] + density[w - 1]) * (nm[w] - nm[w - 1]);
@@ -107,8 +107,8 @@ std::vector<float> wavelengthSamples(const optics::PhaseTable& table, const opti
         const double s = 2.0 * need / (a + std::sqrt(std::max(a * a + 2.0 * b * need, 0.0)));
         const double lambda = std::clamp(nm[w] + s, first, last);
         const double pdf = (a + b * (lambda - nm[w])) / total;
-        const glm::dvec3 weight = optics::kLumensPerWatt * spectrum(lambda) *
-                                  optics::colourMatching(lambda) / (4.0 * kPi * pdf);
+        const glm::dvec3 weight = physics::kLumensPerWatt * spectrum(lambda) *
+                                  physics::colourMatching(lambda) / (4.0 * physics::kPi * pdf);
         const double coordinate = ((lambda - first) / range * double(count - 1) + 0.5) / double(count);
         texels.insert(texels.end(), {float(coordinate), float(weight.x), float(weight.y), float(weight.z)});
     }
@@ -151,7 +151,7 @@ public:
         program.set("uDeckAsymmetry", float(asymmetry_));
         program.set("uGloryLightDirection", glm::vec3(s_.lightDirection));
         program.set("uGloryLightRgb", glm::vec3(lightRgb_));
-        program.set("uGloryAngleSpans", glm::vec3(float(g.glorySpanRad), float(kPi - g.glorySpanRad - g.forwardSpanRad),
+        program.set("uGloryAngleSpans", glm::vec3(float(g.glorySpanRad), float(physics::kPi - g.glorySpanRad - g.forwardSpanRad),
                                                   float(g.forwardSpanRad)));
         program.set("uGloryAngleCounts", glm::vec3(float(g.gloryCount), float(g.middleCount), float(g.forwardCount)));
         program.set("uGlorySampling", static_cast<int>(s_.sampling));
@@ -232,7 +232,7 @@ private:
         if (air_.x <= 0.0)
             return glm::dvec3(1.0);
         const glm::dvec2 top = f64::raySphere(p, s_.lightDirection, radiusKm_ + air_.x, altitude - air_.x);
-        const double airmass = exactAirmass(p, s_.lightDirection, 0.0, std::max(top.y, 0.0), air_.y, radiusKm_);
+        const double airmass = physics::atmosphere::exactAirmass(p, s_.lightDirection, 0.0, std::max(top.y, 0.0), air_.y, radiusKm_);
         return glm::exp(-extinctionPerKm_ * airmass);
     }
 
@@ -279,13 +279,13 @@ public:
         s.effectiveRadiusUm = t.number("effective_radius_um", 0.5, 50.0, s.effectiveRadiusUm);
         s.effectiveVariance = t.number("effective_variance", 0.0, 0.3, s.effectiveVariance);
         optics::GloryTableSpec& table = s.table;
-        table.angles.glorySpanRad = t.number("glory_span_deg", 1.0, 90.0, table.angles.glorySpanRad * 180.0 / kPi) * kPi / 180.0;
+        table.angles.glorySpanRad = t.number("glory_span_deg", 1.0, 90.0, table.angles.glorySpanRad * 180.0 / physics::kPi) * physics::kPi / 180.0;
         table.angles.gloryCount = t.integer("glory_angles", 16, 8001, table.angles.gloryCount);
         table.angles.middleCount = t.integer("middle_angles", 16, 4000, table.angles.middleCount);
         table.angles.forwardSpanRad =
-            t.number("forward_span_deg", 1.0, 90.0, table.angles.forwardSpanRad * 180.0 / kPi) * kPi / 180.0;
+            t.number("forward_span_deg", 1.0, 90.0, table.angles.forwardSpanRad * 180.0 / physics::kPi) * physics::kPi / 180.0;
         table.angles.forwardCount = t.integer("forward_angles", 16, 8000, table.angles.forwardCount);
-        if (table.angles.glorySpanRad + table.angles.forwardSpanRad > 0.9 * kPi)
+        if (table.angles.glorySpanRad + table.angles.forwardSpanRad > 0.9 * physics::kPi)
             t.fail("forward_span_deg", "glory_span_deg + forward_span_deg must leave at least 18 degrees between them");
         table.wavelengthCount = t.integer("table_wavelengths", 2, 401, table.wavelengthCount);
         table.sizeParameterStep = t.number("size_parameter_step", 0.005, 2.0, table.sizeParameterStep);
@@ -300,7 +300,7 @@ public:
     }
     std::vector<std::string> shaderModules() const override
     {
-        return {"render/angle.glsl", "render/colour.glsl", "components/glory/glory_angle.glsl",
+        return {"render/angle.glsl", "physics/colour.glsl", "components/glory/glory_angle.glsl",
                 "components/glory/cloud_deck.glsl", "components/glory/glory.glsl"};
     }
     std::string shaderGeometryCall() const override { return "boundByCloudDeck(ray)"; }
@@ -333,8 +333,8 @@ optics::GloryTableSpec referenceTableSpec(const optics::GloryTableSpec& spec)
     fine.angles.middleCount = 2 * spec.angles.middleCount;
     fine.angles.forwardCount = 2 * spec.angles.forwardCount;
     fine.wavelengthCount = 81;
-    fine.firstNm = optics::kCieFirstNm;
-    fine.lastNm = optics::kCieLastNm;
+    fine.firstNm = physics::kCieFirstNm;
+    fine.lastNm = physics::kCieLastNm;
     fine.sizeParameterStep = 0.5 * spec.sizeParameterStep;
     return fine;
 }
@@ -359,7 +359,7 @@ GloryTables gloryTables(const Settings& s)
 double deckAsymmetry(const Settings& s)
 {
     constexpr double kGreenNm = 550.0;
-    const double x = 2.0 * kPi * s.effectiveRadiusUm / (kGreenNm * 1e-3);
+    const double x = 2.0 * physics::kPi * s.effectiveRadiusUm / (kGreenNm * 1e-3);
     return mie::efficiencies(mie::mieCoefficients(x, {optics::waterRefractiveIndex(kGreenNm), 0.0})).asymmetry;
 }
 

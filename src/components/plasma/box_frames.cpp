@@ -1,4 +1,4 @@
-#include "common/constants.h"
+#include "physics/constants.h"
 #include "components/plasma/box_frames.h"
 
 #include "components/plasma/simulation/electrostatic_pic.h"
@@ -23,7 +23,7 @@ constexpr int kBoxFormatVersion = 1;
 // Every field of the spec must be in the key: a new field changes the size and stops the build here.
 static_assert(sizeof(BoxFramesSpec) == 64, "add the new BoxFramesSpec field to boxFramesCacheKey");
 
-double wavenumber(const BoxFramesSpec& s) { return 2.0 * kPi * s.seedMode / s.sideM; }
+double wavenumber(const BoxFramesSpec& s) { return 2.0 * physics::kPi * s.seedMode / s.sideM; }
 
 std::vector<char> boxFramesBytes(const BoxFrames& f)
 {
@@ -46,7 +46,7 @@ pic::Particles boxElectrons(const BoxFramesSpec& s)
             for (int iy = 0; iy < n; ++iy)
                 for (int ix = 0; ix < n; ++ix) {
                     const double x = (ix + 0.5) * spacing, y = (iy + 0.5) * spacing;
-                    const double phase = kPi * std::sin(2.0 * kPi * x / s.sideM) * std::sin(2.0 * kPi * y / s.sideM);
+                    const double phase = physics::kPi * std::sin(2.0 * physics::kPi * x / s.sideM) * std::sin(2.0 * physics::kPi * y / s.sideM);
                     double z = (iz + 0.5) * spacing;
                     z += s.seedAmplitudeM * std::sin(k * z + phase);
                     z -= s.sideM * std::floor(z / s.sideM);

@@ -2,7 +2,7 @@
 
 #include "common/glsl.h"
 #include "components/airglow/airglow.h"
-#include "components/aurora/physics/colour.h"
+#include "physics/colour.h"
 #include "io/table_cache.h"
 #include "scene/ray_steps.h"
 #include "scene/scene.h"
@@ -41,7 +41,7 @@ public:
         axes_ = glm::dmat3(local.east, local.north, local.up);
         const airglow::Line line = airglow::Line::Green5577;
         rgbPerDensityKm_ =
-            aurorawall::aurora::lineLinearSrgbPerRayleigh(airglow::wavelengthNm(line), airglow::cieXyz(line)) *
+            aurorawall::physics::lineLinearSrgbPerRayleigh(airglow::wavelengthNm(line), airglow::cieXyz(line)) *
             plasma.boxRayleighPerKm;
     }
 

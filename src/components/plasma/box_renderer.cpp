@@ -2,7 +2,7 @@
 
 #include "common/data_dir.h"
 #include "components/airglow/airglow.h"
-#include "components/aurora/physics/colour.h"
+#include "physics/colour.h"
 #include "gl/functions.h"
 #include "gl/shader_program.h"
 #include "io/table_cache.h"
@@ -55,7 +55,7 @@ BoxRenderer::BoxRenderer(const Settings& plasma, const aurora::Settings& aurora,
     axes_ = glm::dmat3(local.east, local.north, local.up);
     const airglow::Line line = airglow::Line::Green5577;
     const glm::dvec3 green =
-        aurorawall::aurora::lineLinearSrgbPerRayleigh(airglow::wavelengthNm(line), airglow::cieXyz(line));
+        aurorawall::physics::lineLinearSrgbPerRayleigh(airglow::wavelengthNm(line), airglow::cieXyz(line));
     rgbPerDensityKm_ = glm::vec3(green * plasma.boxRayleighPerKm);
 
     float peak = 0.0f;

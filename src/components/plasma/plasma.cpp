@@ -1,4 +1,4 @@
-#include "common/constants.h"
+#include "physics/constants.h"
 #include "components/plasma/plasma.h"
 
 #include "components/plasma/box_reference.h"
@@ -49,9 +49,9 @@ void readBox(const config::TableReader& t, Settings& p)
     p.boxSeedMode = t.integer("box_seed_mode", 1, p.boxCells / 4, p.boxSeedMode);
     // k a < 1: the seed's displacement never reorders the electrons along z.
     p.boxSeedAmplitudeKm =
-        t.number("box_seed_amplitude_km", 0.0, 0.99 * p.boxSideKm / (2.0 * kPi * p.boxSeedMode), p.boxSeedAmplitudeKm);
+        t.number("box_seed_amplitude_km", 0.0, 0.99 * p.boxSideKm / (2.0 * physics::kPi * p.boxSeedMode), p.boxSeedAmplitudeKm);
     const double beamSpeed = boxBeamSpeed(boxFramesSpec(p));
-    if (beamSpeed > 0.3 * 299792458.0)
+    if (beamSpeed > 0.3 * physics::kSpeedOfLight)
         t.fail("box_seed_mode", "the beams' speed " + number(beamSpeed) +
                                     " m/s exceeds 0.3 c, beyond this non-relativistic model (raise box_seed_mode "
                                     "or lower box_side_km)");

@@ -1,6 +1,6 @@
 #include "components/sky/sky.h"
 
-#include "common/constants.h"
+#include "physics/constants.h"
 #include "gl/shader_program.h"
 #include "scene/scene.h"
 
@@ -10,7 +10,7 @@ namespace aurorawall::components::sky {
 
 namespace {
 
-constexpr int kMaxLights = 8; // SKY_MAX_LIGHTS of shaders/atmosphere/sky.glsl
+constexpr int kMaxLights = 8; // SKY_MAX_LIGHTS of shaders/physics/atmosphere/sky.glsl
 
 class Renderer : public scene::ComponentRenderer {
 public:
@@ -63,7 +63,7 @@ public:
     }
     std::vector<std::string> shaderModules() const override
     {
-        return {"atmosphere/sky.glsl", "components/sky/sky.glsl"};
+        return {"physics/atmosphere/sky.glsl", "components/sky/sky.glsl"};
     }
     std::string shaderShadeCall() const override { return "shadeSky(ray)"; }
     // The light the lower atmosphere scatters: after its extinction (it needs the atmosphere).

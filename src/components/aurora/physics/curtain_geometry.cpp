@@ -1,6 +1,6 @@
 #include "components/aurora/physics/curtain_geometry.h"
 
-#include "common/constants.h"
+#include "physics/constants.h"
 #include "common/glsl.h"
 
 #include <algorithm>
@@ -84,7 +84,7 @@ constexpr int kPanels = 32;
 // Inverting x = −cos φ cos λ, y = −cos φ sin λ, z = sin φ: φ = atan2(z, √(x² + y²)), λ = atan2(−y, −x).
 glm::dvec2 latLonFromUnit(const glm::dvec3& unit)
 {
-    return {std::atan2(unit.z, std::hypot(unit.x, unit.y)) / kDegree, std::atan2(-unit.y, -unit.x) / kDegree};
+    return {std::atan2(unit.z, std::hypot(unit.x, unit.y)) / physics::kDegree, std::atan2(-unit.y, -unit.x) / physics::kDegree};
 }
 
 // Each span between control points is split into m = ceil(L/spacing) pieces of equal spline arclength L/m.
@@ -102,7 +102,7 @@ CurtainPolyline sampleCurtain(const std::vector<glm::dvec2>& latLonDeg, double p
         p[k + 1] = unitFromLatLon(latLonDeg[k].x, latLonDeg[k].y);
     for (int k = 1; k < n; ++k) {
         const double angle = angleBetween(p[k], p[k + 1]);
-        if (!(angle > 0.0) || !(angle < 0.5 * kPi))
+        if (!(angle > 0.0) || !(angle < 0.5 * physics::kPi))
             throw std::invalid_argument("sampleCurtain: consecutive control points must be distinct and less than 90° apart");
     }
     p[0] = 2.0 * p[1] - p[2];
@@ -162,7 +162,7 @@ std::vector<glm::dvec2> interpolateControlPoints(const std::vector<glm::dvec2>& 
     for (size_t k = 0; k < a.size(); ++k) {
         const glm::dvec3 pa = unitFromLatLon(a[k].x, a[k].y), pb = unitFromLatLon(b[k].x, b[k].y);
         const double theta = angleBetween(pa, pb);
-        if (!(theta < kPi - 1e-9))
+        if (!(theta < physics::kPi - 1e-9))
             throw std::invalid_argument("interpolateControlPoints: a control point moves to its antipode");
         const glm::dvec3 p = theta == 0.0 ? pa
                                           : (std::sin((1.0 - w) * theta) * pa + std::sin(w * theta) * pb) / std::sin(theta);

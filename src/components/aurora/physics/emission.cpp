@@ -7,14 +7,6 @@
 namespace aurorawall::aurora {
 namespace {
 
-// CIE 1931 2° colour-matching values (x̄, ȳ, z̄) at the lines' wavelengths, 427.8, 557.7, 630.0 and 670 nm (CIE 015).
-const LineInfo kLines[kLineCount] = {
-    {"427.8nm", 427.8, {0.25600, 0.00960, 1.24420}},
-    {"557.7nm", 557.7, {0.55625, 0.99862, 0.00464}},
-    {"630.0nm", 630.0, {0.64240, 0.26500, 0.00005}},
-    {"N2-1PG", 670.0, {0.08740, 0.03200, 0.00000}},
-};
-
 // 427.8 nm photons per keV deposited in the molecular share, calibrated so that a 5 keV beam gives
 // the classic 213 R per erg cm⁻² s⁻¹ (Rees & Luckey 1974): 0.341 photons/keV over the whole column.
 constexpr double kBluePhotonsPerKeV = 0.4213;
@@ -29,11 +21,6 @@ constexpr double kO1DPerKeV = 8.0;
 constexpr double kRedBranching = 5.63e-3 / 7.45e-3; // A(630.0)/A(1D) (NIST ASD)
 
 } // namespace
-
-const LineInfo& lineInfo(EmissionLine line)
-{
-    return kLines[static_cast<int>(line)];
-}
 
 double oxygenTransferFraction(double altitudeKm)
 {

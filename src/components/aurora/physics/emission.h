@@ -2,25 +2,17 @@
 // Auroral emissions: altitude-dependent yields (photons per keV deposited) of the four emissions the
 // renderer draws, and their volume and column rates. See docs/aurora-physics.md, "Emission".
 #include "components/aurora/physics/lazarev.h"
+#include "physics/emission_lines.h"
 
 #include <glm/glm.hpp>
 
 namespace aurorawall::aurora {
 
-enum class EmissionLine {
-    Blue4278 = 0,        // N2+ first negative (0,1) band, 427.8 nm, prompt
-    Green5577 = 1,       // O(1S → 1D), 557.7 nm, τ ≈ 0.75 s
-    Red6300 = 2,         // O(1D → 3P), 630.0 nm, τ ≈ 134 s
-    N2FirstPositive = 3, // N2 B → A first positive group, visible red bands, prompt (drawn at 670 nm)
-};
-inline constexpr int kLineCount = 4;
-
-struct LineInfo {
-    const char* name;
-    double wavelengthNm;
-    glm::dvec3 cieXyz; // CIE 1931 2° colour matching functions (x̄, ȳ, z̄) at the wavelength
-};
-const LineInfo& lineInfo(EmissionLine line);
+// The lines themselves are shared physics (src/physics/emission_lines.h).
+using physics::EmissionLine;
+using physics::kLineCount;
+using physics::LineInfo;
+using physics::lineInfo;
 
 // Fraction of N2(A) excitation energy transferred to O (producing O(1S)) rather than lost to O2:
 // f = k_O n_O / (k_O n_O + k_O2 n_O2), k_O = 2.8e-11, k_O2 = 2.5e-12 cm³/s (Piper et al. 1981).

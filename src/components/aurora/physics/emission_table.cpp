@@ -1,6 +1,6 @@
 #include "components/aurora/physics/emission_table.h"
 
-#include "components/aurora/physics/colour.h"
+#include "physics/colour.h"
 #include "common/glsl.h"
 
 #include <algorithm>

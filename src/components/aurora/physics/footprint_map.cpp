@@ -1,6 +1,6 @@
 #include "components/aurora/physics/footprint_map.h"
 
-#include "common/constants.h"
+#include "physics/constants.h"
 #include "common/glsl.h"
 
 #include <algorithm>
@@ -136,7 +136,7 @@ Band exactBand(const Seeds& seeds, const FootprintMap& map, double withinKm)
     Band band{std::vector<int>(texels, none), std::vector<int>(texels, none), std::vector<int>(texels, -1), {}};
     const double R = map.planetRadiusKm;
     const double within = withinKm / R;
-    const double cosWithin = std::cos(std::min(within, kPi));
+    const double cosWithin = std::cos(std::min(within, physics::kPi));
     const int box = footprintBandBoxTexels(map, withinKm);
     for (int s = 0; s < none; ++s) {
         const glm::dvec3& seed = seeds.direction[s];
@@ -199,9 +199,9 @@ FootprintMap footprintMapFrame(const std::vector<CurtainPolyline>& curtains, con
     map.planetRadiusKm = planetRadiusKm;
     map.centre = unitFromLatLon(spec.centreLatitudeDeg, spec.centreLongitudeDeg);
     // East = ∂P/∂λ / cos φ = (sin λ, −cos λ, 0) for P = unitFromLatLon(φ, λ); defined at the poles too.
-    const double lon = spec.centreLongitudeDeg * kPi / 180.0;
+    const double lon = spec.centreLongitudeDeg * physics::kPi / 180.0;
     map.east = glm::dvec3(std::sin(lon), -std::cos(lon), 0.0);
-    map.angularRadius = spec.angularRadiusDeg * kPi / 180.0;
+    map.angularRadius = spec.angularRadiusDeg * physics::kPi / 180.0;
 
     double longestArc = 0.0; // radians between consecutive points of a curtain
     for (size_t c = 0; c < curtains.size(); ++c) {

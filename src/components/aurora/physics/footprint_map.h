@@ -32,7 +32,7 @@
 // Outside the cap (θ > Θ) the map is not read: footprintMapOutsideKm = R(θ − Θ) > 0 is the bound, because
 // every curtain point lies inside the cap (the build checks this) and the cap is convex for Θ ≤ 90°.
 #include "components/aurora/physics/curtain_geometry.h"
-#include "common/constants.h"
+#include "physics/constants.h"
 
 #include <glm/glm.hpp>
 
@@ -108,7 +108,7 @@ int footprintBandBoxTexels(const FootprintMap& map, double withinKm);
 int footprintCoarseMapSize(const FootprintMap& map);
 double footprintCoarseSlackKm(const FootprintMap& map);
 // The distance stored without curtains: half the circumference, nearer than any curtain could be.
-inline double footprintNoCurtainKm(const FootprintMap& map) { return kPi * map.planetRadiusKm; }
+inline double footprintNoCurtainKm(const FootprintMap& map) { return physics::kPi * map.planetRadiusKm; }
 
 // The map of the given curtains (all with planetRadiusKm). Throws std::invalid_argument for a bad spec,
 // a curtain point outside the cap, 256 curtains or more, or 65536 points or more in a curtain.

@@ -1,6 +1,6 @@
 #include "components/fluid_detail/simulation/curtain_detail.h"
 
-#include "common/constants.h"
+#include "physics/constants.h"
 
 #include <algorithm>
 #include <cmath>
@@ -74,20 +74,20 @@ CurtainFlow::CurtainFlow(const CurtainDetailSpec& spec)
             velocity_.u(i, j) = u;
     }
 
-    const int modes = std::max(1, int(lx / (2.0 * kPi * delta)));
+    const int modes = std::max(1, int(lx / (2.0 * physics::kPi * delta)));
     std::vector<double> amplitude(modes);
     std::vector<double> phase(modes);
     for (int m = 0; m < modes; ++m) {
         const std::uint64_t key = (std::uint64_t(spec.seed) << 32) | std::uint64_t(m);
         amplitude[m] = 0.5 + 0.5 * hashUnit(2 * key);
-        phase[m] = 2.0 * kPi * hashUnit(2 * key + 1);
+        phase[m] = 2.0 * physics::kPi * hashUnit(2 * key + 1);
     }
     const double scale = spec.perturbation * U / std::sqrt(double(modes));
     for (int i = 0; i < spec.nx; ++i) {
         const double x = (i + 0.5) * hx;
         double sum = 0.0;
         for (int m = 0; m < modes; ++m)
-            sum += amplitude[m] * std::sin(2.0 * kPi * (m + 1) * x / lx + phase[m]);
+            sum += amplitude[m] * std::sin(2.0 * physics::kPi * (m + 1) * x / lx + phase[m]);
         for (int j = 0; j < spec.ny; ++j) {
             const double y = j * hy - 0.5 * ly;
             const double envelope = std::exp(-(y / (2.0 * delta)) * (y / (2.0 * delta)));

@@ -1,6 +1,6 @@
 #include "components/fluid_detail/simulation/fft_poisson.h"
 
-#include "common/constants.h"
+#include "physics/constants.h"
 
 #include <fftw3.h>
 
@@ -60,9 +60,9 @@ FftPoisson::FftPoisson(int nx, int ny, double hx, double hy) : plans_(std::make_
     p.inverseEigenvalue.resize(modes);
     const double n = double(nx) * double(ny);
     for (int ky = 0; ky < ny; ++ky) {
-        const double sy = std::sin(kPi * ky / ny);
+        const double sy = std::sin(physics::kPi * ky / ny);
         for (int kx = 0; kx < half; ++kx) {
-            const double sx = std::sin(kPi * kx / nx);
+            const double sx = std::sin(physics::kPi * kx / nx);
             const double lambda = -4.0 * sx * sx / (hx * hx) - 4.0 * sy * sy / (hy * hy);
             p.inverseEigenvalue[std::size_t(ky) * half + kx] = kx == 0 && ky == 0 ? 0.0 : 1.0 / (lambda * n);
         }

@@ -1,6 +1,6 @@
 #include "components/glory/mie/phase_function.h"
 
-#include "common/constants.h"
+#include "physics/constants.h"
 #include "components/glory/mie/mie_scattering.h"
 
 #include <boost/math/quadrature/gauss.hpp>
@@ -31,7 +31,7 @@ struct Integrand {
             const Amplitudes s = amplitudesAtCosine(c, cosines[j]);
             values[j] = density * 0.5 * (std::norm(s.s1) + std::norm(s.s2));
         }
-        values.back() = density * kPi * radiusUm * radiusUm * efficiencies(c).scattering;
+        values.back() = density * physics::kPi * radiusUm * radiusUm * efficiencies(c).scattering;
         return values;
     }
 };
@@ -84,7 +84,7 @@ PhaseFunction singleSizePhaseFunction(double x, double radiusUm, RefractiveIndex
     PhaseFunction p;
     p.anglesRad = anglesRad;
     p.errorEstimate.assign(anglesRad.size(), 0.0);
-    p.scatteringCrossSectionUm2 = kPi * radiusUm * radiusUm * qsca;
+    p.scatteringCrossSectionUm2 = physics::kPi * radiusUm * radiusUm * qsca;
     p.mieEvaluations = 1;
     // 4π S11/(k² πr² Qsca) = 4 S11/(x² Qsca).
     for (double theta : anglesRad) {
@@ -100,7 +100,7 @@ PhaseFunction sizeAveragedPhaseFunction(const DropSizeDistribution& drops, doubl
                                         const std::vector<double>& anglesRad, double relativeTolerance, int maxPanels)
 {
     if (!(wavelengthUm > 0.0)) throw std::invalid_argument("wavelength must be > 0");
-    const double wavenumber = 2.0 * kPi / wavelengthUm;
+    const double wavenumber = 2.0 * physics::kPi / wavelengthUm;
     if (drops.isSingleSize())
         return singleSizePhaseFunction(wavenumber * drops.effectiveRadiusUm(), drops.effectiveRadiusUm(), index,
                                        anglesRad);
@@ -156,7 +156,7 @@ PhaseFunction sizeAveragedPhaseFunction(const DropSizeDistribution& drops, doubl
     const double crossSectionRelativeError = error.back() / crossSection;
     p.scatteringCrossSectionUm2 = crossSection;
     for (size_t j = 0; j < anglesRad.size(); ++j) {
-        const double value = 4.0 * kPi * total[j] / (wavenumber * wavenumber * crossSection);
+        const double value = 4.0 * physics::kPi * total[j] / (wavenumber * wavenumber * crossSection);
         p.value.push_back(value);
         p.errorEstimate.push_back(value * (error[j] / total[j] + crossSectionRelativeError));
     }

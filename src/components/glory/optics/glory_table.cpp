@@ -1,11 +1,11 @@
-#include "common/constants.h"
+#include "physics/constants.h"
 #include "components/glory/optics/glory_table.h"
 
 #include "common/glsl.h"
-#include "components/aurora/physics/colour.h"
+#include "physics/colour.h"
 #include "components/glory/mie/mie_coefficients.h"
 #include "components/glory/mie/mie_scattering.h"
-#include "components/glory/optics/colour_matching.h"
+#include "physics/colour_matching.h"
 #include "components/glory/optics/water.h"
 
 #include <boost/math/quadrature/gauss.hpp>
@@ -83,7 +83,7 @@ double addDrop(double x, double n, const AngularFunctions& f, double weight, std
 long long phaseRow(const mie::DropSizeDistribution& drops, double wavelengthNm, const AngularFunctions& f,
                    double sizeParameterStep, double* row)
 {
-    const double k = 2.0 * kPi / (wavelengthNm * 1e-3); // µm⁻¹
+    const double k = 2.0 * physics::kPi / (wavelengthNm * 1e-3); // µm⁻¹
     const double n = waterRefractiveIndex(wavelengthNm);
     std::vector<double> s11(size_t(f.angles), 0.0), work;
     if (drops.isSingleSize()) {
@@ -104,10 +104,10 @@ long long phaseRow(const mie::DropSizeDistribution& drops, double wavelengthNm, 
         if (weight == 0.0)
             continue;
         const double qsca = addDrop(k * r, n, f, weight, s11, work);
-        crossSection += weight * kPi * r * r * qsca;
+        crossSection += weight * physics::kPi * r * r * qsca;
     }
     for (int a = 0; a < f.angles; ++a)
-        row[a] = 4.0 * kPi * s11[size_t(a)] / (k * k * crossSection);
+        row[a] = 4.0 * physics::kPi * s11[size_t(a)] / (k * k * crossSection);
     return intervals + 1;
 }
 
@@ -115,7 +115,7 @@ long long phaseRow(const mie::DropSizeDistribution& drops, double wavelengthNm, 
 
 double AngleGrid::angle(int i) const
 {
-    const double middleSpan = kPi - glorySpanRad - forwardSpanRad;
+    const double middleSpan = physics::kPi - glorySpanRad - forwardSpanRad;
     if (i < gloryCount)
         return glorySpanRad * i / (gloryCount - 1);
     if (i < gloryCount + middleCount)
@@ -125,7 +125,7 @@ double AngleGrid::angle(int i) const
 
 double AngleGrid::index(double gammaRad) const
 {
-    return shared::gloryAngleIndex(gammaRad, {glorySpanRad, kPi - glorySpanRad - forwardSpanRad, forwardSpanRad},
+    return shared::gloryAngleIndex(gammaRad, {glorySpanRad, physics::kPi - glorySpanRad - forwardSpanRad, forwardSpanRad},
                                    {gloryCount, middleCount, forwardCount});
 }
 
@@ -159,7 +159,7 @@ PhaseTable emptyPhaseTable(const GloryTableSpec& spec)
 PhaseTable phaseTable(const mie::DropSizeDistribution& drops, const GloryTableSpec& spec)
 {
     PhaseTable table = emptyPhaseTable(spec);
-    const double largestX = 2.0 * kPi * drops.radiusRangeUm().second / (spec.firstNm * 1e-3);
+    const double largestX = 2.0 * physics::kPi * drops.radiusRangeUm().second / (spec.firstNm * 1e-3);
     const AngularFunctions functions(spec.angles, mie::wiscombeTermCount(largestX));
 
     std::vector<long long> series(size_t(spec.wavelengthCount), 0);
@@ -206,7 +206,7 @@ PhaseTable smearedByDisc(const PhaseTable& table, double discRadiusRad)
         std::vector<double> sum(table.wavelengthsNm.size(), 0.0);
         for (size_t i = 0; i < radii.size(); ++i)
             for (int j = 0; j < kAzimuths; ++j) {
-                const double phi = kPi * (j + 0.5) / kAzimuths;
+                const double phi = physics::kPi * (j + 0.5) / kAzimuths;
                 const double c = std::cos(gamma) * std::cos(radii[i]) + std::sin(gamma) * std::sin(radii[i]) * std::cos(phi);
                 const double offset = std::acos(std::clamp(c, -1.0, 1.0));
                 for (size_t w = 0; w < sum.size(); ++w)
@@ -228,7 +228,7 @@ std::vector<glm::dvec3> gloryXyz(const PhaseTable& table, const LightSource& lig
                                        : (table.wavelengthsNm.back() - table.wavelengthsNm.front()) / double(count - 1) *
                                              ((w == 0 || w + 1 == count) ? 0.5 : 1.0);
         const double nm = table.wavelengthsNm[w];
-        weight[w] = kLumensPerWatt * spectrum(nm) * colourMatching(nm) * step / (4.0 * kPi);
+        weight[w] = physics::kLumensPerWatt * spectrum(nm) * physics::colourMatching(nm) * step / (4.0 * physics::kPi);
     }
     std::vector<glm::dvec3> xyz(size_t(table.angles.size()), glm::dvec3(0.0));
     for (int a = 0; a < table.angles.size(); ++a)
@@ -242,7 +242,7 @@ std::vector<glm::dvec3> gloryLinearSrgb(const std::vector<glm::dvec3>& xyz)
     std::vector<glm::dvec3> rgb;
     rgb.reserve(xyz.size());
     for (const glm::dvec3& c : xyz)
-        rgb.push_back(aurora::desaturateIntoGamut(aurora::xyzToLinearSrgb(c)));
+        rgb.push_back(physics::desaturateIntoGamut(physics::xyzToLinearSrgb(c)));
     return rgb;
 }
 

@@ -76,7 +76,7 @@ PhaseTable smearedByDisc(const PhaseTable& table, double discRadiusRad);
 // wavelengths by the trapezoid rule, E the light's spectral irradiance. Y in cd/m².
 std::vector<glm::dvec3> gloryXyz(const PhaseTable& table, const LightSource& light);
 
-// Linear sRGB of the XYZ table, gamut mapped as the aurora's colours (aurora/physics/colour.h).
+// Linear sRGB of the XYZ table, gamut mapped as the aurora's colours (src/physics/colour.h).
 std::vector<glm::dvec3> gloryLinearSrgb(const std::vector<glm::dvec3>& xyz);
 
 // A colour table of `grid` (one colour per angle) linear between the grid's angles at γ (clamped

@@ -43,7 +43,4 @@ private:
     double luminousPerIrradiance_; // 683 lm/W ∫ B ȳ dλ of the unscaled black body
 };
 
-// Planck's law, spectral radiance of a black body in W m⁻² sr⁻¹ m⁻¹ at λ (nm) and temperature T (K).
-double planckRadiance(double wavelengthNm, double temperatureK);
-
 } // namespace aurorawall::glory

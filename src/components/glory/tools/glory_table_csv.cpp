@@ -1,6 +1,6 @@
 #include "components/glory/tools/glory_table_csv.h"
 
-#include "common/constants.h"
+#include "physics/constants.h"
 #include "components/glory/glory.h"
 #include "components/registry.h"
 
@@ -30,7 +30,7 @@ void printGloryTable(const std::string& sceneFile, std::ostream& out)
     out << ",r,g,b\n";
     for (int a = 0; a < table.angles.size(); ++a) {
         char cell[40];
-        std::snprintf(cell, sizeof cell, "%.6f", table.angles.angle(a) / kDegree);
+        std::snprintf(cell, sizeof cell, "%.6f", table.angles.angle(a) / physics::kDegree);
         out << cell;
         for (size_t w = 0; w < table.wavelengthsNm.size(); ++w) {
             std::snprintf(cell, sizeof cell, ",%.8g", table.at(int(w), a));

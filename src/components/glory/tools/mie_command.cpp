@@ -2,7 +2,7 @@
 
 #include "cli/command_line.h"
 #include "cli/exit_status.h"
-#include "common/constants.h"
+#include "physics/constants.h"
 #include "components/glory/mie/mie_scattering.h"
 
 #include <cmath>
@@ -54,7 +54,7 @@ std::vector<double> parseAngles(const std::string& list, const cli::CommandLine&
 }
 
 // cos θ as sin(90° − θ): exactly 1, 0 and −1 at 0°, 90° and 180°.
-double cosineOfDegrees(double degrees) { return std::sin((90.0 - degrees) * kDegree); }
+double cosineOfDegrees(double degrees) { return std::sin((90.0 - degrees) * physics::kDegree); }
 
 void checkRange(const cli::CommandLine& cli, const char* option, double value, double low, bool lowIncluded,
                 double high)

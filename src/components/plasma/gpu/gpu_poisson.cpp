@@ -1,4 +1,4 @@
-#include "common/constants.h"
+#include "physics/constants.h"
 #include "components/plasma/gpu/gpu_poisson.h"
 
 #include "components/plasma/gpu/gpu_limits.h"
@@ -61,7 +61,7 @@ double jacobiFactor(const PeriodicGrid& grid, int kx, int ky, int kz)
     double weighted = 0.0, total = 0.0;
     for (int d = 0; d < grid.dimension; ++d) {
         const double inverseSquare = 1.0 / (grid.spacing[d] * grid.spacing[d]);
-        weighted += std::cos(2.0 * kPi * k[d] / grid.cells[d]) * inverseSquare;
+        weighted += std::cos(2.0 * physics::kPi * k[d] / grid.cells[d]) * inverseSquare;
         total += inverseSquare;
     }
     return weighted / total;

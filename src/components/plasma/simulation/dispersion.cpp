@@ -1,6 +1,6 @@
 #include "components/plasma/simulation/dispersion.h"
 
-#include "common/constants.h"
+#include "physics/constants.h"
 
 #include <cmath>
 #include <stdexcept>
@@ -29,7 +29,7 @@ std::complex<double> plasmaDispersionZ(std::complex<double> zeta)
 {
     using complex = std::complex<double>;
     const complex i(0.0, 1.0);
-    const double sqrtPi = std::sqrt(kPi);
+    const double sqrtPi = std::sqrt(physics::kPi);
     if (std::abs(zeta) < 4.0) {
         // F(ζ) = ζ Σ_n (−2ζ²)^n/(2n + 1)!!
         complex term = zeta, dawson = zeta;

@@ -1,6 +1,6 @@
 #include "components/plasma/simulation/electron_sheet.h"
 
-#include "common/constants.h"
+#include "physics/constants.h"
 #include "components/plasma/simulation/plasma_parameters.h"
 
 #include <cmath>
@@ -41,7 +41,7 @@ Particles sheetElectrons(const ElectronSheetSpec& spec)
         for (int i = 0; i < columns; ++i) {
             const double x = (i + 0.5) * spec.lengthM / columns;
             double y = bottom + (j + 0.5) * spec.thicknessM / rows +
-                       spec.seedDisplacementM * std::sin(2.0 * kPi * spec.mode * x / spec.lengthM);
+                       spec.seedDisplacementM * std::sin(2.0 * physics::kPi * spec.mode * x / spec.lengthM);
             y -= spec.widthM * std::floor(y / spec.widthM);
             p.position.push_back({x, y, 0.5});
             p.velocity.push_back(glm::dvec3(0.0));

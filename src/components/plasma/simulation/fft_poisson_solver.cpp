@@ -1,6 +1,6 @@
 #include "components/plasma/simulation/fft_poisson_solver.h"
 
-#include "common/constants.h"
+#include "physics/constants.h"
 #include "components/plasma/simulation/plasma_parameters.h"
 
 #include <fftw3.h>
@@ -50,7 +50,7 @@ FftPoissonSolver::FftPoissonSolver(const PeriodicGrid& grid) : plans_(std::make_
         throw std::runtime_error("FftPoissonSolver: FFTW could not plan the transform");
 
     const auto term = [](int k, int n, double h) {
-        const double s = std::sin(kPi * k / n);
+        const double s = std::sin(physics::kPi * k / n);
         return 4.0 * s * s / (h * h);
     };
     p.potentialPerCharge.resize(modes);

@@ -1,6 +1,6 @@
 #include "components/plasma/simulation/particle_loading.h"
 
-#include "common/constants.h"
+#include "physics/constants.h"
 
 #include <boost/math/special_functions/erf.hpp>
 #include <glm/common.hpp>
@@ -24,7 +24,7 @@ glm::dvec3 evenlySpaced(const PeriodicGrid& grid, int i, int count, Perturbation
 {
     const glm::dvec3 box = grid.boxLength();
     const double x = (i + 0.5) * box.x / count;
-    const double displaced = x + perturbation.amplitude * std::sin(2.0 * kPi * perturbation.mode * x / box.x);
+    const double displaced = x + perturbation.amplitude * std::sin(2.0 * physics::kPi * perturbation.mode * x / box.x);
     return {displaced - box.x * std::floor(displaced / box.x), 0.5 * box.y, 0.5 * box.z};
 }
 
@@ -60,7 +60,7 @@ Particles diagonalWaveLattice(const PeriodicGrid& grid, int perCellPerAxis, doub
             for (int i = 0; i < nx; ++i) {
                 const glm::dvec3 x((i + 0.5) * box.x / nx, (j + 0.5) * box.y / ny, (k + 0.5) * box.z / nz);
                 const double phase =
-                    2.0 * kPi * perturbation.mode * (x.x / box.x + x.y / box.y + (solid ? x.z / box.z : 0.0));
+                    2.0 * physics::kPi * perturbation.mode * (x.x / box.x + x.y / box.y + (solid ? x.z / box.z : 0.0));
                 glm::dvec3 displaced = x + perturbation.amplitude * std::sin(phase) * diagonal;
                 displaced -= box * glm::floor(displaced / box);
                 p.position.push_back(displaced);
@@ -96,7 +96,7 @@ Particles randomStart(const PeriodicGrid& grid, int count, double electronDensit
     const auto uniform = [&engine] { return double(engine() >> 11) * 0x1.0p-53; }; // [0, 1)
     const auto normal = [&uniform] {
         const double u1 = 1.0 - uniform(); // (0, 1]: the logarithm stays finite
-        return std::sqrt(-2.0 * std::log(u1)) * std::cos(2.0 * kPi * uniform());
+        return std::sqrt(-2.0 * std::log(u1)) * std::cos(2.0 * physics::kPi * uniform());
     };
     const glm::dvec3 box = grid.boxLength();
     for (int i = 0; i < count; ++i) {

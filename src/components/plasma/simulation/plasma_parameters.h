@@ -1,12 +1,14 @@
 #pragma once
-// Physical constants (SI, CODATA 2018) and the plasma's characteristic scales.
+// Physical constants (SI, CODATA 2018; defined in src/physics/constants.h) and the plasma's characteristic scales.
+#include "physics/constants.h"
+
 #include <cmath>
 
 namespace aurorawall::plasma {
 
-inline constexpr double kElementaryCharge = 1.602176634e-19;  // C (exact)
-inline constexpr double kElectronMass = 9.1093837015e-31;     // kg
-inline constexpr double kVacuumPermittivity = 8.8541878128e-12; // F/m
+using physics::kElementaryCharge;   // C (exact)
+using physics::kElectronMass;       // kg
+using physics::kVacuumPermittivity; // F/m
 
 // Electron plasma frequency ω_p = √(n e²/(ε₀ mₑ)) (rad/s) of an electron density n (m⁻³):
 // 56.41 √n rad/s.

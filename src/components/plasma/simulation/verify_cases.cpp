@@ -1,6 +1,6 @@
 #include "components/plasma/simulation/verify_cases.h"
 
-#include "common/constants.h"
+#include "physics/constants.h"
 #include "common/glsl.h"
 #include "components/plasma/simulation/dispersion.h"
 #include "components/plasma/simulation/electron_sheet.h"
@@ -46,7 +46,7 @@ std::complex<double> fieldMode(const std::vector<glm::dvec3>& e, int mode)
     const int n = int(e.size());
     std::complex<double> sum = 0.0;
     for (int j = 0; j < n; ++j)
-        sum += e[j].x * std::polar(1.0, -2.0 * kPi * mode * j / n);
+        sum += e[j].x * std::polar(1.0, -2.0 * physics::kPi * mode * j / n);
     return sum * (2.0 / n);
 }
 
@@ -58,7 +58,7 @@ double diagonalMode(const std::vector<glm::dvec3>& e, const PeriodicGrid& grid)
     const int n = grid.cells[0];
     std::vector<std::complex<double>> phase(n);
     for (int m = 0; m < n; ++m)
-        phase[m] = std::polar(1.0, -2.0 * kPi * m / n);
+        phase[m] = std::polar(1.0, -2.0 * physics::kPi * m / n);
     std::complex<double> sum = 0.0;
     for (int k = 0; k < grid.cells[2]; ++k)
         for (int j = 0; j < grid.cells[1]; ++j)
@@ -78,7 +78,7 @@ double diagonalMode(const std::vector<glm::dvec3>& e, const PeriodicGrid& grid)
 double diagonalWaveFrequency(PicRun& run, const PeriodicGrid& grid, double wpDt, VerifyHistory* history)
 {
     std::vector<double> s;
-    const long steps = long(std::ceil(20 * 2.0 * kPi / wpDt));
+    const long steps = long(std::ceil(20 * 2.0 * physics::kPi / wpDt));
     for (long n = 0; n <= steps; ++n) {
         s.push_back(diagonalMode(run.nodeField(), grid));
         run.step();
@@ -365,7 +365,7 @@ std::vector<VerifyRow> verifyTwoStream(double wpDt, const PicDevice& device, Ver
     const double kv0 = std::sqrt(3.0 / 8.0); // k v₀/ω_p of the fastest growth
     const double wp = plasmaFrequency(kDensity), dt = wpDt / wp;
     const double v0 = 1e6;                       // m/s
-    const double length = 2.0 * kPi * v0 / (kv0 * wp); // mode 1 has k v₀ = kv0·ω_p
+    const double length = 2.0 * physics::kPi * v0 / (kv0 * wp); // mode 1 has k v₀ = kv0·ω_p
     const PeriodicGrid grid(1, {kCells, 1, 1}, {length / kCells, 1.0, 1.0});
     // The seed displacement, 1e-6 of the length: 17 times the relative rounding of a float position
     // (2^-24), so that the rounding a float step adds to every mode stays far below it (a 1e-9 seed
@@ -412,7 +412,7 @@ std::vector<VerifyRow> verifyEnergy(double wpDt, const PicDevice& device, Verify
     const std::unique_ptr<PicRun> run =
         device.run(grid, randomStart(grid, kParticles, kDensity, thermalSpeed, 1), glm::dvec3(0.0), dt);
     // The energies at the first and the last step (at every step with a history).
-    const long steps = long(std::ceil(kPlasmaPeriods * 2.0 * kPi / wpDt));
+    const long steps = long(std::ceil(kPlasmaPeriods * 2.0 * physics::kPi / wpDt));
     std::vector<long> sampled;
     std::vector<StepEnergies> energies;
     for (long n = 0; n < steps; ++n)
@@ -541,7 +541,7 @@ void writeLandauHistory(VerifyHistory& history, const std::vector<double>& s, lo
                    {"fitted_intercept", fit.intercept},
                    {"expected_rate", root.imag()},
                    {"expected_intercept", theory.intercept},
-                   {"fitted_omega", kPi / halfPeriod},
+                   {"fitted_omega", physics::kPi / halfPeriod},
                    {"expected_omega", root.real()}};
 }
 
@@ -562,14 +562,14 @@ std::vector<VerifyRow> verifyLandau(double wpDt, double kLambda, int particles, 
     const double wp = plasmaFrequency(kDensity), dt = wpDt / wp;
     const double thermalSpeed = 4.19e5;
     const double lambdaD = debyeLength(thermalSpeed, kDensity);
-    const double length = 2.0 * kPi * lambdaD / kLambda;
+    const double length = 2.0 * physics::kPi * lambdaD / kLambda;
     const PeriodicGrid grid(1, {kCells, 1, 1}, {length / kCells, 1.0, 1.0});
     // The density wave δn/n = k·amplitude: small enough that the electrons it traps bounce slower
     // than the wave damps (bounce frequency ω_b = ω_p √(δn/n) below |γ|/√2, so linear theory holds
     // over the run; O'Neil, Phys. Fluids 8, 2255 (1965)), at most 1%.
     const std::complex<double> root = landauRoot(kLambda);
     const double densityWave = std::min(0.01, 2.0 * root.imag() * root.imag());
-    const Perturbation wave{1, densityWave * length / (2.0 * kPi)};
+    const Perturbation wave{1, densityWave * length / (2.0 * physics::kPi)};
     const std::unique_ptr<PicRun> run =
         device.run(grid, quietMaxwellian(grid, particles, kDensity, wave, thermalSpeed), glm::dvec3(0.0), dt);
     // The standing wave's field mode s(t) ∝ exp(γt) cos(ωt + φ) over a window (in 1/ω_p) from where
@@ -581,7 +581,7 @@ std::vector<VerifyRow> verifyLandau(double wpDt, double kLambda, int particles, 
     // three samples around it) grows at the rate γ.
     const double fitStart = std::sqrt(2.0 * std::log(100.0)) / kLambda;
     const double fitEnd =
-        fitStart + std::clamp(2.1 / std::abs(root.imag()), 3.0 * 2.0 * kPi / root.real(), 60.0);
+        fitStart + std::clamp(2.1 / std::abs(root.imag()), 3.0 * 2.0 * physics::kPi / root.real(), 60.0);
     std::vector<double> s;
     const long steps = long(std::ceil(fitEnd / wpDt));
     for (long n = 0; n <= steps; ++n) {
@@ -599,7 +599,7 @@ std::vector<VerifyRow> verifyLandau(double wpDt, double kLambda, int particles, 
     return rows({setting("wp_dt", wpDt), setting("k_debye", kLambda), setting("cells", kCells),
                  setting("particles", particles)},
                 device.settings(particles, 1),
-                {{"frequency_over_wp", kPi / halfPeriod, root.real()}, {"damping_rate_over_wp", fit.slope, root.imag()}});
+                {{"frequency_over_wp", physics::kPi / halfPeriod, root.real()}, {"damping_rate_over_wp", fit.slope, root.imag()}});
 }
 
 std::vector<VerifyRow> verifyDiocotron(double wcDt, double wpOverWc, const PicDevice& device, VerifyHistory* history)
@@ -614,7 +614,7 @@ std::vector<VerifyRow> verifyDiocotron(double wcDt, double wpOverWc, const PicDe
     spec.cellsAcross = 64;
     spec.lengthM = 128.0; // 1 m cells: a cold drift flow has no length scale of its own
     spec.widthM = 64.0;
-    const double k = 2.0 * kPi / spec.lengthM;
+    const double k = 2.0 * physics::kPi / spec.lengthM;
     spec.thicknessM = 2.0 * kHalfThickness / k;
     spec.magneticFieldT = kMagneticField;
     const double wp = wpOverWc * cyclotronFrequency(kMagneticField);
@@ -633,7 +633,7 @@ std::vector<VerifyRow> verifyDiocotron(double wcDt, double wpOverWc, const PicDe
     const int nx = grid.cells[0], ny = grid.cells[1];
     std::vector<std::complex<double>> phase(nx);
     for (int i = 0; i < nx; ++i)
-        phase[i] = std::polar(1.0, -2.0 * kPi * i / nx);
+        phase[i] = std::polar(1.0, -2.0 * physics::kPi * i / nx);
     const auto modeEnergy = [&] {
         const std::vector<glm::dvec3>& field = run->nodeField();
         double sum = 0.0;

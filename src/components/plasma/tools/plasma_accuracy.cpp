@@ -1,4 +1,4 @@
-#include "common/constants.h"
+#include "physics/constants.h"
 #include "components/plasma/tools/plasma_accuracy.h"
 
 #include "cli/command_line.h"
@@ -178,7 +178,7 @@ EnergyErrorRow energyError(const std::string& plasma, double wpDt)
     pic::ElectrostaticPic sim = [&] {
         if (plasma == "cold") {
             const pic::PeriodicGrid grid(1, {256, 1, 1}, {1.0, 1.0, 1.0});
-            r.steps = long(std::ceil(20.0 * 2.0 * kPi / wpDt));
+            r.steps = long(std::ceil(20.0 * 2.0 * physics::kPi / wpDt));
             r.closedForm = 2.0 * wpDt * wpDt / (4.0 + wpDt * wpDt);
             return pic::ElectrostaticPic(grid, pic::quietStart(grid, 8 * 256, kDensity, {1, 0.01}, glm::dvec3(0.0)),
                                          glm::dvec3(0.0), dt);
