@@ -930,8 +930,9 @@ TEST(PlasmaLive, AgreesWithTheCpuFramesBeforeTheRollUp)
         std::printf("frame %d (step %ld): largest difference %.3g of the peak%s\n", k, live.step(), d,
                     k == 0 ? (" (bound " + std::to_string(zeroBound) + ")").c_str() : "");
         EXPECT_LT(d, k == 0 ? zeroBound : k <= 4 ? 2e-3 : 2e-2) << "frame " << k;
-        if (k == 4)
+        if (k == 4) {
             EXPECT_GT(difference(3), 2e-2);
+        }
     }
 }
 

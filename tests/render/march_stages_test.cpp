@@ -58,8 +58,9 @@ TEST_P(MarchStages, ComputeAndFragmentGiveTheSameImage)
     const bool identical = compute.rgba == fragment.rgba;
     std::printf("%s: compute vs fragment over %zu lit pixels: rms %.3g, max %.3g, %s\n", GetParam().c_str(), e.pixels,
                 e.rms, e.max, identical ? "bit-identical" : "not bit-identical");
-    if (gl::currentRendererName().rfind("llvmpipe", 0) == 0)
+    if (gl::currentRendererName().rfind("llvmpipe", 0) == 0) {
         EXPECT_TRUE(identical);
+    }
     const double bound = (4096 + 16) * std::ldexp(1.0, -24);
     EXPECT_LE(e.rms, bound);
     EXPECT_LE(e.max, 10.0 * bound);
