@@ -249,7 +249,9 @@ window.awTest = {
   async preview() {
     const img = document.getElementById("preview");
     if (!img.src) return null;
-    await img.decode();
+    // The page swaps the picture 5 times a second: a decode that a newer picture overtook rejects,
+    // and the caller polls again.
+    try { await img.decode(); } catch (e) { return null; }
     const c = document.createElement("canvas");
     c.width = img.naturalWidth;
     c.height = img.naturalHeight;
