@@ -1,5 +1,6 @@
 #include "app/path_recorder.h"
 
+#include "config/toml_string.h"
 #include "io/atomic_file.h"
 
 #include <cstdio>
@@ -31,18 +32,6 @@ std::string vector3(const glm::dvec3& v)
     return "[" + number(v.x) + ", " + number(v.y) + ", " + number(v.z) + "]";
 }
 
-// A TOML basic string.
-std::string quoted(const std::string& s)
-{
-    std::string q = "\"";
-    for (char c : s) {
-        if (c == '"' || c == '\\')
-            q += '\\';
-        q += c;
-    }
-    return q + "\"";
-}
-
 // The base scene as the recorded file names it: relative to the file's folder (the scene reader
 // resolves it from there), absolute when no relative path exists (another drive).
 std::string basePath(const std::string& file, const std::string& baseScene)
@@ -72,7 +61,7 @@ std::string PathRecorder::text() const
     std::ostringstream out;
     out << "# The camera flown by `aurorawall render --record-path`, one key per frame.\n"
         << "[scene]\n"
-        << "base = " << quoted(basePath(file_, baseScene_)) << "\n"
+        << "base = " << config::tomlBasicString(basePath(file_, baseScene_)) << "\n"
         << "start_time_s = " << number(startTimeS_) << "\n"
         << "time_step_s = " << number(timeStepS_) << "\n";
     if (cameras_.size() == 1) {

@@ -25,4 +25,14 @@ CommandOutput runInProcess(const Command& command, std::vector<std::string> word
     return {status, out.str(), err.str()};
 }
 
+// The text's lines, without their newlines.
+inline std::vector<std::string> lines(const std::string& text)
+{
+    std::vector<std::string> result;
+    std::istringstream in(text);
+    for (std::string line; std::getline(in, line);)
+        result.push_back(line);
+    return result;
+}
+
 } // namespace aurorawall::test

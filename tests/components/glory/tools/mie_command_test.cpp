@@ -19,15 +19,8 @@ using Result = test::CommandOutput;
 using test::above;
 using test::below;
 using test::exactly;
+using test::lines;
 using test::nonFiniteCell;
-
-std::vector<std::string> lines(const std::string& text)
-{
-    std::vector<std::string> result;
-    std::istringstream in(text);
-    for (std::string line; std::getline(in, line);) result.push_back(line);
-    return result;
-}
 
 Result runMie(std::vector<std::string> words)
 {
