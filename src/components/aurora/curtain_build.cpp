@@ -33,6 +33,21 @@ physics::FootprintMapSpec capAround(const std::vector<physics::CurtainPolyline>&
     return spec;
 }
 
+// tan(θ/2) of the largest turn θ between consecutive segments of the polyline as the shader sees it: the
+// angle between the great circles' normals computed from the float points (segment_projection.glsl),
+// which tilt by up to ~1e-7 R / (segment length) from the exact ones; plus 1e-4 for the GPU's own rounding.
+double cornerSlope(const physics::CurtainPolyline& polyline)
+{
+    const auto normal = [&](size_t j) {
+        const glm::vec3 a(polyline.points[j]), b(polyline.points[j + 1]);
+        return glm::dvec3(glm::normalize(glm::cross(a, b - a)));
+    };
+    double largestTurn = 0.0;
+    for (size_t j = 1; j + 1 < polyline.points.size(); ++j)
+        largestTurn = std::max(largestTurn, std::acos(std::clamp(glm::dot(normal(j - 1), normal(j)), -1.0, 1.0)));
+    return std::tan(0.5 * std::min(largestTurn, 3.0)) + 1.0e-4;
+}
+
 } // namespace
 
 std::vector<float> polylineTexels(const std::vector<physics::CurtainPolyline>& polylines, int& width, int& rows)
@@ -74,6 +89,8 @@ CurtainBuild buildCurtains(const CurtainModel& model, const std::vector<CurtainS
         polylines.push_back(model.footprint(s));
         build.pointCounts.push_back(polylines.back().points.size());
         build.pointTotal += polylines.back().points.size();
+        build.lengthsKm.push_back(static_cast<float>(polylines.back().arclengthKm.back()));
+        build.cornerSlopes.push_back(static_cast<float>(cornerSlope(polylines.back())));
     }
     build.polylineTexels = polylineTexels(polylines, build.polylineWidth, build.polylineRows);
 

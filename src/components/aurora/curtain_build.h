@@ -30,6 +30,9 @@ struct CurtainBuild {
     // padded with their last point.
     int polylineWidth = 1, polylineRows = 1;
     std::vector<float> polylineTexels;
+    // Per curtain, the shader's uniforms of its shape: the polyline's arclength (km, as its last texel
+    // holds it) and tan(θ/2) of its largest turn θ, with room for float.
+    std::vector<float> lengthsKm, cornerSlopes;
     std::vector<physics::CurtainPolyline> polylines; // in double: the reference map's input
     physics::FootprintMap map;                       // without texels where the GPU builds them
 };

@@ -1,6 +1,5 @@
 #include "components/aurora/curtain_field.h"
 
-#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -17,21 +16,6 @@ gl::Texture& sized(std::unique_ptr<gl::Texture>& texture, int width, int height)
         texture = std::make_unique<gl::Texture>(
             gl::Texture::create2D(width, height, gl::TexelFormat::RGBA32F, gl::Filter::Nearest, gl::Wrap::Clamp));
     return *texture;
-}
-
-// tan(θ/2) of the largest turn θ between consecutive segments of the polyline as the shader sees it: the
-// angle between the great circles' normals computed from the float points (segment_projection.glsl),
-// which tilt by up to ~1e-7 R / (segment length) from the exact ones; plus 1e-4 for the GPU's own rounding.
-double cornerSlope(const physics::CurtainPolyline& polyline)
-{
-    const auto normal = [&](size_t j) {
-        const glm::vec3 a(polyline.points[j]), b(polyline.points[j + 1]);
-        return glm::dvec3(glm::normalize(glm::cross(a, b - a)));
-    };
-    double largestTurn = 0.0;
-    for (size_t j = 1; j + 1 < polyline.points.size(); ++j)
-        largestTurn = std::max(largestTurn, std::acos(std::clamp(glm::dot(normal(j - 1), normal(j)), -1.0, 1.0)));
-    return std::tan(0.5 * std::min(largestTurn, 3.0)) + 1.0e-4;
 }
 
 } // namespace
@@ -104,12 +88,8 @@ void CurtainField::upload(const CurtainBuild& build)
     controlPoints_ = build.controlPoints;
     pointCounts_ = build.pointCounts;
     pointTotal_ = build.pointTotal;
-    lengthsKm_.clear();
-    cornerSlopes_.clear();
-    for (const physics::CurtainPolyline& polyline : build.polylines) {
-        lengthsKm_.push_back(static_cast<float>(polyline.arclengthKm.back()));
-        cornerSlopes_.push_back(static_cast<float>(cornerSlope(polyline)));
-    }
+    lengthsKm_ = build.lengthsKm;
+    cornerSlopes_ = build.cornerSlopes;
     sized(polylines_, build.polylineWidth, build.polylineRows).upload(build.polylineTexels);
     // The GPU's map has its own frame (its margin holds the float allowance); the CPU's is uploaded
     // as built (a reference: its texels are 4 MiB at 512²).
