@@ -19,7 +19,8 @@ uniform vec4 uCurtainState[MAX_CURTAINS];  // peak energy flux erg cm^-2 s^-1, e
 uniform float uCurtainLengthKm[MAX_CURTAINS];    // the polyline's arclength, its last point's (a uniform: no fetch)
 uniform float uCurtainCornerSlope[MAX_CURTAINS]; // tan(θ/2) of its polyline's largest turn θ between segments, with
                                                  // room for the float segment normals' tilt (CurtainField)
-uniform float uCurtainReachKm;       // the largest reach: beyond it from every centre line nothing emits
+uniform float uCurtainReachKm;       // the largest reach of the curtains that emit (flux > 0) this frame: beyond it
+                                     // from every centre line nothing emits
 
 uniform sampler2D uFootprintMap;     // RGBA32F, nearest: curtain id, point index, distance km, other curtain
 uniform vec3 uFootprintCentre;

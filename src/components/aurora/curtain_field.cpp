@@ -1,5 +1,6 @@
 #include "components/aurora/curtain_field.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -24,7 +25,6 @@ CurtainField::CurtainField(const CurtainModel& model, MapBuilder builder, const 
     : model_(model), ahead_(model, builder),
       gpuMap_(builder == MapBuilder::Gpu ? std::make_unique<FootprintMapGpu>(shaderDir) : nullptr)
 {
-    reachKm_ = static_cast<float>(model.reachKm());
     state_.resize(model.settings().curtains.size());
     detailUniform_.resize(state_.size());
 }
@@ -47,11 +47,16 @@ void CurtainField::update(double timeS, double nextTimeS)
             upload(buildCurtains(model_, states, gpuMap_ ? MapBuilder::Gpu : MapBuilder::Cpu));
         }
     }
+    // The march skips by the largest reach of the curtains that emit now (their detail's spread at this
+    // phase), not of all phases: nearer the curtains than the all-time largest reach it skips further.
+    reachKm_ = 0.0f;
     for (size_t i = 0; i < states.size(); ++i) {
         const CurtainState& s = states[i];
         state_[i] = glm::vec4(s.energyFluxErgPerCm2S, s.energyKeV, static_cast<float>(pointCounts_[i]),
                               static_cast<float>(model_.reachKm(i, s.detailPhase)));
         detailUniform_[i] = glm::vec4(s.detailOffsetKm, s.detailPhase, model_.lateralScale(i), 0.0f);
+        if (state_[i].x > 0.0f)
+            reachKm_ = std::max(reachKm_, state_[i].w);
     }
     buildAhead(nextTimeS);
 

@@ -71,7 +71,7 @@ private:
     std::vector<float> lengthsKm_;  // per curtain: its polyline's arclength (km), as the last point's texel holds it
     std::vector<float> cornerSlopes_; // per curtain: tan(θ/2) of its polyline's largest turn θ, with room for float
     std::vector<glm::vec4> detailUniform_; // per curtain: offset km, phase, lateral scale, 0
-    float reachKm_ = 0.0f;
+    float reachKm_ = 0.0f;        // the largest of state_'s reaches among the curtains with flux
     glm::vec3 centre_{0.0f}, east_{0.0f};
     float angularRadius_ = 0.0f, size_ = 0.0f, marginKm_ = 0.0f;
     std::string summary_;
