@@ -1,6 +1,7 @@
 #include "app/wall_session.h"
 
 #include "cli/exit_status.h"
+#include "cluster/rank_groups.h"
 #include "components/registry.h"
 #include "common/data_dir.h"
 #include "common/input_error.h"
@@ -8,6 +9,7 @@
 #include "render/march_shader.h"
 #include "wall/wall_file.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -118,7 +120,7 @@ void openGraphics(const cluster::MpiWorld& world, WallSession& s)
         spec.y = position.y;
         windows.push_back(spec);
     }
-    s.context = gl::createContext(backend, windows);
+    s.context = gl::createContext(backend, windows, world.nodeRank());
     // A screen beyond the device's render targets would fail at its framebuffer ("incomplete, status
     // 36054"); name the wall file's key instead, before anything is drawn or written. Ranks with the
     // same device and screen size give the same line, which the agreed error prints once.
@@ -167,6 +169,31 @@ void openGraphics(const cluster::MpiWorld& world, WallSession& s)
     s.context->makeCurrent(0);
 }
 
+// Every rank's GL device, named on the master. Tiles drawn on different devices can differ in the last
+// bits at their seams (each device rounds its own way), and a rank left on a software device is slow:
+// a wall whose ranks differ is warned of, on stderr; --verbose lists the devices in any case.
+void reportDevices(const cluster::MpiWorld& world, const WallSession& s)
+{
+    const std::string mine = s.context->rendererName();
+    std::vector<int> sizes;
+    const std::vector<char> all = world.gatherBytes(std::vector<char>(mine.begin(), mine.end()), sizes);
+    if (!world.isMaster())
+        return;
+    std::vector<std::string> devices;
+    size_t at = 0;
+    for (int size : sizes) {
+        devices.emplace_back(all.data() + at, static_cast<size_t>(size));
+        at += static_cast<size_t>(size);
+    }
+    const bool mixed = std::any_of(devices.begin(), devices.end(), [&](const std::string& d) { return d != mine; });
+    if (mixed)
+        std::fprintf(stderr, "aurorawall: warning: the ranks draw on different GL devices: %s; their tiles can "
+                             "differ in the last bits at the seams\n",
+                     cluster::ranksByValue(devices).c_str());
+    else if (s.options.verbose)
+        std::printf("devices: %s\n", cluster::ranksByValue(devices).c_str());
+}
+
 } // namespace
 
 int agreedStep(const cluster::MpiWorld& world, const std::function<void()>& step)
@@ -208,6 +235,7 @@ int setUpWallSession(const cluster::MpiWorld& world, int argc, char** argv, Wall
     status = agreedStep(world, [&] { openGraphics(world, session); });
     if (status != cli::kSuccess)
         return status;
+    reportDevices(world, session);
     if (session.control) { // printed even with --quiet: with port 0 it is how a client learns the port
         std::printf("control: listening on %s:%d\n", session.control->address().c_str(), session.control->port());
         std::fflush(stdout);

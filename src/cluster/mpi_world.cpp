@@ -16,6 +16,10 @@ MpiWorld::MpiWorld(int* argc, char*** argv)
     MPI_Init_thread(argc, argv, MPI_THREAD_MULTIPLE, &provided);
     MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
     MPI_Comm_size(MPI_COMM_WORLD, &size_);
+    MPI_Comm node = MPI_COMM_NULL;
+    MPI_Comm_split_type(MPI_COMM_WORLD, MPI_COMM_TYPE_SHARED, rank_, MPI_INFO_NULL, &node);
+    MPI_Comm_rank(node, &nodeRank_);
+    MPI_Comm_free(&node);
     if (provided < MPI_THREAD_MULTIPLE && rank_ == 0)
         std::fprintf(stderr, "aurorawall: this MPI library does not offer MPI_THREAD_MULTIPLE; "
                              "no watchdog for silent ranks\n");

@@ -26,6 +26,9 @@ public:
     int rank() const { return rank_; }
     int size() const { return size_; }
     bool isMaster() const { return rank_ == 0; }
+    // This rank's index among the ranks on its node (those that share memory with it), in rank order:
+    // which of the node's GPUs it draws on (gl/device_order.h).
+    int nodeRank() const { return nodeRank_; }
 
     // Ends every rank of the job with `status` (MPI_Abort): for a failure in the middle of a frame,
     // when the other ranks may be blocked waiting for this one.
@@ -75,6 +78,7 @@ public:
 private:
     int rank_ = 0;
     int size_ = 1;
+    int nodeRank_ = 0;
     MPI_Comm heartbeatComm_ = MPI_COMM_NULL;
     mutable std::unique_ptr<Watchdog> watchdog_; // started once the options are known
 };

@@ -4,7 +4,7 @@
 
 namespace aurorawall::gl {
 
-std::unique_ptr<Context> createEglContext();
+std::unique_ptr<Context> createEglContext(int nodeRank);
 std::unique_ptr<Context> createOsmesaContext();
 std::unique_ptr<Context> createGlfwContext(const std::vector<WindowSpec>& windows);
 

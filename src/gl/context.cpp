@@ -58,10 +58,10 @@ std::string Context::glVersion() const { return glString(GL_VERSION); }
 
 std::string Context::vendorName() const { return glString(GL_VENDOR); }
 
-std::unique_ptr<Context> createContext(Backend backend, const std::vector<WindowSpec>& windowsForGlfw)
+std::unique_ptr<Context> createContext(Backend backend, const std::vector<WindowSpec>& windowsForGlfw, int nodeRank)
 {
     switch (backend) {
-    case Backend::Egl: return createEglContext();
+    case Backend::Egl: return createEglContext(nodeRank);
     case Backend::Osmesa: return createOsmesaContext();
     case Backend::Glfw: return createGlfwContext(windowsForGlfw);
     }

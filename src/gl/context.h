@@ -107,8 +107,10 @@ bool isSoftwareRenderer(const std::string& rendererName);
 
 // Throws std::runtime_error with one line saying why when no context can be made.
 // windowsForGlfw is used by Backend::Glfw only (at least one window).
-// EGL tries the device platform (device $AURORAWALL_EGL_DEVICE only, if set), then the surfaceless
-// platform, then the default display.
-std::unique_ptr<Context> createContext(Backend backend, const std::vector<WindowSpec>& windowsForGlfw = {});
+// EGL tries the device platform (device $AURORAWALL_EGL_DEVICE only, if set; else the hardware devices
+// from the one numbered nodeRank, the rank's index among its node's ranks, round, then the software
+// ones: gl/device_order.h), then the surfaceless platform, then the default display.
+std::unique_ptr<Context> createContext(Backend backend, const std::vector<WindowSpec>& windowsForGlfw = {},
+                                       int nodeRank = 0);
 
 } // namespace aurorawall::gl

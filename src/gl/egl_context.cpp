@@ -1,5 +1,6 @@
 // Headless EGL: desktop OpenGL 4.5 core, made current without a surface.
 #include "gl/backends.h"
+#include "gl/device_order.h"
 #include "gl/loader.h"
 
 #include <EGL/egl.h>
@@ -19,9 +20,9 @@ void* eglProcAddress(const char* name)
     return reinterpret_cast<void*>(eglGetProcAddress(name));
 }
 
-bool hasExtension(EGLDisplay display, const char* extension)
+// Whether the space-separated extension list names `extension`.
+bool listsExtension(const char* list, const char* extension)
 {
-    const char* list = eglQueryString(display, EGL_EXTENSIONS);
     if (!list)
         return false;
     const size_t n = std::strlen(extension);
@@ -29,6 +30,11 @@ bool hasExtension(EGLDisplay display, const char* extension)
         if ((p == list || p[-1] == ' ') && (p[n] == ' ' || p[n] == '\0'))
             return true;
     return false;
+}
+
+bool hasExtension(EGLDisplay display, const char* extension)
+{
+    return listsExtension(eglQueryString(display, EGL_EXTENSIONS), extension);
 }
 
 std::string errorName(EGLint error)
@@ -122,8 +128,9 @@ EGLContext createCoreContext(EGLDisplay display, std::string& why)
     return context;
 }
 
-// The displays to try, in order, each with a label for error messages.
-std::vector<std::pair<EGLDisplay, std::string>> candidateDisplays()
+// The displays to try, in order, each with a label for error messages: the devices (hardware first,
+// spread by nodeRank, gl/device_order.h), then Mesa's surfaceless platform, then the default display.
+std::vector<std::pair<EGLDisplay, std::string>> candidateDisplays(int nodeRank)
 {
     std::vector<std::pair<EGLDisplay, std::string>> displays;
     const char* requested = std::getenv("AURORAWALL_EGL_DEVICE");
@@ -132,7 +139,15 @@ std::vector<std::pair<EGLDisplay, std::string>> candidateDisplays()
         EGLDeviceEXT devices[16];
         EGLint count = 0;
         queryDevices(16, devices, &count);
+        // Mesa lists its CPU renderer as a device too (EGL_MESA_device_software); where the device's
+        // extensions cannot be asked, every device counts as hardware.
+        auto queryDeviceString =
+            reinterpret_cast<PFNEGLQUERYDEVICESTRINGEXTPROC>(eglGetProcAddress("eglQueryDeviceStringEXT"));
+        std::vector<bool> software;
         for (EGLint i = 0; i < count; ++i)
+            software.push_back(queryDeviceString &&
+                               listsExtension(queryDeviceString(devices[i], EGL_EXTENSIONS), "EGL_MESA_device_software"));
+        for (int i : deviceOrder(software, nodeRank))
             if (!requested || std::atoi(requested) == i)
                 displays.emplace_back(eglGetPlatformDisplay(EGL_PLATFORM_DEVICE_EXT, devices[i], nullptr),
                                       "device " + std::to_string(i));
@@ -151,10 +166,10 @@ std::vector<std::pair<EGLDisplay, std::string>> candidateDisplays()
 
 } // namespace
 
-std::unique_ptr<Context> createEglContext()
+std::unique_ptr<Context> createEglContext(int nodeRank)
 {
     std::string failures;
-    for (const auto& [display, label] : candidateDisplays()) {
+    for (const auto& [display, label] : candidateDisplays(nodeRank)) {
         std::string why;
         EGLContext context = createCoreContext(display, why);
         if (context != EGL_NO_CONTEXT) {
