@@ -1,12 +1,20 @@
-// A rule every source file keeps (a scan of src/): no function is longer than 80 lines, so that each
-// does one job that fits on a screen. A function's body is found by the project's layout: its opening
-// brace alone on a line (at the function's indentation, after the line that ends its signature) and
-// its closing brace at the same indentation; its length counts from the signature's last line to the
-// closing brace.
+// Rules every source file keeps (a scan of src/):
+// - No function is longer than 80 lines, so that each does one job that fits on a screen. A function's
+//   body is found by the project's layout: its opening brace alone on a line (at the function's
+//   indentation, after the line that ends its signature) and its closing brace at the same
+//   indentation; its length counts from the signature's last line to the closing brace.
+// - Namespaces match folders: every named namespace block in src/X/Y/ is aurorawall::X::Y, so that a
+//   name tells where it is defined. Unnamed namespaces and namespace aliases are free, and so are the
+//   precision namespaces f32 and f64 under the folder's (aurorawall::X::Y::f64), into which shared
+//   GLSL modules are compiled as C++ (common/glsl.h).
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cctype>
 #include <filesystem>
 #include <fstream>
+#include <regex>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -68,6 +76,100 @@ std::vector<LongFunction> longFunctions(const std::filesystem::path& file)
     return found;
 }
 
+
+// The source text with its comments and its string and character literals (raw strings included)
+// blanked out, newlines kept: what is left is code, whose braces can be counted.
+std::string codeOnly(const std::string& text)
+{
+    std::string code = text;
+    auto blank = [&](std::size_t from, std::size_t to) {
+        for (std::size_t k = from; k < to && k < code.size(); ++k)
+            if (code[k] != '\n')
+                code[k] = ' ';
+    };
+    std::size_t i = 0;
+    while (i < text.size()) {
+        std::size_t end = i + 1;
+        if (text.compare(i, 2, "//") == 0) {
+            end = text.find('\n', i);
+        } else if (text.compare(i, 2, "/*") == 0) {
+            end = text.find("*/", i + 2);
+            end = end == std::string::npos ? end : end + 2;
+        } else if (text.compare(i, 2, "R\"") == 0 && (i == 0 || !std::isalnum(static_cast<unsigned char>(text[i - 1])))) {
+            const std::size_t open = text.find('(', i);
+            const std::string close = ")" + text.substr(i + 2, open - i - 2) + "\"";
+            end = text.find(close, open);
+            end = end == std::string::npos ? end : end + close.size();
+        } else if (text[i] == '"' || (text[i] == '\'' && (i == 0 || !std::isalnum(static_cast<unsigned char>(text[i - 1]))))) {
+            end = i + 1;
+            while (end < text.size() && text[end] != text[i] && text[end] != '\n')
+                end += text[end] == '\\' ? 2 : 1;
+            ++end;
+        } else {
+            ++i;
+            continue;
+        }
+        end = std::min(end, text.size());
+        blank(i, end);
+        i = end;
+    }
+    return code;
+}
+
+struct NamespaceBlock {
+    std::string file;
+    int line;
+    std::string name; // with the names of the named blocks around it
+};
+
+// The named namespace blocks of `file`: a line that opens a block "namespace NAME {" (not an alias).
+std::vector<NamespaceBlock> namedNamespaces(const std::filesystem::path& file)
+{
+    std::ifstream in(file);
+    std::stringstream text;
+    text << in.rdbuf();
+    std::istringstream code(codeOnly(text.str()));
+    static const std::regex opening(R"(^\s*(inline\s+)?namespace\s*([A-Za-z_][A-Za-z_0-9:]*)?\s*\{)");
+    struct Open {
+        std::string name; // empty: unnamed
+        int depth;        // the brace depth outside it
+    };
+    std::vector<Open> open;
+    std::vector<NamespaceBlock> found;
+    int depth = 0, number = 0;
+    for (std::string line; std::getline(code, line);) {
+        ++number;
+        std::smatch m;
+        if (std::regex_search(line, m, opening)) {
+            std::string name;
+            for (const Open& o : open)
+                name += o.name.empty() ? "" : (name.empty() ? "" : "::") + o.name;
+            if (m[2].matched) {
+                name += (name.empty() ? "" : "::") + m[2].str();
+                found.push_back({std::filesystem::relative(file, kSource).string(), number, name});
+            }
+            open.push_back({m[2].str(), depth});
+        }
+        for (char c : line) {
+            if (c == '{')
+                ++depth;
+            else if (c == '}' && --depth >= 0 && !open.empty() && open.back().depth == depth)
+                open.pop_back();
+        }
+    }
+    return found;
+}
+
+// src/X/Y -> aurorawall::X::Y
+std::string folderNamespace(const std::filesystem::path& folder)
+{
+    std::string name = "aurorawall";
+    for (const auto& part : std::filesystem::relative(folder, kSource / "src"))
+        if (part != ".")
+            name += "::" + part.string();
+    return name;
+}
+
 } // namespace
 
 TEST(SourceRules, NoFunctionInSrcIsLongerThan80Lines)
@@ -89,4 +191,23 @@ TEST(SourceRules, NoFunctionInSrcIsLongerThan80Lines)
     EXPECT_GT(functions, 1000u); // the layout rule finds the functions at all
     for (const LongFunction& f : offenders)
         ADD_FAILURE() << f.file << ":" << f.line << ": a function of " << f.length << " lines";
+}
+
+TEST(SourceRules, NamespacesMatchFolders)
+{
+    std::size_t files = 0, blocks = 0;
+    for (const auto& entry : std::filesystem::recursive_directory_iterator(kSource / "src")) {
+        const std::string extension = entry.path().extension().string();
+        if (!entry.is_regular_file() || (extension != ".cpp" && extension != ".h" && extension != ".in"))
+            continue;
+        ++files;
+        const std::string expected = folderNamespace(entry.path().parent_path());
+        for (const NamespaceBlock& b : namedNamespaces(entry.path())) {
+            ++blocks;
+            if (b.name != expected && b.name != expected + "::f32" && b.name != expected + "::f64")
+                ADD_FAILURE() << b.file << ":" << b.line << ": namespace " << b.name << ", in a folder of " << expected;
+        }
+    }
+    EXPECT_GT(files, 100u);
+    EXPECT_GT(blocks, 300u); // the scan finds the blocks at all
 }

@@ -14,6 +14,7 @@
 #include "cluster/frame_state.h"
 #include "common/glsl.h"
 #include "config/toml_reader.h"
+#include "gl/shader_program.h"
 #include "scene/shell.h"
 
 #include <any>
@@ -24,14 +25,10 @@
 #include <string>
 #include <vector>
 
-namespace aurorawall::gl {
-class Program;
-}
-
-namespace aurorawall::f64 {
+namespace aurorawall::scene::f64 {
 AURORAWALL_GLSL_PRECISION(double)
 #include "render/ray.glsl"
-} // namespace aurorawall::f64
+} // namespace aurorawall::scene::f64
 
 namespace aurorawall::scene {
 

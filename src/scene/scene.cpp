@@ -206,7 +206,7 @@ Camera readCamera(const TableReader& t, double planetRadiusKm)
 // Planet frame: z north, x toward longitude 180 deg, y toward 90 deg W.
 glm::dvec3 planetPoint(double latitudeDeg, double longitudeDeg, double radius)
 {
-    return radius * unitFromLatLon(latitudeDeg, longitudeDeg);
+    return radius * common::unitFromLatLon(latitudeDeg, longitudeDeg);
 }
 
 LocalFrame localFrame(double latitudeDeg, double longitudeDeg)
@@ -294,9 +294,9 @@ void SceneLoader::listComponents(Scene& s, const TableReader& meta, const Regist
         known += (known.empty() ? "" : ", ") + c->name();
     for (const std::string& name : names) {
         if (std::none_of(registry.begin(), registry.end(), [&](const Component* c) { return c->name() == name; }))
-            meta.fail("components", "unknown component '" + echoedInput(name) + "' (known: " + known + ")");
+            meta.fail("components", "unknown component '" + common::echoedInput(name) + "' (known: " + known + ")");
         if (std::count(names.begin(), names.end(), name) > 1)
-            meta.fail("components", "component '" + echoedInput(name) + "' listed twice");
+            meta.fail("components", "component '" + common::echoedInput(name) + "' listed twice");
     }
     Scene listed;
     listed.planetRadiusKm = s.planetRadiusKm;

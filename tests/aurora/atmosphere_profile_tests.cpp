@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-namespace aurorawall::aurora {
+namespace aurorawall::components::aurora::physics {
 namespace {
 
 using testing::piecewiseSimpson;
@@ -66,4 +66,4 @@ TEST(AtmosphereProfile, NumberDensitiesAddUpToTheMassDensity)
 }
 
 } // namespace
-} // namespace aurorawall::aurora
+} // namespace aurorawall::components::aurora::physics

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <cstdio>
 
-using namespace aurorawall::aurora;
+using namespace aurorawall::components::aurora::physics;
 
 namespace {
 

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <stdexcept>
 
-namespace aurorawall::aurora {
+namespace aurorawall::components::aurora::physics {
 namespace {
 
 constexpr double kR = 6371.0;
@@ -33,12 +33,12 @@ double referenceLength(const std::vector<glm::dvec2>& points)
 
 TEST(CurtainGeometry, LatLonRoundTripAndPlanetFrame)
 {
-    EXPECT_NEAR(glm::length(unitFromLatLon(0.0, 180.0) - glm::dvec3(1, 0, 0)), 0.0, 1e-15);
-    EXPECT_NEAR(glm::length(unitFromLatLon(0.0, -90.0) - glm::dvec3(0, 1, 0)), 0.0, 1e-15);
-    EXPECT_NEAR(glm::length(unitFromLatLon(90.0, 0.0) - glm::dvec3(0, 0, 1)), 0.0, 1e-15);
+    EXPECT_NEAR(glm::length(common::unitFromLatLon(0.0, 180.0) - glm::dvec3(1, 0, 0)), 0.0, 1e-15);
+    EXPECT_NEAR(glm::length(common::unitFromLatLon(0.0, -90.0) - glm::dvec3(0, 1, 0)), 0.0, 1e-15);
+    EXPECT_NEAR(glm::length(common::unitFromLatLon(90.0, 0.0) - glm::dvec3(0, 0, 1)), 0.0, 1e-15);
     for (double lat = -80.0; lat <= 80.0; lat += 20.0)
         for (double lon = -170.0; lon <= 170.0; lon += 34.0) {
-            glm::dvec2 back = latLonFromUnit(unitFromLatLon(lat, lon));
+            glm::dvec2 back = latLonFromUnit(common::unitFromLatLon(lat, lon));
             EXPECT_NEAR(back.x, lat, 1e-12);
             EXPECT_NEAR(back.y, lon, 1e-12);
         }
@@ -53,7 +53,7 @@ TEST(CurtainGeometry, PassesThroughControlPoints)
     EXPECT_EQ(c.controlPointIndex.back(), static_cast<int>(c.points.size()) - 1);
     for (size_t k = 0; k < control.size(); ++k) {
         const glm::dvec3 p = c.points[c.controlPointIndex[k]];
-        EXPECT_LT(kR * angle(p, unitFromLatLon(control[k].x, control[k].y)), 1e-9) << k;
+        EXPECT_LT(kR * angle(p, common::unitFromLatLon(control[k].x, control[k].y)), 1e-9) << k;
     }
 }
 
@@ -109,7 +109,7 @@ TEST(CurtainGeometry, ArclengthAtControlPointsMatchesFineReference)
 TEST(CurtainGeometry, GreatCircleInputStaysOnTheGreatCircle)
 {
     // Uneven points on the great circle through (60° N, 10° W) and (70° N, 40° E).
-    const glm::dvec3 a = unitFromLatLon(60.0, -10.0), b = unitFromLatLon(70.0, 40.0);
+    const glm::dvec3 a = common::unitFromLatLon(60.0, -10.0), b = common::unitFromLatLon(70.0, 40.0);
     const glm::dvec3 pole = glm::normalize(glm::cross(a, b));
     const glm::dvec3 along = glm::cross(pole, a);
     std::vector<glm::dvec2> control;
@@ -130,7 +130,7 @@ TEST(CurtainGeometry, NormalPointsLeftOfTravel)
     CurtainPolyline c = sampleCurtain({{65.0, 0.0}, {65.0, 5.0}, {65.0, 10.0}}, kR, 5.0);
     for (size_t k = 0; k < c.points.size(); ++k) {
         const glm::dvec2 ll = latLonFromUnit(c.points[k]);
-        const glm::dvec3 north = unitFromLatLon(ll.x + 1e-3, ll.y) - c.points[k];
+        const glm::dvec3 north = common::unitFromLatLon(ll.x + 1e-3, ll.y) - c.points[k];
         EXPECT_GT(glm::dot(c.normals[k], glm::normalize(north)), 0.99) << k;
     }
 }
@@ -166,8 +166,8 @@ TEST(CurtainGeometry, KeyframeInterpolationOnTheSphere)
         std::vector<glm::dvec2> p = interpolateControlPoints(a, b, w);
         ASSERT_EQ(p.size(), a.size());
         for (size_t k = 0; k < a.size(); ++k) {
-            const glm::dvec3 pa = unitFromLatLon(a[k].x, a[k].y), pb = unitFromLatLon(b[k].x, b[k].y);
-            const glm::dvec3 pw = unitFromLatLon(p[k].x, p[k].y);
+            const glm::dvec3 pa = common::unitFromLatLon(a[k].x, a[k].y), pb = common::unitFromLatLon(b[k].x, b[k].y);
+            const glm::dvec3 pw = common::unitFromLatLon(p[k].x, p[k].y);
             EXPECT_NEAR(angle(pa, pw), w * angle(pa, pb), 1e-12);
             EXPECT_NEAR(angle(pw, pb), (1.0 - w) * angle(pa, pb), 1e-12);
         }
@@ -195,4 +195,4 @@ TEST(CurtainGeometry, SmoothWeightIsC1Ease)
 }
 
 } // namespace
-} // namespace aurorawall::aurora
+} // namespace aurorawall::components::aurora::physics

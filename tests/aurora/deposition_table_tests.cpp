@@ -8,12 +8,12 @@
 #include <cmath>
 #include <vector>
 
-namespace aurorawall::aurora::f64 {
+namespace aurorawall::components::aurora::physics::f64 {
 AURORAWALL_GLSL_PRECISION(double)
 #include "components/aurora/deposition_coords.glsl"
-} // namespace aurorawall::aurora::f64
+} // namespace aurorawall::components::aurora::physics::f64
 
-namespace aurorawall::aurora {
+namespace aurorawall::components::aurora::physics {
 namespace {
 
 // Largest relative error of the table lookup against the exact rate over energies between the table's
@@ -159,4 +159,4 @@ TEST(DepositionTable, LineYieldTableSharesTheAltitudeAxis)
 }
 
 } // namespace
-} // namespace aurorawall::aurora
+} // namespace aurorawall::components::aurora::physics

@@ -8,7 +8,7 @@
 #include <cstdio>
 #include <vector>
 
-namespace aurorawall::aurora {
+namespace aurorawall::components::aurora::physics {
 namespace {
 
 // The exact emission in double, without tables: Σ_lines 0.1 · rate(z, E) · yield(z) · rgb.
@@ -138,4 +138,4 @@ TEST(EmissionTable, EnergiesBeyondTheTableTakeItsEndRows)
 }
 
 } // namespace
-} // namespace aurorawall::aurora
+} // namespace aurorawall::components::aurora::physics

@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-namespace aurorawall::aurora {
+namespace aurorawall::components::aurora::physics {
 namespace {
 
 using testing::peakAltitude;
@@ -74,4 +74,4 @@ TEST(Emission, ColumnBrightnessPerErgIsOfTheLiteratureOrder)
 }
 
 } // namespace
-} // namespace aurorawall::aurora
+} // namespace aurorawall::components::aurora::physics

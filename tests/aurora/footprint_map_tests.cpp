@@ -14,18 +14,18 @@
 #include <stdexcept>
 
 // Named (not anonymous) namespaces, so the functions this file does not call raise no warnings.
-namespace aurorawall::aurora::footprint_tests_f64 {
+namespace aurorawall::components::aurora::physics::footprint_tests_f64 {
 AURORAWALL_GLSL_PRECISION(double)
 #include "render/angle.glsl"
 #include "components/aurora/footprint_map.glsl"
-} // namespace aurorawall::aurora::footprint_tests_f64
-namespace aurorawall::aurora::footprint_tests_f32 {
+} // namespace aurorawall::components::aurora::physics::footprint_tests_f64
+namespace aurorawall::components::aurora::physics::footprint_tests_f32 {
 AURORAWALL_GLSL_PRECISION(float)
 #include "render/angle.glsl"
 #include "components/aurora/footprint_map.glsl"
-} // namespace aurorawall::aurora::footprint_tests_f32
+} // namespace aurorawall::components::aurora::physics::footprint_tests_f32
 
-namespace aurorawall::aurora {
+namespace aurorawall::components::aurora::physics {
 namespace {
 
 namespace f64 = footprint_tests_f64;
@@ -128,8 +128,8 @@ TEST(FootprintMap, DefaultFrameLooksDownOnTheNorthPole)
 {
     const FootprintMap map = buildFootprintMap({}, FootprintMapSpec{}, kR);
     EXPECT_LT(glm::length(map.centre - glm::dvec3(0, 0, 1)), 1e-16);
-    const glm::dvec2 greenwich = f64::footprintMapCoord(unitFromLatLon(80.0, 0.0), map.centre, map.east, map.angularRadius);
-    const glm::dvec2 east90 = f64::footprintMapCoord(unitFromLatLon(80.0, 90.0), map.centre, map.east, map.angularRadius);
+    const glm::dvec2 greenwich = f64::footprintMapCoord(common::unitFromLatLon(80.0, 0.0), map.centre, map.east, map.angularRadius);
+    const glm::dvec2 east90 = f64::footprintMapCoord(common::unitFromLatLon(80.0, 90.0), map.centre, map.east, map.angularRadius);
     EXPECT_NEAR(greenwich.x, 0.5, 1e-15);
     EXPECT_NEAR(greenwich.y, 0.5 - 10.0 / 80.0, 1e-12); // longitude 0 straight down
     EXPECT_NEAR(east90.x, 0.5 + 10.0 / 80.0, 1e-12);    // 90° E to the right
@@ -375,4 +375,4 @@ TEST(FootprintMap, FarAndEmpty)
 }
 
 } // namespace
-} // namespace aurorawall::aurora
+} // namespace aurorawall::components::aurora::physics

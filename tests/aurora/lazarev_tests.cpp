@@ -7,7 +7,7 @@
 
 #include <cmath>
 
-namespace aurorawall::aurora {
+namespace aurorawall::components::aurora::physics {
 namespace {
 
 using testing::adaptiveSimpson;
@@ -91,4 +91,4 @@ TEST(Lazarev, MaxwellianPeaksBetweenItsCharacteristicAndMeanEnergy)
 }
 
 } // namespace
-} // namespace aurorawall::aurora
+} // namespace aurorawall::components::aurora::physics

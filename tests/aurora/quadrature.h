@@ -4,7 +4,7 @@
 #include <cmath>
 #include <functional>
 
-namespace aurorawall::aurora::testing {
+namespace aurorawall::components::aurora::physics::testing {
 
 inline double adaptiveSimpson(const std::function<double(double)>& f, double a, double b, double tolerance,
                               int depth = 0)
@@ -46,4 +46,4 @@ inline double peakAltitude(const std::function<double(double)>& f, double a, dou
     return 0.5 * (lo + hi);
 }
 
-} // namespace aurorawall::aurora::testing
+} // namespace aurorawall::components::aurora::physics::testing

@@ -10,7 +10,7 @@
 #include <random>
 #include <vector>
 
-namespace aurorawall::aurora::random_curtains {
+namespace aurorawall::components::aurora::physics::random_curtains {
 
 inline constexpr double kR = 6371.0;
 
@@ -54,4 +54,4 @@ inline std::vector<CurtainPolyline> randomCurtains(std::mt19937_64& rng, int cou
     return out;
 }
 
-} // namespace aurorawall::aurora::random_curtains
+} // namespace aurorawall::components::aurora::physics::random_curtains

@@ -34,10 +34,10 @@ protected:
     void TearDown() override { fs::remove_all(folder_); }
 
     std::string folder_;
-    fluid::CurtainDetailSpec spec_;
+    simulation::CurtainDetailSpec spec_;
 };
 
-void expectBitIdentical(const fluid::FluxFrames& a, const fluid::FluxFrames& b)
+void expectBitIdentical(const simulation::FluxFrames& a, const simulation::FluxFrames& b)
 {
     EXPECT_EQ(a.nx, b.nx);
     EXPECT_EQ(a.ny, b.ny);
@@ -50,7 +50,7 @@ void expectBitIdentical(const fluid::FluxFrames& a, const fluid::FluxFrames& b)
 
 TEST_F(FluidCache, ReadBackEqualsAFreshSimulation)
 {
-    const fluid::FluxFrames fresh = fluid::simulateCurtainDetail(spec_);
+    const simulation::FluxFrames fresh = simulation::simulateCurtainDetail(spec_);
     const CachedFluxFrames built = cachedFluxFrames(spec_, folder_);
     EXPECT_EQ(built.outcome, "built, cached");
     const CachedFluxFrames read = cachedFluxFrames(spec_, folder_);
@@ -63,7 +63,7 @@ TEST_F(FluidCache, ReadBackEqualsAFreshSimulation)
 TEST_F(FluidCache, EverySpecFieldChangesTheKey)
 {
     const std::string base = fluxFramesCacheKey(spec_);
-    std::vector<fluid::CurtainDetailSpec> changed(15, spec_);
+    std::vector<simulation::CurtainDetailSpec> changed(15, spec_);
     changed[0].nx = 128;
     changed[1].ny = 32;
     changed[2].stripLengthKm = 16.5;
@@ -75,7 +75,7 @@ TEST_F(FluidCache, EverySpecFieldChangesTheKey)
     changed[8].frames = 5;
     changed[9].timeBetweenFramesS = 4.0;
     changed[10].stepsPerFrame = 3;
-    changed[11].pressureSolver = fluid::PressureSolver::Multigrid;
+    changed[11].pressureSolver = simulation::PressureSolver::Multigrid;
     changed[12].multigridCycles = 21;
     changed[13].multigridTolerance = 1e-7;
     changed[14].seed = 2;
@@ -87,11 +87,11 @@ TEST_F(FluidCache, EverySpecFieldChangesTheKey)
 TEST_F(FluidCache, AChangedSpecRebuilds)
 {
     cachedFluxFrames(spec_, folder_);
-    fluid::CurtainDetailSpec other = spec_;
+    simulation::CurtainDetailSpec other = spec_;
     other.seed = 7;
     const CachedFluxFrames rebuilt = cachedFluxFrames(other, folder_);
     EXPECT_EQ(rebuilt.outcome, "built, cached");
-    expectBitIdentical(rebuilt.frames, fluid::simulateCurtainDetail(other));
+    expectBitIdentical(rebuilt.frames, simulation::simulateCurtainDetail(other));
 }
 
 TEST_F(FluidCache, ACorruptFileIsRebuilt)
@@ -111,7 +111,7 @@ TEST_F(FluidCache, ACorruptFileIsRebuilt)
     }
     const CachedFluxFrames rebuilt = cachedFluxFrames(spec_, folder_);
     EXPECT_EQ(rebuilt.outcome, "cache corrupt, rebuilt");
-    expectBitIdentical(rebuilt.frames, fluid::simulateCurtainDetail(spec_));
+    expectBitIdentical(rebuilt.frames, simulation::simulateCurtainDetail(spec_));
     fs::resize_file(path, bytes.size() - 3);
     EXPECT_EQ(cachedFluxFrames(spec_, folder_).outcome, "cache corrupt, rebuilt");
     EXPECT_EQ(cachedFluxFrames(spec_, folder_).outcome, "read from cache");

@@ -16,11 +16,11 @@
 #include <vector>
 
 using namespace aurorawall;
-using aurora::CurtainPolyline;
-using aurora::FootprintMap;
-using aurora::FootprintMapSpec;
-using aurora::random_curtains::angle;
-using aurora::random_curtains::kR;
+using components::aurora::physics::CurtainPolyline;
+using components::aurora::physics::FootprintMap;
+using components::aurora::physics::FootprintMapSpec;
+using components::aurora::physics::random_curtains::angle;
+using components::aurora::physics::random_curtains::kR;
 using components::aurora::FootprintMapGpu;
 
 namespace {
@@ -45,7 +45,7 @@ struct GpuBuild {
 
 GpuBuild buildOnGpu(const std::vector<CurtainPolyline>& curtains, const FootprintMapSpec& spec)
 {
-    GpuBuild out{FootprintMapGpu::gpuFrame(aurora::footprintMapFrame(curtains, spec, kR)), {}};
+    GpuBuild out{FootprintMapGpu::gpuFrame(components::aurora::physics::footprintMapFrame(curtains, spec, kR)), {}};
     const gl::Texture polylines = polylineTexture(curtains);
     const gl::Texture map = gl::Texture::create2D(spec.size, spec.size, gl::TexelFormat::RGBA32F, gl::Filter::Nearest,
                                                   gl::Wrap::Clamp);
@@ -92,7 +92,7 @@ TEST(FootprintMapOnTheGpu, AgreesWithBruteForceAndTheCpuBuild)
     for (const Case& k : {Case{64, 20.0, 90.0, 0.0, 40.0, 8}, Case{128, 60.0, 72.0, 35.0, 50.0, 6},
                           Case{256, 30.0, 90.0, 0.0, 35.0, 10}, Case{512, 45.0, 75.0, -20.0, 48.0, 6}}) {
         const std::vector<CurtainPolyline> curtains =
-            aurora::random_curtains::randomCurtains(rng, k.curtains, 1000.0, k.size >= 256 ? 10.0 : 5.0);
+            components::aurora::physics::random_curtains::randomCurtains(rng, k.curtains, 1000.0, k.size >= 256 ? 10.0 : 5.0);
         FootprintMapSpec spec;
         spec.size = k.size;
         spec.reachKm = k.reachKm;
@@ -100,7 +100,7 @@ TEST(FootprintMapOnTheGpu, AgreesWithBruteForceAndTheCpuBuild)
         spec.centreLongitudeDeg = k.centreLongitudeDeg;
         spec.angularRadiusDeg = k.angularRadiusDeg;
         const GpuBuild gpu = buildOnGpu(curtains, spec);
-        const FootprintMap cpu = aurora::buildFootprintMap(curtains, spec, kR);
+        const FootprintMap cpu = components::aurora::physics::buildFootprintMap(curtains, spec, kR);
         const double eps = components::aurora::footprintGpuAllowanceKm(cpu);
         ASSERT_NEAR(gpu.frame.marginKm, cpu.marginKm + eps, 1e-12 * cpu.marginKm);
         const double band = gpu.frame.exactWithinKm;
@@ -108,7 +108,7 @@ TEST(FootprintMapOnTheGpu, AgreesWithBruteForceAndTheCpuBuild)
         long bandTexels = 0, farTexels = 0, sameSeedAsCpu = 0, withOther = 0;
         for (int j = 0; j < k.size; ++j)
             for (int i = 0; i < k.size; ++i) {
-                const glm::dvec3 p = aurora::footprintTexelDirection(cpu, i, j);
+                const glm::dvec3 p = components::aurora::physics::footprintTexelDirection(cpu, i, j);
                 if (angle(p, cpu.centre) > cpu.angularRadius + std::sqrt(0.5) * h / kR)
                     continue; // never read: beyond the cap by more than half a texel diagonal
                 const float* texel = &gpu.texels[4 * (size_t(j) * k.size + i)];
@@ -137,7 +137,7 @@ TEST(FootprintMapOnTheGpu, AgreesWithBruteForceAndTheCpuBuild)
                     if (texel[3] >= 0.0f) {
                         ++withOther;
                         const int packed = int(texel[3]);
-                        const int oc = packed / aurora::kSecondPointStride, op = packed % aurora::kSecondPointStride;
+                        const int oc = packed / components::aurora::physics::kSecondPointStride, op = packed % components::aurora::physics::kSecondPointStride;
                         ASSERT_NE(oc, c) << where;
                         ASSERT_TRUE(oc < int(curtains.size()) && op < int(curtains[oc].points.size())) << where;
                         ASSERT_LE(kR * angle(p, curtains[oc].points[op]), otherKm + 2.0 * eps) << where;
@@ -165,7 +165,7 @@ TEST(FootprintMapOnTheGpu, WithoutCurtainsEveryTexelSaysNone)
     FootprintMapSpec spec;
     spec.size = 32;
     const GpuBuild gpu = buildOnGpu({}, spec);
-    const FootprintMap cpu = aurora::buildFootprintMap({}, spec, kR);
+    const FootprintMap cpu = components::aurora::physics::buildFootprintMap({}, spec, kR);
     for (size_t t = 0; t < gpu.texels.size(); t += 4) {
         ASSERT_EQ(gpu.texels[t], -1.0f);
         ASSERT_EQ(gpu.texels[t + 1], -1.0f);
@@ -180,7 +180,7 @@ TEST(FootprintMapOnTheGpu, SameInputsSameBytesInAnyWorkgroupOrder)
 {
     const auto context = gl::createContext(gl::Backend::Egl);
     std::mt19937_64 rng(12);
-    const std::vector<CurtainPolyline> curtains = aurora::random_curtains::randomCurtains(rng, 5, 800.0, 5.0);
+    const std::vector<CurtainPolyline> curtains = components::aurora::physics::random_curtains::randomCurtains(rng, 5, 800.0, 5.0);
     FootprintMapSpec spec;
     spec.size = 128;
     spec.reachKm = 40.0;

@@ -57,7 +57,7 @@ void look(scene::Scene& s, glm::dvec3 forward)
 } // namespace
 
 namespace shared {
-using namespace aurorawall::f64;
+using namespace aurorawall::scene::f64;
 #include "physics/constants.glsl"
 #include "components/glory/cloud_deck.glsl"
 } // namespace shared
@@ -70,7 +70,7 @@ const double kAtanError = 5.0 * test::kUnitRoundoff;
 
 // The colour table the GPU reads (settings.table) and the reference's, finer one.
 struct ColourTables {
-    glory::AngleGrid grid, fineGrid;
+    components::glory::optics::AngleGrid grid, fineGrid;
     std::vector<glm::dvec3> colours, fine;
 };
 
@@ -78,10 +78,10 @@ ColourTables colourTables(const GlorySettings& s)
 {
     GlorySettings fine = s;
     fine.table = components::glory::referenceTableSpec(s.table);
-    const glory::PhaseTable table = components::glory::gloryTables(s).phase;
-    const glory::PhaseTable fineTable = components::glory::gloryTables(fine).phase;
-    return {table.angles, fineTable.angles, glory::gloryLinearSrgb(glory::gloryXyz(table, s.light)),
-            glory::gloryLinearSrgb(glory::gloryXyz(fineTable, s.light))};
+    const components::glory::optics::PhaseTable table = components::glory::gloryTables(s).phase;
+    const components::glory::optics::PhaseTable fineTable = components::glory::gloryTables(fine).phase;
+    return {table.angles, fineTable.angles, components::glory::optics::gloryLinearSrgb(components::glory::optics::gloryXyz(table, s.light)),
+            components::glory::optics::gloryLinearSrgb(components::glory::optics::gloryXyz(fineTable, s.light))};
 }
 
 // A pixel's bound, relative to the reference there. The pixel is the deck's light,
@@ -119,11 +119,11 @@ public:
         const glm::dvec3 d = accuracy::pixelDirection(view_, x, y);
         // The deck point and its cosines, in double.
         const double altitude = glm::length(o) - R;
-        const double t = aurorawall::f64::raySphere(o, d, R + glory_.deckTopKm, altitude - glory_.deckTopKm).x;
+        const double t = aurorawall::scene::f64::raySphere(o, d, R + glory_.deckTopKm, altitude - glory_.deckTopKm).x;
         const glm::dvec3 p = o + t * d, up = glm::normalize(p);
         const double mu0 = glm::dot(up, light), mu = -glm::dot(up, d);
         const double upError = (t * 30.0 * u + 2.0 * u * glm::length(p)) / glm::length(p) + 3.0 * u;
-        const glm::dvec2 top = aurorawall::f64::raySphere(p, light, R + air_.topKm, glory_.deckTopKm - air_.topKm);
+        const glm::dvec2 top = aurorawall::scene::f64::raySphere(p, light, R + air_.topKm, glory_.deckTopKm - air_.topKm);
         const double airmassLight = aurorawall::physics::atmosphere::exactAirmass(p, light, 0.0, std::max(top.y, 0.0), air_.scaleHeightKm, R);
         const double airmassView = aurorawall::physics::atmosphere::exactAirmass(o, d, 0.0, t, air_.scaleHeightKm, R);
         double rest = 40.0 * u + (upError + 3.0 * u) * (1.0 / mu0 + 1.0 / mu);
@@ -136,8 +136,8 @@ public:
         const double perRadian = (tables_.grid.index(gamma + 1e-6) - tables_.grid.index(std::max(gamma - 1e-6, 0.0))) /
                                  (gamma + 1e-6 - std::max(gamma - 1e-6, 0.0));
         const double indexError = 16.0 * u * index + perRadian * (gamma * (29.0 * u + kAtanError) + 2.0 * u);
-        const glm::dvec3 table = glory::colourAtAngle(tables_.grid, tables_.colours, gamma);
-        const glm::dvec3 fine = glory::colourAtAngle(tables_.fineGrid, tables_.fine, gamma);
+        const glm::dvec3 table = components::glory::optics::colourAtAngle(tables_.grid, tables_.colours, gamma);
+        const glm::dvec3 fine = components::glory::optics::colourAtAngle(tables_.fineGrid, tables_.fine, gamma);
         const double f = shared::singleScatteringFactor(mu0, mu, glory_.opticalThickness);
         glm::dvec3 channels(0.0);
         for (int c = 0; c < 3; ++c) {

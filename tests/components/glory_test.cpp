@@ -20,7 +20,8 @@
 #include <cstdio>
 
 using namespace aurorawall;
-using namespace aurorawall::glory;
+using namespace aurorawall::components::glory::optics;
+namespace mie = aurorawall::components::glory::mie;
 
 namespace {
 

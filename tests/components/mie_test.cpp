@@ -15,7 +15,7 @@
 #include <cstdio>
 #include <vector>
 
-namespace aurorawall::mie {
+namespace aurorawall::components::glory::mie {
 namespace {
 
 Efficiencies efficienciesAt(double x, RefractiveIndex m, const SeriesSettings& settings = {})
@@ -298,4 +298,4 @@ TEST(PhaseFunction, NarrowGammaTendsToTheSingleSize)
 }
 
 } // namespace
-} // namespace aurorawall::mie
+} // namespace aurorawall::components::glory::mie

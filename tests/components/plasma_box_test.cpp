@@ -219,7 +219,7 @@ TEST(PlasmaBoxFrames, SeededModeGrowsAtTheTwoStreamRate)
             }
         return sum / (n * n);
     };
-    const double wp = aurorawall::plasma::plasmaFrequency(s.electronDensity);
+    const double wp = aurorawall::components::plasma::simulation::plasmaFrequency(s.electronDensity);
     double st = 0.0, sl = 0.0, stt = 0.0, stl = 0.0;
     const int first = 16, last = 23, count = last - first + 1;
     for (int frame = first; frame <= last; ++frame) {

@@ -20,7 +20,7 @@ AURORAWALL_GLSL_PRECISION(double)
 #include "components/plasma/boris_push.glsl"
 } // namespace aurorawall::plasma_cost::f64
 
-using namespace aurorawall::plasma;
+using namespace aurorawall::components::plasma::simulation;
 namespace f64 = aurorawall::plasma_cost::f64;
 
 namespace {

@@ -30,7 +30,8 @@
 #include <vector>
 
 using namespace aurorawall;
-using namespace aurorawall::plasma;
+using namespace aurorawall::components::plasma::simulation;
+using namespace aurorawall::components::plasma::gpu;
 
 namespace {
 

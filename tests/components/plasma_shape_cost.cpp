@@ -16,7 +16,7 @@
 #include <ctime>
 #include <functional>
 
-using namespace aurorawall::plasma;
+using namespace aurorawall::components::plasma::simulation;
 
 namespace {
 

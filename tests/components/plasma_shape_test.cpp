@@ -25,7 +25,7 @@ AURORAWALL_GLSL_PRECISION(double)
 } // namespace aurorawall::plasma_shape_test::f64
 
 using namespace aurorawall;
-using namespace aurorawall::plasma;
+using namespace aurorawall::components::plasma::simulation;
 namespace f64 = aurorawall::plasma_shape_test::f64;
 
 namespace {

@@ -25,7 +25,7 @@ AURORAWALL_GLSL_PRECISION(double)
 } // namespace aurorawall::plasma_stiff_test::f64
 
 using namespace aurorawall;
-using namespace aurorawall::plasma;
+using namespace aurorawall::components::plasma::simulation;
 namespace boris = aurorawall::plasma_stiff_test::f64;
 
 namespace {

@@ -15,7 +15,7 @@ namespace aurorawall::test {
 
 // A charge density (C/m³, ε₀ × V/m² with Δ = 1 m) of three Fourier modes, the longest wave
 // included, plus uniform noise of a tenth of their amplitude (seed 7).
-inline std::vector<double> modesAndNoise(const plasma::PeriodicGrid& grid)
+inline std::vector<double> modesAndNoise(const components::plasma::simulation::PeriodicGrid& grid)
 {
     std::mt19937 random(7);
     std::uniform_real_distribution<double> noise(-0.1, 0.1);
@@ -25,7 +25,7 @@ inline std::vector<double> modesAndNoise(const plasma::PeriodicGrid& grid)
             for (int i = 0; i < grid.cells[0]; ++i) {
                 const double x = 2.0 * aurorawall::physics::kPi * i / grid.cells[0], y = 2.0 * aurorawall::physics::kPi * j / grid.cells[1],
                              z = 2.0 * aurorawall::physics::kPi * k / grid.cells[2];
-                rho[grid.index(i, j, k)] = plasma::kVacuumPermittivity * (std::cos(x) + 0.5 * std::sin(2 * x + 3 * y + z) +
+                rho[grid.index(i, j, k)] = components::plasma::simulation::kVacuumPermittivity * (std::cos(x) + 0.5 * std::sin(2 * x + 3 * y + z) +
                                                                           0.25 * std::cos(5 * x + y - 2 * z) + noise(random));
             }
     return rho;
@@ -60,7 +60,7 @@ struct FloatPoissonBounds {
     double potential, residual;
 };
 
-inline FloatPoissonBounds floatPoissonBounds(const plasma::PeriodicGrid& grid, const std::vector<double>& rho,
+inline FloatPoissonBounds floatPoissonBounds(const components::plasma::simulation::PeriodicGrid& grid, const std::vector<double>& rho,
                                              const std::vector<double>& exactPotential)
 {
     const double u = std::ldexp(1.0, -24), c = 2.0 * grid.dimension + 2.0;
@@ -77,7 +77,7 @@ inline FloatPoissonBounds floatPoissonBounds(const plasma::PeriodicGrid& grid, c
     mean /= double(rho.size());
     double maxPotential = 0.0, squaredPotential = 0.0, maxSource = 0.0, squaredSource = 0.0;
     for (std::size_t i = 0; i < rho.size(); ++i) {
-        const double s = (rho[i] - mean) / plasma::kVacuumPermittivity;
+        const double s = (rho[i] - mean) / components::plasma::simulation::kVacuumPermittivity;
         maxPotential = std::max(maxPotential, std::abs(exactPotential[i]));
         squaredPotential += exactPotential[i] * exactPotential[i];
         maxSource = std::max(maxSource, std::abs(s));

@@ -180,15 +180,15 @@ TEST(ControlServer, AnOverlongLineIsRefusedAndTheClientClosed)
 
 TEST(ControlServer, RefusesAddressesItCannotListenOn)
 {
-    EXPECT_THROW(ControlServer("localhost", 0), UsageError); // a name, not an IPv4 address
-    EXPECT_THROW(ControlServer("::1", 0), UsageError);
+    EXPECT_THROW(ControlServer("localhost", 0), common::UsageError); // a name, not an IPv4 address
+    EXPECT_THROW(ControlServer("::1", 0), common::UsageError);
     ControlServer first("127.0.0.1", 0);
     try {
         ControlServer second("127.0.0.1", first.port());
         FAIL() << "a port in use was accepted";
-    } catch (const UsageError&) {
+    } catch (const common::UsageError&) {
         FAIL() << "a port in use is a runtime failure, not a usage error";
-    } catch (const InputError& e) {
+    } catch (const common::InputError& e) {
         EXPECT_NE(std::string(e.what()).find("--control-port " + std::to_string(first.port())), std::string::npos)
             << e.what();
     }
@@ -244,7 +244,7 @@ TEST(ControlServer, TokenFileIsCheckedBeforeUse)
     ASSERT_GE(fd, 0);
     ::close(fd);
     EXPECT_EQ(readControlToken(""), "");
-    EXPECT_THROW(readControlToken(path), InputError); // empty
+    EXPECT_THROW(readControlToken(path), common::InputError); // empty
     {
         std::FILE* f = std::fopen(path, "w");
         std::fputs("  tok en  \n second\n", f);
@@ -256,11 +256,11 @@ TEST(ControlServer, TokenFileIsCheckedBeforeUse)
     try {
         readControlToken(path);
         ADD_FAILURE() << "a file others may read was taken";
-    } catch (const InputError& e) {
+    } catch (const common::InputError& e) {
         EXPECT_NE(std::string(e.what()).find("chmod 600"), std::string::npos) << e.what();
     }
     ::unlink(path);
-    EXPECT_THROW(readControlToken(path), InputError); // gone
+    EXPECT_THROW(readControlToken(path), common::InputError); // gone
 }
 
 // The operator is never locked out: with every slot taken by idle clients, a 17th connection gets in

@@ -16,7 +16,7 @@
 #include <utility>
 #include <vector>
 
-namespace aurorawall::fluid {
+namespace aurorawall::components::fluid_detail::simulation {
 namespace {
 
 // Flux per unit length along the strip: (1/Lx) ∫∫ F dA; 1 at frame 0 by construction.
@@ -230,4 +230,4 @@ TEST(CurtainDetail, RejectsBadSpecs)
 }
 
 } // namespace
-} // namespace aurorawall::fluid
+} // namespace aurorawall::components::fluid_detail::simulation

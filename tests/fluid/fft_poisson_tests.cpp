@@ -15,7 +15,7 @@
 #include <stdexcept>
 #include <tuple>
 
-namespace aurorawall::fluid {
+namespace aurorawall::components::fluid_detail::simulation {
 namespace {
 
 // (L p)ᵢⱼ = (pᵢ₊₁ⱼ − 2pᵢⱼ + pᵢ₋₁ⱼ)/hx² + (pᵢⱼ₊₁ − 2pᵢⱼ + pᵢⱼ₋₁)/hy², stencil by stencil.
@@ -135,4 +135,4 @@ TEST(FftPoisson, RejectsBadGrids)
 }
 
 } // namespace
-} // namespace aurorawall::fluid
+} // namespace aurorawall::components::fluid_detail::simulation

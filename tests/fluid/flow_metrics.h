@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-namespace aurorawall::fluid {
+namespace aurorawall::components::fluid_detail::simulation {
 
 // rms over the cells of |∇u| = sqrt(u_x² + u_y² + v_x² + v_y²), forward differences.
 inline double gradientRms(const MacVelocity& velocity)
@@ -27,4 +27,4 @@ inline double divergenceRms(const MacVelocity& velocity)
     return divergence(velocity).rms();
 }
 
-} // namespace aurorawall::fluid
+} // namespace aurorawall::components::fluid_detail::simulation

@@ -12,7 +12,7 @@
 #include <ctime>
 #include <functional>
 
-using namespace aurorawall::fluid;
+using namespace aurorawall::components::fluid_detail::simulation;
 
 namespace {
 

@@ -1,5 +1,5 @@
 // The running integrals across the flux frames (flux_columns.h, evaluated by the shader's
-// fluxColumnValue) against direct quadrature of the renderer's bilinear lookup (fluid::sampleFlux).
+// fluxColumnValue) against direct quadrature of the renderer's bilinear lookup (simulation::sampleFlux).
 #include "components/fluid_detail/simulation/flux_columns.h"
 
 #include "common/glsl.h"
@@ -17,7 +17,7 @@ AURORAWALL_GLSL_PRECISION(double)
 } // namespace aurorawall::f64
 
 using namespace aurorawall;
-using namespace aurorawall::fluid;
+using namespace aurorawall::components::fluid_detail::simulation;
 
 namespace {
 

@@ -13,7 +13,7 @@
 #include <string>
 #include <tuple>
 
-namespace aurorawall::fluid {
+namespace aurorawall::components::fluid_detail::simulation {
 namespace {
 
 // φ = sin(2πx/Lx) cos(4πy/Ly) + ½ cos(6πx/Lx + 0.3) sin(2πy/Ly + 1): zero mean, periodic.
@@ -157,4 +157,4 @@ TEST(Multigrid, RejectsMismatchedGridsAndLongCells)
 }
 
 } // namespace
-} // namespace aurorawall::fluid
+} // namespace aurorawall::components::fluid_detail::simulation

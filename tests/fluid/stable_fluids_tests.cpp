@@ -12,7 +12,7 @@
 #include <cstdio>
 #include <tuple>
 
-namespace aurorawall::fluid {
+namespace aurorawall::components::fluid_detail::simulation {
 namespace {
 
 // Values in [−½, ½) from the Numerical Recipes LCG (integer arithmetic: the same everywhere).
@@ -199,4 +199,4 @@ TEST(Advection, IsMonotoneInARotatingFlow)
 }
 
 } // namespace
-} // namespace aurorawall::fluid
+} // namespace aurorawall::components::fluid_detail::simulation

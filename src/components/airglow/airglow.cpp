@@ -52,12 +52,12 @@ public:
             rgb_.push_back(physics::lineLinearSrgbPerRayleigh(wavelengthNm(l.line), cieXyz(l.line)));
         }
     }
-    f64::Ray shade(f64::Ray ray) const override
+    scene::f64::Ray shade(scene::f64::Ray ray) const override
     {
         for (size_t i = 0; i < profiles_.size(); ++i) {
             const LayerProfile& p = profiles_[i];
             const double base = p.baseKm, top = base + kTopScaleHeights * p.upperScaleHeightKm;
-            const f64::ShellSegments shell = f64::rayShell(ray.origin, ray.direction, radiusKm_ + base,
+            const scene::f64::ShellSegments shell = scene::f64::rayShell(ray.origin, ray.direction, radiusKm_ + base,
                                                            ray.altitude - base, radiusKm_ + top, ray.altitude - top,
                                                            ray.end);
             for (const glm::dvec2 part : {shell.first, shell.second}) {
@@ -67,7 +67,7 @@ public:
                                                   radiusKm_ + base);
                 const double lower = physics::atmosphere::exactAirmass(ray.origin, ray.direction, part.x, part.y, p.lowerScaleHeightKm,
                                                   radiusKm_ + base);
-                ray.radiance += rgb_[i] * f64::transmittanceTo(ray, part) * (p.rayleighPerKm * (upper - lower));
+                ray.radiance += rgb_[i] * scene::f64::transmittanceTo(ray, part) * (p.rayleighPerKm * (upper - lower));
             }
         }
         return ray;

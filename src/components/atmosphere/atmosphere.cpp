@@ -28,9 +28,9 @@ private:
 class Reference : public scene::ReferenceShader {
 public:
     Reference(const Settings& s, double radiusKm) : s_(s), radiusKm_(radiusKm) {}
-    f64::Ray shade(f64::Ray ray) const override
+    scene::f64::Ray shade(scene::f64::Ray ray) const override
     {
-        ray.atmosphere = f64::lowerShellSegment(ray, radiusKm_, s_.topKm);
+        ray.atmosphere = scene::f64::lowerShellSegment(ray, radiusKm_, s_.topKm);
         if (ray.atmosphere.x < ray.atmosphere.y) {
             const double airmass = physics::atmosphere::exactAirmass(ray.origin, ray.direction, ray.atmosphere.x, ray.atmosphere.y,
                                                 s_.scaleHeightKm, radiusKm_);

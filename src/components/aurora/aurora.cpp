@@ -27,7 +27,7 @@ class Renderer : public scene::ComponentRenderer {
 public:
     Renderer(const Settings& s, double planetRadiusKm, const roles::DetailShape* detail)
         : s_(s), tables_(s), model_(s, planetRadiusKm, detail),
-          field_(model_, resolvedMapBuilder(s.footprintMapBuild), dataDirectory() + "/shaders")
+          field_(model_, resolvedMapBuilder(s.footprintMapBuild), common::dataDirectory() + "/shaders")
     {
     }
     std::string precomputationLog() const override { return tables_.summary(); }
@@ -180,7 +180,7 @@ public:
                                                           const scene::ReferenceContext& context) const override
     {
         const roles::CurtainDetailProvider* provider = roles::curtainDetailProvider(scene);
-        const fluid::FluxFrames* frames = roles::referenceFrames(context);
+        const fluid_detail::simulation::FluxFrames* frames = roles::referenceFrames(context);
         if ((provider != nullptr) != (frames != nullptr))
             throw std::invalid_argument(
                 "the reference needs the detail frames exactly when the scene lists fluid_detail or plasma");

@@ -11,9 +11,9 @@
 
 namespace aurorawall::components::fluid_detail {
 
-fluid::CurtainDetailSpec curtainDetailSpec(const Settings& detail)
+simulation::CurtainDetailSpec curtainDetailSpec(const Settings& detail)
 {
-    fluid::CurtainDetailSpec spec;
+    simulation::CurtainDetailSpec spec;
     spec.nx = detail.cellsAlong;
     spec.ny = detail.cellsAcross;
     spec.stripLengthKm = detail.stripLengthKm;
@@ -24,7 +24,7 @@ fluid::CurtainDetailSpec curtainDetailSpec(const Settings& detail)
     return spec;
 }
 
-std::vector<double> frameReachesKm(const fluid::FluxFrames& f, double stripWidthKm)
+std::vector<double> frameReachesKm(const simulation::FluxFrames& f, double stripWidthKm)
 {
     float peak = 0.0f;
     for (float v : f.flux)
@@ -38,7 +38,7 @@ std::vector<double> frameReachesKm(const fluid::FluxFrames& f, double stripWidth
     return reach;
 }
 
-DetailShape detailShape(const fluid::CurtainDetailSpec& spec, const fluid::FluxFrames& frames)
+DetailShape detailShape(const simulation::CurtainDetailSpec& spec, const simulation::FluxFrames& frames)
 {
     DetailShape d;
     d.fluxWidthKm = spec.fluxWidthKm;
@@ -53,7 +53,7 @@ CurtainDetail::CurtainDetail(const Settings& detail)
 {
     const auto start = std::chrono::steady_clock::now();
     const CachedFluxFrames cached = cachedFluxFrames(spec_, io::defaultCacheDirectory());
-    const fluid::FluxFrames& f = cached.frames;
+    const simulation::FluxFrames& f = cached.frames;
     columns_.upload(f);
     shape_ = detailShape(spec_, f);
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();

@@ -16,7 +16,7 @@ namespace aurorawall::components::fluid_detail {
 
 using roles::DetailShape;
 // The shape of these frames for the aurora's curtain model.
-DetailShape detailShape(const fluid::CurtainDetailSpec& spec, const fluid::FluxFrames& frames);
+DetailShape detailShape(const simulation::CurtainDetailSpec& spec, const simulation::FluxFrames& frames);
 
 class CurtainDetail : public roles::CurtainDetailRenderer {
 public:
@@ -30,17 +30,17 @@ public:
     const DetailShape& shape() const override { return shape_; }
 
 private:
-    fluid::CurtainDetailSpec spec_;
+    simulation::CurtainDetailSpec spec_;
     FluxColumnTexture columns_;
     DetailShape shape_;
     std::string summary_;
 };
 
 // The simulation parameters for a scene's fluid_detail table (docs/fluid.md).
-fluid::CurtainDetailSpec curtainDetailSpec(const Settings& detail);
+simulation::CurtainDetailSpec curtainDetailSpec(const Settings& detail);
 
 // For each frame: beyond this lateral distance from the strip's centre line (strip km) the frame
 // holds no more than 1e-3 of the peak flux of all frames: the largest |u| + one texel of any such cell.
-std::vector<double> frameReachesKm(const fluid::FluxFrames& frames, double stripWidthKm);
+std::vector<double> frameReachesKm(const simulation::FluxFrames& frames, double stripWidthKm);
 
 } // namespace aurorawall::components::fluid_detail

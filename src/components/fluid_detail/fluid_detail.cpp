@@ -32,9 +32,9 @@ public:
         f.frames = static_cast<int>(t.number("frames", 2, 256, f.frames));
         f.seed = static_cast<unsigned>(t.number("seed", 0, 4294967295.0, f.seed));
         f.pressureSolver = t.choice("pressure_solver", {"fft", "multigrid"},
-                                    f.pressureSolver == fluid::PressureSolver::Fft ? 0 : 1) == 0
-                               ? fluid::PressureSolver::Fft
-                               : fluid::PressureSolver::Multigrid;
+                                    f.pressureSolver == simulation::PressureSolver::Fft ? 0 : 1) == 0
+                               ? simulation::PressureSolver::Fft
+                               : simulation::PressureSolver::Multigrid;
     }
     std::vector<std::string> shaderModules() const override { return {}; }
     std::unique_ptr<scene::ComponentRenderer> makeRenderer(const scene::Scene& scene,
@@ -47,12 +47,12 @@ public:
     {
         return nullptr;
     }
-    std::shared_ptr<const fluid::FluxFrames> referenceFrames(const scene::Scene& scene) const override
+    std::shared_ptr<const simulation::FluxFrames> referenceFrames(const scene::Scene& scene) const override
     {
-        return std::make_shared<const fluid::FluxFrames>(
+        return std::make_shared<const simulation::FluxFrames>(
             cachedFluxFrames(curtainDetailSpec(scene.settings<Settings>()), io::defaultCacheDirectory()).frames);
     }
-    DetailShape referenceShape(const scene::Scene& scene, const fluid::FluxFrames& frames) const override
+    DetailShape referenceShape(const scene::Scene& scene, const simulation::FluxFrames& frames) const override
     {
         return detailShape(curtainDetailSpec(scene.settings<Settings>()), frames);
     }

@@ -20,9 +20,9 @@ FluxColumnTexture::FluxColumnTexture() : tables_(tableTexture(1, 1, 1))
 {
 }
 
-void FluxColumnTexture::upload(const fluid::FluxFrames& f)
+void FluxColumnTexture::upload(const simulation::FluxFrames& f)
 {
-    const fluid::FluxTables t = fluid::packFluxTables(fluid::fluxColumns(f), fluid::fluxRows(f));
+    const simulation::FluxTables t = simulation::packFluxTables(simulation::fluxColumns(f), simulation::fluxRows(f));
     if (tables_.width() != t.width || tables_.height() != t.frames || tables_.depth() != t.layers)
         tables_ = tableTexture(t.width, t.frames, t.layers);
     tables_.upload(t.texels);

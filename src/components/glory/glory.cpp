@@ -21,10 +21,9 @@
 
 namespace aurorawall::components::glory {
 
-namespace optics = aurorawall::glory;
 
 namespace f64 {
-using namespace aurorawall::f64;
+using namespace aurorawall::scene::f64;
 #include "physics/constants.glsl"
 #include "components/glory/cloud_deck.glsl"
 #include "components/glory/glory_angle.glsl"

@@ -27,11 +27,11 @@ private:
 class Reference : public scene::ReferenceShader {
 public:
     Reference(const Settings& s, double radiusKm) : s_(s), radiusKm_(radiusKm) {}
-    f64::Ray bound(f64::Ray ray) const override
+    scene::f64::Ray bound(scene::f64::Ray ray) const override
     {
-        return f64::boundByGround(ray, radiusKm_, glm::length(ray.origin) - radiusKm_);
+        return scene::f64::boundByGround(ray, radiusKm_, glm::length(ray.origin) - radiusKm_);
     }
-    f64::Ray shade(f64::Ray ray) const override
+    scene::f64::Ray shade(scene::f64::Ray ray) const override
     {
         if (ray.groundT >= 0.0)
             ray.radiance += s_.surfaceRadiance * ray.transmittance;

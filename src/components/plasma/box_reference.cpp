@@ -14,15 +14,16 @@
 
 namespace aurorawall::components::plasma {
 
-namespace box_f64 {
+namespace f64 {
 AURORAWALL_GLSL_PRECISION(double)
+using namespace aurorawall::scene::f64; // the ray and its steps
 // The shader's march text over a BoxDensity (its plasmaBoxDensity).
 struct March {
     const BoxDensity* density;
     real plasmaBoxDensity(vec3 unit) const { return density->at(unit); }
 #include "components/plasma/plasma_box_march.glsl"
 };
-} // namespace box_f64
+} // namespace f64
 
 namespace {
 
@@ -132,13 +133,13 @@ double BoxDensity::exactColumn(glm::dvec3 o, glm::dvec3 d, glm::dvec2 segment, d
 
 double BoxDensity::marchedColumn(glm::dvec3 o, glm::dvec3 d, glm::dvec2 segment, int steps, double side) const
 {
-    box_f64::March march{this};
+    f64::March march{this};
     return march.plasmaBoxColumn(o, d, segment, steps, side);
 }
 
 glm::dvec2 boxSegment(glm::dvec3 o, glm::dvec3 d, double halfSide)
 {
-    box_f64::March march{nullptr}; // the segment reads no density
+    f64::March march{nullptr}; // the segment reads no density
     return march.plasmaBoxSegment(o, d, halfSide);
 }
 

@@ -29,15 +29,15 @@ BoxRenderer::BoxRenderer(const Settings& plasma, const aurora::Settings& aurora,
     BoxFrames f;
     std::string outcome;
     if (plasma.device == Settings::Device::Gpu) {
-        const aurorawall::plasma::PeriodicGrid grid = boxGrid(spec);
-        const aurorawall::plasma::Particles electrons = boxElectrons(spec);
+        const simulation::PeriodicGrid grid = boxGrid(spec);
+        const simulation::Particles electrons = boxElectrons(spec);
         f = {spec.cells, 1, boxFrameDensity(spec, grid, electrons)};
         liveBox_ = std::make_unique<LivePic>(
             grid, electrons, glm::dvec3(0.0, 0.0, spec.magneticFieldT), spec.timeStepS,
-            [spec](const aurorawall::plasma::PeriodicGrid& g, const aurorawall::plasma::Particles& e) {
+            [spec](const simulation::PeriodicGrid& g, const simulation::Particles& e) {
                 return boxFrameDensity(spec, g, e);
             },
-            dataDirectory() + "/shaders");
+            common::dataDirectory() + "/shaders");
         outcome = "live on the GPU";
     } else {
         CachedBoxFrames cached = cachedBoxFrames(spec, io::defaultCacheDirectory());

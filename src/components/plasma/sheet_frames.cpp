@@ -16,7 +16,7 @@
 
 namespace aurorawall::components::plasma {
 
-namespace pic = aurorawall::plasma;
+namespace pic = aurorawall::components::plasma::simulation;
 
 namespace {
 
@@ -44,13 +44,13 @@ std::vector<float> sheetFrameDensity(const SheetFramesSpec& spec, const pic::Per
     return frame;
 }
 
-fluid::FluxFrames simulateSheetFrames(const SheetFramesSpec& spec)
+fluid_detail::simulation::FluxFrames simulateSheetFrames(const SheetFramesSpec& spec)
 {
     if (spec.frames < 2 || spec.stepsPerFrame < 1)
         throw std::invalid_argument("plasma frames: needs at least 2 frames and 1 step per frame");
     pic::ElectrostaticPic sim = pic::sheetSimulation(spec.sheet);
     const pic::PeriodicGrid& grid = sim.grid();
-    fluid::FluxFrames f;
+    fluid_detail::simulation::FluxFrames f;
     f.nx = grid.cells[0];
     f.ny = grid.cells[1];
     f.frames = spec.frames;
@@ -67,7 +67,7 @@ fluid::FluxFrames simulateSheetFrames(const SheetFramesSpec& spec)
     return f;
 }
 
-roles::DetailShape sheetDetailShape(const SheetFramesSpec& spec, const fluid::FluxFrames& f)
+roles::DetailShape sheetDetailShape(const SheetFramesSpec& spec, const fluid_detail::simulation::FluxFrames& f)
 {
     const double widthKm = spec.sheet.widthM * 1e-3;
     double peak = 0.0, integral = 0.0, second = 0.0;

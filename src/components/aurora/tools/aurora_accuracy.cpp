@@ -206,7 +206,7 @@ struct References {
 void computeReferences(References& r, const SceneView& view, const std::vector<glm::ivec2>& pixels, const SceneAccuracySettings& settings)
 {
     const auto start = std::chrono::steady_clock::now();
-    const std::shared_ptr<const fluid::FluxFrames> frames = components::roles::curtainDetailFrames(r.scene);
+    const std::shared_ptr<const fluid_detail::simulation::FluxFrames> frames = components::roles::curtainDetailFrames(r.scene);
     render::ReferenceSettings reference;
     reference.stepKm = settings.referenceStepKm;
     const render::ReferenceModel model(r.scene, view.frame.timeS, components::roles::curtainDetailData(frames.get()),
@@ -316,7 +316,7 @@ void printWorkStats(const scene::Scene& scene, const SceneView& view, const std:
 
 void runSceneAccuracy(const SceneAccuracySettings& settings, std::ostream& out)
 {
-    const std::string dataDir = dataDirectory();
+    const std::string dataDir = common::dataDirectory();
     const std::string wallFile = settings.wallFile.empty() ? dataDir + "/config/walls/single.toml" : settings.wallFile;
     scene::Scene scene = components::loadScene(settings.sceneFile);
     if (!settings.featureCosts && !settings.workStats)

@@ -7,7 +7,7 @@
 #include <stdexcept>
 #include <string>
 
-namespace aurorawall::fluid {
+namespace aurorawall::components::fluid_detail::simulation {
 
 namespace {
 
@@ -118,10 +118,10 @@ std::optional<MultigridReport> CurtainFlow::step(double dt)
 std::optional<MultigridReport> CurtainFlow::project()
 {
     if (fft_) {
-        fluid::project(velocity_, phi_, *fft_);
+        simulation::project(velocity_, phi_, *fft_);
         return std::nullopt;
     }
-    return fluid::project(velocity_, phi_, settings_);
+    return simulation::project(velocity_, phi_, settings_);
 }
 
 double CurtainFlow::crossStreamEnergy() const
@@ -184,4 +184,4 @@ double sampleFlux(const FluxFrames& frames, double sKm, double uKm, double phase
     return (1.0 - t) * bilinear(k0) + t * bilinear(k1);
 }
 
-} // namespace aurorawall::fluid
+} // namespace aurorawall::components::fluid_detail::simulation

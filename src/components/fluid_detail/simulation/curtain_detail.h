@@ -14,7 +14,7 @@
 #include <optional>
 #include <vector>
 
-namespace aurorawall::fluid {
+namespace aurorawall::components::fluid_detail::simulation {
 
 // How the pressure projection solves its Poisson problem (docs/fluid.md, "Pressure"): Fft is exact
 // to rounding and the faster one at every grid measured; Multigrid stops at multigridTolerance.
@@ -88,4 +88,4 @@ FluxFrames simulateCurtainDetail(const CurtainDetailSpec& spec);
 // frames ⌊p⌋ and ⌊p⌋ + 1 at p = clamp(phase, 0, 1)·(frames − 1). In double.
 double sampleFlux(const FluxFrames& frames, double sKm, double uKm, double phase);
 
-} // namespace aurorawall::fluid
+} // namespace aurorawall::components::fluid_detail::simulation

@@ -4,14 +4,14 @@
 
 #include <algorithm>
 
-namespace aurorawall::f64 {
+namespace aurorawall::components::fluid_detail::simulation::f64 {
 namespace {
 AURORAWALL_GLSL_PRECISION(double)
 #include "components/aurora/flux_column.glsl"
 } // namespace
-} // namespace aurorawall::f64
+} // namespace aurorawall::components::fluid_detail::simulation::f64
 
-namespace aurorawall::fluid {
+namespace aurorawall::components::fluid_detail::simulation {
 
 namespace {
 
@@ -103,4 +103,4 @@ FluxTables packFluxTables(const FluxIntegrals& columns, const FluxIntegrals& row
     return t;
 }
 
-} // namespace aurorawall::fluid
+} // namespace aurorawall::components::fluid_detail::simulation

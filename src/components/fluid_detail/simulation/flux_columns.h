@@ -2,7 +2,7 @@
 // The flux frames' running integrals across the strip, so that the renderer integrates a ray step
 // across a thin curtain in closed form instead of point-sampling it (docs/aurora.md, "Integrating
 // across the curtain"). The flux F(s, u), as the renderer's texture lookup gives it
-// (fluid::sampleFlux: linear between cell centres, periodic), has the running integrals across it
+// (simulation::sampleFlux: linear between cell centres, periodic), has the running integrals across it
 //   C(u) = ∫_{−Ly/2}^{u} F du',   M(u) = ∫_{−Ly/2}^{u} u' F du'
 // (the mass below u and its first moment). Between two cell centres F is linear, so C and M are
 // polynomials there, given exactly by shaders/components/aurora/flux_column.glsl (fluxColumnValue)
@@ -14,7 +14,7 @@
 
 #include <vector>
 
-namespace aurorawall::fluid {
+namespace aurorawall::components::fluid_detail::simulation {
 
 // A table of running integrals over one axis of the strip (q), at every cell centre of the other axis
 // (p) and every frame: entries at the centres of q's cells, from half a cell before the strip's start.
@@ -57,4 +57,4 @@ struct FluxTables {
 
 FluxTables packFluxTables(const FluxIntegrals& columns, const FluxIntegrals& rows);
 
-} // namespace aurorawall::fluid
+} // namespace aurorawall::components::fluid_detail::simulation

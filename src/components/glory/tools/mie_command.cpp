@@ -46,7 +46,7 @@ std::vector<double> parseAngles(const std::string& list, const cli::CommandLine&
         char* stop = nullptr;
         const double value = std::strtod(word.c_str(), &stop);
         if (word.empty() || *stop != '\0' || !(value >= 0.0 && value <= 180.0))
-            throw cli.usageError("--angles-deg: '" + echoedInput(word) + "' is not an angle in [0, 180] degrees (in '" + echoedInput(list) + "')");
+            throw cli.usageError("--angles-deg: '" + common::echoedInput(word) + "' is not an angle in [0, 180] degrees (in '" + common::echoedInput(list) + "')");
         degrees.push_back(value);
         if (end == std::string::npos) return degrees;
         begin = end + 1;
