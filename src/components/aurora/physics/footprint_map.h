@@ -45,7 +45,7 @@ constexpr int kSecondPointStride = 65536;
 
 // Allowance for jump flooding's errors in the coarse map, in coarse texel sides: how much further from
 // the texel centre JFA's seed may be than the nearest seed. Measured on random curtains against brute
-// force, at most 0.26 texel for N ≥ 128 and 0.67 texel for N = 64 (tests/aurora/footprint_map_tests.cpp).
+// force, at most 0.26 texel for N ≥ 128 and 0.67 texel for N = 64 (tests/components/aurora/physics/footprint_map_tests.cpp).
 constexpr double kJfaErrorTexels = 1.0;
 
 // Side of the coarse jump-flooded map (or the map's own size, if smaller).

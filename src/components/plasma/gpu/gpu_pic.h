@@ -48,7 +48,7 @@ int picSorSweeps(const simulation::PeriodicGrid& grid);
 // exact to float (its error after kPicMultigridCycles from the previous step's φ is float rounding,
 // docs/PLASMA.md) with nothing read back, where every axis of the dimension has an even cell count;
 // FftCpu otherwise, and on Mesa's CPU renderers, where the multigrid's many small dispatches cost
-// more than the FFT in double (the live strip of tests/components/plasma_gpu_test.cpp: 5-20 times).
+// more than the FFT in double (the live strip of tests/components/plasma/gpu/plasma_gpu_test.cpp: 5-20 times).
 GpuPicSolver preferredGpuPicSolver(const simulation::PeriodicGrid& grid, const std::string& rendererName);
 
 // The wall-clock time (ms) of each phase of one step, each waited for with glFinish.

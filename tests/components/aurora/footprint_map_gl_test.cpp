@@ -2,7 +2,7 @@
 // CPU's build (src/components/aurora/physics/footprint_map.h): in the band every texel names a nearest
 // curtain point, at most 2ε farther than the nearest, and stores its distance to within ε; elsewhere a
 // lower bound to within ε, ε = footprintGpuAllowanceKm (derived in footprint_map_gpu.h).
-#include "../aurora/random_curtains.h"
+#include "physics/random_curtains.h"
 #include "components/aurora/curtain_build.h"
 #include "components/aurora/footprint_map_gpu.h"
 #include "gl/context.h"
