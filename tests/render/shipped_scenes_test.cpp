@@ -43,7 +43,7 @@ std::unique_ptr<gl::Context> ShippedScene::context_;
 // not compared.
 TEST_P(ShippedScene, DefaultsAgreeWithTheCpuReference)
 {
-    scene::Scene s = components::aurora::tools::withoutUnmodelled(components::loadScene(kSource + "/config/scenes/" + GetParam() + ".toml"));
+    scene::Scene s = scene::withoutUnmodelled(components::loadScene(kSource + "/config/scenes/" + GetParam() + ".toml"));
     const accuracy::SceneView view = accuracy::sceneView(s, kSource + "/config/walls/single.toml", {64, 36});
     const io::Image gpu = accuracy::renderView(s, view, kSource + "/shaders", 0).image;
     const double floor = 1.0 / (255.0 * s.exposure);

@@ -124,6 +124,7 @@ Curtain readCurtain(const config::TableReader& t, double planetRadiusKm, double 
 class Aurora : public scene::ComponentWith<Settings> {
 public:
     std::vector<std::string> needs() const override { return {"planet"}; }
+    std::vector<std::string> provides() const override { return {roles::kCurtains}; }
     void read(const config::TableReader& t, scene::Scene& scene, scene::ComponentSettings& settings) const override
     {
         auto& a = dynamic_cast<Settings&>(settings);

@@ -15,7 +15,7 @@ namespace {
 // samples them in double: the component adds no shader module and no reference step of its own.
 class FluidDetail : public scene::ComponentWith<Settings>, public roles::CurtainDetailProvider {
 public:
-    std::vector<std::string> needs() const override { return {"aurora"}; }
+    std::vector<std::string> needs() const override { return {roles::kCurtains}; }
     std::vector<std::string> provides() const override { return {roles::kCurtainDetail}; }
     // No shading step: the shell of the curtains it gives their detail to.
     scene::Shell shell() const override { return scene::Shell::EmittingStructures; }

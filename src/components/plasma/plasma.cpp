@@ -78,7 +78,7 @@ void readBox(const config::TableReader& t, Settings& p)
 // (box_reference.h).
 class Plasma : public scene::ComponentWith<Settings>, public roles::CurtainDetailProvider {
 public:
-    std::vector<std::string> needs() const override { return {"aurora"}; }
+    std::vector<std::string> needs() const override { return {roles::kCurtains}; }
     std::vector<std::string> provides() const override { return {roles::kCurtainDetail}; }
     void read(const config::TableReader& t, scene::Scene&, scene::ComponentSettings& settings) const override
     {

@@ -13,6 +13,9 @@ namespace aurorawall::components::roles {
 
 // The role's name in Component::provides, FindRenderer and Scene::provider.
 inline constexpr const char* kCurtainDetail = "curtain detail";
+// The role "curtains": the curtains whose profile samples the detail. A provider of the curtain
+// detail needs it (Component::needs).
+inline constexpr const char* kCurtains = "curtains";
 
 // How the frames shape a curtain across and along it: what the aurora's curtain model needs.
 struct DetailShape {

@@ -27,7 +27,7 @@ const std::string kSource = AURORAWALL_SOURCE_DIR;
 // aurora and stars are tested elsewhere.
 scene::Scene airglowOnly(const std::string& file)
 {
-    scene::Scene s = components::aurora::tools::withoutUnmodelled(components::loadScene(kSource + "/config/scenes/" + file));
+    scene::Scene s = scene::withoutUnmodelled(components::loadScene(kSource + "/config/scenes/" + file));
     s.remove("aurora");
     return s;
 }

@@ -97,7 +97,7 @@ struct Comparison {
 // own (u = 2^-24).
 Comparison compare(int stepsPerCell)
 {
-    scene::Scene s = components::aurora::tools::withoutUnmodelled(components::loadScene(kSource + "/tests/app/data/plasma-box-side.toml"));
+    scene::Scene s = scene::withoutUnmodelled(components::loadScene(kSource + "/tests/app/data/plasma-box-side.toml"));
     components::aurora::tools::applyFinestSettings(s);
     auto& plasma = s.settings<components::plasma::Settings>();
     plasma.boxStepsPerCell = stepsPerCell;

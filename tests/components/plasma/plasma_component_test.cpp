@@ -129,7 +129,7 @@ TEST(PlasmaComponent, SettingsErrorsNameFileLineAndKey)
     std::string alone = kSceneHead;
     alone.replace(alone.find("\"aurora\", "), 10, "");
     alone.erase(alone.find("[[aurora.curtain]]"));
-    EXPECT_NE(sceneError(alone).find("'plasma' needs 'aurora'"), std::string::npos) << sceneError(alone);
+    EXPECT_NE(sceneError(alone).find("'plasma' needs 'curtains' (provided by aurora)"), std::string::npos) << sceneError(alone);
 }
 
 // device: "cpu" (the default) or "gpu"; anything else names the file, line and key.

@@ -30,7 +30,7 @@ const std::string kSource = AURORAWALL_SOURCE_DIR;
 TEST(PlasmaOnTheGpu, AgreesWithTheReference)
 {
     const std::unique_ptr<gl::Context> context = gl::createContext(gl::Backend::Egl);
-    scene::Scene s = components::aurora::tools::withoutUnmodelled(components::loadScene(kSource + "/tests/app/data/plasma-seam.toml"));
+    scene::Scene s = scene::withoutUnmodelled(components::loadScene(kSource + "/tests/app/data/plasma-seam.toml"));
     components::aurora::tools::applyFinestSettings(s);
     const accuracy::SceneView view = accuracy::sceneView(s, kSource + "/config/walls/single.toml", {64, 36});
     const io::Image gpu = accuracy::renderView(s, view, kSource + "/shaders", 0).image;

@@ -60,13 +60,6 @@ void applyFinestSettings(scene::Scene& s)
         s.settings<PlasmaSettings>().boxStepsPerCell = 16;
 }
 
-scene::Scene withoutUnmodelled(scene::Scene scene)
-{
-    for (const char* c : {"stars", "planet_texture", "sky"})
-        scene = without(std::move(scene), c);
-    return scene;
-}
-
 namespace {
 
 // A scene changed by one knob or feature, with its table label.
@@ -320,7 +313,7 @@ void runSceneAccuracy(const SceneAccuracySettings& settings, std::ostream& out)
     const std::string wallFile = settings.wallFile.empty() ? dataDir + "/config/walls/single.toml" : settings.wallFile;
     scene::Scene scene = components::loadScene(settings.sceneFile);
     if (!settings.featureCosts && !settings.workStats)
-        scene = withoutUnmodelled(scene);
+        scene = scene::withoutUnmodelled(scene);
     const SceneView view = sceneView(scene, wallFile, settings.sizePx, settings.frame);
     const auto context = openAccuracyContext(out);
     out << "scene: " << settings.sceneFile << " (components:";

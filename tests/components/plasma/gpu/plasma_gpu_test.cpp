@@ -951,7 +951,7 @@ TEST(PlasmaLive, AgreesWithTheCpuFramesBeforeTheRollUp)
 TEST(PlasmaLive, RenderAgreesWithTheReference)
 {
     const std::unique_ptr<gl::Context> context = gl::createContext(gl::Backend::Egl);
-    scene::Scene s = components::aurora::tools::withoutUnmodelled(components::loadScene(kSource + "/tests/app/data/plasma-seam.toml"));
+    scene::Scene s = scene::withoutUnmodelled(components::loadScene(kSource + "/tests/app/data/plasma-seam.toml"));
     components::aurora::tools::applyFinestSettings(s);
     s.settings<component::Settings>().device = component::Settings::Device::Gpu;
     const accuracy::SceneView view = accuracy::sceneView(s, kSource + "/config/walls/single.toml", {64, 36});
