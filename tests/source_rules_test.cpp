@@ -7,6 +7,13 @@
 //   name tells where it is defined. Unnamed namespaces and namespace aliases are free, and so are the
 //   precision namespaces f32 and f64 under the folder's (aurorawall::X::Y::f64), into which shared
 //   GLSL modules are compiled as C++ (common/glsl.h).
+// - Components are found by role, never by name: no component (the list of the registry,
+//   src/components/CMakeLists.txt) is named in src/scene, src/render, src/app, shaders/render or
+//   another component's folders (src/ and shaders/), comments included. Naming is a reference a
+//   program can follow: its folder ("components/NAME/"), its name as a string ("NAME"), its
+//   namespace ("NAME::") or its shader define (HAS_NAME); the words of physics (the planet frame,
+//   the lower atmosphere) are not. kStillNamed lists the references that remain to be replaced by
+//   roles; the list may only shrink.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -15,7 +22,9 @@
 #include <fstream>
 #include <regex>
 #include <sstream>
+#include <set>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace {
@@ -170,6 +179,108 @@ std::string folderNamespace(const std::filesystem::path& folder)
     return name;
 }
 
+// The registered components: the list in src/components/CMakeLists.txt.
+std::vector<std::string> componentNames()
+{
+    const std::string key = "set(AURORAWALL_COMPONENTS ";
+    for (const std::string& line : lines(kSource / "src/components/CMakeLists.txt"))
+        if (line.rfind(key, 0) == 0) {
+            std::istringstream words(line.substr(key.size(), line.find(')') - key.size()));
+            std::vector<std::string> names;
+            for (std::string name; words >> name;)
+                names.push_back(name);
+            return names;
+        }
+    return {};
+}
+
+bool isWordCharacter(char c)
+{
+    return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
+}
+
+// Does `line` name the component `name`: "components/NAME/", "components::NAME::", "\"NAME\"", or as
+// a word "NAME::" or "HAS_NAME"?
+bool namesComponent(const std::string& line, const std::string& name)
+{
+    std::string define = "HAS_" + name;
+    for (char& c : define)
+        c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    for (const std::string& reference : {"components/" + name + "/", "components::" + name + "::", "\"" + name + "\""})
+        if (line.find(reference) != std::string::npos)
+            return true;
+    for (const std::string& word : {name + "::", define})
+        for (std::size_t at = line.find(word); at != std::string::npos; at = line.find(word, at + 1)) {
+            const std::size_t end = at + word.size();
+            const bool before = at > 0 && (isWordCharacter(line[at - 1]) || line[at - 1] == ':');
+            const bool after = word == define && end < line.size() && isWordCharacter(line[end]);
+            if (!before && !after)
+                return true;
+        }
+    return false;
+}
+
+// The files under `folder` (relative to the source tree) that name a component other than `own`,
+// as "file: component".
+std::set<std::string> componentsNamed(const std::string& folder, const std::vector<std::string>& names, const std::string& own)
+{
+    std::set<std::string> found;
+    if (!std::filesystem::is_directory(kSource / folder))
+        return found;
+    for (const auto& entry : std::filesystem::recursive_directory_iterator(kSource / folder)) {
+        if (!entry.is_regular_file())
+            continue;
+        for (const std::string& line : lines(entry.path()))
+            for (const std::string& name : names)
+                if (name != own && namesComponent(line, name))
+                    found.insert(std::filesystem::relative(entry.path(), kSource).string() + ": " + name);
+    }
+    return found;
+}
+
+// What still names a component outside its folders, to be replaced by roles.
+const std::set<std::string> kStillNamed = {
+    "shaders/components/aurora/curtain_profile.glsl: fluid_detail",
+    "shaders/components/aurora/flux_column.glsl: fluid_detail",
+    "shaders/components/glory/glory.glsl: atmosphere",
+    "src/app/accuracy_command.cpp: sky",
+    "src/components/airglow/airglow.cpp: atmosphere",
+    "src/components/airglow/airglow.cpp: planet",
+    "src/components/atmosphere/atmosphere.cpp: planet",
+    "src/components/aurora/aurora.cpp: atmosphere",
+    "src/components/aurora/aurora.cpp: fluid_detail",
+    "src/components/aurora/aurora.cpp: planet",
+    "src/components/aurora/aurora_reference.cpp: fluid_detail",
+    "src/components/aurora/aurora_reference.h: fluid_detail",
+    "src/components/aurora/tools/aurora_accuracy.cpp: atmosphere",
+    "src/components/aurora/tools/aurora_accuracy.cpp: fluid_detail",
+    "src/components/aurora/tools/aurora_accuracy.cpp: planet_texture",
+    "src/components/aurora/tools/aurora_accuracy.cpp: plasma",
+    "src/components/aurora/tools/aurora_accuracy.cpp: sky",
+    "src/components/aurora/tools/aurora_accuracy.cpp: stars",
+    "src/components/fluid_detail/curtain_detail.h: aurora",
+    "src/components/fluid_detail/fluid_detail.cpp: aurora",
+    "src/components/fluid_detail/flux_column_texture.h: aurora",
+    "src/components/fluid_detail/simulation/flux_columns.cpp: aurora",
+    "src/components/fluid_detail/simulation/flux_columns.h: aurora",
+    "src/components/glory/glory.cpp: atmosphere",
+    "src/components/glory/glory.cpp: planet",
+    "src/components/planet_texture/planet_texture.cpp: planet",
+    "src/components/plasma/box_reference.cpp: airglow",
+    "src/components/plasma/box_renderer.cpp: airglow",
+    "src/components/plasma/box_renderer.cpp: aurora",
+    "src/components/plasma/box_renderer.h: aurora",
+    "src/components/plasma/plasma.cpp: aurora",
+    "src/components/plasma/plasma.cpp: fluid_detail",
+    "src/components/plasma/plasma_detail.cpp: aurora",
+    "src/components/plasma/plasma_detail.cpp: fluid_detail",
+    "src/components/plasma/plasma_detail.h: aurora",
+    "src/components/plasma/plasma_detail.h: fluid_detail",
+    "src/components/plasma/sheet_frames.cpp: fluid_detail",
+    "src/components/plasma/sheet_frames.h: fluid_detail",
+    "src/components/sky/sky.cpp: atmosphere",
+};
+
 } // namespace
 
 TEST(SourceRules, NoFunctionInSrcIsLongerThan80Lines)
@@ -210,4 +321,23 @@ TEST(SourceRules, NamespacesMatchFolders)
     }
     EXPECT_GT(files, 100u);
     EXPECT_GT(blocks, 300u); // the scan finds the blocks at all
+}
+
+TEST(SourceRules, NoComponentIsNamedOutsideItsFolders)
+{
+    const std::vector<std::string> names = componentNames();
+    ASSERT_GE(names.size(), 5u);
+    std::set<std::string> named;
+    for (const char* core : {"src/scene", "src/render", "src/app", "shaders/render"})
+        named.merge(componentsNamed(core, names, ""));
+    for (const std::string& component : names) {
+        named.merge(componentsNamed("src/components/" + component, names, component));
+        named.merge(componentsNamed("shaders/components/" + component, names, component));
+    }
+    for (const std::string& n : named)
+        if (!kStillNamed.count(n))
+            ADD_FAILURE() << n << ": a component named outside its folders (find it by a role)";
+    for (const std::string& n : kStillNamed)
+        if (!named.count(n))
+            ADD_FAILURE() << n << ": no longer named; remove it from kStillNamed";
 }
