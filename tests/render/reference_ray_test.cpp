@@ -43,7 +43,7 @@ protected:
         context_ = gl::createContext(gl::Backend::Egl);
         scene_ = new scene::Scene(finestSubstorm());
         view_ = new accuracy::SceneView(accuracy::sceneView(*scene_, kSource + "/config/walls/single.toml", {64, 36}));
-        frames_ = new components::fluid_detail::simulation::FluxFrames(components::fluid_detail::simulation::simulateCurtainDetail(components::fluid_detail::curtainDetailSpec(scene_->settings<components::fluid_detail::Settings>())));
+        frames_ = new components::roles::FluxFrames(components::fluid_detail::simulation::simulateCurtainDetail(components::fluid_detail::curtainDetailSpec(scene_->settings<components::fluid_detail::Settings>())));
     }
     static void TearDownTestSuite()
     {
@@ -58,13 +58,13 @@ protected:
     static std::unique_ptr<gl::Context> context_;
     static scene::Scene* scene_;
     static accuracy::SceneView* view_;
-    static components::fluid_detail::simulation::FluxFrames* frames_;
+    static components::roles::FluxFrames* frames_;
 };
 
 std::unique_ptr<gl::Context> ReferenceRay::context_;
 scene::Scene* ReferenceRay::scene_ = nullptr;
 accuracy::SceneView* ReferenceRay::view_ = nullptr;
-components::fluid_detail::simulation::FluxFrames* ReferenceRay::frames_ = nullptr;
+components::roles::FluxFrames* ReferenceRay::frames_ = nullptr;
 
 } // namespace
 

@@ -50,7 +50,7 @@ TEST_P(ShippedScene, DefaultsAgreeWithTheCpuReference)
     const std::vector<glm::ivec2> pixels = test::litPixels(gpu, floor, 12);
     if (pixels.empty())
         GTEST_SKIP() << GetParam() << ": no lit pixel once stars, sky and night lights are left out";
-    const std::shared_ptr<const components::fluid_detail::simulation::FluxFrames> frames = components::roles::curtainDetailFrames(s);
+    const std::shared_ptr<const components::roles::FluxFrames> frames = components::roles::curtainDetailFrames(s);
     std::unique_ptr<render::ReferenceModel> model;
     try {
         model = std::make_unique<render::ReferenceModel>(s, view.frame.timeS,

@@ -181,7 +181,7 @@ public:
                                                           const scene::ReferenceContext& context) const override
     {
         const roles::CurtainDetailProvider* provider = roles::curtainDetailProvider(scene);
-        const fluid_detail::simulation::FluxFrames* frames = roles::referenceFrames(context);
+        const roles::FluxFrames* frames = roles::referenceFrames(context);
         if ((provider != nullptr) != (frames != nullptr))
             throw std::invalid_argument(
                 "the reference needs the detail frames exactly when the scene lists fluid_detail or plasma");

@@ -20,7 +20,7 @@ static_assert(sizeof(simulation::CurtainDetailSpec) == 104, "add the new Curtain
 
 } // namespace
 
-std::vector<char> fluxFramesBytes(const simulation::FluxFrames& f)
+std::vector<char> fluxFramesBytes(const roles::FluxFrames& f)
 {
     const std::int32_t counts[3] = {f.nx, f.ny, f.frames};
     const float texels[2] = {f.texelKmX, f.texelKmY};
@@ -31,7 +31,7 @@ std::vector<char> fluxFramesBytes(const simulation::FluxFrames& f)
     return bytes;
 }
 
-simulation::FluxFrames fluxFramesFromBytes(const std::vector<char>& bytes, int nx, int ny, int frames, const std::string& what)
+roles::FluxFrames fluxFramesFromBytes(const std::vector<char>& bytes, int nx, int ny, int frames, const std::string& what)
 {
     std::int32_t counts[3];
     float texels[2];
@@ -43,7 +43,7 @@ simulation::FluxFrames fluxFramesFromBytes(const std::vector<char>& bytes, int n
     std::memcpy(texels, bytes.data() + sizeof counts, sizeof texels);
     if (counts[0] != nx || counts[1] != ny || counts[2] != frames)
         throw std::runtime_error(what + " cache: the frames do not have the spec's size");
-    simulation::FluxFrames f;
+    roles::FluxFrames f;
     f.nx = counts[0];
     f.ny = counts[1];
     f.frames = counts[2];

@@ -24,7 +24,7 @@ simulation::CurtainDetailSpec curtainDetailSpec(const Settings& detail)
     return spec;
 }
 
-std::vector<double> frameReachesKm(const simulation::FluxFrames& f, double stripWidthKm)
+std::vector<double> frameReachesKm(const roles::FluxFrames& f, double stripWidthKm)
 {
     float peak = 0.0f;
     for (float v : f.flux)
@@ -38,7 +38,7 @@ std::vector<double> frameReachesKm(const simulation::FluxFrames& f, double strip
     return reach;
 }
 
-DetailShape detailShape(const simulation::CurtainDetailSpec& spec, const simulation::FluxFrames& frames)
+DetailShape detailShape(const simulation::CurtainDetailSpec& spec, const roles::FluxFrames& frames)
 {
     DetailShape d;
     d.fluxWidthKm = spec.fluxWidthKm;
@@ -53,7 +53,7 @@ CurtainDetail::CurtainDetail(const Settings& detail)
 {
     const auto start = std::chrono::steady_clock::now();
     const CachedFluxFrames cached = cachedFluxFrames(spec_, io::defaultCacheDirectory());
-    const simulation::FluxFrames& f = cached.frames;
+    const roles::FluxFrames& f = cached.frames;
     columns_.upload(f);
     shape_ = detailShape(spec_, f);
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();

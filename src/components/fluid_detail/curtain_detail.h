@@ -16,7 +16,7 @@ namespace aurorawall::components::fluid_detail {
 
 using roles::DetailShape;
 // The shape of these frames for the aurora's curtain model.
-DetailShape detailShape(const simulation::CurtainDetailSpec& spec, const simulation::FluxFrames& frames);
+DetailShape detailShape(const simulation::CurtainDetailSpec& spec, const roles::FluxFrames& frames);
 
 class CurtainDetail : public roles::CurtainDetailRenderer {
 public:
@@ -41,6 +41,6 @@ simulation::CurtainDetailSpec curtainDetailSpec(const Settings& detail);
 
 // For each frame: beyond this lateral distance from the strip's centre line (strip km) the frame
 // holds no more than 1e-3 of the peak flux of all frames: the largest |u| + one texel of any such cell.
-std::vector<double> frameReachesKm(const simulation::FluxFrames& frames, double stripWidthKm);
+std::vector<double> frameReachesKm(const roles::FluxFrames& frames, double stripWidthKm);
 
 } // namespace aurorawall::components::fluid_detail

@@ -47,12 +47,12 @@ public:
     {
         return nullptr;
     }
-    std::shared_ptr<const simulation::FluxFrames> referenceFrames(const scene::Scene& scene) const override
+    std::shared_ptr<const roles::FluxFrames> referenceFrames(const scene::Scene& scene) const override
     {
-        return std::make_shared<const simulation::FluxFrames>(
+        return std::make_shared<const roles::FluxFrames>(
             cachedFluxFrames(curtainDetailSpec(scene.settings<Settings>()), io::defaultCacheDirectory()).frames);
     }
-    DetailShape referenceShape(const scene::Scene& scene, const simulation::FluxFrames& frames) const override
+    DetailShape referenceShape(const scene::Scene& scene, const roles::FluxFrames& frames) const override
     {
         return detailShape(curtainDetailSpec(scene.settings<Settings>()), frames);
     }

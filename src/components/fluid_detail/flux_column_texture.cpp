@@ -20,7 +20,7 @@ FluxColumnTexture::FluxColumnTexture() : tables_(tableTexture(1, 1, 1))
 {
 }
 
-void FluxColumnTexture::upload(const simulation::FluxFrames& f)
+void FluxColumnTexture::upload(const roles::FluxFrames& f)
 {
     const simulation::FluxTables t = simulation::packFluxTables(simulation::fluxColumns(f), simulation::fluxRows(f));
     if (tables_.width() != t.width || tables_.height() != t.frames || tables_.depth() != t.layers)

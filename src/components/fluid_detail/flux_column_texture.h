@@ -18,7 +18,7 @@ public:
     FluxColumnTexture();
 
     // The tables of these frames (a new texture when a size changes, else rewritten in place).
-    void upload(const simulation::FluxFrames& frames);
+    void upload(const roles::FluxFrames& frames);
     // The texture, uFluxStrip = (strip length km, strip width km, frame count, peak scale) and
     // uFluxLayout = (cells along, cells across, column entries per layer, row entries per layer).
     void bind(gl::Program& program, double stripLengthKm, double stripWidthKm, double peakScale) const;

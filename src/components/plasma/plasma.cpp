@@ -150,12 +150,12 @@ public:
             return makeBoxReference(scene.settings<Settings>(), scene.planetRadiusKm, context.timeS);
         return nullptr;
     }
-    std::shared_ptr<const fluid_detail::simulation::FluxFrames> referenceFrames(const scene::Scene& scene) const override
+    std::shared_ptr<const roles::FluxFrames> referenceFrames(const scene::Scene& scene) const override
     {
-        return std::make_shared<const fluid_detail::simulation::FluxFrames>(
+        return std::make_shared<const roles::FluxFrames>(
             cachedSheetFrames(sheetFramesSpec(scene.settings<Settings>()), io::defaultCacheDirectory()).frames);
     }
-    roles::DetailShape referenceShape(const scene::Scene& scene, const fluid_detail::simulation::FluxFrames& frames) const override
+    roles::DetailShape referenceShape(const scene::Scene& scene, const roles::FluxFrames& frames) const override
     {
         return sheetDetailShape(sheetFramesSpec(scene.settings<Settings>()), frames);
     }

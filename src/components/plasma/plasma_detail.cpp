@@ -20,7 +20,7 @@ PlasmaDetail::PlasmaDetail(const Settings& plasma, const aurora::Settings& auror
     if (!aurora.curtains.empty())
         curtain_ = aurora.curtains.front();
     const auto start = std::chrono::steady_clock::now();
-    fluid_detail::simulation::FluxFrames f;
+    roles::FluxFrames f;
     std::string outcome;
     if (plasma.device == Settings::Device::Gpu) {
         // Frame 0 on the CPU gives the curtain's shape, as the CPU frames' frame 0 does.

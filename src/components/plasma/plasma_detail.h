@@ -36,7 +36,7 @@ private:
     aurora::Curtain curtain_; // the first curtain (none: detail phase 0)
     std::unique_ptr<LivePic> live_;
     fluid_detail::FluxColumnTexture columns_;
-    fluid_detail::simulation::FluxFrames liveFrame_; // device = "gpu": the live run's frame, its flux replaced each step
+    roles::FluxFrames liveFrame_; // device = "gpu": the live run's frame, its flux replaced each step
     roles::DetailShape shape_;
     std::string summary_;
 };

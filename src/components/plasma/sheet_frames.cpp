@@ -44,13 +44,13 @@ std::vector<float> sheetFrameDensity(const SheetFramesSpec& spec, const pic::Per
     return frame;
 }
 
-fluid_detail::simulation::FluxFrames simulateSheetFrames(const SheetFramesSpec& spec)
+roles::FluxFrames simulateSheetFrames(const SheetFramesSpec& spec)
 {
     if (spec.frames < 2 || spec.stepsPerFrame < 1)
         throw std::invalid_argument("plasma frames: needs at least 2 frames and 1 step per frame");
     pic::ElectrostaticPic sim = pic::sheetSimulation(spec.sheet);
     const pic::PeriodicGrid& grid = sim.grid();
-    fluid_detail::simulation::FluxFrames f;
+    roles::FluxFrames f;
     f.nx = grid.cells[0];
     f.ny = grid.cells[1];
     f.frames = spec.frames;
@@ -67,7 +67,7 @@ fluid_detail::simulation::FluxFrames simulateSheetFrames(const SheetFramesSpec& 
     return f;
 }
 
-roles::DetailShape sheetDetailShape(const SheetFramesSpec& spec, const fluid_detail::simulation::FluxFrames& f)
+roles::DetailShape sheetDetailShape(const SheetFramesSpec& spec, const roles::FluxFrames& f)
 {
     const double widthKm = spec.sheet.widthM * 1e-3;
     double peak = 0.0, integral = 0.0, second = 0.0;

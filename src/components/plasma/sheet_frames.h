@@ -1,7 +1,7 @@
 #pragma once
 // The plasma component's curtain detail: frames of the electron density of a diocotron-unstable
 // electron strip (simulation/electron_sheet.h) as it rolls up into vortices, in the form the aurora's
-// curtain profile samples (fluid_detail::simulation::FluxFrames: x along the curtain, y across, frame by frame). CPU,
+// curtain profile samples (roles::FluxFrames: x along the curtain, y across, frame by frame). CPU,
 // serial and deterministic: every rank computes the same bytes, or reads them from the table cache.
 #include "components/fluid_detail/simulation/curtain_detail.h"
 #include "components/roles/curtain_detail.h"
@@ -20,7 +20,7 @@ struct SheetFramesSpec {
 // Frame k is the electron density after k·stepsPerFrame steps, at the texel centres
 // ((i + ½)Δx, (j + ½)Δy) of the grid's cells, divided by n_b times the strip's thickness in km: so
 // ∫F du = 1 (1/km, u in km) for every column of frame 0, as the fluid's frames.
-fluid_detail::simulation::FluxFrames simulateSheetFrames(const SheetFramesSpec& spec);
+roles::FluxFrames simulateSheetFrames(const SheetFramesSpec& spec);
 
 // One such frame from the electrons on the spec's grid (simulation::sheetGrid).
 std::vector<float> sheetFrameDensity(const SheetFramesSpec& spec, const simulation::PeriodicGrid& grid,
@@ -28,10 +28,10 @@ std::vector<float> sheetFrameDensity(const SheetFramesSpec& spec, const simulati
 
 // Frame 0's shape for the aurora's curtain model: its measured standard deviation across, its reach,
 // the strip's length, and 1/(frame 0's largest value), which makes the smooth strip's peak 1.
-roles::DetailShape sheetDetailShape(const SheetFramesSpec& spec, const fluid_detail::simulation::FluxFrames& frames);
+roles::DetailShape sheetDetailShape(const SheetFramesSpec& spec, const roles::FluxFrames& frames);
 
 struct CachedSheetFrames {
-    fluid_detail::simulation::FluxFrames frames;
+    roles::FluxFrames frames;
     std::string outcome; // io::CachedTable::outcome
 };
 

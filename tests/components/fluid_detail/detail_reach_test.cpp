@@ -14,12 +14,12 @@ namespace {
 
 // Every phase from smooth to turbulent: at every position along the strip (every cell and between
 // cells) and every lateral distance beyond the phase's reach (out to the strip's edge), the flux
-// the shader blends (simulation::sampleFlux, bilinear in space and linear between frames) is at most
+// the shader blends (roles::sampleFlux, bilinear in space and linear between frames) is at most
 // 1e-3 of the frames' peak. Default spec: 512 x 128 cells, 16 frames, strip 128 x 32 km.
 TEST(DetailReach, BeyondThePhasesReachTheBlendedFluxIsNegligible)
 {
     const simulation::CurtainDetailSpec spec;
-    const simulation::FluxFrames frames = simulation::simulateCurtainDetail(spec);
+    const roles::FluxFrames frames = simulation::simulateCurtainDetail(spec);
     const DetailShape shape = detailShape(spec, frames);
     const float peak = *std::max_element(frames.flux.begin(), frames.flux.end());
     ASSERT_EQ(shape.frameReachKm.size(), size_t(frames.frames));
@@ -35,7 +35,7 @@ TEST(DetailReach, BeyondThePhasesReachTheBlendedFluxIsNegligible)
         for (double s = 0.0; s < spec.stripLengthKm; s += 0.5 * frames.texelKmX)
             for (double u = reach; u <= 0.5 * spec.stripWidthKm; u += 0.25 * cell)
                 for (double side : {-1.0, 1.0})
-                    largestBeyond = std::max(largestBeyond, simulation::sampleFlux(frames, s, side * u, phase));
+                    largestBeyond = std::max(largestBeyond, roles::sampleFlux(frames, s, side * u, phase));
         EXPECT_LE(largestBeyond, 1e-3 * peak) << "phase " << phase << ", reach " << reach << " km";
     }
     // A phase between two frames takes the larger of their reaches; one within rounding of a frame

@@ -37,7 +37,7 @@ protected:
     simulation::CurtainDetailSpec spec_;
 };
 
-void expectBitIdentical(const simulation::FluxFrames& a, const simulation::FluxFrames& b)
+void expectBitIdentical(const roles::FluxFrames& a, const roles::FluxFrames& b)
 {
     EXPECT_EQ(a.nx, b.nx);
     EXPECT_EQ(a.ny, b.ny);
@@ -50,7 +50,7 @@ void expectBitIdentical(const simulation::FluxFrames& a, const simulation::FluxF
 
 TEST_F(FluidCache, ReadBackEqualsAFreshSimulation)
 {
-    const simulation::FluxFrames fresh = simulation::simulateCurtainDetail(spec_);
+    const roles::FluxFrames fresh = simulation::simulateCurtainDetail(spec_);
     const CachedFluxFrames built = cachedFluxFrames(spec_, folder_);
     EXPECT_EQ(built.outcome, "built, cached");
     const CachedFluxFrames read = cachedFluxFrames(spec_, folder_);

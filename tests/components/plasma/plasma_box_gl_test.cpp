@@ -108,7 +108,7 @@ Comparison compare(int stepsPerCell)
     for (const glm::ivec2& p : pixels)
         values.push_back(accuracy::pixelRadiance(gpu, p.x, p.y));
     const double floor = 1.0 / (255.0 * s.exposure);
-    const std::shared_ptr<const components::fluid_detail::simulation::FluxFrames> strip = components::roles::curtainDetailFrames(s);
+    const std::shared_ptr<const components::roles::FluxFrames> strip = components::roles::curtainDetailFrames(s);
     const scene::RoleData detail = components::roles::curtainDetailData(strip.get());
     const render::ReferenceModel model(s, view.frame.timeS, detail);
     const double frameS = plasma.boxPlayS / (plasma.boxFrames - 1);

@@ -183,7 +183,7 @@ TEST(PlasmaBoxReference, ReferenceFramesAreTheStripsFrames)
         const scene::Scene scene = components::loadScene(file);
         const auto frames = components::roles::curtainDetailFrames(scene);
         ASSERT_TRUE(frames);
-        const components::fluid_detail::simulation::FluxFrames expected = components::plasma::simulateSheetFrames(
+        const components::roles::FluxFrames expected = components::plasma::simulateSheetFrames(
             components::plasma::sheetFramesSpec(scene.settings<components::plasma::Settings>()));
         EXPECT_EQ(frames->nx, 128);
         EXPECT_EQ(frames->frames, 3);

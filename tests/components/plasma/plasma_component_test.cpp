@@ -57,7 +57,7 @@ const std::string kSceneHead = "[scene]\nname = \"t\"\ncomponents = [\"planet\",
 TEST(PlasmaComponent, FramesAreTheStripNormalisedAndDeterministic)
 {
     const components::plasma::SheetFramesSpec spec = smallSceneStrip();
-    const components::fluid_detail::simulation::FluxFrames f = components::plasma::simulateSheetFrames(spec);
+    const components::roles::FluxFrames f = components::plasma::simulateSheetFrames(spec);
     ASSERT_EQ(f.flux.size(), std::size_t(128) * 64 * 4);
     for (int ix = 0; ix < f.nx; ++ix) {
         double column = 0.0;
@@ -70,7 +70,7 @@ TEST(PlasmaComponent, FramesAreTheStripNormalisedAndDeterministic)
     EXPECT_NEAR(shape.fluxWidthKm, std::sqrt(1.0 / 3.0 + 0.25 * 0.25 / 6.0), 1e-3);
     EXPECT_DOUBLE_EQ(shape.stripLengthKm, 32.0);
 
-    const components::fluid_detail::simulation::FluxFrames again = components::plasma::simulateSheetFrames(spec);
+    const components::roles::FluxFrames again = components::plasma::simulateSheetFrames(spec);
     EXPECT_EQ(std::memcmp(f.flux.data(), again.flux.data(), f.flux.size() * sizeof(float)), 0);
     const std::string dir = testing::TempDir() + "plasma_cache";
     std::filesystem::remove_all(dir);

@@ -44,7 +44,7 @@ TEST(PlasmaOnTheGpu, AgreesWithTheReference)
         return glm::length(accuracy::pixelRadiance(gpu, a.x, a.y)) > glm::length(accuracy::pixelRadiance(gpu, b.x, b.y));
     });
     pixels.resize(16);
-    const components::fluid_detail::simulation::FluxFrames frames = components::plasma::simulateSheetFrames(
+    const components::roles::FluxFrames frames = components::plasma::simulateSheetFrames(
         components::plasma::sheetFramesSpec(s.settings<components::plasma::Settings>()));
     const render::ReferenceModel model(s, view.frame.timeS, components::roles::curtainDetailData(&frames));
     const std::vector<glm::dvec3> reference = accuracy::referencePixels(model, view, pixels, 2);
@@ -55,7 +55,7 @@ TEST(PlasmaOnTheGpu, AgreesWithTheReference)
     // The same reference with the frames of a strip seeded with one more wave: the test sees the curls.
     components::plasma::Settings other = s.settings<components::plasma::Settings>();
     other.seedMode += 1;
-    const components::fluid_detail::simulation::FluxFrames otherFrames =
+    const components::roles::FluxFrames otherFrames =
         components::plasma::simulateSheetFrames(components::plasma::sheetFramesSpec(other));
     const render::ReferenceModel otherModel(s, view.frame.timeS, components::roles::curtainDetailData(&otherFrames));
     const accuracy::RelativeError wrong =

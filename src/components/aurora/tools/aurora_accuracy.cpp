@@ -199,7 +199,7 @@ struct References {
 void computeReferences(References& r, const SceneView& view, const std::vector<glm::ivec2>& pixels, const SceneAccuracySettings& settings)
 {
     const auto start = std::chrono::steady_clock::now();
-    const std::shared_ptr<const fluid_detail::simulation::FluxFrames> frames = components::roles::curtainDetailFrames(r.scene);
+    const std::shared_ptr<const roles::FluxFrames> frames = components::roles::curtainDetailFrames(r.scene);
     render::ReferenceSettings reference;
     reference.stepKm = settings.referenceStepKm;
     const render::ReferenceModel model(r.scene, view.frame.timeS, components::roles::curtainDetailData(frames.get()),

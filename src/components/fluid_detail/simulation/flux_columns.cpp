@@ -40,7 +40,7 @@ namespace {
 
 // The running integrals over q (across when along is false, else along) of every line of cells along q,
 // at every cell of p and every frame.
-FluxIntegrals fluxIntegrals(const FluxFrames& f, bool along)
+FluxIntegrals fluxIntegrals(const roles::FluxFrames& f, bool along)
 {
     FluxIntegrals t;
     t.cells = along ? f.ny : f.nx;
@@ -63,12 +63,12 @@ FluxIntegrals fluxIntegrals(const FluxFrames& f, bool along)
 
 } // namespace
 
-FluxIntegrals fluxColumns(const FluxFrames& f)
+FluxIntegrals fluxColumns(const roles::FluxFrames& f)
 {
     return fluxIntegrals(f, false);
 }
 
-FluxIntegrals fluxRows(const FluxFrames& f)
+FluxIntegrals fluxRows(const roles::FluxFrames& f)
 {
     return fluxIntegrals(f, true);
 }

@@ -19,6 +19,9 @@
 namespace aurorawall::components::fluid_detail::simulation {
 namespace {
 
+using roles::FluxFrames;
+using roles::sampleFlux;
+
 // Flux per unit length along the strip: (1/Lx) ∫∫ F dA; 1 at frame 0 by construction.
 double fluxPerLength(const PeriodicField& f)
 {

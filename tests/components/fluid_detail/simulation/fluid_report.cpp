@@ -13,6 +13,7 @@
 #include <functional>
 
 using namespace aurorawall::components::fluid_detail::simulation;
+using aurorawall::components::roles::FluxFrames;
 
 namespace {
 

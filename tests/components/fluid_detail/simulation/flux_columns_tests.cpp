@@ -1,5 +1,5 @@
 // The running integrals across the flux frames (flux_columns.h, evaluated by the shader's
-// fluxColumnValue) against direct quadrature of the renderer's bilinear lookup (simulation::sampleFlux).
+// fluxColumnValue) against direct quadrature of the renderer's bilinear lookup (roles::sampleFlux).
 #include "components/fluid_detail/simulation/flux_columns.h"
 
 #include "common/glsl.h"
@@ -18,6 +18,8 @@ AURORAWALL_GLSL_PRECISION(double)
 
 using namespace aurorawall;
 using namespace aurorawall::components::fluid_detail::simulation;
+using aurorawall::components::roles::FluxFrames;
+using aurorawall::components::roles::sampleFlux;
 
 namespace {
 

@@ -880,7 +880,7 @@ TEST(PlasmaLive, SameStepSameBitsAfterJumpsBackAndForth)
 // diocotron growth and then the roll-up's mixing, bound in the worst case (every step's rounding
 // aligned with the fastest growth) a difference far above these. The comparison sees a step's worth
 // of motion: the live frame 4 against the CPU frame 3 differs by more than 2e-2.
-double frameZeroBound(const component::SheetFramesSpec& spec, const components::fluid_detail::simulation::FluxFrames& cpu)
+double frameZeroBound(const component::SheetFramesSpec& spec, const components::roles::FluxFrames& cpu)
 {
     const PeriodicGrid grid = sheetGrid(spec.sheet);
     const Particles electrons = sheetElectrons(spec.sheet);
@@ -912,7 +912,7 @@ TEST(PlasmaLive, AgreesWithTheCpuFramesBeforeTheRollUp)
 {
     const auto context = gl::createContext(gl::Backend::Egl);
     const component::SheetFramesSpec spec = seamStrip();
-    const components::fluid_detail::simulation::FluxFrames cpu = component::simulateSheetFrames(spec);
+    const components::roles::FluxFrames cpu = component::simulateSheetFrames(spec);
     component::LivePic live = liveStrip(spec);
     const std::size_t texels = std::size_t(cpu.nx) * cpu.ny;
     const auto difference = [&](int cpuFrame) {
@@ -966,7 +966,7 @@ TEST(PlasmaLive, RenderAgreesWithTheReference)
         return glm::length(accuracy::pixelRadiance(gpu, a.x, a.y)) > glm::length(accuracy::pixelRadiance(gpu, b.x, b.y));
     });
     pixels.resize(16);
-    const components::fluid_detail::simulation::FluxFrames frames = component::simulateSheetFrames(seamStrip());
+    const components::roles::FluxFrames frames = component::simulateSheetFrames(seamStrip());
     const render::ReferenceModel model(s, view.frame.timeS, components::roles::curtainDetailData(&frames));
     std::vector<glm::dvec3> values;
     for (const glm::ivec2& p : pixels)
@@ -976,7 +976,7 @@ TEST(PlasmaLive, RenderAgreesWithTheReference)
                 e.pixels, e.rms, e.max);
     component::Settings other = s.settings<component::Settings>();
     other.seedMode += 1;
-    const components::fluid_detail::simulation::FluxFrames otherFrames = component::simulateSheetFrames(component::sheetFramesSpec(other));
+    const components::roles::FluxFrames otherFrames = component::simulateSheetFrames(component::sheetFramesSpec(other));
     const render::ReferenceModel otherModel(s, view.frame.timeS, components::roles::curtainDetailData(&otherFrames));
     const accuracy::RelativeError wrong =
         accuracy::relativeError(values, accuracy::referencePixels(otherModel, view, pixels, 2), floor);
