@@ -257,9 +257,6 @@ const std::set<std::string> kStillNamed = {
     "src/components/aurora/tools/aurora_accuracy.cpp: stars",
     "src/components/fluid_detail/curtain_detail.h: aurora",
     "src/components/fluid_detail/fluid_detail.cpp: aurora",
-    "src/components/fluid_detail/flux_column_texture.h: aurora",
-    "src/components/fluid_detail/simulation/flux_columns.cpp: aurora",
-    "src/components/fluid_detail/simulation/flux_columns.h: aurora",
     "src/components/glory/glory.cpp: atmosphere",
     "src/components/glory/glory.cpp: planet",
     "src/components/planet_texture/planet_texture.cpp: planet",
@@ -270,9 +267,6 @@ const std::set<std::string> kStillNamed = {
     "src/components/plasma/plasma.cpp: aurora",
     "src/components/plasma/plasma_detail.cpp: aurora",
     "src/components/plasma/plasma_detail.h: aurora",
-    "src/components/plasma/plasma_detail.h: fluid_detail",
-    "src/components/plasma/sheet_frames.cpp: fluid_detail",
-    "src/components/plasma/sheet_frames.h: fluid_detail",
     "src/components/sky/sky.cpp: atmosphere",
 };
 

@@ -14,12 +14,6 @@ struct CachedFluxFrames {
     std::string outcome; // io::CachedTable::outcome
 };
 
-// Flux frames as the bytes of a cache file: nx, ny, frames (int32), texelKmX, texelKmY (float32),
-// then the flux (float32), native byte order; and back, checked against the expected counts (an
-// error naming `what` when they differ). Also used by the plasma component's frames.
-std::vector<char> fluxFramesBytes(const roles::FluxFrames& frames);
-roles::FluxFrames fluxFramesFromBytes(const std::vector<char>& bytes, int nx, int ny, int frames, const std::string& what);
-
 // The cache key: "fluid_detail flux frames v1" and every spec field (doubles in hexadecimal, exact),
 // then the executable's digest.
 std::string fluxFramesCacheKey(const simulation::CurtainDetailSpec& spec);

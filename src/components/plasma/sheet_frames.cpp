@@ -1,8 +1,5 @@
 #include "components/plasma/sheet_frames.h"
 
-#include "components/fluid_detail/cached_flux_frames.h"
-#include "components/fluid_detail/curtain_detail.h"
-
 #include "components/plasma/simulation/particle_mesh.h"
 #include "components/plasma/simulation/plasma_parameters.h"
 #include "io/table_cache.h"
@@ -82,7 +79,7 @@ roles::DetailShape sheetDetailShape(const SheetFramesSpec& spec, const roles::Fl
     }
     roles::DetailShape d;
     d.fluxWidthKm = std::sqrt(second / integral);
-    d.setFrameReaches(fluid_detail::frameReachesKm(f, widthKm));
+    d.setFrameReaches(roles::frameReachesKm(f, widthKm));
     d.stripLengthKm = spec.sheet.lengthM * 1e-3;
     d.peakScale = 1.0 / peak;
     return d;
@@ -105,8 +102,8 @@ std::string sheetFramesCacheKey(const SheetFramesSpec& s)
 CachedSheetFrames cachedSheetFrames(const SheetFramesSpec& spec, const std::string& cacheDirectory)
 {
     io::CachedTable table = io::cachedTable(cacheDirectory, "plasma", sheetFramesCacheKey(spec),
-                                            [&] { return fluid_detail::fluxFramesBytes(simulateSheetFrames(spec)); });
-    return {fluid_detail::fluxFramesFromBytes(table.bytes, spec.sheet.cellsAlong, spec.sheet.cellsAcross, spec.frames, "plasma"),
+                                            [&] { return roles::fluxFramesBytes(simulateSheetFrames(spec)); });
+    return {roles::fluxFramesFromBytes(table.bytes, spec.sheet.cellsAlong, spec.sheet.cellsAcross, spec.frames, "plasma"),
             table.outcome};
 }
 

@@ -3,7 +3,6 @@
 // electron strip (simulation/electron_sheet.h) as it rolls up into vortices, in the form the aurora's
 // curtain profile samples (roles::FluxFrames: x along the curtain, y across, frame by frame). CPU,
 // serial and deterministic: every rank computes the same bytes, or reads them from the table cache.
-#include "components/fluid_detail/simulation/curtain_detail.h"
 #include "components/roles/curtain_detail.h"
 #include "components/plasma/simulation/electron_sheet.h"
 

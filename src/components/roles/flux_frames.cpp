@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <stdexcept>
 
 namespace aurorawall::components::roles {
 
@@ -33,6 +36,54 @@ double sampleFlux(const FluxFrames& frames, double sKm, double uKm, double phase
                b * ((1.0 - a) * frames.at(k, i0, j1) + a * frames.at(k, i1, j1));
     };
     return (1.0 - t) * bilinear(k0) + t * bilinear(k1);
+}
+
+std::vector<double> frameReachesKm(const FluxFrames& f, double stripWidthKm)
+{
+    float peak = 0.0f;
+    for (float v : f.flux)
+        peak = std::max(peak, v);
+    std::vector<double> reach(size_t(f.frames), 0.0);
+    for (int k = 0; k < f.frames; ++k)
+        for (int iy = 0; iy < f.ny; ++iy)
+            for (int ix = 0; ix < f.nx; ++ix)
+                if (f.at(k, ix, iy) > 1e-3f * peak)
+                    reach[k] = std::max(reach[k], std::abs((iy + 0.5) * f.texelKmY - 0.5 * stripWidthKm) + f.texelKmY);
+    return reach;
+}
+
+std::vector<char> fluxFramesBytes(const FluxFrames& f)
+{
+    const std::int32_t counts[3] = {f.nx, f.ny, f.frames};
+    const float texels[2] = {f.texelKmX, f.texelKmY};
+    std::vector<char> bytes(sizeof counts + sizeof texels + f.flux.size() * sizeof(float));
+    std::memcpy(bytes.data(), counts, sizeof counts);
+    std::memcpy(bytes.data() + sizeof counts, texels, sizeof texels);
+    std::memcpy(bytes.data() + sizeof counts + sizeof texels, f.flux.data(), f.flux.size() * sizeof(float));
+    return bytes;
+}
+
+FluxFrames fluxFramesFromBytes(const std::vector<char>& bytes, int nx, int ny, int frames, const std::string& what)
+{
+    std::int32_t counts[3];
+    float texels[2];
+    const std::size_t header = sizeof counts + sizeof texels;
+    const std::size_t cells = std::size_t(nx) * std::size_t(ny) * std::size_t(frames);
+    if (bytes.size() != header + cells * sizeof(float))
+        throw std::runtime_error(what + " cache: the frames do not have the spec's size");
+    std::memcpy(counts, bytes.data(), sizeof counts);
+    std::memcpy(texels, bytes.data() + sizeof counts, sizeof texels);
+    if (counts[0] != nx || counts[1] != ny || counts[2] != frames)
+        throw std::runtime_error(what + " cache: the frames do not have the spec's size");
+    FluxFrames f;
+    f.nx = counts[0];
+    f.ny = counts[1];
+    f.frames = counts[2];
+    f.texelKmX = texels[0];
+    f.texelKmY = texels[1];
+    f.flux.resize(cells);
+    std::memcpy(f.flux.data(), bytes.data() + header, cells * sizeof(float));
+    return f;
 }
 
 } // namespace aurorawall::components::roles

@@ -3,6 +3,7 @@
 // curtain, as a provider computes them (a fluid simulation, a plasma's electron strip) and as the
 // curtains' profile samples them.
 #include <cstddef>
+#include <string>
 #include <vector>
 
 namespace aurorawall::components::roles {
@@ -26,5 +27,15 @@ struct FluxFrames {
 // bilinear between texel centres with periodic wrap in both directions, and linear between
 // frames ⌊p⌋ and ⌊p⌋ + 1 at p = clamp(phase, 0, 1)·(frames − 1). In double.
 double sampleFlux(const FluxFrames& frames, double sKm, double uKm, double phase);
+
+// For each frame: beyond this lateral distance from the strip's centre line (strip km) the frame
+// holds no more than 1e-3 of the peak flux of all frames: the largest |u| + one texel of any such cell.
+std::vector<double> frameReachesKm(const FluxFrames& frames, double stripWidthKm);
+
+// Flux frames as the bytes of a cache file: nx, ny, frames (int32), texelKmX, texelKmY (float32),
+// then the flux (float32), native byte order; and back, checked against the expected counts (an
+// error naming `what` when they differ): the providers' on-disk table caches.
+std::vector<char> fluxFramesBytes(const FluxFrames& frames);
+FluxFrames fluxFramesFromBytes(const std::vector<char>& bytes, int nx, int ny, int frames, const std::string& what);
 
 } // namespace aurorawall::components::roles

@@ -1,6 +1,6 @@
 // The running integrals across the flux frames (flux_columns.h, evaluated by the shader's
 // fluxColumnValue) against direct quadrature of the renderer's bilinear lookup (roles::sampleFlux).
-#include "components/fluid_detail/simulation/flux_columns.h"
+#include "components/roles/flux_columns.h"
 
 #include "common/glsl.h"
 
@@ -12,14 +12,14 @@
 #include <utility>
 
 namespace aurorawall::f64 {
+namespace {
 AURORAWALL_GLSL_PRECISION(double)
 #include "components/aurora/flux_column.glsl"
+} // namespace
 } // namespace aurorawall::f64
 
 using namespace aurorawall;
-using namespace aurorawall::components::fluid_detail::simulation;
-using aurorawall::components::roles::FluxFrames;
-using aurorawall::components::roles::sampleFlux;
+using namespace aurorawall::components::roles;
 
 namespace {
 

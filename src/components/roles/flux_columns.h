@@ -2,7 +2,7 @@
 // The flux frames' running integrals across the strip, so that the renderer integrates a ray step
 // across a thin curtain in closed form instead of point-sampling it (docs/aurora.md, "Integrating
 // across the curtain"). The flux F(s, u), as the renderer's texture lookup gives it
-// (roles::sampleFlux: linear between cell centres, periodic), has the running integrals across it
+// (sampleFlux: linear between cell centres, periodic), has the running integrals across it
 //   C(u) = ∫_{−Ly/2}^{u} F du',   M(u) = ∫_{−Ly/2}^{u} u' F du'
 // (the mass below u and its first moment). Between two cell centres F is linear, so C and M are
 // polynomials there, given exactly by shaders/components/aurora/flux_column.glsl (fluxColumnValue)
@@ -10,11 +10,11 @@
 // centres c_j = (j + ½)Δu − Ly/2 for j = −1 … ny − 1 (the first lies half a cell below the strip,
 // where the periodic flux still rises toward its first centre), for every cell centre along and
 // every frame.
-#include "components/fluid_detail/simulation/curtain_detail.h"
+#include "components/roles/flux_frames.h"
 
 #include <vector>
 
-namespace aurorawall::components::fluid_detail::simulation {
+namespace aurorawall::components::roles {
 
 // A table of running integrals over one axis of the strip (q), at every cell centre of the other axis
 // (p) and every frame: entries at the centres of q's cells, from half a cell before the strip's start.
@@ -28,7 +28,7 @@ struct FluxIntegrals {
 };
 
 // Across (q = u, p along: C and M above; entries at c_j for j = −1 … ny − 1, cells = nx).
-FluxIntegrals fluxColumns(const roles::FluxFrames& frames);
+FluxIntegrals fluxColumns(const FluxFrames& frames);
 
 // The same running integrals along the strip, for a ray step that runs along a curtain: at each cell
 // centre across, A(s) = ∫_0^s F ds' and B(s) = ∫_0^s s' F ds' (s along from the strip's start), from the
@@ -37,7 +37,7 @@ FluxIntegrals fluxColumns(const roles::FluxFrames& frames);
 // strip's start, where the periodic flux still rises toward its first centre); cells = ny. Across, the
 // texture interpolates A, B and F linearly between cell centres (periodic), which is exactly the integral
 // along of the flux as the renderer interpolates it there.
-FluxIntegrals fluxRows(const roles::FluxFrames& frames);
+FluxIntegrals fluxRows(const FluxFrames& frames);
 
 // Both tables in one 2D array texture, so that a shader reads either through one sampler and one code path
 // (a GPU runs both sides of a branch that differs between neighbouring pixels). Each entry (a column's
@@ -57,4 +57,4 @@ struct FluxTables {
 
 FluxTables packFluxTables(const FluxIntegrals& columns, const FluxIntegrals& rows);
 
-} // namespace aurorawall::components::fluid_detail::simulation
+} // namespace aurorawall::components::roles

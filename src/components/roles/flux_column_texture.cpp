@@ -1,8 +1,8 @@
-#include "components/fluid_detail/flux_column_texture.h"
+#include "components/roles/flux_column_texture.h"
 
-#include "components/fluid_detail/simulation/flux_columns.h"
+#include "components/roles/flux_columns.h"
 
-namespace aurorawall::components::fluid_detail {
+namespace aurorawall::components::roles {
 
 namespace {
 
@@ -20,9 +20,9 @@ FluxColumnTexture::FluxColumnTexture() : tables_(tableTexture(1, 1, 1))
 {
 }
 
-void FluxColumnTexture::upload(const roles::FluxFrames& f)
+void FluxColumnTexture::upload(const FluxFrames& f)
 {
-    const simulation::FluxTables t = simulation::packFluxTables(simulation::fluxColumns(f), simulation::fluxRows(f));
+    const FluxTables t = packFluxTables(fluxColumns(f), fluxRows(f));
     if (tables_.width() != t.width || tables_.height() != t.frames || tables_.depth() != t.layers)
         tables_ = tableTexture(t.width, t.frames, t.layers);
     tables_.upload(t.texels);
@@ -36,4 +36,4 @@ void FluxColumnTexture::bind(gl::Program& program, double stripLengthKm, double 
     program.set("uFluxLayout", layout_);
 }
 
-} // namespace aurorawall::components::fluid_detail
+} // namespace aurorawall::components::roles

@@ -1,17 +1,17 @@
-#include "components/fluid_detail/simulation/flux_columns.h"
+#include "components/roles/flux_columns.h"
 
 #include "common/glsl.h"
 
 #include <algorithm>
 
-namespace aurorawall::components::fluid_detail::simulation::f64 {
+namespace aurorawall::components::roles::f64 {
 namespace {
 AURORAWALL_GLSL_PRECISION(double)
 #include "components/aurora/flux_column.glsl"
 } // namespace
-} // namespace aurorawall::components::fluid_detail::simulation::f64
+} // namespace aurorawall::components::roles::f64
 
-namespace aurorawall::components::fluid_detail::simulation {
+namespace aurorawall::components::roles {
 
 namespace {
 
@@ -40,7 +40,7 @@ namespace {
 
 // The running integrals over q (across when along is false, else along) of every line of cells along q,
 // at every cell of p and every frame.
-FluxIntegrals fluxIntegrals(const roles::FluxFrames& f, bool along)
+FluxIntegrals fluxIntegrals(const FluxFrames& f, bool along)
 {
     FluxIntegrals t;
     t.cells = along ? f.ny : f.nx;
@@ -63,12 +63,12 @@ FluxIntegrals fluxIntegrals(const roles::FluxFrames& f, bool along)
 
 } // namespace
 
-FluxIntegrals fluxColumns(const roles::FluxFrames& f)
+FluxIntegrals fluxColumns(const FluxFrames& f)
 {
     return fluxIntegrals(f, false);
 }
 
-FluxIntegrals fluxRows(const roles::FluxFrames& f)
+FluxIntegrals fluxRows(const FluxFrames& f)
 {
     return fluxIntegrals(f, true);
 }
@@ -103,4 +103,4 @@ FluxTables packFluxTables(const FluxIntegrals& columns, const FluxIntegrals& row
     return t;
 }
 
-} // namespace aurorawall::components::fluid_detail::simulation
+} // namespace aurorawall::components::roles
