@@ -10,6 +10,7 @@
 #include "gl/context.h"
 #include "gl/shader_program.h"
 #include "scene/scene.h"
+#include "components/roles/names.h"
 
 namespace aurorawall::components::aurora {
 
@@ -123,7 +124,7 @@ Curtain readCurtain(const config::TableReader& t, double planetRadiusKm, double 
 
 class Aurora : public scene::ComponentWith<Settings> {
 public:
-    std::vector<std::string> needs() const override { return {"planet"}; }
+    std::vector<std::string> needs() const override { return {roles::kGround}; }
     std::vector<std::string> provides() const override { return {roles::kCurtains}; }
     void read(const config::TableReader& t, scene::Scene& scene, scene::ComponentSettings& settings) const override
     {

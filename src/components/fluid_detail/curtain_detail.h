@@ -24,7 +24,7 @@ public:
 
     std::string precomputationLog() const override { return summary_; }
     void setFrame(gl::Program&, const cluster::FrameState&) override {}
-    // Texture unit 3 and the uniforms of shaders/components/aurora/curtain_profile.glsl.
+    // Texture unit 3 and the uniforms the curtains' profile reads (roles/flux_column_texture.h).
     void bind(gl::Program& program) const override;
 
     const DetailShape& shape() const override { return shape_; }

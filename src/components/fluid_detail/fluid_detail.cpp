@@ -10,9 +10,9 @@ namespace aurorawall::components::fluid_detail {
 
 namespace {
 
-// It provides the curtain detail: the aurora's curtain profile samples these frames
-// (shaders/components/aurora/curtain_profile.glsl under HAS_CURTAIN_DETAIL), and the aurora's reference
-// samples them in double: the component adds no shader module and no reference step of its own.
+// It provides the curtain detail (roles/curtain_detail.h): the curtains' profile samples these frames
+// (under HAS_CURTAIN_DETAIL), and the curtains' reference samples them in double: the component adds
+// no shader module and no reference step of its own.
 class FluidDetail : public scene::ComponentWith<Settings>, public roles::CurtainDetailProvider {
 public:
     std::vector<std::string> needs() const override { return {roles::kCurtains}; }

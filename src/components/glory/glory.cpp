@@ -7,6 +7,7 @@
 #include "components/glory/mie/mie_scattering.h"
 #include "physics/colour_matching.h"
 #include "components/glory/optics/water.h"
+#include "components/roles/names.h"
 #include "gl/shader_program.h"
 #include "gl/texture.h"
 #include "io/table_cache.h"
@@ -264,7 +265,7 @@ void readLight(const config::TableReader& t, Settings& s)
 
 class Glory : public scene::ComponentWith<Settings> {
 public:
-    std::vector<std::string> needs() const override { return {"planet"}; }
+    std::vector<std::string> needs() const override { return {roles::kGround}; }
     void read(const config::TableReader& t, scene::Scene& scene, scene::ComponentSettings& settings) const override
     {
         auto& s = dynamic_cast<Settings&>(settings);

@@ -3,6 +3,7 @@
 #include "gl/shader_program.h"
 #include "scene/ray_steps.h"
 #include "scene/scene.h"
+#include "components/roles/names.h"
 
 namespace aurorawall::components::planet {
 
@@ -45,6 +46,7 @@ private:
 
 class Planet : public scene::ComponentWith<Settings> {
 public:
+    std::vector<std::string> provides() const override { return {roles::kGround}; }
     void read(const config::TableReader& t, scene::Scene& scene, scene::ComponentSettings& settings) const override
     {
         auto& s = dynamic_cast<Settings&>(settings);
