@@ -242,7 +242,6 @@ std::set<std::string> componentsNamed(const std::string& folder, const std::vect
 const std::set<std::string> kStillNamed = {
     "shaders/components/aurora/curtain_profile.glsl: fluid_detail",
     "shaders/components/aurora/flux_column.glsl: fluid_detail",
-    "shaders/components/glory/glory.glsl: atmosphere",
     "src/app/accuracy_command.cpp: sky",
     "src/components/airglow/airglow.cpp: atmosphere",
     "src/components/aurora/aurora.cpp: atmosphere",
@@ -253,8 +252,6 @@ const std::set<std::string> kStillNamed = {
     "src/components/aurora/tools/aurora_accuracy.cpp: sky",
     "src/components/aurora/tools/aurora_accuracy.cpp: stars",
     "src/components/glory/glory.cpp: atmosphere",
-    "src/components/plasma/box_reference.cpp: airglow",
-    "src/components/plasma/box_renderer.cpp: airglow",
     "src/components/plasma/box_renderer.cpp: aurora",
     "src/components/plasma/box_renderer.h: aurora",
     "src/components/plasma/plasma.cpp: aurora",

@@ -1,8 +1,8 @@
 #include "components/plasma/box_reference.h"
 
 #include "common/glsl.h"
-#include "components/airglow/airglow.h"
 #include "physics/colour.h"
+#include "physics/emission_lines.h"
 #include "io/table_cache.h"
 #include "scene/ray_steps.h"
 #include "scene/scene.h"
@@ -40,10 +40,8 @@ public:
     {
         const scene::LocalFrame local = scene::localFrame(plasma.boxLatitudeDeg, plasma.boxLongitudeDeg);
         axes_ = glm::dmat3(local.east, local.north, local.up);
-        const airglow::Line line = airglow::Line::Green5577;
-        rgbPerDensityKm_ =
-            aurorawall::physics::lineLinearSrgbPerRayleigh(airglow::wavelengthNm(line), airglow::cieXyz(line)) *
-            plasma.boxRayleighPerKm;
+        const aurorawall::physics::LineInfo& green = aurorawall::physics::lineInfo(aurorawall::physics::EmissionLine::Green5577);
+        rgbPerDensityKm_ = aurorawall::physics::lineLinearSrgbPerRayleigh(green.wavelengthNm, green.cieXyz) * plasma.boxRayleighPerKm;
     }
 
     // shadePlasmaBox (plasma_box.glsl) in double, the column exact.

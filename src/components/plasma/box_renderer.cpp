@@ -1,8 +1,8 @@
 #include "components/plasma/box_renderer.h"
 
 #include "common/data_dir.h"
-#include "components/airglow/airglow.h"
 #include "physics/colour.h"
+#include "physics/emission_lines.h"
 #include "gl/functions.h"
 #include "gl/shader_program.h"
 #include "io/table_cache.h"
@@ -53,9 +53,8 @@ BoxRenderer::BoxRenderer(const Settings& plasma, const aurora::Settings& aurora,
         scene::planetPoint(plasma.boxLatitudeDeg, plasma.boxLongitudeDeg, planetRadiusKm + plasma.boxAltitudeKm);
     const scene::LocalFrame local = scene::localFrame(plasma.boxLatitudeDeg, plasma.boxLongitudeDeg);
     axes_ = glm::dmat3(local.east, local.north, local.up);
-    const airglow::Line line = airglow::Line::Green5577;
-    const glm::dvec3 green =
-        aurorawall::physics::lineLinearSrgbPerRayleigh(airglow::wavelengthNm(line), airglow::cieXyz(line));
+    const aurorawall::physics::LineInfo& line = aurorawall::physics::lineInfo(aurorawall::physics::EmissionLine::Green5577);
+    const glm::dvec3 green = aurorawall::physics::lineLinearSrgbPerRayleigh(line.wavelengthNm, line.cieXyz);
     rgbPerDensityKm_ = glm::vec3(green * plasma.boxRayleighPerKm);
 
     float peak = 0.0f;
