@@ -178,7 +178,7 @@ void runSceneKnobs(const cli::CommandLine& cli, AccuracyOptions& o, std::ostream
     if (scene.sceneFile.empty())
         throw cli.usageError((table ? "--" + std::string(table->option) : std::string("--scene")) + " needs a file name");
     if (!parseSize(o.size, scene.sizePx))
-        throw cli.usageError("--size must be WxH with positive whole W and H (got '" + echoedInput(o.size) + "')");
+        throw cli.usageError("--size must be WxH with positive whole W and H (got '" + common::echoedInput(o.size) + "')");
     if (scene.frame < 0 || scene.frame > 100000000)
         throw cli.usageError("--frame must be a whole number in [0, 1e8] (got " + std::to_string(scene.frame) + ")");
     if (scene.pixels < 1 || scene.runs < 1 || scene.threads < 1)

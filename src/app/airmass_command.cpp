@@ -77,26 +77,26 @@ std::optional<AirmassRay> parseRay(const std::vector<std::string>& fields, std::
         char* end = nullptr;
         values[i] = std::strtod(text.c_str(), &end);
         if (text.empty() || *end != '\0') {
-            problem = name + " is not a number: '" + echoedInput(text) + "'";
+            problem = name + " is not a number: '" + common::echoedInput(text) + "'";
             return std::nullopt;
         }
         if (!std::isfinite(values[i])) {
-            problem = name + " is not finite: '" + echoedInput(text) + "'";
+            problem = name + " is not finite: '" + common::echoedInput(text) + "'";
             return std::nullopt;
         }
         if (!(std::abs(values[i]) <= std::numeric_limits<float>::max())) {
-            problem = name + " must be within float's range, |value| <= 3.40282347e+38 (got '" + echoedInput(text) + "')";
+            problem = name + " must be within float's range, |value| <= 3.40282347e+38 (got '" + common::echoedInput(text) + "')";
             return std::nullopt;
         }
     }
     AirmassRay ray{{values[0], values[1], values[2]}, {values[3], values[4], values[5]},
                    values[6], values[7], values[8], values[9]};
     if (!(ray.scaleHeight >= std::numeric_limits<float>::denorm_min())) {
-        problem = "field 9 (H) must be at least 1.4e-45 km, float's smallest positive number (got '" + echoedInput(fields[8]) + "')";
+        problem = "field 9 (H) must be at least 1.4e-45 km, float's smallest positive number (got '" + common::echoedInput(fields[8]) + "')";
         return std::nullopt;
     }
     if (ray.planetRadius < 0.0) {
-        problem = "field 10 (R) must be >= 0 (got '" + echoedInput(fields[9]) + "')";
+        problem = "field 10 (R) must be >= 0 (got '" + common::echoedInput(fields[9]) + "')";
         return std::nullopt;
     }
     return ray;

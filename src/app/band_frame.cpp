@@ -75,8 +75,8 @@ std::vector<cluster::BandCost> BandFrame::draw(render::TileRenderer& renderer, g
     // 1. Draw my bands, one run of consecutive bands of one screen at a time.
     std::vector<cluster::BandCost> costs;
     OutgoingBands outgoing;
-    const auto start = SteadyClock::now();
-    const double cpuStart = processCpuMilliseconds();
+    const auto start = common::SteadyClock::now();
+    const double cpuStart = common::processCpuMilliseconds();
     for (size_t first = 0; first < bands_.size();) {
         if (assignment[first] != rank_) {
             ++first;
@@ -88,8 +88,8 @@ std::vector<cluster::BandCost> BandFrame::draw(render::TileRenderer& renderer, g
         drawRun(first, end, renderer, context, screens, report, costs, outgoing);
         first = end;
     }
-    report.renderMs = millisecondsSince(start);
-    report.renderCpuMs = processCpuMilliseconds() - cpuStart;
+    report.renderMs = common::millisecondsSince(start);
+    report.renderCpuMs = common::processCpuMilliseconds() - cpuStart;
 
     // 2. Exchange the bands drawn away from their screens.
     exchange(outgoing, context, screens, assignment, world, report);
@@ -109,11 +109,11 @@ void BandFrame::drawRun(size_t first, size_t end, render::TileRenderer& renderer
     gl::FloatTarget& target = myScreen ? *own->target : *scratch->target;
     context.makeCurrent(myScreen ? own->window : 0);
 
-    const double runStart = processCpuMilliseconds();
+    const double runStart = common::processCpuMilliseconds();
     drawRows(renderer, wall::tileRays(wall_, top.screen), target, myScreen ? *own->triangle : *scratch->triangle,
              firstGlRow(bottom, screen.heightPx), bottom.y0 + bottom.height - top.y0);
     gl::glFinish();
-    const double runMs = processCpuMilliseconds() - runStart;
+    const double runMs = common::processCpuMilliseconds() - runStart;
 
     if (measureCosts_)
         shareRunCost(first, end, target, screen.heightPx, runMs, report, costs);
@@ -145,7 +145,7 @@ void BandFrame::exchange(const OutgoingBands& outgoing, gl::Context& context, st
                          const std::vector<std::int32_t>& assignment, const cluster::MpiWorld& world,
                          cluster::RankReport& report) const
 {
-    const auto exchangeStart = SteadyClock::now();
+    const auto exchangeStart = common::SteadyClock::now();
     std::vector<std::vector<std::uint8_t>> outgoingBytes;
     for (const auto& pixels : outgoing.pixels)
         outgoingBytes.push_back(io::compressHalves(pixels, 3));
@@ -176,7 +176,7 @@ void BandFrame::exchange(const OutgoingBands& outgoing, gl::Context& context, st
         own.target->uploadRgbHalf(firstGlRow(b, wall_.screens[b.screen].heightPx), b.height, pixels);
     }
     context.makeCurrent(0);
-    report.exchangeMs = millisecondsSince(exchangeStart);
+    report.exchangeMs = common::millisecondsSince(exchangeStart);
 }
 
 } // namespace aurorawall::app

@@ -23,7 +23,7 @@ CommandOutputs::CommandOutputs(std::string sceneFile, double timeStepS, io::Tone
 }
 
 void CommandOutputs::decide(const std::vector<control::OutputRequest>& requests, const cluster::FrameState& state,
-                            control::CommandChannel& channel, SteadyClock::time_point now)
+                            control::CommandChannel& channel, common::SteadyClock::time_point now)
 {
     for (const control::OutputRequest& r : requests) {
         switch (r.kind) {
@@ -64,7 +64,7 @@ void CommandOutputs::decide(const std::vector<control::OutputRequest>& requests,
 // The recording starts from this frame: written at once, so that a folder that cannot take it is
 // answered now. Replayed as a scene, it starts at this frame's time.
 void CommandOutputs::startRecording(const control::OutputRequest& request, const cluster::FrameState& state,
-                                    control::CommandChannel& channel, SteadyClock::time_point now)
+                                    control::CommandChannel& channel, common::SteadyClock::time_point now)
 {
     Recording rec{request.path, PathRecorder(request.path, sceneFile_, state.timeS, timeStepS_), now, ""};
     rec.recorder.add(state);

@@ -35,7 +35,7 @@ public:
     // and is answered; a movie starts with this frame, answered once written), then adds the frame's
     // camera to the running recording, written whole at most once a second.
     void decide(const std::vector<control::OutputRequest>& requests, const cluster::FrameState& state,
-                control::CommandChannel& channel, SteadyClock::time_point now);
+                control::CommandChannel& channel, common::SteadyClock::time_point now);
 
     // Whether the wall is to be gathered this frame for the movie.
     bool movieWanted() const { return movie_ && movie_->error.empty(); }
@@ -56,7 +56,7 @@ private:
     struct Recording {
         std::string file;
         PathRecorder recorder;
-        SteadyClock::time_point lastWrite;
+        common::SteadyClock::time_point lastWrite;
         std::string error; // the last write's failure, "" once written
     };
     struct Movie {
@@ -68,7 +68,7 @@ private:
     };
 
     void startRecording(const control::OutputRequest& request, const cluster::FrameState& state,
-                        control::CommandChannel& channel, SteadyClock::time_point now);
+                        control::CommandChannel& channel, common::SteadyClock::time_point now);
     void stopRecording(const control::OutputRequest& request, control::CommandChannel& channel);
     void startMovie(const control::OutputRequest& request, control::CommandChannel& channel);
     void stopMovie(const control::OutputRequest& request, control::CommandChannel& channel);

@@ -188,7 +188,7 @@ struct MasterState {
     bool stopRequested = false;
     bool previewDue = false; // this frame's wall goes to the browser console
     control::WallStatus wallStatus;
-    std::optional<SteadyClock::time_point> lastScreenshot; // when the wall was last gathered for screenshots
+    std::optional<common::SteadyClock::time_point> lastScreenshot; // when the wall was last gathered for screenshots
     control::WallFacts wallFacts;
     std::vector<control::ScreenshotRequest> screenshots;
     control::PresetLoader presets;
@@ -197,7 +197,7 @@ struct MasterState {
     std::vector<control::OutputRequest> outputRequests; // this frame's, carried out once it is decided
     std::optional<MovieWriter> movie;
     std::optional<PathRecorder> recorder;
-    SteadyClock::time_point lastRecordWrite = SteadyClock::now();
+    common::SteadyClock::time_point lastRecordWrite = common::SteadyClock::now();
 };
 
 // One frame in four phases: the master decides it (input, commands, clock) and broadcasts it; every
@@ -222,7 +222,7 @@ public:
     cluster::FrameStats run()
     {
         while (true) {
-            const auto frameStart = SteadyClock::now();
+            const auto frameStart = common::SteadyClock::now();
             const cluster::FrameMessage frame = decide(frameStart);
             world_.setPhase(cluster::RankPhase::Draw, frame.state.frame);
             if (frame.state.quit) {
@@ -257,7 +257,7 @@ private:
 
     // 1. The master flies the camera by the window events of the last frame, carries out the remote
     // control's commands and decides the frame; one broadcast tells every rank.
-    cluster::FrameMessage decide(SteadyClock::time_point frameStart)
+    cluster::FrameMessage decide(common::SteadyClock::time_point frameStart)
     {
         if (master_) {
             MasterState& m = *master_;
@@ -313,7 +313,7 @@ private:
 
     // The frame's camera into the recorded flight, written as it goes, whole and atomically, at most
     // once a second: a run that fails or is stopped loses at most its last second of flight.
-    void record(const cluster::FrameState& state, SteadyClock::time_point frameStart)
+    void record(const cluster::FrameState& state, common::SteadyClock::time_point frameStart)
     {
         MasterState& m = *master_;
         m.recorder->add(state);
@@ -340,12 +340,12 @@ private:
         cluster::RankReport& report = mine.report;
         report.frame = frame.state.frame;
         report.timeS = frame.state.timeS;
-        report.waitMs = millisecondsSince(waitStart_);
-        const auto start = SteadyClock::now();
-        const double prepareCpuStart = processCpuMilliseconds();
+        report.waitMs = common::millisecondsSince(waitStart_);
+        const auto start = common::SteadyClock::now();
+        const double prepareCpuStart = common::processCpuMilliseconds();
         session_.renderer->setFrame(frame.state);
-        report.prepareMs = millisecondsSince(start);
-        report.prepareCpuMs = processCpuMilliseconds() - prepareCpuStart;
+        report.prepareMs = common::millisecondsSince(start);
+        report.prepareCpuMs = common::processCpuMilliseconds() - prepareCpuStart;
         const std::vector<double>& componentMs = session_.renderer->componentFrameMs();
         std::copy_n(componentMs.begin(), std::min<size_t>(componentMs.size(), cluster::kMaxComponents),
                     report.componentMs);
@@ -366,24 +366,24 @@ private:
         session_.presenter->setHud(frame.hud);
         for (ScreenTarget& s : session_.screens)
             session_.presenter->present(*session_.context, s.window, s.target->texture(), *s.triangle, s.screen == 0);
-        auto phase = SteadyClock::now();
+        auto phase = common::SteadyClock::now();
         world_.swapBarrier();
-        report.waitMs += millisecondsSince(phase);
-        phase = SteadyClock::now();
+        report.waitMs += common::millisecondsSince(phase);
+        phase = common::SteadyClock::now();
         for (ScreenTarget& s : session_.screens)
             session_.context->swapBuffers(s.window);
         session_.context->pollEvents();
         report.closeRequested = session_.context->closeRequested();
         mine.events = windowEvents(*session_.context);
-        report.swapMs = millisecondsSince(phase);
+        report.swapMs = common::millisecondsSince(phase);
         session_.context->makeCurrent(0);
     }
 
     // 4. One gather: the master learns what every rank drew, how long it took, what its bands cost,
     // what was pressed in its windows, and whether to stop (a closed window, a stop signal).
-    void observe(const cluster::FrameMessage& frame, cluster::RankMessage& mine, SteadyClock::time_point frameStart)
+    void observe(const cluster::FrameMessage& frame, cluster::RankMessage& mine, common::SteadyClock::time_point frameStart)
     {
-        waitStart_ = SteadyClock::now();
+        waitStart_ = common::SteadyClock::now();
         mine.report.stopSignal = stopSignal();
         world_.setPhase(cluster::RankPhase::Gather, frame.state.frame);
         const std::vector<char> gathered = world_.gather(cluster::packRankMessage(mine, bandCount_));
@@ -391,7 +391,7 @@ private:
             return;
         MasterState& m = *master_;
         const std::vector<cluster::RankMessage> ranks = cluster::unpackRankMessages(gathered, bandCount_);
-        cluster::FrameRecord record{frame.state.frame, frame.state.timeS, millisecondsSince(frameStart), {}};
+        cluster::FrameRecord record{frame.state.frame, frame.state.timeS, common::millisecondsSince(frameStart), {}};
         for (const cluster::RankMessage& r : ranks) {
             m.stopRequested = m.stopRequested || r.report.closeRequested || r.report.stopSignal;
             if (r.report.stopSignal && !session_.stoppedBySignal)
@@ -424,7 +424,7 @@ private:
             return;
         MasterState& m = *master_;
         if (!m.screenshots.empty())
-            m.lastScreenshot = SteadyClock::now();
+            m.lastScreenshot = common::SteadyClock::now();
         writeScreenshots(session_, m.commandChannels, canvas, status, m.screenshots);
         m.screenshots.clear();
         if (m.movie)
@@ -444,8 +444,8 @@ private:
     cluster::FrameStats stats_;
     std::optional<MasterState> master_; // rank 0 only
     std::vector<char> message_;
-    SteadyClock::time_point waitStart_ = SteadyClock::now(); // from this rank's previous report to this frame's message
-    SteadyClock::time_point previousFrameStart_ = SteadyClock::now();
+    common::SteadyClock::time_point waitStart_ = common::SteadyClock::now(); // from this rank's previous report to this frame's message
+    common::SteadyClock::time_point previousFrameStart_ = common::SteadyClock::now();
 };
 
 } // namespace

@@ -88,9 +88,9 @@ int main(int argc, char** argv)
     if (command.empty())
         std::cerr << cli::errorLine("", "missing command (allowed: " + commandNames() + ")" + seeHelp) << "\n";
     else if (command[0] == '-')
-        std::cerr << cli::errorLine("", "unrecognised option '" + echoedInput(command) + "'" + seeHelp) << "\n";
+        std::cerr << cli::errorLine("", "unrecognised option '" + common::echoedInput(command) + "'" + seeHelp) << "\n";
     else
-        std::cerr << cli::errorLine("", "unknown command '" + echoedInput(command) + "' (allowed: " + commandNames() +
+        std::cerr << cli::errorLine("", "unknown command '" + common::echoedInput(command) + "' (allowed: " + commandNames() +
                                             ")" + seeHelp)
                   << "\n";
     return cli::kUsageError;

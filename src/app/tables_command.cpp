@@ -90,7 +90,7 @@ int runTablesCommand(int argc, char** argv, std::ostream& out, std::ostream& err
         if (tableName.empty())
             throw cli.usageError("missing the table name (allowed: " + cli::wordsOf(choices) + ")");
         if (!cli::findChoice(choices, tableName, table))
-            throw cli.usageError("unknown table '" + echoedInput(tableName) + "' (allowed: " + cli::wordsOf(choices) + ")");
+            throw cli.usageError("unknown table '" + common::echoedInput(tableName) + "' (allowed: " + cli::wordsOf(choices) + ")");
         if (table.scene) {
             if (sceneFile.empty() || givenOtherOptions(cli, nullptr))
                 throw cli.usageError(std::string(table.scene->name) + " takes --scene FILE and nothing else");

@@ -59,12 +59,12 @@ void configure(const cluster::MpiWorld& world, int argc, char** argv, WallSessio
     if (options.printRanks)
         return;
     if (s.wall.rankCount != world.size())
-        throw UsageError(options.wallFile + (options.singleScreen ? " with --single-screen" : "") +
+        throw common::UsageError(options.wallFile + (options.singleScreen ? " with --single-screen" : "") +
                          ": the wall is driven by " + std::to_string(s.wall.rankCount) +
                          (s.wall.rankCount == 1 ? " rank" : " ranks") + ", but mpirun started " +
                          std::to_string(world.size()) + " (use mpirun -n " + std::to_string(s.wall.rankCount) + ")");
     s.scene = components::loadScene(options.sceneFile);
-    s.dataDir = options.dataDir.empty() ? dataDirectory() : options.dataDir;
+    s.dataDir = options.dataDir.empty() ? common::dataDirectory() : options.dataDir;
     s.shaderDir = s.dataDir + "/shaders";
     render::marchShaderSource(s.scene, s.shaderDir); // every module readable before any window opens
     if (options.gather || options.tiles || options.controlPort >= 0 || options.webPort >= 0) // screenshot commands write there
@@ -129,7 +129,7 @@ void openGraphics(const cluster::MpiWorld& world, WallSession& s)
         const wall::Screen& screen = s.wall.screens[screenIndex];
         for (const auto& [key, px] : {std::pair{"width_px", screen.widthPx}, std::pair{"height_px", screen.heightPx}})
             if (px > largestPx)
-                throw InputError(s.options.wallFile + (s.options.singleScreen ? " with --single-screen" : "") + ": " +
+                throw common::InputError(s.options.wallFile + (s.options.singleScreen ? " with --single-screen" : "") + ": " +
                                  key + " = " + std::to_string(px) + " is more than this GL device's largest render target, " +
                                  std::to_string(largestPx) +
                                  " px (the least of GL_MAX_TEXTURE_SIZE, GL_MAX_RENDERBUFFER_SIZE and GL_MAX_VIEWPORT_DIMS)");

@@ -12,7 +12,7 @@ struct EchoedErrorValues : po::error_with_option_name {
     static void cut(po::error_with_option_name& error)
     {
         for (auto& [placeholder, text] : error.*(&EchoedErrorValues::m_substitutions))
-            text = echoedInput(text);
+            text = common::echoedInput(text);
     }
 };
 
@@ -61,9 +61,9 @@ std::string CommandLine::help() const
     return text.str();
 }
 
-UsageError CommandLine::usageError(const std::string& message) const
+common::UsageError CommandLine::usageError(const std::string& message) const
 {
-    return UsageError(message + " (see aurorawall" + (command_.empty() ? "" : " " + command_) + " --help)");
+    return common::UsageError(message + " (see aurorawall" + (command_.empty() ? "" : " " + command_) + " --help)");
 }
 
 } // namespace aurorawall::cli

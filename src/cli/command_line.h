@@ -48,7 +48,7 @@ public:
 
     std::string help() const;
     // "MESSAGE (see aurorawall COMMAND --help)", to throw.
-    UsageError usageError(const std::string& message) const;
+    common::UsageError usageError(const std::string& message) const;
 
 private:
     std::string command_;
@@ -66,7 +66,7 @@ void CommandLine::addChoice(const char* option, E* target, const Choices<E>& cho
     auto* value = po::value<std::string>()->default_value(wordOf(choices, *target))->notifier(
         [name, target, choices](const std::string& word) {
             if (!findChoice(choices, word, *target))
-                throw po::error("--" + name + ": unknown value '" + echoedInput(word) + "' (allowed: " + wordsOf(choices) + ")");
+                throw po::error("--" + name + ": unknown value '" + common::echoedInput(word) + "' (allowed: " + wordsOf(choices) + ")");
         });
     std::string words;
     for (const Choice<E>& c : choices)

@@ -9,7 +9,7 @@ namespace aurorawall::cli {
 
 int exitStatusOf(const std::exception& error)
 {
-    return dynamic_cast<const UsageError*>(&error) ? kUsageError : kRuntimeFailure;
+    return dynamic_cast<const common::UsageError*>(&error) ? kUsageError : kRuntimeFailure;
 }
 
 std::string errorLine(const std::string& command, const std::string& message)

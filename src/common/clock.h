@@ -5,7 +5,7 @@
 #include <chrono>
 #include <ctime>
 
-namespace aurorawall {
+namespace aurorawall::common {
 
 using SteadyClock = std::chrono::steady_clock;
 
@@ -21,4 +21,4 @@ inline double processCpuMilliseconds()
     return 1e3 * static_cast<double>(t.tv_sec) + 1e-6 * static_cast<double>(t.tv_nsec);
 }
 
-} // namespace aurorawall
+} // namespace aurorawall::common

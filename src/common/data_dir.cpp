@@ -3,7 +3,7 @@
 #include <cstdlib>
 #include <filesystem>
 
-namespace aurorawall {
+namespace aurorawall::common {
 
 std::string dataDirectory()
 {
@@ -20,4 +20,4 @@ std::string dataDirectory()
     return AURORAWALL_SOURCE_DATA_DIR;
 }
 
-} // namespace aurorawall
+} // namespace aurorawall::common

@@ -7,9 +7,10 @@
 //     literals written as real(0.5) so they take the module's precision;
 //   - the GLSL built-ins listed below; functions that take and return values (no in/out/inout).
 // The shader assembler prepends `#define real float`. C++ includes the module inside a
-// namespace that fixes the precision:
+// namespace that fixes the precision, f32 or f64 under the including folder's namespace (an
+// unnamed one inside where another file of the folder compiles the same module):
 //
-//   namespace aurorawall::f64 {
+//   namespace aurorawall::physics::atmosphere::f64 {
 //   AURORAWALL_GLSL_PRECISION(double)
 //   #include "physics/atmosphere/airmass.glsl"
 //   }

@@ -2,7 +2,7 @@
 
 #include <cstdio>
 
-namespace aurorawall {
+namespace aurorawall::common {
 
 std::string echoedInput(const std::string& text)
 {
@@ -29,4 +29,4 @@ std::string echoedInput(const std::string& text)
     return echoed;
 }
 
-} // namespace aurorawall
+} // namespace aurorawall::common

@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <string>
 
-namespace aurorawall {
+namespace aurorawall::common {
 
 class InputError : public std::runtime_error {
 public:
@@ -37,4 +37,4 @@ inline InputError inputError(const std::string& file, int line, const std::strin
                                : file + ": " + message);
 }
 
-} // namespace aurorawall
+} // namespace aurorawall::common

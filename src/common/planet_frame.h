@@ -7,7 +7,7 @@
 
 #include <cmath>
 
-namespace aurorawall {
+namespace aurorawall::common {
 
 // Unit vector of geographic latitude/longitude in degrees: (-cos lat cos lon, -cos lat sin lon, sin lat).
 inline glm::dvec3 unitFromLatLon(double latitudeDeg, double longitudeDeg)
@@ -16,4 +16,4 @@ inline glm::dvec3 unitFromLatLon(double latitudeDeg, double longitudeDeg)
     return {-std::cos(lat) * std::cos(lon), -std::cos(lat) * std::sin(lon), std::sin(lat)};
 }
 
-} // namespace aurorawall
+} // namespace aurorawall::common

@@ -137,7 +137,7 @@ private:
     void checkLength(const OpenBracket& array, std::size_t elements) const
     {
         if (elements > kMaxTomlArrayElements)
-            throw inputError(path_, array.line, "an array of more than " + std::to_string(kMaxTomlArrayElements) +
+            throw common::inputError(path_, array.line, "an array of more than " + std::to_string(kMaxTomlArrayElements) +
                                                     " elements, the most a config array may have");
     }
 
@@ -147,7 +147,7 @@ private:
         checkLength(array, elements);
         fileElements_ += elements;
         if (fileElements_ > kMaxTomlFileArrayElements)
-            throw inputError(path_, array.line, "more than " + std::to_string(kMaxTomlFileArrayElements) +
+            throw common::inputError(path_, array.line, "more than " + std::to_string(kMaxTomlFileArrayElements) +
                                                     " array elements in the file, the most a config file may hold");
     }
 
@@ -167,16 +167,16 @@ private:
 TomlFile parseTomlFile(const std::string& path)
 {
     if (!std::filesystem::is_regular_file(path))
-        throw inputError(path, 0, "scene file not found");
+        throw common::inputError(path, 0, "scene file not found");
     std::error_code error;
     const std::uintmax_t bytes = std::filesystem::file_size(path, error);
     if (!error && bytes > kMaxTomlFileBytes)
-        throw inputError(path, 0, "the file has " + std::to_string(bytes) + " bytes, more than the " +
+        throw common::inputError(path, 0, "the file has " + std::to_string(bytes) + " bytes, more than the " +
                                       std::to_string(kMaxTomlFileBytes >> 20) + " MiB a config file may have");
     std::ifstream in(path, std::ios::binary);
     std::ostringstream text;
     if (!in || !(text << in.rdbuf()))
-        throw inputError(path, 0, "cannot read the file");
+        throw common::inputError(path, 0, "cannot read the file");
     auto lines = std::make_shared<std::vector<int>>();
     std::istringstream broken(ArrayBreaker(path, text.str()).run(*lines));
     const auto fileLine = [&lines](std::size_t parsed) {
@@ -185,9 +185,9 @@ TomlFile parseTomlFile(const std::string& path)
     try {
         return {toml::parse<toml::discard_comments>(broken, path), lines};
     } catch (const toml::exception& e) {
-        throw inputError(path, fileLine(e.location().line()), oneLine(e.what()));
+        throw common::inputError(path, fileLine(e.location().line()), oneLine(e.what()));
     } catch (const std::exception& e) {
-        throw inputError(path, 0, e.what());
+        throw common::inputError(path, 0, e.what());
     }
 }
 
@@ -195,7 +195,7 @@ TableReader::TableReader(const TomlValue& table, std::string file, std::string t
     : table_(table), file_(std::move(file)), name_(std::move(tableName)), lines_(std::move(lines))
 {
     if (!table_.is_table())
-        throw inputError(file_, line(), "'" + name_ + "' must be a table");
+        throw common::inputError(file_, line(), "'" + name_ + "' must be a table");
 }
 
 int TableReader::fileLine(const TomlValue& value) const
@@ -218,7 +218,7 @@ std::string TableReader::qualified(const std::string& key) const
 
 void TableReader::fail(const std::string& key, const std::string& problem) const
 {
-    throw inputError(file_, lineOf(key), qualified(key) + ": " + problem);
+    throw common::inputError(file_, lineOf(key), qualified(key) + ": " + problem);
 }
 
 bool TableReader::has(const std::string& key) const { return table_.as_table().count(key) != 0; }
@@ -226,7 +226,7 @@ bool TableReader::has(const std::string& key) const { return table_.as_table().c
 const TomlValue& TableReader::at(const std::string& key) const
 {
     if (!has(key))
-        throw inputError(file_, line(), "missing key '" + qualified(key) + "'");
+        throw common::inputError(file_, line(), "missing key '" + qualified(key) + "'");
     read_.insert(key);
     return table_.as_table().at(key);
 }
@@ -344,7 +344,7 @@ int TableReader::choice(const std::string& key, const std::vector<std::string>& 
     std::string list;
     for (const std::string& w : words)
         list += (list.empty() ? "\"" : ", \"") + w + "\"";
-    fail(key, "must be one of " + list + " (got \"" + echoedInput(word) + "\")");
+    fail(key, "must be one of " + list + " (got \"" + common::echoedInput(word) + "\")");
 }
 
 std::vector<std::string> TableReader::strings(const std::string& key) const
@@ -449,16 +449,16 @@ void TableReader::rejectKeysOutside(const std::vector<std::string>& known) const
     std::string list;
     for (const std::string& k : known)
         list += (list.empty() ? "" : ", ") + k;
-    throw inputError(file_, fileLine(first->second),
-                     "unknown key '" + echoedInput(qualified(first->first)) + "'; known keys: " + list);
+    throw common::inputError(file_, fileLine(first->second),
+                     "unknown key '" + common::echoedInput(qualified(first->first)) + "'; known keys: " + list);
 }
 
 void TableReader::rejectUnknownKeys() const
 {
     for (const auto& [key, value] : table_.as_table())
         if (!read_.count(key))
-            throw inputError(file_, fileLine(value),
-                             "unknown key '" + echoedInput(qualified(key)) + "'");
+            throw common::inputError(file_, fileLine(value),
+                             "unknown key '" + common::echoedInput(qualified(key)) + "'");
 }
 
 } // namespace aurorawall::config

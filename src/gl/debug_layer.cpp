@@ -286,7 +286,7 @@ DebugModes parseDebugModes(const std::string& list)
         else if (word == "hazards")
             modes.hazards = true;
         else if (!word.empty())
-            throw std::invalid_argument("AURORAWALL_GL_DEBUG: unknown mode '" + echoedInput(word) +
+            throw std::invalid_argument("AURORAWALL_GL_DEBUG: unknown mode '" + common::echoedInput(word) +
                                         "' (allowed: nan-fill, reverse-workgroups, hazards)");
     }
     return modes;

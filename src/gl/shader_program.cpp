@@ -151,7 +151,7 @@ ShaderModule readShaderModule(const std::string& path)
     std::ifstream file(path);
     std::ostringstream text;
     if (!file || !(text << file.rdbuf()))
-        throw inputError(path, 0, "cannot read shader module (check --data-dir or AURORAWALL_DATA_DIR)");
+        throw common::inputError(path, 0, "cannot read shader module (check --data-dir or AURORAWALL_DATA_DIR)");
     return {path, text.str()};
 }
 

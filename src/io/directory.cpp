@@ -19,7 +19,7 @@ void probeWritable(const std::string& dir, const std::string& where)
     const std::string probe = (std::filesystem::path(dir) / (".aurorawall-probe-" + std::to_string(::getpid()))).string();
     const int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0600);
     if (fd < 0)
-        throw InputError(where + "directory is not writable (" + std::strerror(errno) + ")");
+        throw common::InputError(where + "directory is not writable (" + std::strerror(errno) + ")");
     ::close(fd);
     ::unlink(probe.c_str());
 }
@@ -32,9 +32,9 @@ void ensureWritableDirectory(const std::string& dir, const std::string& optionNa
     std::error_code error;
     std::filesystem::create_directories(dir, error);
     if (error)
-        throw InputError(where + "cannot create directory (" + error.message() + ")");
+        throw common::InputError(where + "cannot create directory (" + error.message() + ")");
     if (!std::filesystem::is_directory(dir, error))
-        throw InputError(where + "not a directory");
+        throw common::InputError(where + "not a directory");
     probeWritable(dir, where);
 }
 
@@ -43,11 +43,11 @@ void ensureWritableFile(const std::string& path, const std::string& optionName)
     const std::string where = optionName + " " + path + ": ";
     std::error_code error;
     if (std::filesystem::is_directory(path, error))
-        throw InputError(where + "is a folder, not a file");
+        throw common::InputError(where + "is a folder, not a file");
     const std::filesystem::path parent = std::filesystem::path(path).parent_path();
     const std::string dir = parent.empty() ? "." : parent.string();
     if (!std::filesystem::is_directory(dir, error))
-        throw InputError(where + "folder " + dir + " does not exist");
+        throw common::InputError(where + "folder " + dir + " does not exist");
     probeWritable(dir, where + "folder " + dir + ": ");
 }
 

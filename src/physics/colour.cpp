@@ -8,16 +8,16 @@
 
 namespace aurorawall::physics {
 
-namespace shared {
+namespace f64 {
 AURORAWALL_GLSL_PRECISION(double)
 #include "physics/colour.glsl"
-} // namespace shared
+} // namespace f64
 
-glm::dvec3 xyzToLinearSrgb(glm::dvec3 xyz) { return shared::xyzToLinearSrgb(xyz); }
+glm::dvec3 xyzToLinearSrgb(glm::dvec3 xyz) { return f64::xyzToLinearSrgb(xyz); }
 
-double linearSrgbLuminance(glm::dvec3 rgb) { return shared::linearSrgbLuminance(rgb); }
+double linearSrgbLuminance(glm::dvec3 rgb) { return f64::linearSrgbLuminance(rgb); }
 
-glm::dvec3 desaturateIntoGamut(glm::dvec3 rgb) { return shared::desaturateIntoGamut(rgb); }
+glm::dvec3 desaturateIntoGamut(glm::dvec3 rgb) { return f64::desaturateIntoGamut(rgb); }
 
 double rayleighFromColumnRate(double photonsPerCm2PerS)
 {

@@ -15,6 +15,10 @@ inline constexpr double kElementaryCharge = 1.602176634e-19;   // e, C (exact)
 inline constexpr double kElectronMass = 9.1093837015e-31;      // mₑ, kg
 inline constexpr double kVacuumPermittivity = 8.8541878128e-12; // ε₀, F/m
 
+// Energy units derived from them: 1 keV = 1e3 e J and 1 erg = 1e-7 J, so 1 keV = 1e10 e erg (1e-10/e
+// rounds to the nearest double of the exact ratio).
+inline constexpr double kKeVPerErg = 1e-10 / kElementaryCharge; // keV per erg
+
 // Photometric: the luminous efficacy of monochromatic light at 540 THz (≈ 555 nm), lm/W (exact), so
 // Y = 683 ∫ L_λ ȳ dλ is in cd/m² for a spectral radiance L_λ in W m⁻² sr⁻¹ nm⁻¹ (CIE photopic).
 inline constexpr double kLumensPerWatt = 683.0;

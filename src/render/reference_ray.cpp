@@ -27,7 +27,7 @@ ReferenceModel::ReferenceModel(const scene::Scene& scene, double timeS, scene::R
 
 glm::dvec3 ReferenceModel::radiance(glm::dvec3 o, glm::dvec3 direction) const
 {
-    f64::Ray ray = f64::beginRay(o, glm::normalize(direction), 0.0);
+    scene::f64::Ray ray = scene::f64::beginRay(o, glm::normalize(direction), 0.0);
     for (const Part& p : parts_)
         ray = p.shader->bound(ray);
     if (ray.blocked)

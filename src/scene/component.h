@@ -14,6 +14,7 @@
 #include "cluster/frame_state.h"
 #include "common/glsl.h"
 #include "config/toml_reader.h"
+#include "gl/shader_program.h"
 #include "scene/shell.h"
 
 #include <any>
@@ -24,14 +25,10 @@
 #include <string>
 #include <vector>
 
-namespace aurorawall::gl {
-class Program;
-}
-
-namespace aurorawall::f64 {
+namespace aurorawall::scene::f64 {
 AURORAWALL_GLSL_PRECISION(double)
 #include "render/ray.glsl"
-} // namespace aurorawall::f64
+} // namespace aurorawall::scene::f64
 
 namespace aurorawall::scene {
 
@@ -101,7 +98,8 @@ public:
 
     // The name in a scene's component list, its table name and its shader define HAS_<NAME>.
     virtual std::string name() const = 0;
-    // Components that must be listed with this one.
+    // What must be listed with this one: components by name, or roles that a listed component
+    // provides (how a component needs another without naming it).
     virtual std::vector<std::string> needs() const { return {}; }
     // The roles it provides to other components; a scene lists at most one provider of a role.
     virtual std::vector<std::string> provides() const { return {}; }
@@ -126,6 +124,11 @@ public:
 
     // The GPU part (needs a current GL context): precomputes its tables.
     virtual std::unique_ptr<ComponentRenderer> makeRenderer(const Scene& scene, const FindRenderer& find) const = 0;
+    // Whether the CPU reference models it (most do). One it does not model (an image lookup, a hash
+    // of directions, a model with a reference of its own) throws NotInReference from makeReference,
+    // and withoutUnmodelled (scene/scene.h) leaves it out of the scenes that the reference and the
+    // accuracy sweeps render.
+    virtual bool inReference() const { return true; }
     // Its part of the CPU reference; null when it adds nothing by itself (e.g. data another
     // component uses). Throws NotInReference when the reference cannot model it.
     virtual std::unique_ptr<ReferenceShader> makeReference(const Scene& scene, const ReferenceContext& context) const = 0;

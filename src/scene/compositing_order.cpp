@@ -7,10 +7,13 @@ namespace aurorawall::scene {
 
 namespace {
 
+// Does `a` need `b`: by its name, or by a role `b` provides?
 bool needs(const Component& a, const Component& b)
 {
     const std::vector<std::string> n = a.needs();
-    return std::find(n.begin(), n.end(), b.name()) != n.end();
+    const std::vector<std::string> roles = b.provides();
+    return std::find(n.begin(), n.end(), b.name()) != n.end() ||
+           std::find_first_of(n.begin(), n.end(), roles.begin(), roles.end()) != n.end();
 }
 
 } // namespace

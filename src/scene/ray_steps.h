@@ -4,7 +4,7 @@
 // unnamed namespace), and not every one uses every step.
 #include "scene/component.h"
 
-namespace aurorawall::f64 {
+namespace aurorawall::scene::f64 {
 namespace {
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wunused-function"
@@ -12,4 +12,4 @@ namespace {
 #include "render/layers.glsl"
 #pragma GCC diagnostic pop
 } // namespace
-} // namespace aurorawall::f64
+} // namespace aurorawall::scene::f64

@@ -206,7 +206,7 @@ Camera readCamera(const TableReader& t, double planetRadiusKm)
 // Planet frame: z north, x toward longitude 180 deg, y toward 90 deg W.
 glm::dvec3 planetPoint(double latitudeDeg, double longitudeDeg, double radius)
 {
-    return radius * unitFromLatLon(latitudeDeg, longitudeDeg);
+    return radius * common::unitFromLatLon(latitudeDeg, longitudeDeg);
 }
 
 LocalFrame localFrame(double latitudeDeg, double longitudeDeg)
@@ -277,6 +277,23 @@ void Scene::remove(const std::string& componentName)
                       components_.end());
 }
 
+namespace {
+
+// " (provided by A, B)": the registered components that provide `role`; empty when none does (a
+// component's name).
+std::string providersOf(const std::string& role, const Registry& registry)
+{
+    std::string names;
+    for (const Component* c : registry) {
+        const std::vector<std::string> roles = c->provides();
+        if (std::count(roles.begin(), roles.end(), role))
+            names += (names.empty() ? "" : ", ") + c->name();
+    }
+    return names.empty() ? "" : " (provided by " + names + ")";
+}
+
+} // namespace
+
 // Reads scene files; a friend of Scene, which it fills.
 class SceneLoader {
 public:
@@ -294,9 +311,9 @@ void SceneLoader::listComponents(Scene& s, const TableReader& meta, const Regist
         known += (known.empty() ? "" : ", ") + c->name();
     for (const std::string& name : names) {
         if (std::none_of(registry.begin(), registry.end(), [&](const Component* c) { return c->name() == name; }))
-            meta.fail("components", "unknown component '" + echoedInput(name) + "' (known: " + known + ")");
+            meta.fail("components", "unknown component '" + common::echoedInput(name) + "' (known: " + known + ")");
         if (std::count(names.begin(), names.end(), name) > 1)
-            meta.fail("components", "component '" + echoedInput(name) + "' listed twice");
+            meta.fail("components", "component '" + common::echoedInput(name) + "' listed twice");
     }
     Scene listed;
     listed.planetRadiusKm = s.planetRadiusKm;
@@ -310,8 +327,8 @@ void SceneLoader::listComponents(Scene& s, const TableReader& meta, const Regist
     s.settings_ = std::move(listed.settings_);
     for (const Component* c : s.components_) {
         for (const std::string& needed : c->needs())
-            if (!s.has(needed))
-                meta.fail("components", "'" + c->name() + "' needs '" + needed + "'");
+            if (!s.has(needed) && !s.provider(needed))
+                meta.fail("components", "'" + c->name() + "' needs '" + needed + "'" + providersOf(needed, registry));
         for (const std::string& role : c->provides())
             if (const Component* first = s.provider(role); first != c)
                 meta.fail("components", "the scene lists both " + c->name() + " and " + first->name() +
@@ -358,5 +375,16 @@ Scene SceneLoader::load(const std::string& path, const Registry& registry, int d
 }
 
 Scene loadScene(const std::string& path, const Registry& registry) { return SceneLoader::load(path, registry, 0); }
+
+Scene withoutUnmodelled(Scene scene)
+{
+    std::vector<std::string> unmodelled;
+    for (const Component* c : scene.components())
+        if (!c->inReference())
+            unmodelled.push_back(c->name());
+    for (const std::string& name : unmodelled)
+        scene.remove(name);
+    return scene;
+}
 
 } // namespace aurorawall::scene

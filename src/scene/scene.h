@@ -85,4 +85,7 @@ glm::dvec3 directionInSky(double latitudeDeg, double longitudeDeg, double elevat
 // naming file and line.
 Scene loadScene(const std::string& path, const Registry& registry);
 
+// The scene without the components the CPU reference does not model (Component::inReference).
+Scene withoutUnmodelled(Scene scene);
+
 } // namespace aurorawall::scene

@@ -101,7 +101,7 @@ public:
     Wall load();
 
 private:
-    [[noreturn]] void failFile(const std::string& problem) const { throw inputError(path_, 0, problem); }
+    [[noreturn]] void failFile(const std::string& problem) const { throw common::inputError(path_, 0, problem); }
     glm::dvec3 eyeOffset() const;
     Wall gridWall();
     Wall screenListWall();
@@ -243,10 +243,10 @@ Screen WallFile::readScreen(const TableReader& s, const std::vector<Screen>& ear
                c == '-';
     };
     if (screen.name.empty() || !std::all_of(screen.name.begin(), screen.name.end(), fileNameSafe))
-        s.fail("name", "must be letters, digits, '_', '.' or '-' (got \"" + echoedInput(screen.name) + "\")");
+        s.fail("name", "must be letters, digits, '_', '.' or '-' (got \"" + common::echoedInput(screen.name) + "\")");
     for (std::size_t j = 0; j < earlier.size(); ++j)
         if (earlier[j].name == screen.name)
-            s.fail("name", "\"" + echoedInput(screen.name) + "\" is already the name of the screen on line " +
+            s.fail("name", "\"" + common::echoedInput(screen.name) + "\" is already the name of the screen on line " +
                                std::to_string(screens_[j].line()));
     screen.widthPx = s.integer("width_px", 1, maxPx);
     screen.heightPx = s.integer("height_px", 1, maxPx);
@@ -279,7 +279,7 @@ void WallFile::checkOverlaps(const Screen& screen, const TableReader& s, const s
         const double overlapY = std::min(screen.upperLeft().y, other.upperLeft().y) -
                                 std::max(screen.lowerLeftMm.y, other.lowerLeftMm.y);
         if (overlapX > 1e-6 && overlapY > 1e-6)
-            throw inputError(path_, s.line(),
+            throw common::inputError(path_, s.line(),
                              "screen '" + screen.name + "' overlaps screen '" + other.name + "' (line " +
                                  std::to_string(screens_[j].line()) + ") by " + show(overlapX) + " x " + show(overlapY) + " mm");
     }
@@ -291,7 +291,7 @@ void WallFile::numberRanks(std::vector<Screen>& screens, bool anyRank, std::opti
 {
     if (anyRank) {
         if (firstWithoutRank)
-            throw inputError(path_, screens_[*firstWithoutRank].line(),
+            throw common::inputError(path_, screens_[*firstWithoutRank].line(),
                              "screen '" + screens[*firstWithoutRank].name +
                                  "' has no rank while other screens do: give every screen a rank or none");
         forbid(ranks_, "screens_per_rank", "cannot be combined with a rank in each [[screen]]");
@@ -397,11 +397,11 @@ void WallFile::placeWindows(Wall& wall) const
 Wall loadWall(const std::string& path)
 {
     if (!std::filesystem::is_regular_file(path) || !std::ifstream(path))
-        throw inputError(path, 0, "cannot open the wall file");
+        throw common::inputError(path, 0, "cannot open the wall file");
     if (std::filesystem::path(path).extension() == ".ini")
-        throw inputError(path, 0, convertHint);
+        throw common::inputError(path, 0, convertHint);
     if (const int line = oldIniLine(path))
-        throw inputError(path, line, "old INI syntax: " + convertHint);
+        throw common::inputError(path, line, "old INI syntax: " + convertHint);
     const config::TomlFile root = config::parseTomlFile(path);
     return WallFile(root, path).load();
 }

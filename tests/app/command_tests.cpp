@@ -88,7 +88,7 @@ TEST(CommandLine, UnknownWordNamesTheOptionAndTheAllowedWords)
     try {
         cli.parse(args.argc(), args.argv());
         FAIL() << "no error for --colour blue";
-    } catch (const UsageError& e) {
+    } catch (const common::UsageError& e) {
         const std::string what = e.what();
         EXPECT_NE(what.find("--colour"), std::string::npos) << what;
         EXPECT_NE(what.find("'blue'"), std::string::npos) << what;
@@ -109,16 +109,16 @@ TEST(CommandLine, HelpStopsBeforeRequiredOptions)
     cli::CommandLine missing("paint", "Usage: aurorawall paint --count N\n");
     missing.add()("count", cli::po::value(&count)->required(), "how many");
     Args none({"paint"});
-    EXPECT_THROW(missing.parse(none.argc(), none.argv()), UsageError);
+    EXPECT_THROW(missing.parse(none.argc(), none.argv()), common::UsageError);
 }
 
 TEST(ExitStatus, UsageErrorIsTwoEverythingElseOne)
 {
-    EXPECT_EQ(cli::exitStatusOf(UsageError("--x")), 2);
-    EXPECT_EQ(cli::exitStatusOf(InputError("wall.ini:3: bad")), 1);
+    EXPECT_EQ(cli::exitStatusOf(common::UsageError("--x")), 2);
+    EXPECT_EQ(cli::exitStatusOf(common::InputError("wall.ini:3: bad")), 1);
     EXPECT_EQ(cli::exitStatusOf(std::runtime_error("no context")), 1);
     std::ostringstream out, err;
-    EXPECT_EQ(cli::runCommand("paint", out, err, [] { throw UsageError("--x is bad"); }), 2);
+    EXPECT_EQ(cli::runCommand("paint", out, err, [] { throw common::UsageError("--x is bad"); }), 2);
     EXPECT_EQ(err.str(), "aurorawall paint: --x is bad\n");
     EXPECT_EQ(cli::runCommand("paint", out, err, [] {}), 0);
 }
@@ -188,7 +188,7 @@ TEST(RenderOptions, MistakesAreUsageErrorsNamingTheOption)
         try {
             parseRender(words);
             ADD_FAILURE() << "no error for " << extra.front();
-        } catch (const UsageError& e) {
+        } catch (const common::UsageError& e) {
             EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << e.what();
         }
     }
@@ -215,7 +215,7 @@ TEST(TablesCommand, PrintsTheDepositionProfile)
     EXPECT_EQ(rows.back().substr(0, 6), "600.0,");
     // 112.5 km is row 1 + 105.
     double rate = std::stod(rows[106].substr(rows[106].find(',') + 1));
-    EXPECT_NEAR(rate / aurora::depositionRate(112.5, 5.0, aurora::Spectrum::Monoenergetic), 1.0, 1e-9);
+    EXPECT_NEAR(rate / components::aurora::physics::depositionRate(112.5, 5.0, components::aurora::physics::Spectrum::Monoenergetic), 1.0, 1e-9);
 }
 
 TEST(TablesCommand, MaxwellianFlagSelectsTheSpectrum)
@@ -224,7 +224,7 @@ TEST(TablesCommand, MaxwellianFlagSelectsTheSpectrum)
     ASSERT_EQ(r.status, 0) << r.err;
     std::vector<std::string> rows = lines(r.out);
     double rate = std::stod(rows[101].substr(rows[101].find(',') + 1)); // 110 km
-    EXPECT_NEAR(rate / aurora::depositionRate(110.0, 2.0, aurora::Spectrum::Maxwellian), 1.0, 1e-9);
+    EXPECT_NEAR(rate / components::aurora::physics::depositionRate(110.0, 2.0, components::aurora::physics::Spectrum::Maxwellian), 1.0, 1e-9);
 }
 
 TEST(TablesCommand, BadOptionsNameTheOptionAndExit2)
@@ -395,12 +395,12 @@ TEST(AccuracyCommand, UnreadableSceneIsARuntimeFailure)
 
 TEST(EchoedInput, LongTextIsCutWithItsLengthAndControlCharactersEscaped)
 {
-    EXPECT_EQ(echoedInput("1.5e3"), "1.5e3");
-    EXPECT_EQ(echoedInput(std::string(60, 'a')), std::string(60, 'a'));
-    EXPECT_EQ(echoedInput(std::string(61, 'a')), std::string(60, 'a') + "… (61 bytes)");
-    EXPECT_EQ(echoedInput("a\nb\tc\x01\x7f"), "a\\nb\\tc\\x01\\x7F");
+    EXPECT_EQ(common::echoedInput("1.5e3"), "1.5e3");
+    EXPECT_EQ(common::echoedInput(std::string(60, 'a')), std::string(60, 'a'));
+    EXPECT_EQ(common::echoedInput(std::string(61, 'a')), std::string(60, 'a') + "… (61 bytes)");
+    EXPECT_EQ(common::echoedInput("a\nb\tc\x01\x7f"), "a\\nb\\tc\\x01\\x7F");
     // A two-byte character across the limit is left out whole.
-    EXPECT_EQ(echoedInput(std::string(59, 'a') + "\xc3\xa9" + "b"), std::string(59, 'a') + "… (62 bytes)");
+    EXPECT_EQ(common::echoedInput(std::string(59, 'a') + "\xc3\xa9" + "b"), std::string(59, 'a') + "… (62 bytes)");
 }
 
 // However long a value, the error that quotes it is one short line with the value's start and length.
@@ -421,7 +421,7 @@ TEST(EchoedInput, ErrorsQuotingAHugeValueStayOneShortLine)
     try {
         parseRender({"--wall", "w.toml", "--scene", "s.toml", "--backend", word});
         ADD_FAILURE() << "render --backend: no error";
-    } catch (const UsageError& e) {
+    } catch (const common::UsageError& e) {
         expectShort(e.what(), "render --backend");
     }
     // The control server takes lines of up to 1024 bytes.
@@ -439,7 +439,7 @@ TEST(EchoedInput, ErrorsQuotingAHugeValueStayOneShortLine)
     try {
         components::loadScene(scene.string());
         ADD_FAILURE() << "scene: no error";
-    } catch (const InputError& e) {
+    } catch (const common::InputError& e) {
         expectShort(e.what(), "scene component");
     }
     std::filesystem::remove(scene);
@@ -458,11 +458,11 @@ TEST(RenderOptions, CostMapNeedsAPngAndTheStaticSplit)
         std::vector<std::string> words = {"--wall", "w.ini", "--scene", "s.toml"};
         words.insert(words.end(), extra.begin(), extra.end());
         EXPECT_THROW(
-            try { parseRender(words); } catch (const UsageError& e) {
+            try { parseRender(words); } catch (const common::UsageError& e) {
                 EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << e.what();
                 throw;
             },
-            UsageError);
+            common::UsageError);
     }
 }
 

@@ -10,7 +10,7 @@
 #include <unistd.h>
 
 using namespace aurorawall::io;
-using aurorawall::InputError;
+using aurorawall::common::InputError;
 using aurorawall::io::test::TempDir;
 namespace fs = std::filesystem;
 
@@ -21,7 +21,7 @@ std::string errorFor(const std::string& dir)
 {
     try {
         ensureWritableDirectory(dir, "--out");
-    } catch (const InputError& e) {
+    } catch (const aurorawall::common::InputError& e) {
         return e.what();
     }
     return "";

@@ -101,11 +101,21 @@ TEST(Constants, PhysicalConstantsAreDefinedOnceInCpp)
     }
 }
 
+// Constants derived from others are computed from them, never spelt out: keV per erg is 1e-10/e
+// (its leading digits, in code).
+TEST(Constants, DerivedConstantsAreComputed)
+{
+    const Scan result = scan(std::regex(R"(6\.241509)"), {}, false);
+    EXPECT_GT(result.files, 100u);
+    EXPECT_TRUE(result.offenders.empty()) << "keV per erg spelt out (count) in: " << list(result.offenders);
+}
+
 TEST(Constants, Values)
 {
     EXPECT_DOUBLE_EQ(kDegree * 180.0, kPi);
     EXPECT_NEAR(kPlanck * kSpeedOfLight, 1.98644586e-25, 1e-33); // J m
     EXPECT_EQ(kLumensPerWatt, 683.0);
+    EXPECT_DOUBLE_EQ(kKeVPerErg * 1e10 * kElementaryCharge, 1.0);
 }
 
 } // namespace

@@ -31,7 +31,7 @@ const std::string kSource = AURORAWALL_SOURCE_DIR;
 // tables and footprint map, 1 km polylines.
 scene::Scene finestSubstorm()
 {
-    scene::Scene s = components::aurora::tools::withoutUnmodelled(components::loadScene(kSource + "/config/scenes/substorm.toml"));
+    scene::Scene s = scene::withoutUnmodelled(components::loadScene(kSource + "/config/scenes/substorm.toml"));
     components::aurora::tools::applyFinestSettings(s);
     return s;
 }
@@ -43,7 +43,7 @@ protected:
         context_ = gl::createContext(gl::Backend::Egl);
         scene_ = new scene::Scene(finestSubstorm());
         view_ = new accuracy::SceneView(accuracy::sceneView(*scene_, kSource + "/config/walls/single.toml", {64, 36}));
-        frames_ = new fluid::FluxFrames(fluid::simulateCurtainDetail(components::fluid_detail::curtainDetailSpec(scene_->settings<components::fluid_detail::Settings>())));
+        frames_ = new components::roles::FluxFrames(components::fluid_detail::simulation::simulateCurtainDetail(components::fluid_detail::curtainDetailSpec(scene_->settings<components::fluid_detail::Settings>())));
     }
     static void TearDownTestSuite()
     {
@@ -58,13 +58,13 @@ protected:
     static std::unique_ptr<gl::Context> context_;
     static scene::Scene* scene_;
     static accuracy::SceneView* view_;
-    static fluid::FluxFrames* frames_;
+    static components::roles::FluxFrames* frames_;
 };
 
 std::unique_ptr<gl::Context> ReferenceRay::context_;
 scene::Scene* ReferenceRay::scene_ = nullptr;
 accuracy::SceneView* ReferenceRay::view_ = nullptr;
-fluid::FluxFrames* ReferenceRay::frames_ = nullptr;
+components::roles::FluxFrames* ReferenceRay::frames_ = nullptr;
 
 } // namespace
 
@@ -139,7 +139,7 @@ TEST_F(ReferenceRay, RejectsWhatItDoesNotModel)
 TEST_F(ReferenceRay, CoarseStepsIntegratedAcrossTheCurtainStayNearTheReference)
 {
     for (long long frame : {0LL, 28LL, 60LL}) {
-        scene::Scene s = components::aurora::tools::withoutUnmodelled(components::loadScene(kSource + "/config/scenes/benchmark-view.toml"));
+        scene::Scene s = scene::withoutUnmodelled(components::loadScene(kSource + "/config/scenes/benchmark-view.toml"));
         const accuracy::SceneView view = accuracy::sceneView(s, kSource + "/config/walls/single.toml", {64, 36}, frame);
         const render::ReferenceModel model(s, view.frame.timeS, curtainDetailData(frames_));
         std::vector<glm::ivec2> pixels;
@@ -169,7 +169,7 @@ TEST_F(ReferenceRay, CoarseStepsIntegratedAcrossTheCurtainStayNearTheReference)
 // the ground. Measured: RMS 1.3e-4, max 4.9e-4. Held to RMS 1e-3.
 TEST_F(ReferenceRay, SmoothCurtainsIntegratedAcrossStayNearTheReference)
 {
-    scene::Scene s = components::aurora::tools::withoutUnmodelled(components::loadScene(kSource + "/config/scenes/quiet-arc.toml"));
+    scene::Scene s = scene::withoutUnmodelled(components::loadScene(kSource + "/config/scenes/quiet-arc.toml"));
     ASSERT_FALSE(s.has("fluid_detail"));
     s.settings<components::aurora::Settings>().stepKm = 8.0;
     s.settings<components::aurora::Settings>().resolveKm = 0.5;

@@ -43,14 +43,14 @@ std::unique_ptr<gl::Context> ShippedScene::context_;
 // not compared.
 TEST_P(ShippedScene, DefaultsAgreeWithTheCpuReference)
 {
-    scene::Scene s = components::aurora::tools::withoutUnmodelled(components::loadScene(kSource + "/config/scenes/" + GetParam() + ".toml"));
+    scene::Scene s = scene::withoutUnmodelled(components::loadScene(kSource + "/config/scenes/" + GetParam() + ".toml"));
     const accuracy::SceneView view = accuracy::sceneView(s, kSource + "/config/walls/single.toml", {64, 36});
     const io::Image gpu = accuracy::renderView(s, view, kSource + "/shaders", 0).image;
     const double floor = 1.0 / (255.0 * s.exposure);
     const std::vector<glm::ivec2> pixels = test::litPixels(gpu, floor, 12);
     if (pixels.empty())
         GTEST_SKIP() << GetParam() << ": no lit pixel once stars, sky and night lights are left out";
-    const std::shared_ptr<const fluid::FluxFrames> frames = components::roles::curtainDetailFrames(s);
+    const std::shared_ptr<const components::roles::FluxFrames> frames = components::roles::curtainDetailFrames(s);
     std::unique_ptr<render::ReferenceModel> model;
     try {
         model = std::make_unique<render::ReferenceModel>(s, view.frame.timeS,

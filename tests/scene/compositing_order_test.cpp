@@ -14,15 +14,16 @@ using namespace aurorawall;
 
 namespace {
 
-// A component that declares only a name, a shell and what it needs.
+// A component that declares only a name, a shell, what it needs and the roles it provides.
 class Fake : public scene::Component {
 public:
-    Fake(std::string name, scene::Shell shell, std::vector<std::string> needs = {})
-        : name_(std::move(name)), shell_(shell), needs_(std::move(needs))
+    Fake(std::string name, scene::Shell shell, std::vector<std::string> needs = {}, std::vector<std::string> provides = {})
+        : name_(std::move(name)), shell_(shell), needs_(std::move(needs)), provides_(std::move(provides))
     {
     }
     std::string name() const override { return name_; }
     std::vector<std::string> needs() const override { return needs_; }
+    std::vector<std::string> provides() const override { return provides_; }
     scene::Shell shell() const override { return shell_; }
     std::unique_ptr<scene::ComponentSettings> defaultSettings() const override { return nullptr; }
     void read(const config::TableReader&, scene::Scene&, scene::ComponentSettings&) const override {}
@@ -40,6 +41,7 @@ private:
     std::string name_;
     scene::Shell shell_;
     std::vector<std::string> needs_;
+    std::vector<std::string> provides_;
 };
 
 std::string names(const std::vector<const scene::Component*>& components)
@@ -72,6 +74,15 @@ TEST(CompositingOrder, WithinAShellNeedsFirstThenTheGivenOrder)
     const Fake p("p", scene::Shell::Ground), q("q", scene::Shell::Ground);
     EXPECT_EQ(names(scene::inCompositingOrder({&q, &p})), "q p");
     EXPECT_EQ(names(scene::inCompositingOrder({&p, &q})), "p q");
+}
+
+TEST(CompositingOrder, ARoleNeededPlacesItsProviderFirst)
+{
+    // d needs the role "r" that p provides, without naming p.
+    const Fake d("d", scene::Shell::EmittingStructures, {"r"}),
+        p("p", scene::Shell::EmittingStructures, {}, {"r"});
+    EXPECT_EQ(names(scene::inCompositingOrder({&d, &p})), "p d");
+    EXPECT_EQ(names(scene::inCompositingOrder({&p, &d})), "p d");
 }
 
 TEST(CompositingOrder, NeedsAcrossShellsDoNotReorder)

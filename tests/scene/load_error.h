@@ -15,7 +15,7 @@ inline std::string loadError(const std::string& file)
 {
     try {
         components::loadScene(file);
-    } catch (const InputError& e) {
+    } catch (const common::InputError& e) {
         return e.what();
     }
     return "";

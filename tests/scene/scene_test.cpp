@@ -51,6 +51,22 @@ TEST(Scene, BenchmarkCameraIsThePapersView)
     EXPECT_NEAR(glm::dot(s.camera.forward, s.camera.up), 0.0, 1e-12);
 }
 
+TEST(Scene, WithoutUnmodelledDropsWhatTheReferenceDoesNotModel)
+{
+    // Every registered component listed: what is left is exactly what declares itself in the reference.
+    scene::Scene all;
+    for (const scene::Component* c : components::registry())
+        all.add(*c);
+    const scene::Scene modelled = scene::withoutUnmodelled(all);
+    std::size_t dropped = 0;
+    for (const scene::Component* c : components::registry()) {
+        EXPECT_EQ(modelled.has(c->name()), c->inReference()) << c->name();
+        dropped += c->inReference() ? 0 : 1;
+    }
+    EXPECT_GT(dropped, 0u);
+    EXPECT_LT(dropped, components::registry().size());
+}
+
 TEST(Scene, GeographicCameraMatchesExplicitVectors)
 {
     // The benchmark view written geographically lands on the same vectors as the explicit form.

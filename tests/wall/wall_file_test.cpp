@@ -245,7 +245,7 @@ TEST_P(WallFileError, NamesFileLineAndProblem)
     try {
         loadWall(path);
         FAIL() << "no error for " << path;
-    } catch (const InputError& e) {
+    } catch (const common::InputError& e) {
         const std::string message = e.what();
         EXPECT_EQ(message.rfind(where, 0), 0u) << message;
         EXPECT_NE(message.find(GetParam().problem), std::string::npos) << message;
@@ -311,7 +311,7 @@ std::string wholeFileError(const std::string& path)
 {
     try {
         loadWall(path);
-    } catch (const InputError& e) {
+    } catch (const common::InputError& e) {
         return e.what();
     }
     return "no error";

@@ -56,10 +56,11 @@ vec3 gloryColour(float gamma, vec3 direction)
     return desaturateIntoGamut(xyzToLinearSrgb(xyz / float(uGloryWavelengthsPerPixel)));
 }
 
-// The light's transmittance through the lower atmosphere down to a deck point `altitude` km up.
+// The light's transmittance through the lower atmosphere (the role of that name, when a listed
+// component provides it) down to a deck point `altitude` km up.
 vec3 gloryLightTransmittance(vec3 p, float altitude)
 {
-#ifdef HAS_ATMOSPHERE
+#ifdef HAS_LOWER_ATMOSPHERE
     vec2 top = raySphere(p, uGloryLightDirection, uPlanetRadiusKm + uAtmosphereTopKm, altitude - uAtmosphereTopKm);
     return exp(-uExtinctionPerKm * airmassSegment(p, uGloryLightDirection, 0.0, max(top.y, 0.0)));
 #else

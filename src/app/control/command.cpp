@@ -59,7 +59,7 @@ double number(const std::string& word, const Grammar& g)
     char* end = nullptr;
     const double value = std::strtod(word.c_str(), &end);
     if (!isDecimal(word) || *end != '\0' || !std::isfinite(value))
-        throw CommandError(std::string(g.word) + ": '" + echoedInput(word) + "' is not a finite number (usage: " + g.usage + ")");
+        throw CommandError(std::string(g.word) + ": '" + common::echoedInput(word) + "' is not a finite number (usage: " + g.usage + ")");
     return value;
 }
 
@@ -135,7 +135,7 @@ Command parseCommand(const std::string& line)
         if (words[0] == g.word)
             grammar = &g;
     if (!grammar)
-        throw CommandError("unknown command '" + echoedInput(words[0]) + "' (commands: " + knownWords() + ")");
+        throw CommandError("unknown command '" + common::echoedInput(words[0]) + "' (commands: " + knownWords() + ")");
     const Grammar& g = *grammar;
     Command c;
     c.kind = g.kind;

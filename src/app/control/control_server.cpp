@@ -44,17 +44,17 @@ std::string readControlToken(const std::string& file)
         return "";
     struct stat status{};
     if (::stat(file.c_str(), &status) != 0)
-        throw inputError(file, 0, std::string("--control-token-file: cannot read it: ") + std::strerror(errno));
+        throw common::inputError(file, 0, std::string("--control-token-file: cannot read it: ") + std::strerror(errno));
     if (status.st_mode & (S_IRWXG | S_IRWXO))
-        throw inputError(file, 0, "--control-token-file: others than its owner may read or write it (chmod 600)");
+        throw common::inputError(file, 0, "--control-token-file: others than its owner may read or write it (chmod 600)");
     std::ifstream in(file);
     std::string token;
     if (!in || !std::getline(in, token))
-        throw inputError(file, 0, "--control-token-file: cannot read its first line");
+        throw common::inputError(file, 0, "--control-token-file: cannot read its first line");
     while (!token.empty() && (token.back() == '\r' || token.back() == ' ' || token.back() == '\t'))
         token.pop_back();
     if (token.empty())
-        throw inputError(file, 1, "--control-token-file: the first line (the secret) is empty");
+        throw common::inputError(file, 1, "--control-token-file: the first line (the secret) is empty");
     return token;
 }
 
@@ -66,7 +66,7 @@ ControlServer::ControlServer(const std::string& bindAddress, int port, std::stri
     addr.sin_family = AF_INET;
     addr.sin_port = htons(static_cast<std::uint16_t>(port));
     if (::inet_pton(AF_INET, bindAddress.c_str(), &addr.sin_addr) != 1)
-        throw UsageError("--control-bind " + bindAddress + ": not an IPv4 address (e.g. 127.0.0.1 or 0.0.0.0)");
+        throw common::UsageError("--control-bind " + bindAddress + ": not an IPv4 address (e.g. 127.0.0.1 or 0.0.0.0)");
     listenFd_ = ::socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0);
     const int on = 1;
     if (listenFd_ < 0 || ::setsockopt(listenFd_, SOL_SOCKET, SO_REUSEADDR, &on, sizeof on) != 0 ||
@@ -74,7 +74,7 @@ ControlServer::ControlServer(const std::string& bindAddress, int port, std::stri
         const std::string reason = std::strerror(errno);
         if (listenFd_ >= 0)
             ::close(listenFd_);
-        throw InputError("--control-port " + std::to_string(port) + ": cannot listen on " + bindAddress + ":" +
+        throw common::InputError("--control-port " + std::to_string(port) + ": cannot listen on " + bindAddress + ":" +
                          std::to_string(port) + ": " + reason);
     }
     setNonBlocking(listenFd_);

@@ -206,7 +206,7 @@ WebConsole::WebConsole(WebSettings settings) : impl_(std::make_unique<Impl>())
     w.settings = std::move(settings);
     in_addr probe{};
     if (::inet_pton(AF_INET, w.settings.bindAddress.c_str(), &probe) != 1)
-        throw UsageError("--control-bind " + w.settings.bindAddress + ": not an IPv4 address (e.g. 127.0.0.1 or 0.0.0.0)");
+        throw common::UsageError("--control-bind " + w.settings.bindAddress + ": not an IPv4 address (e.g. 127.0.0.1 or 0.0.0.0)");
     httplib::Server& s = w.server;
     // Bounded work per client: 8 threads, short timeouts, small bodies (413 beyond).
     s.new_task_queue = [] { return new httplib::ThreadPool(8); };
@@ -216,7 +216,7 @@ WebConsole::WebConsole(WebSettings settings) : impl_(std::make_unique<Impl>())
     s.set_payload_max_length(kMaxBodyBytes);
     // The page, its script and style; httplib refuses paths leaving the folder (404).
     if (!s.set_mount_point("/", w.settings.pageDir))
-        throw InputError("--web-port: the page's folder " + w.settings.pageDir + " cannot be read");
+        throw common::InputError("--web-port: the page's folder " + w.settings.pageDir + " cannot be read");
     s.Post("/command", [&w](const httplib::Request& req, httplib::Response& res) {
         if (w.authorized(req, res))
             w.command(req, res);
@@ -263,7 +263,7 @@ WebConsole::WebConsole(WebSettings settings) : impl_(std::make_unique<Impl>())
     w.port = w.settings.port == 0 ? s.bind_to_any_port(w.settings.bindAddress)
                                   : (s.bind_to_port(w.settings.bindAddress, w.settings.port) ? w.settings.port : -1);
     if (w.port < 0)
-        throw InputError("--web-port " + std::to_string(w.settings.port) + ": cannot listen on " +
+        throw common::InputError("--web-port " + std::to_string(w.settings.port) + ": cannot listen on " +
                          w.settings.bindAddress + ":" + std::to_string(w.settings.port) + " (in use?)");
     w.thread = std::thread([&s] { s.listen_after_bind(); });
 }

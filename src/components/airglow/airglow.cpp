@@ -7,6 +7,7 @@
 #include "gl/shader_program.h"
 #include "scene/ray_steps.h"
 #include "scene/scene.h"
+#include "components/roles/names.h"
 
 #include <cmath>
 
@@ -52,12 +53,12 @@ public:
             rgb_.push_back(physics::lineLinearSrgbPerRayleigh(wavelengthNm(l.line), cieXyz(l.line)));
         }
     }
-    f64::Ray shade(f64::Ray ray) const override
+    scene::f64::Ray shade(scene::f64::Ray ray) const override
     {
         for (size_t i = 0; i < profiles_.size(); ++i) {
             const LayerProfile& p = profiles_[i];
             const double base = p.baseKm, top = base + kTopScaleHeights * p.upperScaleHeightKm;
-            const f64::ShellSegments shell = f64::rayShell(ray.origin, ray.direction, radiusKm_ + base,
+            const scene::f64::ShellSegments shell = scene::f64::rayShell(ray.origin, ray.direction, radiusKm_ + base,
                                                            ray.altitude - base, radiusKm_ + top, ray.altitude - top,
                                                            ray.end);
             for (const glm::dvec2 part : {shell.first, shell.second}) {
@@ -67,7 +68,7 @@ public:
                                                   radiusKm_ + base);
                 const double lower = physics::atmosphere::exactAirmass(ray.origin, ray.direction, part.x, part.y, p.lowerScaleHeightKm,
                                                   radiusKm_ + base);
-                ray.radiance += rgb_[i] * f64::transmittanceTo(ray, part) * (p.rayleighPerKm * (upper - lower));
+                ray.radiance += rgb_[i] * scene::f64::transmittanceTo(ray, part) * (p.rayleighPerKm * (upper - lower));
             }
         }
         return ray;
@@ -94,7 +95,7 @@ Layer readLayer(const config::TableReader& t)
 
 class Airglow : public scene::ComponentWith<Settings> {
 public:
-    std::vector<std::string> needs() const override { return {"planet"}; }
+    std::vector<std::string> needs() const override { return {roles::kGround}; }
     void read(const config::TableReader& t, scene::Scene& scene, scene::ComponentSettings& settings) const override
     {
         auto& s = dynamic_cast<Settings&>(settings);

@@ -4,6 +4,7 @@
 #include "gl/shader_program.h"
 #include "scene/ray_steps.h"
 #include "scene/scene.h"
+#include "components/roles/names.h"
 
 namespace aurorawall::components::atmosphere {
 
@@ -28,9 +29,9 @@ private:
 class Reference : public scene::ReferenceShader {
 public:
     Reference(const Settings& s, double radiusKm) : s_(s), radiusKm_(radiusKm) {}
-    f64::Ray shade(f64::Ray ray) const override
+    scene::f64::Ray shade(scene::f64::Ray ray) const override
     {
-        ray.atmosphere = f64::lowerShellSegment(ray, radiusKm_, s_.topKm);
+        ray.atmosphere = scene::f64::lowerShellSegment(ray, radiusKm_, s_.topKm);
         if (ray.atmosphere.x < ray.atmosphere.y) {
             const double airmass = physics::atmosphere::exactAirmass(ray.origin, ray.direction, ray.atmosphere.x, ray.atmosphere.y,
                                                 s_.scaleHeightKm, radiusKm_);
@@ -47,7 +48,8 @@ private:
 
 class Atmosphere : public scene::ComponentWith<Settings> {
 public:
-    std::vector<std::string> needs() const override { return {"planet"}; }
+    std::vector<std::string> needs() const override { return {roles::kGround}; }
+    std::vector<std::string> provides() const override { return {roles::kLowerAtmosphere}; }
     void read(const config::TableReader& t, scene::Scene&, scene::ComponentSettings& settings) const override
     {
         auto& s = dynamic_cast<Settings&>(settings);

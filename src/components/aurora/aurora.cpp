@@ -10,6 +10,7 @@
 #include "gl/context.h"
 #include "gl/shader_program.h"
 #include "scene/scene.h"
+#include "components/roles/names.h"
 
 namespace aurorawall::components::aurora {
 
@@ -27,7 +28,7 @@ class Renderer : public scene::ComponentRenderer {
 public:
     Renderer(const Settings& s, double planetRadiusKm, const roles::DetailShape* detail)
         : s_(s), tables_(s), model_(s, planetRadiusKm, detail),
-          field_(model_, resolvedMapBuilder(s.footprintMapBuild), dataDirectory() + "/shaders")
+          field_(model_, resolvedMapBuilder(s.footprintMapBuild), common::dataDirectory() + "/shaders")
     {
     }
     std::string precomputationLog() const override { return tables_.summary(); }
@@ -123,7 +124,8 @@ Curtain readCurtain(const config::TableReader& t, double planetRadiusKm, double 
 
 class Aurora : public scene::ComponentWith<Settings> {
 public:
-    std::vector<std::string> needs() const override { return {"planet"}; }
+    std::vector<std::string> needs() const override { return {roles::kGround}; }
+    std::vector<std::string> provides() const override { return {roles::kCurtains}; }
     void read(const config::TableReader& t, scene::Scene& scene, scene::ComponentSettings& settings) const override
     {
         auto& a = dynamic_cast<Settings&>(settings);
@@ -180,7 +182,7 @@ public:
                                                           const scene::ReferenceContext& context) const override
     {
         const roles::CurtainDetailProvider* provider = roles::curtainDetailProvider(scene);
-        const fluid::FluxFrames* frames = roles::referenceFrames(context);
+        const roles::FluxFrames* frames = roles::referenceFrames(context);
         if ((provider != nullptr) != (frames != nullptr))
             throw std::invalid_argument(
                 "the reference needs the detail frames exactly when the scene lists fluid_detail or plasma");

@@ -11,7 +11,6 @@
 
 namespace aurorawall::components::aurora {
 
-namespace physics = ::aurorawall::aurora; // src/components/aurora/physics: deposition, emission yields, curtain geometry
 
 // One keyframe of a curtain: its footprint (a spline on the sphere through latitude/longitude
 // control points) and its electrons at one moment of the substorm.

@@ -6,12 +6,13 @@
 #include "physics/constants.h"
 #include "scene/ray_steps.h"
 
-namespace aurorawall::f64 {
+namespace aurorawall::components::aurora::f64 {
+using namespace aurorawall::scene::f64; // the ray and its steps
 namespace {
 #include "render/angle.glsl"
 #include "components/aurora/segment_projection.glsl"
 } // namespace
-} // namespace aurorawall::f64
+} // namespace aurorawall::components::aurora::f64
 
 #include <algorithm>
 #include <cmath>
@@ -20,7 +21,7 @@ namespace {
 namespace aurorawall::components::aurora {
 
 AuroraReference::AuroraReference(const Settings& aurora, double planetRadiusKm, double timeS, double stepKm,
-                                 const fluid::FluxFrames* frames, std::optional<roles::DetailShape> shape,
+                                 const roles::FluxFrames* frames, std::optional<roles::DetailShape> shape,
                                  double stripWidthKm)
     : aurora_(aurora), planetRadiusKm_(planetRadiusKm), stepKm_(stepKm), frames_(frames),
       stripWidthKm_(stripWidthKm), shape_(shape)
@@ -82,7 +83,7 @@ double AuroraReference::nearestCurtainKm(glm::dvec3 unit) const
 }
 
 // curtain_profile.glsl in double: with fluid detail, peakScale x F(s + offset, u x scale, phase)
-// (fluid::sampleFlux), zero beyond half the strip width; else exp(-(u scale)^2 / 2).
+// (roles::sampleFlux), zero beyond half the strip width; else exp(-(u scale)^2 / 2).
 double AuroraReference::profile(const Curtain& c, double sKm, double uKm) const
 {
     const double across = uKm * c.lateralScale;
@@ -90,7 +91,7 @@ double AuroraReference::profile(const Curtain& c, double sKm, double uKm) const
         return std::exp(-0.5 * across * across);
     if (std::abs(across) >= 0.5 * stripWidthKm_)
         return 0.0;
-    return shape_->peakScale * fluid::sampleFlux(*frames_, sKm + c.state.detailOffsetKm, across, c.state.detailPhase);
+    return shape_->peakScale * roles::sampleFlux(*frames_, sKm + c.state.detailOffsetKm, across, c.state.detailPhase);
 }
 
 // curtainEmissionRgbPerKm of curtain_emission.glsl without tables: 1 photon cm^-3 s^-1 over 1 km is

@@ -7,7 +7,7 @@
 //     overlapping curtains add (the shader sees the two nearest curtains at a point);
 //   - emission: flux x profile(s, u) x the line emission of aurora::depositionRate,
 //     aurora::lineYield and aurora::lineLinearSrgbPerRayleigh in double (no decibel tables); the
-//     fluid profile from fluid::sampleFlux in double with the normalization of curtain_profile.glsl;
+//     fluid profile from roles::sampleFlux in double with the normalization of curtain_profile.glsl;
 //   - the emission integral by the midpoint rule with a fine fixed step wherever a curtain is
 //     within reach, and exact jumps over the rest (the distance to the nearest curtain, less the
 //     reach, is a distance along the ray that cannot reach an emitting point).
@@ -26,10 +26,10 @@ public:
     // frames: the curtain detail frames when the scene lists a provider of the role, else
     // null; shape: their shape for the curtain model; stripWidthKm: their strip's width.
     AuroraReference(const Settings& aurora, double planetRadiusKm, double timeS, double stepKm,
-                    const fluid::FluxFrames* frames, std::optional<roles::DetailShape> shape,
+                    const roles::FluxFrames* frames, std::optional<roles::DetailShape> shape,
                     double stripWidthKm);
 
-    f64::Ray shade(f64::Ray ray) const override;
+    scene::f64::Ray shade(scene::f64::Ray ray) const override;
 
 private:
     struct Curtain {
@@ -54,7 +54,7 @@ private:
     const Settings& aurora_;
     double planetRadiusKm_;
     double stepKm_;
-    const fluid::FluxFrames* frames_;
+    const roles::FluxFrames* frames_;
     double stripWidthKm_;
     std::optional<roles::DetailShape> shape_;
     std::optional<CurtainModel> model_;

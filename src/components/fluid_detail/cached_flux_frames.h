@@ -10,23 +10,17 @@
 namespace aurorawall::components::fluid_detail {
 
 struct CachedFluxFrames {
-    fluid::FluxFrames frames;
+    roles::FluxFrames frames;
     std::string outcome; // io::CachedTable::outcome
 };
 
-// Flux frames as the bytes of a cache file: nx, ny, frames (int32), texelKmX, texelKmY (float32),
-// then the flux (float32), native byte order; and back, checked against the expected counts (an
-// error naming `what` when they differ). Also used by the plasma component's frames.
-std::vector<char> fluxFramesBytes(const fluid::FluxFrames& frames);
-fluid::FluxFrames fluxFramesFromBytes(const std::vector<char>& bytes, int nx, int ny, int frames, const std::string& what);
-
 // The cache key: "fluid_detail flux frames v1" and every spec field (doubles in hexadecimal, exact),
 // then the executable's digest.
-std::string fluxFramesCacheKey(const fluid::CurtainDetailSpec& spec);
+std::string fluxFramesCacheKey(const simulation::CurtainDetailSpec& spec);
 
 // simulateCurtainDetail(spec), read from `cacheDirectory` when a good file is there, else simulated
 // and written there (an empty directory: simulated, not cached). The frames are bit-identical
 // either way.
-CachedFluxFrames cachedFluxFrames(const fluid::CurtainDetailSpec& spec, const std::string& cacheDirectory);
+CachedFluxFrames cachedFluxFrames(const simulation::CurtainDetailSpec& spec, const std::string& cacheDirectory);
 
 } // namespace aurorawall::components::fluid_detail

@@ -11,9 +11,9 @@
 
 namespace aurorawall::components::fluid_detail {
 
-fluid::CurtainDetailSpec curtainDetailSpec(const Settings& detail)
+simulation::CurtainDetailSpec curtainDetailSpec(const Settings& detail)
 {
-    fluid::CurtainDetailSpec spec;
+    simulation::CurtainDetailSpec spec;
     spec.nx = detail.cellsAlong;
     spec.ny = detail.cellsAcross;
     spec.stripLengthKm = detail.stripLengthKm;
@@ -24,25 +24,11 @@ fluid::CurtainDetailSpec curtainDetailSpec(const Settings& detail)
     return spec;
 }
 
-std::vector<double> frameReachesKm(const fluid::FluxFrames& f, double stripWidthKm)
-{
-    float peak = 0.0f;
-    for (float v : f.flux)
-        peak = std::max(peak, v);
-    std::vector<double> reach(size_t(f.frames), 0.0);
-    for (int k = 0; k < f.frames; ++k)
-        for (int iy = 0; iy < f.ny; ++iy)
-            for (int ix = 0; ix < f.nx; ++ix)
-                if (f.at(k, ix, iy) > 1e-3f * peak)
-                    reach[k] = std::max(reach[k], std::abs((iy + 0.5) * f.texelKmY - 0.5 * stripWidthKm) + f.texelKmY);
-    return reach;
-}
-
-DetailShape detailShape(const fluid::CurtainDetailSpec& spec, const fluid::FluxFrames& frames)
+DetailShape detailShape(const simulation::CurtainDetailSpec& spec, const roles::FluxFrames& frames)
 {
     DetailShape d;
     d.fluxWidthKm = spec.fluxWidthKm;
-    d.setFrameReaches(frameReachesKm(frames, spec.stripWidthKm));
+    d.setFrameReaches(roles::frameReachesKm(frames, spec.stripWidthKm));
     d.stripLengthKm = spec.stripLengthKm;
     d.peakScale = spec.fluxWidthKm * std::sqrt(2.0 * physics::kPi);
     return d;
@@ -53,7 +39,7 @@ CurtainDetail::CurtainDetail(const Settings& detail)
 {
     const auto start = std::chrono::steady_clock::now();
     const CachedFluxFrames cached = cachedFluxFrames(spec_, io::defaultCacheDirectory());
-    const fluid::FluxFrames& f = cached.frames;
+    const roles::FluxFrames& f = cached.frames;
     columns_.upload(f);
     shape_ = detailShape(spec_, f);
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();

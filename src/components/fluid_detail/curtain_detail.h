@@ -1,11 +1,11 @@
 #pragma once
 // The fluid_detail component on the GPU: the Kelvin-Helmholtz flux frames of src/components/fluid_detail/simulation as
-// a texture (flux_column_texture.h), with the constants that turn a lookup into a profile of peak 1. Simulated at start-up, or read from the
+// a texture (roles/flux_column_texture.h), with the constants that turn a lookup into a profile of peak 1. Simulated at start-up, or read from the
 // on-disk cache (cached_flux_frames.h); the simulation is deterministic and a cache file is read
 // only when its checksum and key match, so every rank holds the same frames.
 #include "components/fluid_detail/simulation/curtain_detail.h"
 #include "gl/shader_program.h"
-#include "components/fluid_detail/flux_column_texture.h"
+#include "components/roles/flux_column_texture.h"
 #include "components/fluid_detail/fluid_detail.h"
 #include "components/roles/curtain_detail.h"
 
@@ -16,7 +16,7 @@ namespace aurorawall::components::fluid_detail {
 
 using roles::DetailShape;
 // The shape of these frames for the aurora's curtain model.
-DetailShape detailShape(const fluid::CurtainDetailSpec& spec, const fluid::FluxFrames& frames);
+DetailShape detailShape(const simulation::CurtainDetailSpec& spec, const roles::FluxFrames& frames);
 
 class CurtainDetail : public roles::CurtainDetailRenderer {
 public:
@@ -24,23 +24,20 @@ public:
 
     std::string precomputationLog() const override { return summary_; }
     void setFrame(gl::Program&, const cluster::FrameState&) override {}
-    // Texture unit 3 and the uniforms of shaders/components/aurora/curtain_profile.glsl.
+    // Texture unit 3 and the uniforms the curtains' profile reads (roles/flux_column_texture.h).
     void bind(gl::Program& program) const override;
 
     const DetailShape& shape() const override { return shape_; }
 
 private:
-    fluid::CurtainDetailSpec spec_;
-    FluxColumnTexture columns_;
+    simulation::CurtainDetailSpec spec_;
+    roles::FluxColumnTexture columns_;
     DetailShape shape_;
     std::string summary_;
 };
 
 // The simulation parameters for a scene's fluid_detail table (docs/fluid.md).
-fluid::CurtainDetailSpec curtainDetailSpec(const Settings& detail);
+simulation::CurtainDetailSpec curtainDetailSpec(const Settings& detail);
 
-// For each frame: beyond this lateral distance from the strip's centre line (strip km) the frame
-// holds no more than 1e-3 of the peak flux of all frames: the largest |u| + one texel of any such cell.
-std::vector<double> frameReachesKm(const fluid::FluxFrames& frames, double stripWidthKm);
 
 } // namespace aurorawall::components::fluid_detail

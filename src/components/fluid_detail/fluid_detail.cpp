@@ -10,12 +10,12 @@ namespace aurorawall::components::fluid_detail {
 
 namespace {
 
-// It provides the curtain detail: the aurora's curtain profile samples these frames
-// (shaders/components/aurora/curtain_profile.glsl under HAS_CURTAIN_DETAIL), and the aurora's reference
-// samples them in double: the component adds no shader module and no reference step of its own.
+// It provides the curtain detail (roles/curtain_detail.h): the curtains' profile samples these frames
+// (under HAS_CURTAIN_DETAIL), and the curtains' reference samples them in double: the component adds
+// no shader module and no reference step of its own.
 class FluidDetail : public scene::ComponentWith<Settings>, public roles::CurtainDetailProvider {
 public:
-    std::vector<std::string> needs() const override { return {"aurora"}; }
+    std::vector<std::string> needs() const override { return {roles::kCurtains}; }
     std::vector<std::string> provides() const override { return {roles::kCurtainDetail}; }
     // No shading step: the shell of the curtains it gives their detail to.
     scene::Shell shell() const override { return scene::Shell::EmittingStructures; }
@@ -32,9 +32,9 @@ public:
         f.frames = static_cast<int>(t.number("frames", 2, 256, f.frames));
         f.seed = static_cast<unsigned>(t.number("seed", 0, 4294967295.0, f.seed));
         f.pressureSolver = t.choice("pressure_solver", {"fft", "multigrid"},
-                                    f.pressureSolver == fluid::PressureSolver::Fft ? 0 : 1) == 0
-                               ? fluid::PressureSolver::Fft
-                               : fluid::PressureSolver::Multigrid;
+                                    f.pressureSolver == simulation::PressureSolver::Fft ? 0 : 1) == 0
+                               ? simulation::PressureSolver::Fft
+                               : simulation::PressureSolver::Multigrid;
     }
     std::vector<std::string> shaderModules() const override { return {}; }
     std::unique_ptr<scene::ComponentRenderer> makeRenderer(const scene::Scene& scene,
@@ -47,12 +47,12 @@ public:
     {
         return nullptr;
     }
-    std::shared_ptr<const fluid::FluxFrames> referenceFrames(const scene::Scene& scene) const override
+    std::shared_ptr<const roles::FluxFrames> referenceFrames(const scene::Scene& scene) const override
     {
-        return std::make_shared<const fluid::FluxFrames>(
+        return std::make_shared<const roles::FluxFrames>(
             cachedFluxFrames(curtainDetailSpec(scene.settings<Settings>()), io::defaultCacheDirectory()).frames);
     }
-    DetailShape referenceShape(const scene::Scene& scene, const fluid::FluxFrames& frames) const override
+    DetailShape referenceShape(const scene::Scene& scene, const roles::FluxFrames& frames) const override
     {
         return detailShape(curtainDetailSpec(scene.settings<Settings>()), frames);
     }

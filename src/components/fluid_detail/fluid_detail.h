@@ -15,7 +15,7 @@ struct Settings : scene::SettingsOf<Settings> {
     int frames = 16;
     unsigned seed = 1;
     // The pressure projection: an exact FFT solve (FFTW) or multigrid V-cycles (docs/fluid.md).
-    fluid::PressureSolver pressureSolver = fluid::PressureSolver::Fft;
+    simulation::PressureSolver pressureSolver = simulation::PressureSolver::Fft;
 };
 
 const scene::Component& component();

@@ -7,6 +7,7 @@
 #include "components/glory/mie/mie_scattering.h"
 #include "physics/colour_matching.h"
 #include "components/glory/optics/water.h"
+#include "components/roles/names.h"
 #include "gl/shader_program.h"
 #include "gl/texture.h"
 #include "io/table_cache.h"
@@ -21,10 +22,9 @@
 
 namespace aurorawall::components::glory {
 
-namespace optics = aurorawall::glory;
 
 namespace f64 {
-using namespace aurorawall::f64;
+using namespace aurorawall::scene::f64;
 #include "physics/constants.glsl"
 #include "components/glory/cloud_deck.glsl"
 #include "components/glory/glory_angle.glsl"
@@ -265,7 +265,7 @@ void readLight(const config::TableReader& t, Settings& s)
 
 class Glory : public scene::ComponentWith<Settings> {
 public:
-    std::vector<std::string> needs() const override { return {"planet"}; }
+    std::vector<std::string> needs() const override { return {roles::kGround}; }
     void read(const config::TableReader& t, scene::Scene& scene, scene::ComponentSettings& settings) const override
     {
         auto& s = dynamic_cast<Settings&>(settings);

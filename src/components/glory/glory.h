@@ -28,11 +28,11 @@ struct Settings : scene::SettingsOf<Settings> {
     double effectiveRadiusUm = 10.0;
     double effectiveVariance = 0.01;
     // The light: the Sun or the Moon, from this direction (planet frame, toward the light).
-    aurorawall::glory::LightSource light;
+    optics::LightSource light;
     glm::dvec3 lightDirection{0.0, 0.0, 1.0};
     bool lightGiven = false; // a scene (or its base) gave [glory.light]
     // The tables and the per-pixel colour.
-    aurorawall::glory::GloryTableSpec table;
+    optics::GloryTableSpec table;
     WavelengthSampling sampling = WavelengthSampling::ColourTable;
     int wavelengthsPerPixel = 8;
 
@@ -42,7 +42,7 @@ struct Settings : scene::SettingsOf<Settings> {
 // The deck's smeared phase table for these settings (cached on disk: io/table_cache.h), and how it
 // was obtained ("built, cached", "read from cache", ...).
 struct GloryTables {
-    aurorawall::glory::PhaseTable phase; // smeared by the light's disc
+    optics::PhaseTable phase; // smeared by the light's disc
     std::string outcome;
     double seconds = 0.0;
 };
@@ -50,7 +50,7 @@ GloryTables gloryTables(const Settings& settings);
 
 // The reference's finer table: twice the angles in each segment, every 5 nm from 380 to 780 nm, half the
 // size-parameter step.
-aurorawall::glory::GloryTableSpec referenceTableSpec(const aurorawall::glory::GloryTableSpec& spec);
+optics::GloryTableSpec referenceTableSpec(const optics::GloryTableSpec& spec);
 
 // The asymmetry parameter g of the deck's drops: a drop of the effective radius at 550 nm.
 double deckAsymmetry(const Settings& settings);

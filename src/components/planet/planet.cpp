@@ -3,6 +3,7 @@
 #include "gl/shader_program.h"
 #include "scene/ray_steps.h"
 #include "scene/scene.h"
+#include "components/roles/names.h"
 
 namespace aurorawall::components::planet {
 
@@ -27,11 +28,11 @@ private:
 class Reference : public scene::ReferenceShader {
 public:
     Reference(const Settings& s, double radiusKm) : s_(s), radiusKm_(radiusKm) {}
-    f64::Ray bound(f64::Ray ray) const override
+    scene::f64::Ray bound(scene::f64::Ray ray) const override
     {
-        return f64::boundByGround(ray, radiusKm_, glm::length(ray.origin) - radiusKm_);
+        return scene::f64::boundByGround(ray, radiusKm_, glm::length(ray.origin) - radiusKm_);
     }
-    f64::Ray shade(f64::Ray ray) const override
+    scene::f64::Ray shade(scene::f64::Ray ray) const override
     {
         if (ray.groundT >= 0.0)
             ray.radiance += s_.surfaceRadiance * ray.transmittance;
@@ -45,6 +46,7 @@ private:
 
 class Planet : public scene::ComponentWith<Settings> {
 public:
+    std::vector<std::string> provides() const override { return {roles::kGround}; }
     void read(const config::TableReader& t, scene::Scene& scene, scene::ComponentSettings& settings) const override
     {
         auto& s = dynamic_cast<Settings&>(settings);

@@ -2,6 +2,7 @@
 
 #include "components/planet_texture/night_lights.h"
 #include "scene/scene.h"
+#include "components/roles/names.h"
 
 namespace aurorawall::components::planet_texture {
 
@@ -20,7 +21,7 @@ private:
 
 class PlanetTexture : public scene::ComponentWith<Settings> {
 public:
-    std::vector<std::string> needs() const override { return {"planet"}; }
+    std::vector<std::string> needs() const override { return {roles::kGround}; }
     void read(const config::TableReader& t, scene::Scene&, scene::ComponentSettings& settings) const override
     {
         auto& s = dynamic_cast<Settings&>(settings);
@@ -39,6 +40,7 @@ public:
     {
         return std::make_unique<Renderer>(scene.settings<Settings>());
     }
+    bool inReference() const override { return false; }
     std::unique_ptr<scene::ReferenceShader> makeReference(const scene::Scene&,
                                                           const scene::ReferenceContext&) const override
     {

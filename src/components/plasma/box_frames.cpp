@@ -13,7 +13,7 @@
 
 namespace aurorawall::components::plasma {
 
-namespace pic = aurorawall::plasma;
+namespace pic = aurorawall::components::plasma::simulation;
 
 namespace {
 

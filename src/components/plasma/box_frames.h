@@ -33,16 +33,16 @@ struct BoxFramesSpec {
 double boxBeamSpeed(const BoxFramesSpec& spec);
 
 // The box's grid: cells³ cells of side sideM / cells.
-aurorawall::plasma::PeriodicGrid boxGrid(const BoxFramesSpec& spec);
+simulation::PeriodicGrid boxGrid(const BoxFramesSpec& spec);
 
 // Two cold beams on the same lattice (perCellAxis³ electrons per cell each), displaced along z by
 // a sin(k z + φ(x, y)) with φ = π sin(2πx/L) sin(2πy/L), at +v₀ and −v₀ along z.
-aurorawall::plasma::Particles boxElectrons(const BoxFramesSpec& spec);
+simulation::Particles boxElectrons(const BoxFramesSpec& spec);
 
 // A frame: n/n₀ at the cell centres, the CIC deposit of the electrons moved back by half a cell on
 // every axis, plus the mean the deposit removed; x fastest, then y, z.
-std::vector<float> boxFrameDensity(const BoxFramesSpec& spec, const aurorawall::plasma::PeriodicGrid& grid,
-                                   const aurorawall::plasma::Particles& electrons);
+std::vector<float> boxFrameDensity(const BoxFramesSpec& spec, const simulation::PeriodicGrid& grid,
+                                   const simulation::Particles& electrons);
 
 struct BoxFrames {
     int cells = 0;

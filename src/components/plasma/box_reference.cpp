@@ -1,8 +1,8 @@
 #include "components/plasma/box_reference.h"
 
 #include "common/glsl.h"
-#include "components/airglow/airglow.h"
 #include "physics/colour.h"
+#include "physics/emission_lines.h"
 #include "io/table_cache.h"
 #include "scene/ray_steps.h"
 #include "scene/scene.h"
@@ -14,15 +14,16 @@
 
 namespace aurorawall::components::plasma {
 
-namespace box_f64 {
+namespace f64 {
 AURORAWALL_GLSL_PRECISION(double)
+using namespace aurorawall::scene::f64; // the ray and its steps
 // The shader's march text over a BoxDensity (its plasmaBoxDensity).
 struct March {
     const BoxDensity* density;
     real plasmaBoxDensity(vec3 unit) const { return density->at(unit); }
 #include "components/plasma/plasma_box_march.glsl"
 };
-} // namespace box_f64
+} // namespace f64
 
 namespace {
 
@@ -39,10 +40,8 @@ public:
     {
         const scene::LocalFrame local = scene::localFrame(plasma.boxLatitudeDeg, plasma.boxLongitudeDeg);
         axes_ = glm::dmat3(local.east, local.north, local.up);
-        const airglow::Line line = airglow::Line::Green5577;
-        rgbPerDensityKm_ =
-            aurorawall::physics::lineLinearSrgbPerRayleigh(airglow::wavelengthNm(line), airglow::cieXyz(line)) *
-            plasma.boxRayleighPerKm;
+        const aurorawall::physics::LineInfo& green = aurorawall::physics::lineInfo(aurorawall::physics::EmissionLine::Green5577);
+        rgbPerDensityKm_ = aurorawall::physics::lineLinearSrgbPerRayleigh(green.wavelengthNm, green.cieXyz) * plasma.boxRayleighPerKm;
     }
 
     // shadePlasmaBox (plasma_box.glsl) in double, the column exact.
@@ -132,13 +131,13 @@ double BoxDensity::exactColumn(glm::dvec3 o, glm::dvec3 d, glm::dvec2 segment, d
 
 double BoxDensity::marchedColumn(glm::dvec3 o, glm::dvec3 d, glm::dvec2 segment, int steps, double side) const
 {
-    box_f64::March march{this};
+    f64::March march{this};
     return march.plasmaBoxColumn(o, d, segment, steps, side);
 }
 
 glm::dvec2 boxSegment(glm::dvec3 o, glm::dvec3 d, double halfSide)
 {
-    box_f64::March march{nullptr}; // the segment reads no density
+    f64::March march{nullptr}; // the segment reads no density
     return march.plasmaBoxSegment(o, d, halfSide);
 }
 

@@ -1,8 +1,8 @@
 #include "components/plasma/box_renderer.h"
 
 #include "common/data_dir.h"
-#include "components/airglow/airglow.h"
 #include "physics/colour.h"
+#include "physics/emission_lines.h"
 #include "gl/functions.h"
 #include "gl/shader_program.h"
 #include "io/table_cache.h"
@@ -29,15 +29,15 @@ BoxRenderer::BoxRenderer(const Settings& plasma, const aurora::Settings& aurora,
     BoxFrames f;
     std::string outcome;
     if (plasma.device == Settings::Device::Gpu) {
-        const aurorawall::plasma::PeriodicGrid grid = boxGrid(spec);
-        const aurorawall::plasma::Particles electrons = boxElectrons(spec);
+        const simulation::PeriodicGrid grid = boxGrid(spec);
+        const simulation::Particles electrons = boxElectrons(spec);
         f = {spec.cells, 1, boxFrameDensity(spec, grid, electrons)};
         liveBox_ = std::make_unique<LivePic>(
             grid, electrons, glm::dvec3(0.0, 0.0, spec.magneticFieldT), spec.timeStepS,
-            [spec](const aurorawall::plasma::PeriodicGrid& g, const aurorawall::plasma::Particles& e) {
+            [spec](const simulation::PeriodicGrid& g, const simulation::Particles& e) {
                 return boxFrameDensity(spec, g, e);
             },
-            dataDirectory() + "/shaders");
+            common::dataDirectory() + "/shaders");
         outcome = "live on the GPU";
     } else {
         CachedBoxFrames cached = cachedBoxFrames(spec, io::defaultCacheDirectory());
@@ -53,9 +53,8 @@ BoxRenderer::BoxRenderer(const Settings& plasma, const aurora::Settings& aurora,
         scene::planetPoint(plasma.boxLatitudeDeg, plasma.boxLongitudeDeg, planetRadiusKm + plasma.boxAltitudeKm);
     const scene::LocalFrame local = scene::localFrame(plasma.boxLatitudeDeg, plasma.boxLongitudeDeg);
     axes_ = glm::dmat3(local.east, local.north, local.up);
-    const airglow::Line line = airglow::Line::Green5577;
-    const glm::dvec3 green =
-        aurorawall::physics::lineLinearSrgbPerRayleigh(airglow::wavelengthNm(line), airglow::cieXyz(line));
+    const aurorawall::physics::LineInfo& line = aurorawall::physics::lineInfo(aurorawall::physics::EmissionLine::Green5577);
+    const glm::dvec3 green = aurorawall::physics::lineLinearSrgbPerRayleigh(line.wavelengthNm, line.cieXyz);
     rgbPerDensityKm_ = glm::vec3(green * plasma.boxRayleighPerKm);
 
     float peak = 0.0f;

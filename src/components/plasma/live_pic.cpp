@@ -8,14 +8,14 @@
 
 namespace aurorawall::components::plasma {
 
-namespace pic = aurorawall::plasma;
+namespace pic = aurorawall::components::plasma::simulation;
 
 LivePic::LivePic(const pic::PeriodicGrid& grid, pic::Particles electrons, glm::dvec3 magneticField, double dt,
                  FrameDensity frameDensity, std::string shaderDir)
     : grid_(grid), start_(std::move(electrons)), magneticField_(magneticField), dt_(dt),
       frameDensity_(std::move(frameDensity)), shaderDir_(std::move(shaderDir)),
-      gpu_(std::make_unique<pic::GpuPic>(grid_, start_, magneticField_, dt_, shaderDir_, glm::dvec3(0.0),
-                                         pic::preferredGpuPicSolver(grid_, gl::currentRendererName())))
+      gpu_(std::make_unique<gpu::GpuPic>(grid_, start_, magneticField_, dt_, shaderDir_, glm::dvec3(0.0),
+                                         gpu::preferredGpuPicSolver(grid_, gl::currentRendererName())))
 {
 }
 
@@ -27,8 +27,8 @@ bool LivePic::advanceTo(long n)
         return false;
     if (!gpu_ || n < gpu_->stepCount()) { // behind, or a restart that failed before
         gpu_.reset(); // its buffers freed before the new one's are made
-        gpu_ = std::make_unique<pic::GpuPic>(grid_, start_, magneticField_, dt_, shaderDir_, glm::dvec3(0.0),
-                                             pic::preferredGpuPicSolver(grid_, gl::currentRendererName()));
+        gpu_ = std::make_unique<gpu::GpuPic>(grid_, start_, magneticField_, dt_, shaderDir_, glm::dvec3(0.0),
+                                             gpu::preferredGpuPicSolver(grid_, gl::currentRendererName()));
     }
     while (gpu_->stepCount() < n)
         gpu_->step();

@@ -18,11 +18,11 @@ namespace aurorawall::components::plasma {
 class LivePic {
 public:
     // A frame from the electrons' positions on the grid (sheetFrameDensity, boxFrameDensity).
-    using FrameDensity = std::function<std::vector<float>(const aurorawall::plasma::PeriodicGrid&,
-                                                          const aurorawall::plasma::Particles&)>;
+    using FrameDensity = std::function<std::vector<float>(const simulation::PeriodicGrid&,
+                                                          const simulation::Particles&)>;
 
     // electrons at step 0 (kept for restarts); magneticField (T), dt (s) as the CPU frames' simulation.
-    LivePic(const aurorawall::plasma::PeriodicGrid& grid, aurorawall::plasma::Particles electrons,
+    LivePic(const simulation::PeriodicGrid& grid, simulation::Particles electrons,
             glm::dvec3 magneticField, double dt, FrameDensity frameDensity, std::string shaderDir);
 
     // Steps to step n ≥ 0 (restarting first if n is behind) and computes its frame; nothing when the
@@ -36,13 +36,13 @@ public:
     const std::vector<float>& frame() const { return frame_; }
 
 private:
-    aurorawall::plasma::PeriodicGrid grid_;
-    aurorawall::plasma::Particles start_;
+    simulation::PeriodicGrid grid_;
+    simulation::Particles start_;
     glm::dvec3 magneticField_;
     double dt_;
     FrameDensity frameDensity_;
     std::string shaderDir_;
-    std::unique_ptr<aurorawall::plasma::GpuPic> gpu_;
+    std::unique_ptr<gpu::GpuPic> gpu_;
     std::vector<float> frame_;
     long frameStep_ = -1;
 };

@@ -39,7 +39,7 @@ void readBox(const config::TableReader& t, Settings& p)
     p.boxMagneticFieldT = t.numberAbove("box_magnetic_field_t", 0.0, 1.0, p.boxMagneticFieldT);
     p.boxTimeStepS = t.numberAbove("box_time_step_s", 0.0, 1.0, p.boxTimeStepS);
     // The leapfrog is unstable from ω_pΔt = 2 on (Birdsall & Langdon 1991, §4-2).
-    const double wpDt = aurorawall::plasma::plasmaFrequency(p.boxElectronDensityM3) * p.boxTimeStepS;
+    const double wpDt = simulation::plasmaFrequency(p.boxElectronDensityM3) * p.boxTimeStepS;
     if (!(wpDt < 2.0))
         t.fail("box_time_step_s", "omega_p dt = " + number(wpDt) + " must be below 2 (the leapfrog is unstable)");
     p.boxParticlesPerCellAxis = t.integer("box_particles_per_cell_axis", 1, 4, p.boxParticlesPerCellAxis);
@@ -78,7 +78,7 @@ void readBox(const config::TableReader& t, Settings& p)
 // (box_reference.h).
 class Plasma : public scene::ComponentWith<Settings>, public roles::CurtainDetailProvider {
 public:
-    std::vector<std::string> needs() const override { return {"aurora"}; }
+    std::vector<std::string> needs() const override { return {roles::kCurtains}; }
     std::vector<std::string> provides() const override { return {roles::kCurtainDetail}; }
     void read(const config::TableReader& t, scene::Scene&, scene::ComponentSettings& settings) const override
     {
@@ -96,11 +96,11 @@ public:
         p.magneticFieldT = t.numberAbove("magnetic_field_t", 0.0, 1.0, p.magneticFieldT);
         p.timeStepS = t.numberAbove("time_step_s", 0.0, 1.0, p.timeStepS);
         // The leapfrog is unstable from ω_pΔt = 2 on (Birdsall & Langdon 1991, §4-2).
-        const double wpDt = aurorawall::plasma::plasmaFrequency(p.electronDensityM3) * p.timeStepS;
+        const double wpDt = simulation::plasmaFrequency(p.electronDensityM3) * p.timeStepS;
         if (!(wpDt < 2.0))
             t.fail("time_step_s", "omega_p dt = " + number(wpDt) +
                                       " must be below 2 (the leapfrog is unstable); omega_p = " +
-                                      number(aurorawall::plasma::plasmaFrequency(p.electronDensityM3)) + " rad/s");
+                                      number(simulation::plasmaFrequency(p.electronDensityM3)) + " rad/s");
         p.particlesPerCellAxis = t.integer("particles_per_cell_axis", 1, 8, p.particlesPerCellAxis);
         p.seedMode = t.integer("seed_mode", 1, p.cellsAlong / 4, p.seedMode);
         p.seedAmplitudeKm = t.number("seed_amplitude_km", 0.0, p.stripWidthKm / 4, p.seedAmplitudeKm);
@@ -150,12 +150,12 @@ public:
             return makeBoxReference(scene.settings<Settings>(), scene.planetRadiusKm, context.timeS);
         return nullptr;
     }
-    std::shared_ptr<const fluid::FluxFrames> referenceFrames(const scene::Scene& scene) const override
+    std::shared_ptr<const roles::FluxFrames> referenceFrames(const scene::Scene& scene) const override
     {
-        return std::make_shared<const fluid::FluxFrames>(
+        return std::make_shared<const roles::FluxFrames>(
             cachedSheetFrames(sheetFramesSpec(scene.settings<Settings>()), io::defaultCacheDirectory()).frames);
     }
-    roles::DetailShape referenceShape(const scene::Scene& scene, const fluid::FluxFrames& frames) const override
+    roles::DetailShape referenceShape(const scene::Scene& scene, const roles::FluxFrames& frames) const override
     {
         return sheetDetailShape(sheetFramesSpec(scene.settings<Settings>()), frames);
     }
@@ -183,7 +183,7 @@ SheetFramesSpec sheetFramesSpec(const Settings& p)
     s.sheet.thicknessM = p.sheetThicknessKm * 1e3;
     s.sheet.electronDensity = p.electronDensityM3;
     s.sheet.magneticFieldT = p.magneticFieldT;
-    s.sheet.cyclotronFrequencyTimesDt = aurorawall::plasma::cyclotronFrequency(p.magneticFieldT) * p.timeStepS;
+    s.sheet.cyclotronFrequencyTimesDt = simulation::cyclotronFrequency(p.magneticFieldT) * p.timeStepS;
     s.sheet.particlesPerCellPerAxis = p.particlesPerCellAxis;
     s.sheet.mode = p.seedMode;
     s.sheet.seedDisplacementM = p.seedAmplitudeKm * 1e3;

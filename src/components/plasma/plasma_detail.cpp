@@ -12,7 +12,7 @@
 
 namespace aurorawall::components::plasma {
 
-namespace pic = aurorawall::plasma;
+namespace pic = aurorawall::components::plasma::simulation;
 
 PlasmaDetail::PlasmaDetail(const Settings& plasma, const aurora::Settings& aurora)
     : spec_(sheetFramesSpec(plasma))
@@ -20,7 +20,7 @@ PlasmaDetail::PlasmaDetail(const Settings& plasma, const aurora::Settings& auror
     if (!aurora.curtains.empty())
         curtain_ = aurora.curtains.front();
     const auto start = std::chrono::steady_clock::now();
-    fluid::FluxFrames f;
+    roles::FluxFrames f;
     std::string outcome;
     if (plasma.device == Settings::Device::Gpu) {
         // Frame 0 on the CPU gives the curtain's shape, as the CPU frames' frame 0 does.
@@ -36,7 +36,7 @@ PlasmaDetail::PlasmaDetail(const Settings& plasma, const aurora::Settings& auror
         live_ = std::make_unique<LivePic>(
             grid, electrons, glm::dvec3(0.0, 0.0, spec_.sheet.magneticFieldT), pic::sheetTimeStep(spec_.sheet),
             [spec](const pic::PeriodicGrid& g, const pic::Particles& e) { return sheetFrameDensity(spec, g, e); },
-            dataDirectory() + "/shaders");
+            common::dataDirectory() + "/shaders");
         outcome = "live on the GPU";
     } else {
         CachedSheetFrames cached = cachedSheetFrames(spec_, io::defaultCacheDirectory());

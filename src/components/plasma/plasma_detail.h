@@ -1,6 +1,6 @@
 #pragma once
 // The plasma component on the GPU: the electron strip's density as curtain flux frames
-// (fluid_detail/flux_column_texture.h) with the uniforms of shaders/components/aurora/curtain_profile.glsl,
+// (roles/flux_column_texture.h) with the uniforms of shaders/components/aurora/curtain_profile.glsl,
 // as fluid_detail binds them.
 //   device = "cpu": the frames simulated at start-up (sheet_frames.h), the curtain's detail phase
 //     choosing and blending frames in the shader.
@@ -11,7 +11,7 @@
 #include "components/plasma/live_pic.h"
 #include "components/plasma/plasma.h"
 #include "components/roles/curtain_detail.h"
-#include "components/fluid_detail/flux_column_texture.h"
+#include "components/roles/flux_column_texture.h"
 
 #include <memory>
 #include <string>
@@ -35,8 +35,8 @@ private:
     SheetFramesSpec spec_;
     aurora::Curtain curtain_; // the first curtain (none: detail phase 0)
     std::unique_ptr<LivePic> live_;
-    fluid_detail::FluxColumnTexture columns_;
-    fluid::FluxFrames liveFrame_; // device = "gpu": the live run's frame, its flux replaced each step
+    roles::FluxColumnTexture columns_;
+    roles::FluxFrames liveFrame_; // device = "gpu": the live run's frame, its flux replaced each step
     roles::DetailShape shape_;
     std::string summary_;
 };

@@ -1,8 +1,5 @@
 #include "components/plasma/sheet_frames.h"
 
-#include "components/fluid_detail/cached_flux_frames.h"
-#include "components/fluid_detail/curtain_detail.h"
-
 #include "components/plasma/simulation/particle_mesh.h"
 #include "components/plasma/simulation/plasma_parameters.h"
 #include "io/table_cache.h"
@@ -16,7 +13,7 @@
 
 namespace aurorawall::components::plasma {
 
-namespace pic = aurorawall::plasma;
+namespace pic = aurorawall::components::plasma::simulation;
 
 namespace {
 
@@ -44,13 +41,13 @@ std::vector<float> sheetFrameDensity(const SheetFramesSpec& spec, const pic::Per
     return frame;
 }
 
-fluid::FluxFrames simulateSheetFrames(const SheetFramesSpec& spec)
+roles::FluxFrames simulateSheetFrames(const SheetFramesSpec& spec)
 {
     if (spec.frames < 2 || spec.stepsPerFrame < 1)
         throw std::invalid_argument("plasma frames: needs at least 2 frames and 1 step per frame");
     pic::ElectrostaticPic sim = pic::sheetSimulation(spec.sheet);
     const pic::PeriodicGrid& grid = sim.grid();
-    fluid::FluxFrames f;
+    roles::FluxFrames f;
     f.nx = grid.cells[0];
     f.ny = grid.cells[1];
     f.frames = spec.frames;
@@ -67,7 +64,7 @@ fluid::FluxFrames simulateSheetFrames(const SheetFramesSpec& spec)
     return f;
 }
 
-roles::DetailShape sheetDetailShape(const SheetFramesSpec& spec, const fluid::FluxFrames& f)
+roles::DetailShape sheetDetailShape(const SheetFramesSpec& spec, const roles::FluxFrames& f)
 {
     const double widthKm = spec.sheet.widthM * 1e-3;
     double peak = 0.0, integral = 0.0, second = 0.0;
@@ -82,7 +79,7 @@ roles::DetailShape sheetDetailShape(const SheetFramesSpec& spec, const fluid::Fl
     }
     roles::DetailShape d;
     d.fluxWidthKm = std::sqrt(second / integral);
-    d.setFrameReaches(fluid_detail::frameReachesKm(f, widthKm));
+    d.setFrameReaches(roles::frameReachesKm(f, widthKm));
     d.stripLengthKm = spec.sheet.lengthM * 1e-3;
     d.peakScale = 1.0 / peak;
     return d;
@@ -105,8 +102,8 @@ std::string sheetFramesCacheKey(const SheetFramesSpec& s)
 CachedSheetFrames cachedSheetFrames(const SheetFramesSpec& spec, const std::string& cacheDirectory)
 {
     io::CachedTable table = io::cachedTable(cacheDirectory, "plasma", sheetFramesCacheKey(spec),
-                                            [&] { return fluid_detail::fluxFramesBytes(simulateSheetFrames(spec)); });
-    return {fluid_detail::fluxFramesFromBytes(table.bytes, spec.sheet.cellsAlong, spec.sheet.cellsAcross, spec.frames, "plasma"),
+                                            [&] { return roles::fluxFramesBytes(simulateSheetFrames(spec)); });
+    return {roles::fluxFramesFromBytes(table.bytes, spec.sheet.cellsAlong, spec.sheet.cellsAcross, spec.frames, "plasma"),
             table.outcome};
 }
 

@@ -1,9 +1,8 @@
 #pragma once
 // The plasma component's curtain detail: frames of the electron density of a diocotron-unstable
 // electron strip (simulation/electron_sheet.h) as it rolls up into vortices, in the form the aurora's
-// curtain profile samples (fluid::FluxFrames: x along the curtain, y across, frame by frame). CPU,
+// curtain profile samples (roles::FluxFrames: x along the curtain, y across, frame by frame). CPU,
 // serial and deterministic: every rank computes the same bytes, or reads them from the table cache.
-#include "components/fluid_detail/simulation/curtain_detail.h"
 #include "components/roles/curtain_detail.h"
 #include "components/plasma/simulation/electron_sheet.h"
 
@@ -12,7 +11,7 @@
 namespace aurorawall::components::plasma {
 
 struct SheetFramesSpec {
-    aurorawall::plasma::ElectronSheetSpec sheet; // lengths in metres
+    simulation::ElectronSheetSpec sheet; // lengths in metres
     int frames = 16;                             // frame 0 is the initial strip
     int stepsPerFrame = 80;                      // time steps between frames
 };
@@ -20,18 +19,18 @@ struct SheetFramesSpec {
 // Frame k is the electron density after k·stepsPerFrame steps, at the texel centres
 // ((i + ½)Δx, (j + ½)Δy) of the grid's cells, divided by n_b times the strip's thickness in km: so
 // ∫F du = 1 (1/km, u in km) for every column of frame 0, as the fluid's frames.
-fluid::FluxFrames simulateSheetFrames(const SheetFramesSpec& spec);
+roles::FluxFrames simulateSheetFrames(const SheetFramesSpec& spec);
 
-// One such frame from the electrons on the spec's grid (aurorawall::plasma::sheetGrid).
-std::vector<float> sheetFrameDensity(const SheetFramesSpec& spec, const aurorawall::plasma::PeriodicGrid& grid,
-                                     const aurorawall::plasma::Particles& electrons);
+// One such frame from the electrons on the spec's grid (simulation::sheetGrid).
+std::vector<float> sheetFrameDensity(const SheetFramesSpec& spec, const simulation::PeriodicGrid& grid,
+                                     const simulation::Particles& electrons);
 
 // Frame 0's shape for the aurora's curtain model: its measured standard deviation across, its reach,
 // the strip's length, and 1/(frame 0's largest value), which makes the smooth strip's peak 1.
-roles::DetailShape sheetDetailShape(const SheetFramesSpec& spec, const fluid::FluxFrames& frames);
+roles::DetailShape sheetDetailShape(const SheetFramesSpec& spec, const roles::FluxFrames& frames);
 
 struct CachedSheetFrames {
-    fluid::FluxFrames frames;
+    roles::FluxFrames frames;
     std::string outcome; // io::CachedTable::outcome
 };
 

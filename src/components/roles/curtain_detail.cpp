@@ -30,23 +30,23 @@ const CurtainDetailProvider* curtainDetailProvider(const scene::Scene& scene)
     return dynamic_cast<const CurtainDetailProvider*>(scene.provider(kCurtainDetail));
 }
 
-std::shared_ptr<const fluid::FluxFrames> curtainDetailFrames(const scene::Scene& scene)
+std::shared_ptr<const roles::FluxFrames> curtainDetailFrames(const scene::Scene& scene)
 {
     const CurtainDetailProvider* provider = curtainDetailProvider(scene);
     return provider ? provider->referenceFrames(scene) : nullptr;
 }
 
-scene::RoleData curtainDetailData(const fluid::FluxFrames* frames)
+scene::RoleData curtainDetailData(const roles::FluxFrames* frames)
 {
     if (!frames)
         return {};
     return {{kCurtainDetail, frames}};
 }
 
-const fluid::FluxFrames* referenceFrames(const scene::ReferenceContext& context)
+const roles::FluxFrames* referenceFrames(const scene::ReferenceContext& context)
 {
     const auto entry = context.roleData.find(kCurtainDetail);
-    return entry == context.roleData.end() ? nullptr : std::any_cast<const fluid::FluxFrames*>(entry->second);
+    return entry == context.roleData.end() ? nullptr : std::any_cast<const roles::FluxFrames*>(entry->second);
 }
 
 } // namespace aurorawall::components::roles

@@ -1,22 +1,21 @@
 #pragma once
 // The role "curtain detail": small-scale structure of the aurora's curtains, given as flux frames on
-// a strip along the curtain (fluid::FluxFrames) that the aurora's curtain profile samples
+// a strip along the curtain (FluxFrames, roles/flux_frames.h) that the aurora's curtain profile samples
 // (shaders/components/aurora/curtain_profile.glsl). Provided by fluid_detail and by plasma; the aurora
 // uses it through this interface only, finding the provider by the role's name.
-#include "components/fluid_detail/simulation/curtain_detail.h"
+#include "components/roles/flux_frames.h"
 #include "scene/component.h"
 
 #include <memory>
 #include <vector>
 
-namespace aurorawall::scene {
-struct Scene;
-}
-
 namespace aurorawall::components::roles {
 
 // The role's name in Component::provides, FindRenderer and Scene::provider.
 inline constexpr const char* kCurtainDetail = "curtain detail";
+// The role "curtains": the curtains whose profile samples the detail. A provider of the curtain
+// detail needs it (Component::needs).
+inline constexpr const char* kCurtains = "curtains";
 
 // How the frames shape a curtain across and along it: what the aurora's curtain model needs.
 struct DetailShape {
@@ -48,21 +47,21 @@ class CurtainDetailProvider {
 public:
     virtual ~CurtainDetailProvider() = default;
     // The frames its renderer uploads, from the table cache.
-    virtual std::shared_ptr<const fluid::FluxFrames> referenceFrames(const scene::Scene& scene) const = 0;
+    virtual std::shared_ptr<const roles::FluxFrames> referenceFrames(const scene::Scene& scene) const = 0;
     // The shape of `frames` (its own, or others on the same strip) and the strip's width (km).
-    virtual DetailShape referenceShape(const scene::Scene& scene, const fluid::FluxFrames& frames) const = 0;
+    virtual DetailShape referenceShape(const scene::Scene& scene, const roles::FluxFrames& frames) const = 0;
     virtual double stripWidthKm(const scene::Scene& scene) const = 0;
 };
 
 // The scene's provider of curtain detail, null when it lists none.
 const CurtainDetailProvider* curtainDetailProvider(const scene::Scene& scene);
 // Its frames (CurtainDetailProvider::referenceFrames), null when the scene lists no provider.
-std::shared_ptr<const fluid::FluxFrames> curtainDetailFrames(const scene::Scene& scene);
+std::shared_ptr<const roles::FluxFrames> curtainDetailFrames(const scene::Scene& scene);
 
 // The reference's role data (ReferenceContext::roleData) holds the frames the aurora's reference
-// samples under kCurtainDetail, as a `const fluid::FluxFrames*`: the provider's own or others on the
+// samples under kCurtainDetail, as a `const roles::FluxFrames*`: the provider's own or others on the
 // same strip. These make and read that entry (none for null frames; null when there is none).
-scene::RoleData curtainDetailData(const fluid::FluxFrames* frames);
-const fluid::FluxFrames* referenceFrames(const scene::ReferenceContext& context);
+scene::RoleData curtainDetailData(const roles::FluxFrames* frames);
+const roles::FluxFrames* referenceFrames(const scene::ReferenceContext& context);
 
 } // namespace aurorawall::components::roles

@@ -3,6 +3,7 @@
 #include "physics/constants.h"
 #include "gl/shader_program.h"
 #include "scene/scene.h"
+#include "components/roles/names.h"
 
 #include <cmath>
 
@@ -46,7 +47,7 @@ Light readLight(const config::TableReader& t)
 
 class Sky : public scene::ComponentWith<Settings> {
 public:
-    std::vector<std::string> needs() const override { return {"atmosphere"}; }
+    std::vector<std::string> needs() const override { return {roles::kLowerAtmosphere}; }
     void read(const config::TableReader& t, scene::Scene&, scene::ComponentSettings& settings) const override
     {
         auto& s = dynamic_cast<Settings&>(settings);
@@ -73,6 +74,7 @@ public:
     {
         return std::make_unique<Renderer>(scene.settings<Settings>());
     }
+    bool inReference() const override { return false; }
     std::unique_ptr<scene::ReferenceShader> makeReference(const scene::Scene&,
                                                           const scene::ReferenceContext&) const override
     {

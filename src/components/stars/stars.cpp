@@ -36,6 +36,7 @@ public:
     {
         return std::make_unique<Renderer>(scene.settings<Settings>());
     }
+    bool inReference() const override { return false; }
     std::unique_ptr<scene::ReferenceShader> makeReference(const scene::Scene&,
                                                           const scene::ReferenceContext&) const override
     {

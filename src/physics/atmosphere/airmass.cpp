@@ -5,7 +5,7 @@
 
 // The shared GLSL modules, compiled once in float (bit-faithful to the shader, modulo the driver's
 // transcendentals) and once in double.
-namespace aurorawall::f32 {
+namespace aurorawall::physics::atmosphere::f32 {
 AURORAWALL_GLSL_PRECISION(float)
 #include "physics/constants.glsl"
 #include "physics/atmosphere/airmass_common.glsl"
@@ -13,9 +13,9 @@ AURORAWALL_GLSL_PRECISION(float)
 #include "physics/atmosphere/airmass_tectonics.glsl"
 #include "physics/atmosphere/airmass_chapman.glsl"
 #include "physics/atmosphere/airmass_march.glsl"
-} // namespace aurorawall::f32
+} // namespace aurorawall::physics::atmosphere::f32
 
-namespace aurorawall::f64 {
+namespace aurorawall::physics::atmosphere::f64 {
 AURORAWALL_GLSL_PRECISION(double)
 #include "physics/constants.glsl"
 #include "physics/atmosphere/airmass_common.glsl"
@@ -23,7 +23,7 @@ AURORAWALL_GLSL_PRECISION(double)
 #include "physics/atmosphere/airmass_tectonics.glsl"
 #include "physics/atmosphere/airmass_chapman.glsl"
 #include "physics/atmosphere/airmass_march.glsl"
-} // namespace aurorawall::f64
+} // namespace aurorawall::physics::atmosphere::f64
 
 namespace aurorawall::physics::atmosphere {
 

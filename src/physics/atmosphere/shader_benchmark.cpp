@@ -109,7 +109,7 @@ double nanosecondsPerEvaluation(const ShaderBenchmarkResult& result, const Shade
 
 gl::ShaderModule readShaderModule(const std::string& relativePath)
 {
-    return gl::readShaderModule(dataDirectory() + "/shaders/" + relativePath);
+    return gl::readShaderModule(common::dataDirectory() + "/shaders/" + relativePath);
 }
 
 } // namespace aurorawall::physics::atmosphere

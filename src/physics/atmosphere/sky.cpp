@@ -4,23 +4,27 @@
 
 #include <stdexcept>
 
-// The shared modules the sky needs, compiled in float and double. Namespaces of their own: airmass.cpp
-// already defines aurorawall::f32 and ::f64 with the airmass modules.
-namespace aurorawall::sky_f32 {
+// The shared modules the sky needs, compiled in float and double. This file's own copies (unnamed
+// namespaces): airmass.cpp compiles the airmass modules into the same f32 and f64.
+namespace aurorawall::physics::atmosphere::f32 {
+namespace {
 AURORAWALL_GLSL_PRECISION(float)
 #include "physics/constants.glsl"
 #include "physics/atmosphere/airmass_common.glsl"
 #include "physics/atmosphere/airmass_chapman.glsl"
 #include "physics/atmosphere/sky.glsl"
-} // namespace aurorawall::sky_f32
+} // namespace
+} // namespace aurorawall::physics::atmosphere::f32
 
-namespace aurorawall::sky_f64 {
+namespace aurorawall::physics::atmosphere::f64 {
+namespace {
 AURORAWALL_GLSL_PRECISION(double)
 #include "physics/constants.glsl"
 #include "physics/atmosphere/airmass_common.glsl"
 #include "physics/atmosphere/airmass_chapman.glsl"
 #include "physics/atmosphere/sky.glsl"
-} // namespace aurorawall::sky_f64
+} // namespace
+} // namespace aurorawall::physics::atmosphere::f64
 
 namespace aurorawall::physics::atmosphere {
 namespace {
@@ -49,20 +53,20 @@ glm::dvec3 skyRadiance(const SkyView& view, const SkyAtmosphereParameters& atmos
 {
     if (lights.size() > size_t(kSkyMaxLights)) throw std::invalid_argument("skyRadiance: more than 8 lights");
     const int lightCount = int(lights.size());
-    const int lightMethod = method == SkyLightMethod::ClosedForm ? sky_f64::SKY_LIGHT_CLOSED_FORM
-                                                                 : sky_f64::SKY_LIGHT_NESTED_MARCH;
+    const int lightMethod = method == SkyLightMethod::ClosedForm ? f64::SKY_LIGHT_CLOSED_FORM
+                                                                 : f64::SKY_LIGHT_NESTED_MARCH;
     if (precision == AirmassPrecision::Float32) {
         SkyLightArrays<float> arrays(lights);
-        sky_f32::SkyAtmosphere air{float(atmosphere.planetRadiusKm), float(atmosphere.topRadiusKm),
+        f32::SkyAtmosphere air{float(atmosphere.planetRadiusKm), float(atmosphere.topRadiusKm),
                                    float(atmosphere.scaleHeightKm), glm::vec3(atmosphere.rayleighScatteringPerKm)};
-        return glm::dvec3(sky_f32::skyScattering(glm::vec3(view.origin), glm::vec3(view.direction), float(view.tMax),
+        return glm::dvec3(f32::skyScattering(glm::vec3(view.origin), glm::vec3(view.direction), float(view.tMax),
                                                  air, lightCount, arrays.directions, arrays.illuminances, viewSteps,
                                                  lightMethod, lightSteps));
     }
     SkyLightArrays<double> arrays(lights);
-    sky_f64::SkyAtmosphere air{atmosphere.planetRadiusKm, atmosphere.topRadiusKm, atmosphere.scaleHeightKm,
+    f64::SkyAtmosphere air{atmosphere.planetRadiusKm, atmosphere.topRadiusKm, atmosphere.scaleHeightKm,
                                atmosphere.rayleighScatteringPerKm};
-    return sky_f64::skyScattering(view.origin, view.direction, view.tMax, air, lightCount, arrays.directions,
+    return f64::skyScattering(view.origin, view.direction, view.tMax, air, lightCount, arrays.directions,
                                   arrays.illuminances, viewSteps, lightMethod, lightSteps);
 }
 

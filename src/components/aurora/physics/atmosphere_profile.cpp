@@ -6,7 +6,7 @@
 #include <cstddef>
 #include <vector>
 
-namespace aurorawall::aurora {
+namespace aurorawall::components::aurora::physics {
 namespace {
 
 constexpr double kCmPerKm = 1e5;
@@ -129,4 +129,4 @@ NumberDensities numberDensities(double altitudeKm)
     return {0.79 * (1.0 - xO) * total, 0.21 * (1.0 - xO) * total, xO * total};
 }
 
-} // namespace aurorawall::aurora
+} // namespace aurorawall::components::aurora::physics

@@ -3,7 +3,7 @@
 // NOAA-S/T 76-1562). See docs/aurora-physics.md, "Atmosphere".
 // Altitudes are geometric, in km; densities in cgs (g/cm³, g/cm², cm⁻³).
 
-namespace aurorawall::aurora {
+namespace aurorawall::components::aurora::physics {
 
 // Mass density D(z), g/cm³: US Standard Atmosphere 1976 values (75–1000 km, plus 50/60/70 km),
 // interpolated log-linearly, i.e. exponential between table altitudes; below the first and above
@@ -34,4 +34,4 @@ struct NumberDensities {
 double atomicOxygenFraction(double altitudeKm);
 NumberDensities numberDensities(double altitudeKm);
 
-} // namespace aurorawall::aurora
+} // namespace aurorawall::components::aurora::physics

@@ -7,7 +7,7 @@
 #include <cmath>
 #include <stdexcept>
 
-namespace aurorawall::aurora {
+namespace aurorawall::components::aurora::physics {
 namespace {
 
 namespace f64 {
@@ -84,7 +84,7 @@ constexpr int kPanels = 32;
 // Inverting x = −cos φ cos λ, y = −cos φ sin λ, z = sin φ: φ = atan2(z, √(x² + y²)), λ = atan2(−y, −x).
 glm::dvec2 latLonFromUnit(const glm::dvec3& unit)
 {
-    return {std::atan2(unit.z, std::hypot(unit.x, unit.y)) / physics::kDegree, std::atan2(-unit.y, -unit.x) / physics::kDegree};
+    return {std::atan2(unit.z, std::hypot(unit.x, unit.y)) / aurorawall::physics::kDegree, std::atan2(-unit.y, -unit.x) / aurorawall::physics::kDegree};
 }
 
 // Each span between control points is split into m = ceil(L/spacing) pieces of equal spline arclength L/m.
@@ -99,10 +99,10 @@ CurtainPolyline sampleCurtain(const std::vector<glm::dvec2>& latLonDeg, double p
     const int n = static_cast<int>(latLonDeg.size());
     std::vector<glm::dvec3> p(n + 2); // p[k + 1] is control point k; p[0] and p[n + 1] are the phantoms
     for (int k = 0; k < n; ++k)
-        p[k + 1] = unitFromLatLon(latLonDeg[k].x, latLonDeg[k].y);
+        p[k + 1] = common::unitFromLatLon(latLonDeg[k].x, latLonDeg[k].y);
     for (int k = 1; k < n; ++k) {
         const double angle = angleBetween(p[k], p[k + 1]);
-        if (!(angle > 0.0) || !(angle < 0.5 * physics::kPi))
+        if (!(angle > 0.0) || !(angle < 0.5 * aurorawall::physics::kPi))
             throw std::invalid_argument("sampleCurtain: consecutive control points must be distinct and less than 90° apart");
     }
     p[0] = 2.0 * p[1] - p[2];
@@ -160,9 +160,9 @@ std::vector<glm::dvec2> interpolateControlPoints(const std::vector<glm::dvec2>& 
     std::vector<glm::dvec2> out;
     out.reserve(a.size());
     for (size_t k = 0; k < a.size(); ++k) {
-        const glm::dvec3 pa = unitFromLatLon(a[k].x, a[k].y), pb = unitFromLatLon(b[k].x, b[k].y);
+        const glm::dvec3 pa = common::unitFromLatLon(a[k].x, a[k].y), pb = common::unitFromLatLon(b[k].x, b[k].y);
         const double theta = angleBetween(pa, pb);
-        if (!(theta < physics::kPi - 1e-9))
+        if (!(theta < aurorawall::physics::kPi - 1e-9))
             throw std::invalid_argument("interpolateControlPoints: a control point moves to its antipode");
         const glm::dvec3 p = theta == 0.0 ? pa
                                           : (std::sin((1.0 - w) * theta) * pa + std::sin(w * theta) * pb) / std::sin(theta);
@@ -177,4 +177,4 @@ double smoothWeight(double t, double t0, double t1)
     return x * x * (3.0 - 2.0 * x);
 }
 
-} // namespace aurorawall::aurora
+} // namespace aurorawall::components::aurora::physics

@@ -11,11 +11,11 @@
 
 #include <vector>
 
-namespace aurorawall::aurora {
+namespace aurorawall::components::aurora::physics {
 
 // Unit vector of geographic latitude/longitude in degrees, (−cos φ cos λ, −cos φ sin λ, sin φ): the
 // planet frame's one formula (common/planet_frame.h), also behind scene::planetPoint.
-using aurorawall::unitFromLatLon;
+using aurorawall::common::unitFromLatLon;
 
 // Inverse of unitFromLatLon for a unit vector: (latitude, longitude) in degrees, longitude in [−180°, 180°].
 glm::dvec2 latLonFromUnit(const glm::dvec3& unit);
@@ -48,4 +48,4 @@ std::vector<glm::dvec2> interpolateControlPoints(const std::vector<glm::dvec2>& 
 // (GLSL smoothstep, OpenGL Shading Language 4.60 §8.3). Requires t1 > t0.
 double smoothWeight(double t, double t0, double t1);
 
-} // namespace aurorawall::aurora
+} // namespace aurorawall::components::aurora::physics

@@ -7,12 +7,12 @@
 #include <algorithm>
 #include <cmath>
 
-namespace aurorawall::aurora::f32 {
+namespace aurorawall::components::aurora::physics::f32 {
 AURORAWALL_GLSL_PRECISION(float)
 #include "components/aurora/deposition_coords.glsl"
-} // namespace aurorawall::aurora::f32
+} // namespace aurorawall::components::aurora::physics::f32
 
-namespace aurorawall::aurora {
+namespace aurorawall::components::aurora::physics {
 namespace {
 
 int altitudeCountOf(const DepositionTableSpec& spec)
@@ -206,4 +206,4 @@ std::vector<glm::vec4> buildLineYieldTable(const DepositionTableSpec& spec)
     return yields;
 }
 
-} // namespace aurorawall::aurora
+} // namespace aurorawall::components::aurora::physics

@@ -6,7 +6,7 @@
 #include <glm/glm.hpp>
 #include <vector>
 
-namespace aurorawall::aurora {
+namespace aurorawall::components::aurora::physics {
 
 struct DepositionTableSpec {
     double minAltitudeKm = 60.0;
@@ -58,4 +58,4 @@ float sampleDepositionTable(const DepositionTable& table, float altitudeKm, floa
 // deposition table's altitude axis: RGBA32F texture of altitudeCount × 1, texel i = line yields at z_i.
 std::vector<glm::vec4> buildLineYieldTable(const DepositionTableSpec& spec);
 
-} // namespace aurorawall::aurora
+} // namespace aurorawall::components::aurora::physics

@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-namespace aurorawall::aurora {
+namespace aurorawall::components::aurora::physics {
 namespace {
 
 // 427.8 nm photons per keV deposited in the molecular share, calibrated so that a 5 keV beam gives
@@ -81,4 +81,4 @@ double columnBrightnessRayleigh(EmissionLine line, double energyKeV, Spectrum sp
     return sum * h / 3.0 * 1e5 / 1e6;
 }
 
-} // namespace aurorawall::aurora
+} // namespace aurorawall::components::aurora::physics

@@ -6,13 +6,13 @@
 
 #include <glm/glm.hpp>
 
-namespace aurorawall::aurora {
+namespace aurorawall::components::aurora::physics {
 
 // The lines themselves are shared physics (src/physics/emission_lines.h).
-using physics::EmissionLine;
-using physics::kLineCount;
-using physics::LineInfo;
-using physics::lineInfo;
+using aurorawall::physics::EmissionLine;
+using aurorawall::physics::kLineCount;
+using aurorawall::physics::LineInfo;
+using aurorawall::physics::lineInfo;
 
 // Fraction of N2(A) excitation energy transferred to O (producing O(1S)) rather than lost to O2:
 // f = k_O n_O / (k_O n_O + k_O2 n_O2), k_O = 2.8e-11, k_O2 = 2.5e-12 cm³/s (Piper et al. 1981).
@@ -38,4 +38,4 @@ double volumeEmissionRate(EmissionLine line, double altitudeKm, double energyKeV
 // Vertical column brightness, rayleigh per erg cm⁻² s⁻¹: ∫ volume rate dz (cm) / 1e6, 60–1000 km.
 double columnBrightnessRayleigh(EmissionLine line, double energyKeV, Spectrum spectrum);
 
-} // namespace aurorawall::aurora
+} // namespace aurorawall::components::aurora::physics

@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace aurorawall::aurora {
+namespace aurorawall::components::aurora::physics {
 namespace {
 AURORAWALL_GLSL_PRECISION(float)
 #include "components/aurora/deposition_coords.glsl"
@@ -77,4 +77,4 @@ glm::vec3 sampleEmissionRow(const EmissionTables& tables, const std::vector<floa
     return node(x.i0) + x.weight * (node(x.i1) - node(x.i0));
 }
 
-} // namespace aurorawall::aurora
+} // namespace aurorawall::components::aurora::physics

@@ -12,7 +12,7 @@
 #include <array>
 #include <vector>
 
-namespace aurorawall::aurora {
+namespace aurorawall::components::aurora::physics {
 
 // The rows' nodes are this many times finer than the deposition table's altitudes: the texture interpolates
 // the emission linearly, where the table interpolates the deposition in decibels (exact for an exponential),
@@ -44,4 +44,4 @@ void emissionRow(const EmissionTables& tables, double energyKeV, float* out);
 // then GL_LINEAR between nodes with clamp-to-edge.
 glm::vec3 sampleEmissionRow(const EmissionTables& tables, const std::vector<float>& row, float altitudeKm);
 
-} // namespace aurorawall::aurora
+} // namespace aurorawall::components::aurora::physics

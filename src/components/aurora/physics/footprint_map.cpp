@@ -10,7 +10,7 @@
 #include <string>
 #include <utility>
 
-namespace aurorawall::aurora {
+namespace aurorawall::components::aurora::physics {
 namespace {
 
 namespace f64 {
@@ -136,7 +136,7 @@ Band exactBand(const Seeds& seeds, const FootprintMap& map, double withinKm)
     Band band{std::vector<int>(texels, none), std::vector<int>(texels, none), std::vector<int>(texels, -1), {}};
     const double R = map.planetRadiusKm;
     const double within = withinKm / R;
-    const double cosWithin = std::cos(std::min(within, physics::kPi));
+    const double cosWithin = std::cos(std::min(within, aurorawall::physics::kPi));
     const int box = footprintBandBoxTexels(map, withinKm);
     for (int s = 0; s < none; ++s) {
         const glm::dvec3& seed = seeds.direction[s];
@@ -197,11 +197,11 @@ FootprintMap footprintMapFrame(const std::vector<CurtainPolyline>& curtains, con
     FootprintMap map;
     map.spec = spec;
     map.planetRadiusKm = planetRadiusKm;
-    map.centre = unitFromLatLon(spec.centreLatitudeDeg, spec.centreLongitudeDeg);
+    map.centre = common::unitFromLatLon(spec.centreLatitudeDeg, spec.centreLongitudeDeg);
     // East = ∂P/∂λ / cos φ = (sin λ, −cos λ, 0) for P = unitFromLatLon(φ, λ); defined at the poles too.
-    const double lon = spec.centreLongitudeDeg * physics::kPi / 180.0;
+    const double lon = spec.centreLongitudeDeg * aurorawall::physics::kPi / 180.0;
     map.east = glm::dvec3(std::sin(lon), -std::cos(lon), 0.0);
-    map.angularRadius = spec.angularRadiusDeg * physics::kPi / 180.0;
+    map.angularRadius = spec.angularRadiusDeg * aurorawall::physics::kPi / 180.0;
 
     double longestArc = 0.0; // radians between consecutive points of a curtain
     for (size_t c = 0; c < curtains.size(); ++c) {
@@ -331,4 +331,4 @@ FootprintSample FootprintMap::lookup(const glm::dvec3& unitDir) const
     return out;
 }
 
-} // namespace aurorawall::aurora
+} // namespace aurorawall::components::aurora::physics

@@ -38,14 +38,14 @@
 
 #include <vector>
 
-namespace aurorawall::aurora {
+namespace aurorawall::components::aurora::physics {
 
 // The fourth channel packs (curtain, point) of the nearest other curtain into one exact float.
 constexpr int kSecondPointStride = 65536;
 
 // Allowance for jump flooding's errors in the coarse map, in coarse texel sides: how much further from
 // the texel centre JFA's seed may be than the nearest seed. Measured on random curtains against brute
-// force, at most 0.26 texel for N ≥ 128 and 0.67 texel for N = 64 (tests/aurora/footprint_map_tests.cpp).
+// force, at most 0.26 texel for N ≥ 128 and 0.67 texel for N = 64 (tests/components/aurora/physics/footprint_map_tests.cpp).
 constexpr double kJfaErrorTexels = 1.0;
 
 // Side of the coarse jump-flooded map (or the map's own size, if smaller).
@@ -108,7 +108,7 @@ int footprintBandBoxTexels(const FootprintMap& map, double withinKm);
 int footprintCoarseMapSize(const FootprintMap& map);
 double footprintCoarseSlackKm(const FootprintMap& map);
 // The distance stored without curtains: half the circumference, nearer than any curtain could be.
-inline double footprintNoCurtainKm(const FootprintMap& map) { return physics::kPi * map.planetRadiusKm; }
+inline double footprintNoCurtainKm(const FootprintMap& map) { return aurorawall::physics::kPi * map.planetRadiusKm; }
 
 // The map of the given curtains (all with planetRadiusKm). Throws std::invalid_argument for a bad spec,
 // a curtain point outside the cap, 256 curtains or more, or 65536 points or more in a curtain.
@@ -118,4 +118,4 @@ FootprintMap buildFootprintMap(const std::vector<CurtainPolyline>& curtains, con
 // Unit vector at the centre of texel (i, j): footprintMapDirection((i + 1/2, j + 1/2)/N), in double.
 glm::dvec3 footprintTexelDirection(const FootprintMap& map, int i, int j);
 
-} // namespace aurorawall::aurora
+} // namespace aurorawall::components::aurora::physics

@@ -6,7 +6,7 @@
 
 #include <cmath>
 
-namespace aurorawall::aurora {
+namespace aurorawall::components::aurora::physics {
 
 double characteristicMass(double energyKeV)
 {
@@ -80,4 +80,4 @@ double depositionPerEnergyFlux(double density, double shielding, double energyKe
     return numerator / (2.0 * e0 * e0 * e0);
 }
 
-} // namespace aurorawall::aurora
+} // namespace aurorawall::components::aurora::physics

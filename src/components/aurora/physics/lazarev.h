@@ -1,10 +1,11 @@
 #pragma once
 // Lazarev energy deposition of auroral electrons (Lawlor & Genetti §2.1, after Lummerzheim 1992), over the
 // USSA76 profile of aurora/atmosphere_profile.h. See docs/aurora-physics.md, "Deposition".
+#include "physics/constants.h"
 
-namespace aurorawall::aurora {
+namespace aurorawall::components::aurora::physics {
 
-inline constexpr double kKeVPerErg = 6.241509074e8; // 1 erg = 1e-7 J, 1 eV = 1.602176634e-19 J
+using aurorawall::physics::kKeVPerErg; // the deposition's energy flux, erg cm⁻² s⁻¹, in keV
 
 // Characteristic shielding mass M_E = 4.6e-6 · E^1.65 g/cm², E in keV.
 double characteristicMass(double energyKeV);
@@ -40,4 +41,4 @@ double depositionPerEnergyFlux(double densityGPerCm3, double shieldingMassGPerCm
 double monoenergeticDepositionPerEnergyFlux(double densityGPerCm3, double shieldingMassGPerCm2,
                                             double characteristicMassGPerCm2);
 
-} // namespace aurorawall::aurora
+} // namespace aurorawall::components::aurora::physics

@@ -60,13 +60,6 @@ void applyFinestSettings(scene::Scene& s)
         s.settings<PlasmaSettings>().boxStepsPerCell = 16;
 }
 
-scene::Scene withoutUnmodelled(scene::Scene scene)
-{
-    for (const char* c : {"stars", "planet_texture", "sky"})
-        scene = without(std::move(scene), c);
-    return scene;
-}
-
 namespace {
 
 // A scene changed by one knob or feature, with its table label.
@@ -206,7 +199,7 @@ struct References {
 void computeReferences(References& r, const SceneView& view, const std::vector<glm::ivec2>& pixels, const SceneAccuracySettings& settings)
 {
     const auto start = std::chrono::steady_clock::now();
-    const std::shared_ptr<const fluid::FluxFrames> frames = components::roles::curtainDetailFrames(r.scene);
+    const std::shared_ptr<const roles::FluxFrames> frames = components::roles::curtainDetailFrames(r.scene);
     render::ReferenceSettings reference;
     reference.stepKm = settings.referenceStepKm;
     const render::ReferenceModel model(r.scene, view.frame.timeS, components::roles::curtainDetailData(frames.get()),
@@ -316,11 +309,11 @@ void printWorkStats(const scene::Scene& scene, const SceneView& view, const std:
 
 void runSceneAccuracy(const SceneAccuracySettings& settings, std::ostream& out)
 {
-    const std::string dataDir = dataDirectory();
+    const std::string dataDir = common::dataDirectory();
     const std::string wallFile = settings.wallFile.empty() ? dataDir + "/config/walls/single.toml" : settings.wallFile;
     scene::Scene scene = components::loadScene(settings.sceneFile);
     if (!settings.featureCosts && !settings.workStats)
-        scene = withoutUnmodelled(scene);
+        scene = scene::withoutUnmodelled(scene);
     const SceneView view = sceneView(scene, wallFile, settings.sizePx, settings.frame);
     const auto context = openAccuracyContext(out);
     out << "scene: " << settings.sceneFile << " (components:";

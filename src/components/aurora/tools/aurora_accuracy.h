@@ -10,9 +10,6 @@
 
 namespace aurorawall::components::aurora::tools {
 
-// The scene without the components the CPU reference does not model (stars, planet_texture, sky).
-scene::Scene withoutUnmodelled(scene::Scene scene);
-
 // The GPU reference's settings: 0.25 km steps, the finest tables, footprint map and polylines of the
 // knob ranges, 16 steps per cell in the plasma box. With empty-space skipping, which gives the naive
 // march's image (tests/render/skipping_test.cpp) in a fraction of its loop iterations: llvmpipe ends

@@ -18,14 +18,14 @@ constexpr double kMaxEnergyKeV = 1000.0;
 
 void printDeposition(double energyKeV, bool maxwellian, std::ostream& out)
 {
-    using aurorawall::aurora::Spectrum;
+    using physics::Spectrum;
     const Spectrum spectrum = maxwellian ? Spectrum::Maxwellian : Spectrum::Monoenergetic;
     out << "altitude_km,rate\n";
     for (int i = 0; i <= 1080; ++i) {
         const double altitudeKm = 60.0 + 0.5 * i;
         char line[64];
         std::snprintf(line, sizeof line, "%.1f,%.10g\n", altitudeKm,
-                      aurorawall::aurora::depositionRate(altitudeKm, energyKeV, spectrum));
+                      physics::depositionRate(altitudeKm, energyKeV, spectrum));
         out << line;
     }
 }

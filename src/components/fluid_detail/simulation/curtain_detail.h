@@ -8,13 +8,14 @@
 #include "components/fluid_detail/simulation/multigrid.h"
 #include "components/fluid_detail/simulation/periodic_field.h"
 #include "components/fluid_detail/simulation/stable_fluids.h"
+#include "components/roles/flux_frames.h"
 
 #include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <vector>
 
-namespace aurorawall::fluid {
+namespace aurorawall::components::fluid_detail::simulation {
 
 // How the pressure projection solves its Poisson problem (docs/fluid.md, "Pressure"): Fft is exact
 // to rounding and the faster one at every grid measured; Multigrid stops at multigridTolerance.
@@ -36,21 +37,6 @@ struct CurtainDetailSpec {
     int multigridCycles = 20;          // V-cycles per projection at most (Multigrid only)
     double multigridTolerance = 1e-6;  // rms residual / rms divergence to stop at (Multigrid only)
     std::uint32_t seed = 1;            // picks the amplitudes and phases of the seed modes
-};
-
-// Flux frames: F (1/km) at the cell centres, frame-major then row-major: flux[(k·ny + iy)·nx + ix].
-// Texel (ix, iy) is centred at s = (ix + ½)·texelKmX along the curtain and u = (iy + ½)·texelKmY − Ly/2
-// across it (u = 0 on the curtain's centre line). Normalized so that ∫F du = 1 for every column of
-// frame 0.
-struct FluxFrames {
-    int nx = 0;
-    int ny = 0;
-    int frames = 0;
-    float texelKmX = 0.0f;
-    float texelKmY = 0.0f;
-    std::vector<float> flux;
-
-    float at(int frame, int ix, int iy) const { return flux[(std::size_t(frame) * ny + iy) * nx + ix]; }
 };
 
 // The flow state, stepped by simulateCurtainDetail and by the tests.
@@ -81,11 +67,6 @@ private:
 };
 
 // Runs the simulation: frame k is the flux at t = k·timeBetweenFramesS, stepsPerFrame steps apart.
-FluxFrames simulateCurtainDetail(const CurtainDetailSpec& spec);
+roles::FluxFrames simulateCurtainDetail(const CurtainDetailSpec& spec);
 
-// The CPU reference for the shader lookup: F at (sKm along, uKm across from the centre line),
-// bilinear between texel centres with periodic wrap in both directions, and linear between
-// frames ⌊p⌋ and ⌊p⌋ + 1 at p = clamp(phase, 0, 1)·(frames − 1). In double.
-double sampleFlux(const FluxFrames& frames, double sKm, double uKm, double phase);
-
-} // namespace aurorawall::fluid
+} // namespace aurorawall::components::fluid_detail::simulation

@@ -11,7 +11,7 @@
 #include <stdexcept>
 #include <string>
 
-namespace aurorawall::fluid {
+namespace aurorawall::components::fluid_detail::simulation {
 
 // The buffers (fftw_malloc: aligned, so the plans' SIMD code applies to them on every call), the
 // two plans on them, and 1/(λ N) per stored mode (N = nx·ny undoes FFTW's unnormalized inverse).
@@ -89,4 +89,4 @@ void FftPoisson::solve(PeriodicField& p, const PeriodicField& f)
     std::copy(s.field, s.field + p.values.size(), p.values.begin());
 }
 
-} // namespace aurorawall::fluid
+} // namespace aurorawall::components::fluid_detail::simulation

@@ -6,7 +6,7 @@
 #include <memory>
 #include <vector>
 
-namespace aurorawall::fluid {
+namespace aurorawall::components::fluid_detail::simulation {
 
 // On the doubly periodic grid the Fourier modes exp(2πi (kx i/nx + ky j/ny)) are the eigenvectors
 // of the 5-point Laplacian L (the divergence of the MAC face gradient) with eigenvalues
@@ -38,4 +38,4 @@ private:
     std::unique_ptr<Plans> plans_;
 };
 
-} // namespace aurorawall::fluid
+} // namespace aurorawall::components::fluid_detail::simulation

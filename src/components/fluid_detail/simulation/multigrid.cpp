@@ -4,7 +4,7 @@
 #include <cstddef>
 #include <stdexcept>
 
-namespace aurorawall::fluid {
+namespace aurorawall::components::fluid_detail::simulation {
 
 namespace {
 
@@ -193,4 +193,4 @@ MultigridReport solvePoisson(PeriodicField& p, const PeriodicField& f, const Mul
     return report;
 }
 
-} // namespace aurorawall::fluid
+} // namespace aurorawall::components::fluid_detail::simulation

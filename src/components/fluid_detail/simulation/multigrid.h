@@ -5,7 +5,7 @@
 
 #include <vector>
 
-namespace aurorawall::fluid {
+namespace aurorawall::components::fluid_detail::simulation {
 
 struct MultigridSettings {
     int maxCycles = 20;       // V-cycles at most
@@ -32,4 +32,4 @@ struct MultigridReport {
 // of two and cells not far from square (hx/hy in [1/2, 2]) for the point smoother to work.
 MultigridReport solvePoisson(PeriodicField& p, const PeriodicField& f, const MultigridSettings& settings);
 
-} // namespace aurorawall::fluid
+} // namespace aurorawall::components::fluid_detail::simulation

@@ -5,7 +5,7 @@
 #include <stdexcept>
 #include <string>
 
-namespace aurorawall::fluid {
+namespace aurorawall::components::fluid_detail::simulation {
 
 bool isPowerOfTwo(int n)
 {
@@ -44,4 +44,4 @@ void PeriodicField::subtractMean()
         q -= m;
 }
 
-} // namespace aurorawall::fluid
+} // namespace aurorawall::components::fluid_detail::simulation

@@ -5,7 +5,7 @@
 #include <cstddef>
 #include <vector>
 
-namespace aurorawall::fluid {
+namespace aurorawall::components::fluid_detail::simulation {
 
 bool isPowerOfTwo(int n);
 
@@ -34,8 +34,6 @@ struct PeriodicField {
     void subtractMean();
 };
 
-namespace detail {
-
 // ⌊g⌋ by truncation and a correction (std::floor is a library call on baseline x86-64).
 inline int floorToInt(double g)
 {
@@ -55,14 +53,12 @@ inline void catmullRomWeights(double t, double w[4])
     w[3] = 0.5 * (t3 - t2);
 }
 
-} // namespace detail
-
 // Bilinear interpolation at grid coordinates (gx, gy) with i = ⌊gx⌋, a = gx − i (same for y):
 //   q = (1−a)(1−b) q(i,j) + a(1−b) q(i+1,j) + (1−a) b q(i,j+1) + a b q(i+1,j+1).
 inline double sampleBilinear(const PeriodicField& f, double gx, double gy)
 {
-    const int i = detail::floorToInt(gx);
-    const int j = detail::floorToInt(gy);
+    const int i = floorToInt(gx);
+    const int j = floorToInt(gy);
     const double a = gx - i;
     const double b = gy - j;
     return (1.0 - b) * ((1.0 - a) * f(i, j) + a * f(i + 1, j)) + b * ((1.0 - a) * f(i, j + 1) + a * f(i + 1, j + 1));
@@ -73,12 +69,12 @@ inline double sampleBilinear(const PeriodicField& f, double gx, double gy)
 // sec. 3.3): third order in smooth regions, never a new extremum.
 inline double sampleCubicClamped(const PeriodicField& f, double gx, double gy)
 {
-    const int i = detail::floorToInt(gx);
-    const int j = detail::floorToInt(gy);
+    const int i = floorToInt(gx);
+    const int j = floorToInt(gy);
     double wx[4];
     double wy[4];
-    detail::catmullRomWeights(gx - i, wx);
-    detail::catmullRomWeights(gy - j, wy);
+    catmullRomWeights(gx - i, wx);
+    catmullRomWeights(gy - j, wy);
     double q = 0.0;
     for (int m = 0; m < 4; ++m) {
         const double* row = &f.values[std::size_t(f.wrapY(j - 1 + m)) * f.nx];
@@ -96,4 +92,4 @@ inline double sampleCubicClamped(const PeriodicField& f, double gx, double gy)
     return std::clamp(q, lo, hi);
 }
 
-} // namespace aurorawall::fluid
+} // namespace aurorawall::components::fluid_detail::simulation

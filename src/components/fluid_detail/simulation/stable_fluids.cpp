@@ -2,7 +2,7 @@
 
 #include <utility>
 
-namespace aurorawall::fluid {
+namespace aurorawall::components::fluid_detail::simulation {
 
 PeriodicField divergence(const MacVelocity& velocity)
 {
@@ -89,4 +89,4 @@ MultigridReport project(MacVelocity& velocity, PeriodicField& phi, const Multigr
     return report;
 }
 
-} // namespace aurorawall::fluid
+} // namespace aurorawall::components::fluid_detail::simulation

@@ -5,7 +5,7 @@
 #include "components/fluid_detail/simulation/multigrid.h"
 #include "components/fluid_detail/simulation/periodic_field.h"
 
-namespace aurorawall::fluid {
+namespace aurorawall::components::fluid_detail::simulation {
 
 // Cell (i, j) is [i hx, (i+1) hx] × [j hy, (j+1) hy] (km). Staggered velocity (km/s) on the
 // cell faces (Harlow & Welch 1965): u(i, j) at (i hx, (j+½) hy), v(i, j) at ((i+½) hx, j hy);
@@ -34,4 +34,4 @@ void advectVelocity(MacVelocity& velocity, double dt);
 void project(MacVelocity& velocity, PeriodicField& phi, FftPoisson& solver);
 MultigridReport project(MacVelocity& velocity, PeriodicField& phi, const MultigridSettings& settings);
 
-} // namespace aurorawall::fluid
+} // namespace aurorawall::components::fluid_detail::simulation

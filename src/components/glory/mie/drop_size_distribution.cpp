@@ -5,7 +5,7 @@
 #include <cmath>
 #include <stdexcept>
 
-namespace aurorawall::mie {
+namespace aurorawall::components::glory::mie {
 
 DropSizeDistribution DropSizeDistribution::singleSize(double radiusUm)
 {
@@ -41,4 +41,4 @@ std::pair<double, double> DropSizeDistribution::radiusRangeUm() const
             boost::math::quantile(boost::math::complement(forwardWeighted, kTail))};
 }
 
-} // namespace aurorawall::mie
+} // namespace aurorawall::components::glory::mie

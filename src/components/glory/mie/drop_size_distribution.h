@@ -7,7 +7,7 @@
 // the single radius a.
 #include <utility>
 
-namespace aurorawall::mie {
+namespace aurorawall::components::glory::mie {
 
 class DropSizeDistribution {
 public:
@@ -37,4 +37,4 @@ private:
     double variance_;
 };
 
-} // namespace aurorawall::mie
+} // namespace aurorawall::components::glory::mie

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 
-namespace aurorawall::mie {
+namespace aurorawall::components::glory::mie {
 
 std::complex<double> logDerivativeContinuedFraction(std::complex<double> z, int n)
 {
@@ -46,4 +46,4 @@ std::vector<std::complex<double>> logDerivatives(std::complex<double> z, int nTe
     return d;
 }
 
-} // namespace aurorawall::mie
+} // namespace aurorawall::components::glory::mie

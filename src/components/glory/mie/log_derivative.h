@@ -5,7 +5,7 @@
 #include <complex>
 #include <vector>
 
-namespace aurorawall::mie {
+namespace aurorawall::components::glory::mie {
 
 // How the downward recurrence gets its first value, at index `startIndex`.
 enum class RecurrenceStart {
@@ -24,4 +24,4 @@ std::complex<double> logDerivativeContinuedFraction(std::complex<double> z, int 
 std::vector<std::complex<double>> logDerivatives(std::complex<double> z, int nTerms, int startIndex,
                                                  RecurrenceStart start);
 
-} // namespace aurorawall::mie
+} // namespace aurorawall::components::glory::mie

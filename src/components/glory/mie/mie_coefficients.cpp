@@ -4,7 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
-namespace aurorawall::mie {
+namespace aurorawall::components::glory::mie {
 
 int wiscombeTermCount(double x)
 {
@@ -52,4 +52,4 @@ MieCoefficients mieCoefficients(double x, RefractiveIndex index, const SeriesSet
     return result;
 }
 
-} // namespace aurorawall::mie
+} // namespace aurorawall::components::glory::mie

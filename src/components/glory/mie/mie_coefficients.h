@@ -11,7 +11,7 @@
 #include <complex>
 #include <vector>
 
-namespace aurorawall::mie {
+namespace aurorawall::components::glory::mie {
 
 // m = n − ik: n the real part (1 ≤ n ≤ 3 tested), k ≥ 0 the absorption (0 ≤ k ≤ 10 tested).
 struct RefractiveIndex {
@@ -47,4 +47,4 @@ struct MieCoefficients {
 // ψ₀ = sin x, χ₋₁ = −sin x, χ₀ = cos x. x > 0, n ≥ 1, k ≥ 0.
 MieCoefficients mieCoefficients(double x, RefractiveIndex index, const SeriesSettings& settings = {});
 
-} // namespace aurorawall::mie
+} // namespace aurorawall::components::glory::mie

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-namespace aurorawall::mie {
+namespace aurorawall::components::glory::mie {
 
 Efficiencies efficiencies(const MieCoefficients& c)
 {
@@ -73,4 +73,4 @@ std::complex<double> backwardAmplitudeS1(const MieCoefficients& c)
     return 0.5 * sum;
 }
 
-} // namespace aurorawall::mie
+} // namespace aurorawall::components::glory::mie

@@ -7,7 +7,7 @@
 #include <complex>
 #include <vector>
 
-namespace aurorawall::mie {
+namespace aurorawall::components::glory::mie {
 
 struct Efficiencies {
     double extinction = 0.0; // Qext = (2/x²) Σ (2n+1) Re(aₙ + bₙ)
@@ -37,4 +37,4 @@ Amplitudes amplitudesAtCosine(const MieCoefficients& c, double mu);
 std::complex<double> forwardAmplitude(const MieCoefficients& c);
 std::complex<double> backwardAmplitudeS1(const MieCoefficients& c);
 
-} // namespace aurorawall::mie
+} // namespace aurorawall::components::glory::mie

@@ -10,7 +10,7 @@
 #include <cmath>
 #include <stdexcept>
 
-namespace aurorawall::mie {
+namespace aurorawall::components::glory::mie {
 namespace {
 
 // The integrand at one radius: n(r)·S11(θⱼ, r) for each angle, then n(r)·C_sca(r) (µm²).
@@ -163,4 +163,4 @@ PhaseFunction sizeAveragedPhaseFunction(const DropSizeDistribution& drops, doubl
     return p;
 }
 
-} // namespace aurorawall::mie
+} // namespace aurorawall::components::glory::mie

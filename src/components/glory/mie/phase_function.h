@@ -8,7 +8,7 @@
 
 #include <vector>
 
-namespace aurorawall::mie {
+namespace aurorawall::components::glory::mie {
 
 struct PhaseFunction {
     std::vector<double> anglesRad;
@@ -29,4 +29,4 @@ PhaseFunction sizeAveragedPhaseFunction(const DropSizeDistribution& drops, doubl
                                         const std::vector<double>& anglesRad, double relativeTolerance = 1e-6,
                                         int maxPanels = 20000);
 
-} // namespace aurorawall::mie
+} // namespace aurorawall::components::glory::mie

@@ -14,15 +14,15 @@
 #include <cmath>
 #include <thread>
 
-namespace aurorawall::glory {
+namespace aurorawall::components::glory::optics {
 
 namespace {
 
 
-namespace shared {
+namespace f64 {
 AURORAWALL_GLSL_PRECISION(double)
 #include "components/glory/glory_angle.glsl"
-} // namespace shared
+} // namespace f64
 
 // πₙ(μ), τₙ(μ) for n = 1 … terms at each grid angle, stored [n−1][angle] so that the sums over the
 // angles of one n run over contiguous memory (Bohren & Huffman 1983, eq. 4.47).
@@ -125,7 +125,7 @@ double AngleGrid::angle(int i) const
 
 double AngleGrid::index(double gammaRad) const
 {
-    return shared::gloryAngleIndex(gammaRad, {glorySpanRad, physics::kPi - glorySpanRad - forwardSpanRad, forwardSpanRad},
+    return f64::gloryAngleIndex(gammaRad, {glorySpanRad, physics::kPi - glorySpanRad - forwardSpanRad, forwardSpanRad},
                                    {gloryCount, middleCount, forwardCount});
 }
 
@@ -246,4 +246,4 @@ std::vector<glm::dvec3> gloryLinearSrgb(const std::vector<glm::dvec3>& xyz)
     return rgb;
 }
 
-} // namespace aurorawall::glory
+} // namespace aurorawall::components::glory::optics

@@ -10,7 +10,7 @@
 
 #include <vector>
 
-namespace aurorawall::glory {
+namespace aurorawall::components::glory::optics {
 
 // Angles γ from the antisolar point (γ = π − the scattering angle), in radians, in three even
 // segments: gloryCount samples from 0 to glorySpanRad (the rings), middleCount samples above it up to
@@ -83,4 +83,4 @@ std::vector<glm::dvec3> gloryLinearSrgb(const std::vector<glm::dvec3>& xyz);
 // to [0, π]).
 glm::dvec3 colourAtAngle(const AngleGrid& grid, const std::vector<glm::dvec3>& colours, double gammaRad);
 
-} // namespace aurorawall::glory
+} // namespace aurorawall::components::glory::optics

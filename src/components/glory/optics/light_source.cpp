@@ -6,7 +6,7 @@
 
 #include <cmath>
 
-namespace aurorawall::glory {
+namespace aurorawall::components::glory::optics {
 
 namespace {
 constexpr double kMoonRadiusKm = 1737.4;
@@ -45,4 +45,4 @@ double LightSource::spectralIrradiance(double wavelengthNm) const { return spect
 
 double LightSource::discRadiusRad() const { return 0.5 * angularDiameterDeg * physics::kPi / 180.0; }
 
-} // namespace aurorawall::glory
+} // namespace aurorawall::components::glory::optics

@@ -1,7 +1,7 @@
 #pragma once
 // The light of the glory: the Sun, or the Moon lit by it. Its spectrum, its illuminance on a surface
 // facing it above the atmosphere, and the angular size of its disc (which smears the glory's rings).
-namespace aurorawall::glory {
+namespace aurorawall::components::glory::optics {
 
 class LightSpectrum;
 
@@ -43,4 +43,4 @@ private:
     double luminousPerIrradiance_; // 683 lm/W ∫ B ȳ dλ of the unscaled black body
 };
 
-} // namespace aurorawall::glory
+} // namespace aurorawall::components::glory::optics

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-namespace aurorawall::glory {
+namespace aurorawall::components::glory::optics {
 
 double waterRefractiveIndex(double wavelengthNm)
 {
@@ -15,4 +15,4 @@ double waterRefractiveIndex(double wavelengthNm)
     return std::sqrt(n2);
 }
 
-} // namespace aurorawall::glory
+} // namespace aurorawall::components::glory::optics

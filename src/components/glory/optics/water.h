@@ -4,8 +4,8 @@
 // (1.3436 at 400 nm, 1.3306 at 700 nm). The imaginary part in the visible is below 1e-8 (Hale & Querry
 // 1973): a 25 µm drop absorbs less than 1e-5 of the light crossing it, so cloud drops are taken as
 // non-absorbing (k = 0).
-namespace aurorawall::glory {
+namespace aurorawall::components::glory::optics {
 
 double waterRefractiveIndex(double wavelengthNm);
 
-} // namespace aurorawall::glory
+} // namespace aurorawall::components::glory::optics

@@ -17,7 +17,6 @@ namespace aurorawall::components::glory::tools {
 namespace {
 
 using GlorySettings = glory::Settings;
-namespace optics = aurorawall::glory;
 using namespace accuracy;
 
 double secondsSince(std::chrono::steady_clock::time_point start)
@@ -169,7 +168,7 @@ void printWavelengthSampling(const scene::Scene& base, const SceneView& view, co
 
 void runGloryAccuracy(const accuracy::SceneAccuracySettings& settings, std::ostream& out)
 {
-    const std::string dataDir = dataDirectory();
+    const std::string dataDir = common::dataDirectory();
     const std::string wallFile = settings.wallFile.empty() ? dataDir + "/config/walls/single.toml" : settings.wallFile;
     const scene::Scene scene = components::loadScene(settings.sceneFile);
     if (!scene.has("glory"))

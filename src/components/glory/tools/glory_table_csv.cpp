@@ -11,7 +11,6 @@
 
 namespace aurorawall::components::glory::tools {
 
-namespace optics = aurorawall::glory;
 
 void printGloryTable(const std::string& sceneFile, std::ostream& out)
 {

@@ -20,7 +20,7 @@ namespace po = boost::program_options;
 
 // Below x = 1e-4 the exact series loses its small terms to cancellation, about 2^-53/x² of the
 // scattering efficiency (1e-4 off at x = 1e-6, the asymmetry's sign wrong at 1e-8, NaN below 1e-154;
-// tests/components/mie_test.cpp, against the Rayleigh limit): x is held to [1e-4, 1e5].
+// tests/components/glory/mie/mie_test.cpp, against the Rayleigh limit): x is held to [1e-4, 1e5].
 constexpr double kMinSizeParameter = 1e-4;
 constexpr double kMaxSizeParameter = 1e5;
 constexpr double kMaxRealPart = 10.0;
@@ -46,7 +46,7 @@ std::vector<double> parseAngles(const std::string& list, const cli::CommandLine&
         char* stop = nullptr;
         const double value = std::strtod(word.c_str(), &stop);
         if (word.empty() || *stop != '\0' || !(value >= 0.0 && value <= 180.0))
-            throw cli.usageError("--angles-deg: '" + echoedInput(word) + "' is not an angle in [0, 180] degrees (in '" + echoedInput(list) + "')");
+            throw cli.usageError("--angles-deg: '" + common::echoedInput(word) + "' is not an angle in [0, 180] degrees (in '" + common::echoedInput(list) + "')");
         degrees.push_back(value);
         if (end == std::string::npos) return degrees;
         begin = end + 1;

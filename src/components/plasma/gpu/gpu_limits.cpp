@@ -4,7 +4,7 @@
 
 #include <stdexcept>
 
-namespace aurorawall::plasma {
+namespace aurorawall::components::plasma::gpu {
 
 GpuLimits currentGpuLimits()
 {
@@ -37,4 +37,4 @@ void requireFitsGpu(const GpuLimits& limits, std::size_t count, const std::strin
                                 ")");
 }
 
-} // namespace aurorawall::plasma
+} // namespace aurorawall::components::plasma::gpu

@@ -5,7 +5,7 @@
 #include <cstddef>
 #include <string>
 
-namespace aurorawall::plasma {
+namespace aurorawall::components::plasma::gpu {
 
 struct GpuLimits {
     long long maxStorageBlockBytes = 0; // GL_MAX_SHADER_STORAGE_BLOCK_SIZE
@@ -21,4 +21,4 @@ GpuLimits currentGpuLimits();
 void requireFitsGpu(const GpuLimits& limits, std::size_t count, const std::string& what, int workGroupSize,
                     std::size_t bytesPerItem);
 
-} // namespace aurorawall::plasma
+} // namespace aurorawall::components::plasma::gpu

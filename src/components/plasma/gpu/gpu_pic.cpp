@@ -14,13 +14,13 @@
 #include <stdexcept>
 #include <string>
 
-namespace aurorawall::plasma {
+namespace aurorawall::components::plasma::gpu {
 namespace {
 
 using namespace gl; // the GL function pointers (gl/functions.h)
 
 constexpr int kWorkGroupSize = 64; // local_size_x of pic_step.comp
-constexpr double kChargeOverMass = -kElementaryCharge / kElectronMass; // C/kg
+constexpr double kChargeOverMass = -simulation::kElementaryCharge / simulation::kElectronMass; // C/kg
 enum Buffer { Positions, Velocities, ChargeQuanta, Potential, NodeField };
 
 GLuint storageBuffer(std::size_t bytes, const void* data, GLuint binding)
@@ -68,7 +68,7 @@ int depositQuantumBits(std::size_t particleCount, int dimension)
                                 std::to_string(dimension) + "D (32-bit node sums at 2^-8 of a particle)");
 }
 
-GpuPicSolver preferredGpuPicSolver(const PeriodicGrid& grid, const std::string& rendererName)
+GpuPicSolver preferredGpuPicSolver(const simulation::PeriodicGrid& grid, const std::string& rendererName)
 {
     if (gl::isSoftwareRenderer(rendererName))
         return GpuPicSolver::FftCpu;
@@ -78,7 +78,7 @@ GpuPicSolver preferredGpuPicSolver(const PeriodicGrid& grid, const std::string& 
     return GpuPicSolver::Multigrid;
 }
 
-int picSorSweeps(const PeriodicGrid& grid)
+int picSorSweeps(const simulation::PeriodicGrid& grid)
 {
     return int(std::ceil(std::log(1e-6) / std::log(sorOverRelaxation(grid) - 1.0)));
 }
@@ -87,7 +87,7 @@ struct GpuPic::Programs {
     gl::Program deposit, field, push;
 };
 
-const PeriodicGrid& GpuPic::checkedAgainstGpuLimits(const PeriodicGrid& grid, std::size_t particleCount)
+const simulation::PeriodicGrid& GpuPic::checkedAgainstGpuLimits(const simulation::PeriodicGrid& grid, std::size_t particleCount)
 {
     depositQuantumBits(particleCount, grid.dimension);
     const GpuLimits limits = currentGpuLimits();
@@ -96,7 +96,7 @@ const PeriodicGrid& GpuPic::checkedAgainstGpuLimits(const PeriodicGrid& grid, st
     return grid;
 }
 
-GpuPic::GpuPic(const PeriodicGrid& grid, const Particles& electrons, glm::dvec3 magneticField, double dt,
+GpuPic::GpuPic(const simulation::PeriodicGrid& grid, const simulation::Particles& electrons, glm::dvec3 magneticField, double dt,
                const std::string& shaderDir, glm::dvec3 externalField, GpuPicSolver solver)
     : grid_(checkedAgainstGpuLimits(grid, electrons.position.size())), solver_(solver), poisson_(grid), particleCount_(electrons.position.size()), weight_(electrons.weight),
       quantumBits_(depositQuantumBits(electrons.position.size(), grid.dimension)), dt_(dt),
@@ -187,7 +187,7 @@ const std::vector<double>& GpuPic::chargeDensity() const
     // ρ_i = (q/ΔV) 2^-bits (S_i − ΣS/N): the background subtracted exactly, as N·S_i − ΣS in integers
     // (ΣS = particles · 2^bits; |N·S_i| < 2^31 · N fits 64 bits), then scaled once.
     const long long total = (long long)particleCount_ << quantumBits_;
-    const double scale = -kElementaryCharge * weight_ / grid_.cellVolume() / double(1LL << quantumBits_) / double(nodes);
+    const double scale = -simulation::kElementaryCharge * weight_ / grid_.cellVolume() / double(1LL << quantumBits_) / double(nodes);
     chargeDensity_.resize(nodes);
     for (std::size_t i = 0; i < nodes; ++i)
         chargeDensity_[i] = double((long long)nodes * quanta[i] - total) * scale;
@@ -273,4 +273,4 @@ std::vector<double> GpuPic::potential() const
     return {values.begin(), values.end()};
 }
 
-} // namespace aurorawall::plasma
+} // namespace aurorawall::components::plasma::gpu

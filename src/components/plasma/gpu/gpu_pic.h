@@ -17,7 +17,7 @@
 #include <string>
 #include <vector>
 
-namespace aurorawall::plasma {
+namespace aurorawall::components::plasma::gpu {
 
 // The fixed-point deposit's resolution: a particle's CIC weights are multiples of 2^-bits and add to
 // exactly 1. The largest possible node sum (every particle on one node) must fit a 32-bit signed
@@ -42,14 +42,14 @@ inline constexpr int kPicJacobiSweeps = 20;
 // From φ = 0 six V-cycles reach float round-off on 64² and 32³ (docs/PLASMA.md).
 inline constexpr int kPicMultigridCycles = 6;
 // The red-black SOR sweeps that shrink the slowest error by 10^-6 at the rate ω − 1 per sweep.
-int picSorSweeps(const PeriodicGrid& grid);
+int picSorSweeps(const simulation::PeriodicGrid& grid);
 
 // The solver of a live simulation on this grid and renderer (GL_RENDERER): on a GPU, Multigrid,
 // exact to float (its error after kPicMultigridCycles from the previous step's φ is float rounding,
 // docs/PLASMA.md) with nothing read back, where every axis of the dimension has an even cell count;
 // FftCpu otherwise, and on Mesa's CPU renderers, where the multigrid's many small dispatches cost
-// more than the FFT in double (the live strip of tests/components/plasma_gpu_test.cpp: 5-20 times).
-GpuPicSolver preferredGpuPicSolver(const PeriodicGrid& grid, const std::string& rendererName);
+// more than the FFT in double (the live strip of tests/components/plasma/gpu/plasma_gpu_test.cpp: 5-20 times).
+GpuPicSolver preferredGpuPicSolver(const simulation::PeriodicGrid& grid, const std::string& rendererName);
 
 // The wall-clock time (ms) of each phase of one step, each waited for with glFinish.
 struct StepTimes {
@@ -69,7 +69,7 @@ public:
     // particles than the fixed-point deposit can sum (depositQuantumBits), std::length_error for more
     // particles or grid nodes than one dispatch (GL_MAX_COMPUTE_WORK_GROUP_COUNT) or one storage
     // block (GL_MAX_SHADER_STORAGE_BLOCK_SIZE) holds; each message names the limit and the numbers.
-    GpuPic(const PeriodicGrid& grid, const Particles& electrons, glm::dvec3 magneticField, double dt,
+    GpuPic(const simulation::PeriodicGrid& grid, const simulation::Particles& electrons, glm::dvec3 magneticField, double dt,
            const std::string& shaderDir, glm::dvec3 externalField = glm::dvec3(0.0),
            GpuPicSolver solver = GpuPicSolver::FftCpu);
     ~GpuPic();
@@ -82,7 +82,7 @@ public:
     StepTimes timedStep();
 
     long stepCount() const { return steps_; }
-    const PeriodicGrid& grid() const { return grid_; }
+    const simulation::PeriodicGrid& grid() const { return grid_; }
     int quantumBits() const { return quantumBits_; }
     GpuPicSolver solver() const { return solver_; }
     // The charge density (C/m³) at the nodes of the current step, from the fixed-point sums (read
@@ -99,7 +99,7 @@ public:
 private:
     struct Programs;
     // `grid`, once the grid and the particle count fit the deposit and the current context's limits.
-    static const PeriodicGrid& checkedAgainstGpuLimits(const PeriodicGrid& grid, std::size_t particleCount);
+    static const simulation::PeriodicGrid& checkedAgainstGpuLimits(const simulation::PeriodicGrid& grid, std::size_t particleCount);
     void bindBuffers() const;
     void push(double dt, bool movePositions);
     void deposit();
@@ -107,9 +107,9 @@ private:
     void computeNodeField();
     void solveFields();
 
-    PeriodicGrid grid_;
+    simulation::PeriodicGrid grid_;
     GpuPicSolver solver_;
-    FftPoissonSolver poisson_;
+    simulation::FftPoissonSolver poisson_;
     std::unique_ptr<GpuPoisson> gpuPoisson_; // for Jacobi and RedBlackSor
     std::size_t particleCount_;
     double weight_;
@@ -123,4 +123,4 @@ private:
     mutable long chargeDensityStep_ = -1; // the step chargeDensity_ belongs to
 };
 
-} // namespace aurorawall::plasma
+} // namespace aurorawall::components::plasma::gpu

@@ -12,7 +12,7 @@
 #include <stdexcept>
 #include <utility>
 
-namespace aurorawall::plasma {
+namespace aurorawall::components::plasma::gpu {
 namespace {
 
 using namespace gl; // the GL function pointers (gl/functions.h)
@@ -21,11 +21,11 @@ constexpr int kWorkGroupSize = 64; // local_size_x of poisson_sweep.comp
 enum Binding { QuantaBinding = 2, PotentialBinding = 3, SourceBinding = 5, PotentialOutBinding = 6, CoarseBinding = 7 };
 enum Pass { SourcePass = 1, JacobiPass = 2, SorPass = 3, ResidualPass = 4, RestrictionPass = 5, ProlongationPass = 6 };
 
-GLuint groupsFor(const PeriodicGrid& grid) { return GLuint((grid.nodeCount() + kWorkGroupSize - 1) / kWorkGroupSize); }
+GLuint groupsFor(const simulation::PeriodicGrid& grid) { return GLuint((grid.nodeCount() + kWorkGroupSize - 1) / kWorkGroupSize); }
 
 // The next coarser grid (half the cells, twice the spacing), or none when some axis of the
 // dimension has an odd count or at most 4 cells.
-bool coarsens(const PeriodicGrid& grid)
+bool coarsens(const simulation::PeriodicGrid& grid)
 {
     for (int d = 0; d < grid.dimension; ++d)
         if (grid.cells[d] % 2 != 0 || grid.cells[d] <= 4)
@@ -33,7 +33,7 @@ bool coarsens(const PeriodicGrid& grid)
     return true;
 }
 
-PeriodicGrid coarser(const PeriodicGrid& grid)
+simulation::PeriodicGrid coarser(const simulation::PeriodicGrid& grid)
 {
     std::array<int, 3> cells = grid.cells;
     std::array<double, 3> spacing = grid.spacing;
@@ -41,7 +41,7 @@ PeriodicGrid coarser(const PeriodicGrid& grid)
         cells[d] /= 2;
         spacing[d] *= 2.0;
     }
-    return PeriodicGrid(grid.dimension, cells, spacing);
+    return simulation::PeriodicGrid(grid.dimension, cells, spacing);
 }
 
 GLuint floatBuffer(std::size_t count)
@@ -55,7 +55,7 @@ GLuint floatBuffer(std::size_t count)
 
 } // namespace
 
-double jacobiFactor(const PeriodicGrid& grid, int kx, int ky, int kz)
+double jacobiFactor(const simulation::PeriodicGrid& grid, int kx, int ky, int kz)
 {
     const int k[3] = {kx, ky, kz};
     double weighted = 0.0, total = 0.0;
@@ -67,7 +67,7 @@ double jacobiFactor(const PeriodicGrid& grid, int kx, int ky, int kz)
     return weighted / total;
 }
 
-double sorOverRelaxation(const PeriodicGrid& grid)
+double sorOverRelaxation(const simulation::PeriodicGrid& grid)
 {
     // The longest non-constant waves are one cycle along one axis; μ₁ is the largest of them.
     double largest = -1.0;
@@ -81,7 +81,7 @@ struct GpuPoisson::Programs {
     gl::Program source, sweep, residual, restriction, prolongation;
 };
 
-GpuPoisson::GpuPoisson(const PeriodicGrid& grid, GpuPoissonMethod method, const std::string& shaderDir)
+GpuPoisson::GpuPoisson(const simulation::PeriodicGrid& grid, GpuPoissonMethod method, const std::string& shaderDir)
     : grid_(grid), method_(method), overRelaxation_(sorOverRelaxation(grid))
 {
     if (method != GpuPoissonMethod::Jacobi)
@@ -110,7 +110,7 @@ GpuPoisson::GpuPoisson(const PeriodicGrid& grid, GpuPoissonMethod method, const 
         buffer = floatBuffer(grid.nodeCount());
     levels_.push_back({grid, buffers_[0], buffers_[1], buffers_[2]});
     while (multigrid && coarsens(levels_.back().grid)) {
-        const PeriodicGrid coarse = coarser(levels_.back().grid);
+        const simulation::PeriodicGrid coarse = coarser(levels_.back().grid);
         levels_.push_back({coarse, floatBuffer(coarse.nodeCount()), floatBuffer(coarse.nodeCount()),
                            floatBuffer(coarse.nodeCount())});
     }
@@ -127,7 +127,7 @@ GpuPoisson::~GpuPoisson()
 
 void GpuPoisson::setGrid(int level) const
 {
-    const PeriodicGrid& g = levels_[level].grid;
+    const simulation::PeriodicGrid& g = levels_[level].grid;
     for (gl::Program* p : {&programs_->sweep, &programs_->residual, &programs_->restriction, &programs_->prolongation}) {
         p->set("uCells", glm::vec3(g.cells[0], g.cells[1], g.cells[2]));
         p->set("uSpacing", glm::vec3(g.spacing[0], g.spacing[1], g.spacing[2]));
@@ -193,7 +193,7 @@ void GpuPoisson::setChargeDensity(const std::vector<double>& chargeDensity)
     const double mean = std::accumulate(chargeDensity.begin(), chargeDensity.end(), 0.0) / double(chargeDensity.size());
     std::vector<float> source(chargeDensity.size());
     for (std::size_t i = 0; i < source.size(); ++i)
-        source[i] = float((chargeDensity[i] - mean) / kVacuumPermittivity);
+        source[i] = float((chargeDensity[i] - mean) / simulation::kVacuumPermittivity);
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT); // after the last solve's reads of the source
     glNamedBufferSubData(buffers_[1], 0, GLsizeiptr(source.size() * sizeof(float)), source.data());
 }
@@ -204,8 +204,8 @@ void GpuPoisson::setChargeFromQuanta(unsigned quantaBuffer, std::size_t particle
     const double whole = std::floor(mean);
     programs_->source.set("uMeanWhole", int(whole));
     programs_->source.set("uMeanFraction", float(mean - whole));
-    programs_->source.set("uSourceScale", float(-kElementaryCharge * weight / grid_.cellVolume() /
-                                                std::ldexp(1.0, quantumBits) / kVacuumPermittivity));
+    programs_->source.set("uSourceScale", float(-simulation::kElementaryCharge * weight / grid_.cellVolume() /
+                                                std::ldexp(1.0, quantumBits) / simulation::kVacuumPermittivity));
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, QuantaBinding, quantaBuffer);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SourceBinding, buffers_[1]);
     programs_->source.use();
@@ -256,4 +256,4 @@ std::vector<double> GpuPoisson::potential() const
     return std::vector<double>(values.begin(), values.end());
 }
 
-} // namespace aurorawall::plasma
+} // namespace aurorawall::components::plasma::gpu

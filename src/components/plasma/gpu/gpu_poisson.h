@@ -35,21 +35,21 @@
 #include <string>
 #include <vector>
 
-namespace aurorawall::plasma {
+namespace aurorawall::components::plasma::gpu {
 
 enum class GpuPoissonMethod { Jacobi, RedBlackSor, Multigrid };
 
 // ω = 2/(1 + √(1 − μ₁²)) for the grid, μ₁ the largest Jacobi factor μ(k) over k ≠ 0.
-double sorOverRelaxation(const PeriodicGrid& grid);
+double sorOverRelaxation(const simulation::PeriodicGrid& grid);
 // μ(k) of one Jacobi sweep for the mode with integer wave numbers k (cycles per box).
-double jacobiFactor(const PeriodicGrid& grid, int kx, int ky, int kz);
+double jacobiFactor(const simulation::PeriodicGrid& grid, int kx, int ky, int kz);
 
 class GpuPoisson {
 public:
     // shaderDir holds components/plasma/. std::invalid_argument for red-black SOR on an odd cell count;
     // std::length_error for more grid nodes than one dispatch or one storage block of the current
     // context holds (gpu_limits.h).
-    GpuPoisson(const PeriodicGrid& grid, GpuPoissonMethod method, const std::string& shaderDir);
+    GpuPoisson(const simulation::PeriodicGrid& grid, GpuPoissonMethod method, const std::string& shaderDir);
     ~GpuPoisson();
     GpuPoisson(const GpuPoisson&) = delete;
     GpuPoisson& operator=(const GpuPoisson&) = delete;
@@ -77,13 +77,13 @@ public:
 private:
     struct Programs;
     struct Level {
-        PeriodicGrid grid;
+        simulation::PeriodicGrid grid;
         unsigned potential = 0, source = 0, residual = 0; // GL buffers; level 0: in buffers_
     };
     void setGrid(int level) const;
     void redBlackSweep(int level, float overRelaxation) const;
     void vCycle(int level) const;
-    PeriodicGrid grid_;
+    simulation::PeriodicGrid grid_;
     GpuPoissonMethod method_;
     double overRelaxation_;
     std::unique_ptr<Programs> programs_;
@@ -91,4 +91,4 @@ private:
     std::vector<Level> levels_;
 };
 
-} // namespace aurorawall::plasma
+} // namespace aurorawall::components::plasma::gpu

@@ -6,23 +6,23 @@
 
 #include <utility>
 
-namespace aurorawall::plasma {
+namespace aurorawall::components::plasma::gpu {
 namespace {
 
-class GpuRun : public PicRun {
+class GpuRun : public simulation::PicRun {
 public:
-    GpuRun(const PeriodicGrid& grid, const Particles& electrons, glm::dvec3 magneticField, double dt,
+    GpuRun(const simulation::PeriodicGrid& grid, const simulation::Particles& electrons, glm::dvec3 magneticField, double dt,
            const std::string& shaderDir, GpuPicSolver solver)
         : pic_(grid, electrons, magneticField, dt, shaderDir, glm::dvec3(0.0), solver),
-          particleMass_(kElectronMass * electrons.weight)
+          particleMass_(simulation::kElectronMass * electrons.weight)
     {
     }
     void step() override { pic_.step(); }
     // As ElectrostaticPic::step: ½ Σ ρ φ ΔV at step n and Σ ½ m (|v_{n−1/2}|² + |v_{n+1/2}|²)/2, here
     // from ρ of the fixed-point sums (double) and the float φ and velocities read back.
-    StepEnergies stepWithEnergies() override
+    simulation::StepEnergies stepWithEnergies() override
     {
-        StepEnergies energies;
+        simulation::StepEnergies energies;
         const std::vector<double>& rho = pic_.chargeDensity();
         const std::vector<double> phi = pic_.potential();
         for (std::size_t n = 0; n < phi.size(); ++n)
@@ -60,7 +60,7 @@ GpuPicDevice::GpuPicDevice(std::string shaderDir, GpuPicSolver solver)
 {
 }
 
-std::unique_ptr<PicRun> GpuPicDevice::run(const PeriodicGrid& grid, const Particles& electrons,
+std::unique_ptr<simulation::PicRun> GpuPicDevice::run(const simulation::PeriodicGrid& grid, const simulation::Particles& electrons,
                                           glm::dvec3 magneticField, double dt) const
 {
     return std::make_unique<GpuRun>(grid, electrons, magneticField, dt, shaderDir_, solver_);
@@ -69,8 +69,8 @@ std::unique_ptr<PicRun> GpuPicDevice::run(const PeriodicGrid& grid, const Partic
 std::vector<glm::dvec3> GpuPicDevice::testParticleVelocities(glm::dvec3 start, glm::dvec3 electricField,
                                                               glm::dvec3 magneticField, double dt, long steps) const
 {
-    const PeriodicGrid grid(1, {8, 1, 1}, {1.0, 1.0, 1.0});
-    Particles electron;
+    const simulation::PeriodicGrid grid(1, {8, 1, 1}, {1.0, 1.0, 1.0});
+    simulation::Particles electron;
     electron.position = {glm::dvec3(4.0, 0.5, 0.5)};
     electron.velocity = {start};
     electron.weight = 0.0;
@@ -83,9 +83,9 @@ std::vector<glm::dvec3> GpuPicDevice::testParticleVelocities(glm::dvec3 start, g
     return v;
 }
 
-std::vector<VerifyRow> GpuPicDevice::settings(std::size_t particles, int dimension) const
+std::vector<simulation::VerifyRow> GpuPicDevice::settings(std::size_t particles, int dimension) const
 {
     return {{"quantum_bits", double(depositQuantumBits(particles, dimension)), std::nullopt}};
 }
 
-} // namespace aurorawall::plasma
+} // namespace aurorawall::components::plasma::gpu

@@ -8,24 +8,24 @@
 
 #include <string>
 
-namespace aurorawall::plasma {
+namespace aurorawall::components::plasma::gpu {
 
-class GpuPicDevice : public PicDevice {
+class GpuPicDevice : public simulation::PicDevice {
 public:
     explicit GpuPicDevice(std::string shaderDir, GpuPicSolver solver = GpuPicSolver::FftCpu);
 
-    std::unique_ptr<PicRun> run(const PeriodicGrid& grid, const Particles& electrons, glm::dvec3 magneticField,
+    std::unique_ptr<simulation::PicRun> run(const simulation::PeriodicGrid& grid, const simulation::Particles& electrons, glm::dvec3 magneticField,
                                 double dt) const override;
     // The electron as a GpuPic particle of weight 0 (no field of its own, so the solver does not
     // matter); v_0 is its velocity after GpuPic's start, taken back half a step.
     std::vector<glm::dvec3> testParticleVelocities(glm::dvec3 start, glm::dvec3 electricField, glm::dvec3 magneticField,
                                                    double dt, long steps) const override;
     // The fixed-point deposit's resolution (quantum_bits) of a run of that many particles.
-    std::vector<VerifyRow> settings(std::size_t particles, int dimension) const override;
+    std::vector<simulation::VerifyRow> settings(std::size_t particles, int dimension) const override;
 
 private:
     std::string shaderDir_;
     GpuPicSolver solver_;
 };
 
-} // namespace aurorawall::plasma
+} // namespace aurorawall::components::plasma::gpu

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <numeric>
 
-namespace aurorawall::plasma {
+namespace aurorawall::components::plasma::simulation {
 
 std::vector<double> laplacian(const PeriodicGrid& grid, const std::vector<double>& potential)
 {
@@ -40,4 +40,4 @@ double poissonResidual(const PeriodicGrid& grid, const std::vector<double>& char
     return source > 0.0 ? std::sqrt(residual / source) : 0.0;
 }
 
-} // namespace aurorawall::plasma
+} // namespace aurorawall::components::plasma::simulation

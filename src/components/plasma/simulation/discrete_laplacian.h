@@ -5,7 +5,7 @@
 
 #include <vector>
 
-namespace aurorawall::plasma {
+namespace aurorawall::components::plasma::simulation {
 
 // (∇²φ) at every node: Σ_d (φ[+d] − 2φ + φ[−d])/Δ_d² (V/m²).
 std::vector<double> laplacian(const PeriodicGrid& grid, const std::vector<double>& potential);
@@ -14,4 +14,4 @@ std::vector<double> laplacian(const PeriodicGrid& grid, const std::vector<double
 double poissonResidual(const PeriodicGrid& grid, const std::vector<double>& chargeDensity,
                        const std::vector<double>& potential);
 
-} // namespace aurorawall::plasma
+} // namespace aurorawall::components::plasma::simulation

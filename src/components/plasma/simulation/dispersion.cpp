@@ -5,7 +5,7 @@
 #include <cmath>
 #include <stdexcept>
 
-namespace aurorawall::plasma {
+namespace aurorawall::components::plasma::simulation {
 
 double leapfrogPlasmaFrequency(double wpDt)
 {
@@ -83,4 +83,4 @@ double diocotronGrowthRate(double ka, double kL)
     return square > 0.0 ? 0.5 * std::sqrt(square) : 0.0;
 }
 
-} // namespace aurorawall::plasma
+} // namespace aurorawall::components::plasma::simulation

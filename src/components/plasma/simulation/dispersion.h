@@ -3,7 +3,7 @@
 // Frequencies and rates in units of the electron plasma frequency ω_p.
 #include <complex>
 
-namespace aurorawall::plasma {
+namespace aurorawall::components::plasma::simulation {
 
 // The cold plasma oscillation under the leapfrog: sin(ω Δt/2) = ω_p Δt/2 (Birdsall & Langdon 1991,
 // §4-2), so ω/ω_p = 2·asin(ω_pΔt/2)/(ω_pΔt). For 0 < ω_pΔt < 2 (std::domain_error otherwise).
@@ -41,4 +41,4 @@ std::complex<double> landauRoot(double kDebyeLength);
 // maximum 0.2012 is at ka ≈ 0.40. std::domain_error unless 0 < 2a < L and k > 0.
 double diocotronGrowthRate(double kHalfThickness, double kWidth);
 
-} // namespace aurorawall::plasma
+} // namespace aurorawall::components::plasma::simulation

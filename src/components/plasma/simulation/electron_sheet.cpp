@@ -6,7 +6,7 @@
 #include <cmath>
 #include <stdexcept>
 
-namespace aurorawall::plasma {
+namespace aurorawall::components::plasma::simulation {
 
 double sheetTimeStep(const ElectronSheetSpec& spec)
 {
@@ -55,4 +55,4 @@ ElectrostaticPic sheetSimulation(const ElectronSheetSpec& spec)
                             sheetTimeStep(spec));
 }
 
-} // namespace aurorawall::plasma
+} // namespace aurorawall::components::plasma::simulation

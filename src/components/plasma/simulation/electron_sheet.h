@@ -8,7 +8,7 @@
 #include "components/plasma/simulation/particles.h"
 #include "components/plasma/simulation/periodic_grid.h"
 
-namespace aurorawall::plasma {
+namespace aurorawall::components::plasma::simulation {
 
 struct ElectronSheetSpec {
     int cellsAlong = 128;               // grid cells along x (the strip's period)
@@ -38,4 +38,4 @@ Particles sheetElectrons(const ElectronSheetSpec& spec);
 // The simulation of the spec: sheetElectrons on sheetGrid, B = (0, 0, B), Δt = sheetTimeStep.
 ElectrostaticPic sheetSimulation(const ElectronSheetSpec& spec);
 
-} // namespace aurorawall::plasma
+} // namespace aurorawall::components::plasma::simulation

@@ -9,7 +9,7 @@
 #include <stdexcept>
 #include <utility>
 
-namespace aurorawall::plasma {
+namespace aurorawall::components::plasma::simulation {
 namespace {
 namespace f64 {
 AURORAWALL_GLSL_PRECISION(double)
@@ -61,4 +61,4 @@ StepEnergies ElectrostaticPic::step()
     return energies;
 }
 
-} // namespace aurorawall::plasma
+} // namespace aurorawall::components::plasma::simulation

@@ -14,7 +14,7 @@
 
 #include <vector>
 
-namespace aurorawall::plasma {
+namespace aurorawall::components::plasma::simulation {
 
 // The energies (J; in 1D and 2D per m² or per m of the unresolved axes) at one whole step.
 struct StepEnergies {
@@ -57,4 +57,4 @@ private:
     std::vector<glm::dvec3> nodeField_;
 };
 
-} // namespace aurorawall::plasma
+} // namespace aurorawall::components::plasma::simulation

@@ -10,7 +10,7 @@
 #include <new>
 #include <stdexcept>
 
-namespace aurorawall::plasma {
+namespace aurorawall::components::plasma::simulation {
 
 // The aligned buffers, the two plans on them, and −1/(ε₀ λ N) per stored mode (N, the node count,
 // undoes FFTW's unnormalised inverse).
@@ -83,4 +83,4 @@ std::vector<double> FftPoissonSolver::solve(const std::vector<double>& chargeDen
     return std::vector<double>(p.field, p.field + p.nodes);
 }
 
-} // namespace aurorawall::plasma
+} // namespace aurorawall::components::plasma::simulation

@@ -14,7 +14,7 @@
 #include <memory>
 #include <vector>
 
-namespace aurorawall::plasma {
+namespace aurorawall::components::plasma::simulation {
 
 class FftPoissonSolver {
 public:
@@ -32,4 +32,4 @@ private:
     std::unique_ptr<Plans> plans_;
 };
 
-} // namespace aurorawall::plasma
+} // namespace aurorawall::components::plasma::simulation

@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <utility>
 
-namespace aurorawall::plasma {
+namespace aurorawall::components::plasma::simulation {
 
 void jacobiSweeps(const PeriodicGrid& grid, const std::vector<double>& chargeDensity, std::vector<double>& potential,
                   int sweeps)
@@ -34,4 +34,4 @@ void jacobiSweeps(const PeriodicGrid& grid, const std::vector<double>& chargeDen
     }
 }
 
-} // namespace aurorawall::plasma
+} // namespace aurorawall::components::plasma::simulation

@@ -10,10 +10,10 @@
 
 #include <vector>
 
-namespace aurorawall::plasma {
+namespace aurorawall::components::plasma::simulation {
 
 // `sweeps` Jacobi sweeps on `potential` (V, updated in place) for the charge density (C/m³).
 void jacobiSweeps(const PeriodicGrid& grid, const std::vector<double>& chargeDensity, std::vector<double>& potential,
                   int sweeps);
 
-} // namespace aurorawall::plasma
+} // namespace aurorawall::components::plasma::simulation

@@ -9,7 +9,7 @@
 #include <random>
 #include <stdexcept>
 
-namespace aurorawall::plasma {
+namespace aurorawall::components::plasma::simulation {
 namespace {
 
 double weightFor(const PeriodicGrid& grid, int count, double electronDensity)
@@ -110,4 +110,4 @@ Particles randomStart(const PeriodicGrid& grid, int count, double electronDensit
     return p;
 }
 
-} // namespace aurorawall::plasma
+} // namespace aurorawall::components::plasma::simulation

@@ -7,7 +7,7 @@
 
 #include <cstdint>
 
-namespace aurorawall::plasma {
+namespace aurorawall::components::plasma::simulation {
 
 // A displacement δx = amplitude · sin(2π mode x/L) along x of particles at x, L the box's length
 // along x: a density perturbation δn/n = −(2π mode/L) · amplitude · cos(2π mode x/L) to first order.
@@ -42,4 +42,4 @@ Particles quietMaxwellian(const PeriodicGrid& grid, int count, double electronDe
 Particles randomStart(const PeriodicGrid& grid, int count, double electronDensity, double thermalSpeed,
                       std::uint64_t seed);
 
-} // namespace aurorawall::plasma
+} // namespace aurorawall::components::plasma::simulation

@@ -8,7 +8,7 @@
 #include <cmath>
 #include <numeric>
 
-namespace aurorawall::plasma {
+namespace aurorawall::components::plasma::simulation {
 namespace {
 namespace f64 {
 AURORAWALL_GLSL_PRECISION(double)
@@ -146,4 +146,4 @@ std::vector<glm::dvec3> gatherField(const PeriodicGrid& grid, const std::vector<
     return field;
 }
 
-} // namespace aurorawall::plasma
+} // namespace aurorawall::components::plasma::simulation

@@ -9,7 +9,7 @@
 
 #include <vector>
 
-namespace aurorawall::plasma {
+namespace aurorawall::components::plasma::simulation {
 
 // The particle's shape, i.e. its weights on the nodes (the same for the deposit and the gather):
 // cloud-in-cell, linear, on the 2^d corners of its cell; or the triangular-shaped cloud, the
@@ -37,4 +37,4 @@ std::vector<glm::dvec3> gatherField(const PeriodicGrid& grid, const std::vector<
                                     const std::vector<glm::dvec3>& positions,
                                     ParticleShape shape = ParticleShape::CloudInCell);
 
-} // namespace aurorawall::plasma
+} // namespace aurorawall::components::plasma::simulation

@@ -5,7 +5,7 @@
 
 #include <vector>
 
-namespace aurorawall::plasma {
+namespace aurorawall::components::plasma::simulation {
 
 struct Particles {
     std::vector<glm::dvec3> position; // m, inside the grid's box
@@ -13,4 +13,4 @@ struct Particles {
     double weight = 1.0;              // real electrons per macroparticle
 };
 
-} // namespace aurorawall::plasma
+} // namespace aurorawall::components::plasma::simulation

@@ -2,7 +2,7 @@
 
 #include <stdexcept>
 
-namespace aurorawall::plasma {
+namespace aurorawall::components::plasma::simulation {
 namespace {
 
 int wrap(int i, int n)
@@ -39,4 +39,4 @@ glm::dvec3 PeriodicGrid::boxLength() const
     return {cells[0] * spacing[0], cells[1] * spacing[1], cells[2] * spacing[2]};
 }
 
-} // namespace aurorawall::plasma
+} // namespace aurorawall::components::plasma::simulation

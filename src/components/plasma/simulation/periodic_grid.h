@@ -7,7 +7,7 @@
 #include <array>
 #include <cstddef>
 
-namespace aurorawall::plasma {
+namespace aurorawall::components::plasma::simulation {
 
 struct PeriodicGrid {
     // dimension 1–3; cells ≥ 1 and spacing > 0 (m) for each axis below dimension. Throws
@@ -25,4 +25,4 @@ struct PeriodicGrid {
     glm::dvec3 boxLength() const;                                               // m
 };
 
-} // namespace aurorawall::plasma
+} // namespace aurorawall::components::plasma::simulation

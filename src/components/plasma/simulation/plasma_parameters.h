@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-namespace aurorawall::plasma {
+namespace aurorawall::components::plasma::simulation {
 
 using physics::kElementaryCharge;   // C (exact)
 using physics::kElectronMass;       // kg
@@ -29,4 +29,4 @@ inline double debyeLength(double thermalSpeed, double electronDensity)
     return thermalSpeed / plasmaFrequency(electronDensity);
 }
 
-} // namespace aurorawall::plasma
+} // namespace aurorawall::components::plasma::simulation

@@ -19,15 +19,20 @@
 #include <ostream>
 #include <stdexcept>
 
-// The push in double (a named namespace: not every function is used here).
-namespace aurorawall::plasma::verify_f64 {
+// The push in double (this file's own copy: electrostatic_pic.cpp and particle_mesh.cpp compile theirs
+// into the same namespace; not every function is used here).
+namespace aurorawall::components::plasma::simulation::f64 {
+namespace {
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wunused-function"
 AURORAWALL_GLSL_PRECISION(double)
 #include "components/plasma/boris_push.glsl"
-} // namespace aurorawall::plasma::verify_f64
+#pragma GCC diagnostic pop
+} // namespace
+} // namespace aurorawall::components::plasma::simulation::f64
 
-namespace aurorawall::plasma {
+namespace aurorawall::components::plasma::simulation {
 namespace {
-namespace f64 = verify_f64;
 
 // An ionospheric F-region electron density (m⁻³) and a geomagnetic field strength (T); the cases'
 // results depend only on the dimensionless numbers.
@@ -673,4 +678,4 @@ std::vector<VerifyRow> verifyDiocotron(double wcDt, double wpOverWc, const PicDe
                 device.settings(particles, 2), {{"growth_rate_over_wd", fit.slope, expected}});
 }
 
-} // namespace aurorawall::plasma
+} // namespace aurorawall::components::plasma::simulation

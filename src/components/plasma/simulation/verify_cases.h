@@ -18,7 +18,7 @@
 #include <utility>
 #include <vector>
 
-namespace aurorawall::plasma {
+namespace aurorawall::components::plasma::simulation {
 
 struct VerifyRow {
     std::string parameter;
@@ -145,4 +145,4 @@ std::vector<VerifyRow> verifyLandau(double plasmaFrequencyTimesDt, double kDebye
 std::vector<VerifyRow> verifyDiocotron(double cyclotronFrequencyTimesDt, double plasmaOverCyclotronFrequency = 0.1,
                                        const PicDevice& device = cpuDevice(), VerifyHistory* history = nullptr);
 
-} // namespace aurorawall::plasma
+} // namespace aurorawall::components::plasma::simulation

@@ -25,7 +25,7 @@
 
 namespace aurorawall::components::plasma::tools {
 
-namespace pic = aurorawall::plasma;
+namespace pic = aurorawall::components::plasma::simulation;
 
 namespace {
 

@@ -23,7 +23,7 @@
 
 namespace aurorawall::components::plasma::tools {
 
-namespace pic = aurorawall::plasma;
+namespace pic = aurorawall::components::plasma::simulation;
 
 namespace {
 
@@ -51,10 +51,10 @@ constexpr double kDiocotronWcDt = 5.0;
 enum class Device { Cpu, Gpu };
 const cli::Choices<Device> kDevices = {{"cpu", Device::Cpu}, {"gpu", Device::Gpu}};
 
-const cli::Choices<pic::GpuPicSolver> kSolvers = {{"fft-cpu", pic::GpuPicSolver::FftCpu},
-                                                      {"jacobi", pic::GpuPicSolver::Jacobi},
-                                                      {"sor", pic::GpuPicSolver::RedBlackSor},
-                                                      {"multigrid", pic::GpuPicSolver::Multigrid}};
+const cli::Choices<gpu::GpuPicSolver> kSolvers = {{"fft-cpu", gpu::GpuPicSolver::FftCpu},
+                                                      {"jacobi", gpu::GpuPicSolver::Jacobi},
+                                                      {"sor", gpu::GpuPicSolver::RedBlackSor},
+                                                      {"multigrid", gpu::GpuPicSolver::Multigrid}};
 
 const cli::Choices<pic::ParticleShape> kShapes = {{"cic", pic::ParticleShape::CloudInCell},
                                                       {"tsc", pic::ParticleShape::TriangularShapedCloud}};
@@ -135,7 +135,7 @@ struct VerifyOptions {
     std::string actionName;
     Case chosen = Case::All;
     Device device = Device::Cpu;
-    pic::GpuPicSolver solver = pic::GpuPicSolver::FftCpu;
+    gpu::GpuPicSolver solver = gpu::GpuPicSolver::FftCpu;
     double kDebye = 0.5;      // k λ_D of the landau case
     double wpDt = 0.2;        // ω_p Δt
     double wcDt = 1.0;        // ω_c Δt of boris and exb
@@ -182,7 +182,7 @@ void checkOptions(const cli::CommandLine& cli, VerifyOptions& o)
     if (o.actionName.empty())
         throw cli.usageError("missing the action (allowed: " + cli::wordsOf(kActions) + ")");
     if (!cli::findChoice(kActions, o.actionName, action))
-        throw cli.usageError("unknown action '" + echoedInput(o.actionName) + "' (allowed: " + cli::wordsOf(kActions) + ")");
+        throw cli.usageError("unknown action '" + common::echoedInput(o.actionName) + "' (allowed: " + cli::wordsOf(kActions) + ")");
     if (!(o.kDebye >= pic::kLandauMinKDebye && o.kDebye <= pic::kLandauMaxKDebye))
         throw cli.usageError("--k-lambda-d must be in [" + number(pic::kLandauMinKDebye) + ", " +
                              number(pic::kLandauMaxKDebye) + "] (got " + number(o.kDebye) + ")");
@@ -269,7 +269,7 @@ int runPlasmaCommand(int argc, char** argv, std::ostream& out, std::ostream& err
         if (cli.given("history")) requireWritableDirectory(options.historyDirectory);
         if (options.device == Device::Gpu) {
             const auto context = gl::createContext(gl::Backend::Egl);
-            runCases(options, pic::GpuPicDevice(dataDirectory() + "/shaders", options.solver), out);
+            runCases(options, gpu::GpuPicDevice(common::dataDirectory() + "/shaders", options.solver), out);
         } else {
             runCases(options, pic::cpuDevice(options.shape), out);
         }

@@ -21,7 +21,7 @@
 
 namespace aurorawall::components::plasma::tools {
 
-namespace pic = aurorawall::plasma;
+namespace pic = aurorawall::components::plasma::simulation;
 
 namespace {
 
@@ -160,7 +160,7 @@ int runPlasmaSoakCommand(int argc, char** argv, std::ostream& out, std::ostream&
         };
         if (device == Device::Gpu) {
             const auto context = gl::createContext(gl::Backend::Egl);
-            runAll(pic::GpuPicDevice(dataDirectory() + "/shaders"));
+            runAll(gpu::GpuPicDevice(common::dataDirectory() + "/shaders"));
         } else {
             runAll(pic::cpuDevice());
         }

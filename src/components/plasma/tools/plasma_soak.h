@@ -17,8 +17,8 @@ namespace aurorawall::components::plasma::tools {
 // One of a scene's simulations at time 0, as the component starts it.
 struct SoakSimulation {
     std::string name; // "strip" or "box"
-    aurorawall::plasma::PeriodicGrid grid;
-    aurorawall::plasma::Particles electrons;
+    simulation::PeriodicGrid grid;
+    simulation::Particles electrons;
     glm::dvec3 magneticField; // T
     double dt;                // s
 };

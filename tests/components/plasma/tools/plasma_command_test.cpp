@@ -16,7 +16,7 @@
 namespace aurorawall::components::plasma::tools {
 namespace {
 
-namespace pic = aurorawall::plasma;
+namespace pic = aurorawall::components::plasma::simulation;
 using Result = test::CommandOutput;
 using test::above;
 using test::below;

@@ -16,7 +16,7 @@
 #include <vector>
 
 using namespace aurorawall;
-using namespace aurorawall::plasma;
+using namespace aurorawall::components::plasma::simulation;
 namespace tools = aurorawall::components::plasma::tools;
 
 namespace {
