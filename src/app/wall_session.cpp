@@ -192,6 +192,7 @@ void reportDevices(const cluster::MpiWorld& world, const WallSession& s)
                      cluster::ranksByValue(devices).c_str());
     else if (s.options.verbose)
         std::printf("devices: %s\n", cluster::ranksByValue(devices).c_str());
+    std::fflush(stdout);
 }
 
 } // namespace
