@@ -17,7 +17,8 @@ the time standing still, the slider's time, playing with the time running, the c
 answer reports. The screenshot button: the browser downloads (Browser.setDownloadBehavior into
 WORK_DIR/downloads) the PNG the wall wrote, WALL_SIZE. The recording buttons: a path recorded and
 stopped, downloaded (the recorded file with its base scene made absolute) and the downloaded copy
-replayed with `preset COPY`, a movie recorded and stopped with its EXR box ticked (its PNGs and EXRs in WORK_DIR), the path
+replayed with `preset COPY`, a movie recorded and stopped with its EXR box ticked (its PNGs and EXRs in WORK_DIR)
+and downloaded as a zip (the folder's files, byte for byte), the path
 replayed. The preview on the page must change when the camera moves. While rank 1 is
 stopped (SIGSTOP, for at most 6 s), GET /ranks and the page must show its heartbeat's age growing
 past two periods and draw the rank red; once it runs again (SIGCONT), no longer. Writes
@@ -26,6 +27,7 @@ Exit status 0 when all holds, 1 otherwise (with one line saying what did not).
 """
 import base64
 import fcntl
+import io
 import json
 import math
 import os
@@ -35,6 +37,7 @@ import subprocess
 import sys
 import time
 import urllib.request
+import zipfile
 
 DEADLINE_S = 30.0  # for each condition polled; frames take 50-300 ms on a loaded 2-core machine
 POLL_S = 0.1
@@ -573,11 +576,26 @@ def check_recording(browser, wall, work_dir, downloads):
     exrs = [f for f in os.listdir(folder) if f.endswith(".exr")]
     if len(pngs) != int(frames) or len(exrs) != int(frames) or int(frames) < 3:
         raise Failure(f"stop movie: {movie}, {len(pngs)} PNGs and {len(exrs)} EXRs in {folder}")
+    if not browser.evaluate("awTest.shown('download-movie')"):
+        raise Failure("stop movie: no download link for the movie")
+    browser.evaluate("awTest.click('download-movie')")
+    zip_name = os.path.basename(folder) + ".zip"
+    with zipfile.ZipFile(io.BytesIO(browser.downloaded(downloads, zip_name))) as z:
+        members = sorted(z.namelist())
+        want = sorted(os.path.basename(folder) + "/" + f for f in os.listdir(folder))
+        if members != want:
+            raise Failure(f"the downloaded {zip_name} holds {members}, the folder {want}")
+        for member in members:
+            with open(os.path.join(folder, os.path.basename(member)), "rb") as f:
+                if z.read(member) != f.read():
+                    raise Failure(f"{member} in the downloaded {zip_name} differs from the wall's file")
+    poll("the page's movie download", lambda: browser.evaluate("awTest.text('answer')") == "downloaded " + zip_name)
     browser.evaluate("awTest.click('replay')")
     replayed = answer_after(browser, "time ")
     if "→ ok time_s=" not in replayed:
         raise Failure(f"replay path: {replayed}")
-    print(f"recorded {name} ({stopped.split('keys=')[1]}), downloaded; movie of {frames} frames; {replayed}")
+    print(f"recorded {name} ({stopped.split('keys=')[1]}), downloaded; movie of {frames} frames, downloaded as "
+          f"{zip_name}; {replayed}")
 
 
 def check_silent_rank(browser, wall, pid):

@@ -3,10 +3,16 @@
 #include "app/control/command_channel.h"
 #include "app/web/command_mailbox.h"
 #include "app/web/downloads.h"
+#include "app/web/movie_archive.h"
 #include "app/web/status_json.h"
 
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <thread>
 
 namespace aw = aurorawall;
@@ -107,6 +113,24 @@ TEST(RanksJson, EachRanksFrameTimesAndHeartbeatAge)
               R"({"frame":6,"render_ms":30,"wait_ms":0.25,"heartbeat_age_s":null}]})");
 }
 
+namespace {
+// A fresh folder under the system's temporary one.
+std::filesystem::path freshFolder(const std::string& name)
+{
+    const std::filesystem::path folder = std::filesystem::temp_directory_path() /
+                                         ("aw-web-test-" + std::to_string(::getpid()) + "-" + name);
+    std::filesystem::remove_all(folder);
+    std::filesystem::create_directories(folder);
+    return folder;
+}
+
+std::string readText(const std::filesystem::path& path)
+{
+    std::ifstream in(path, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+} // namespace
+
 TEST(RecordingForDownload, TheBaseSceneBecomesAbsolute)
 {
     const std::string text = "# comment\n[scene]\nbase = \"../config/scenes/a \\\"b\\\".toml\"\nstart_time_s = 0.0\n"
@@ -124,4 +148,54 @@ TEST(RecordingForDownload, AnAbsoluteBaseOrNoneStaysAsItIs)
     EXPECT_EQ(aw::app::web::recordingForDownload(none, "/out"), none);
     const std::string odd = "[scene]\nbase = \"a\\tb\"\n"; // an escape the recorder never writes
     EXPECT_EQ(aw::app::web::recordingForDownload(odd, "/out"), odd);
+}
+
+// A movie's folder as a zip: only the movie writer's files, in order, each stored whole under NAME/;
+// a client that goes away ends the archive with an error.
+TEST(MovieArchive, TheFramesAndTheirTimesAsAZip)
+{
+    namespace fs = std::filesystem;
+    const fs::path folder = freshFolder("movie");
+    std::ofstream(folder / "frame-000001.png", std::ios::binary) << "png one";
+    std::ofstream(folder / "frame-000000.png", std::ios::binary) << "png zero";
+    std::ofstream(folder / "frame-000000.exr", std::ios::binary) << std::string(100000, 'e');
+    std::ofstream(folder / "frames.csv", std::ios::binary) << "frame,time_s\n0,1\n1,2\n";
+    std::ofstream(folder / "frames.csv.tmp123", std::ios::binary) << "half";
+    std::ofstream(folder / "notes.txt", std::ios::binary) << "not the movie's";
+    fs::create_directory(folder / "frame-000002.png");
+    fs::create_symlink("/etc/passwd", folder / "frame-000003.png");
+    const std::vector<aw::app::web::MovieFile> files = aw::app::web::movieFiles(folder.string());
+    std::vector<std::string> names;
+    for (const auto& f : files)
+        names.push_back(f.name);
+    EXPECT_EQ(names, (std::vector<std::string>{"frame-000000.exr", "frame-000000.png", "frame-000001.png", "frames.csv"}));
+    std::string zip;
+    EXPECT_EQ(aw::app::web::writeMovieZip(folder.string(), files, "clip", [&](const char* data, std::size_t n) {
+                  zip.append(data, n);
+                  return true;
+              }),
+              "");
+    EXPECT_EQ(zip.substr(0, 4), std::string("PK\x03\x04", 4));
+    EXPECT_NE(zip.find("clip/frame-000001.png"), std::string::npos);
+    EXPECT_NE(zip.find(std::string(100000, 'e')), std::string::npos); // stored, not compressed
+    EXPECT_NE(zip.find(std::string("PK\x05\x06", 4)), std::string::npos); // the end of the central directory
+    std::size_t sent = 0;
+    EXPECT_EQ(aw::app::web::writeMovieZip(folder.string(), files, "clip", [&](const char*, std::size_t n) {
+                  sent += n;
+                  return sent < 70000;
+              }),
+              "the client went away");
+    fs::remove(folder / "frame-000001.png");
+    EXPECT_NE(aw::app::web::writeMovieZip(folder.string(), files, "clip", [](const char*, std::size_t) { return true; })
+                  .find("frame-000001.png"),
+              std::string::npos);
+    EXPECT_THROW(aw::app::web::movieFiles((folder / "none").string()), std::runtime_error);
+    fs::remove_all(folder);
+}
+
+TEST(StatusJson, AMemberAdded)
+{
+    EXPECT_EQ(aw::app::web::withMember("{\"frame\":1}", "movie_error", "frame 2: \"x\" full"),
+              "{\"frame\":1,\"movie_error\":\"frame 2: \\\"x\\\" full\"}");
+    EXPECT_EQ(aw::app::web::withMember("{}", "a", "b"), "{\"a\":\"b\"}");
 }
