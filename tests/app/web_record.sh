@@ -7,7 +7,7 @@
 # again: every key's position, direction and up come back bit-identical (17 digits). `movie start`/`movie stop`
 # write PNG frames and none after the stop, `movie start exr` OpenEXR frames as well; GET /movies/clip
 # is refused (409) while it records and is then the folder's files as a zip, byte for byte; a movie
-# whose folder is removed while it records shows its error in GET /status (movie_error) until its
+# whose folder is moved away while it records shows its error in GET /status (movie_error) until its
 # stop, and its download then answers 410. Bad paths, a second start, a stop with nothing running are
 # refused; on a full disk (a small tmpfs, skipped where it cannot be mounted) the commands answer
 # errors. The wall keeps drawing throughout, and exits 0 on quit.
@@ -163,9 +163,9 @@ check [ "$(ls "$out/clip-exr"/frame-*.exr | wc -l)" = "$n" ]
 check [ "$(ls "$out/clip-exr"/frame-*.png | wc -l)" = "$n" ]
 note "movie start exr: $n frames as PNG and OpenEXR"
 
-note "a movie whose folder vanishes: its error in GET /status until the stop, which answers it too"
+note "a movie whose folder is moved away: its error in GET /status until the stop, which answers it too"
 check grep -qx "ok movie start $out/gone" <(post "movie start gone")
-rm -r "$out/gone"
+mv "$out/gone" "$out/gone-away" # atomic, unlike rm -r racing the next frame's write
 for _ in $(seq 300); do curl -s "$url/status" | grep -q '"movie_error"' && break; sleep 0.1; done
 curl -s "$url/status"; echo
 check grep -q '"movie_error":"frame [0-9]* into '"$out"'/gone: ' <(curl -s "$url/status")
