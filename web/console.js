@@ -188,8 +188,8 @@ $("screenshot").onclick = async () => {
 };
 // Recording: `record start` / `record stop` of a camera path and `movie start` / `movie stop` into the
 // wall's output folder, named by the time pressed. The stopped path can be downloaded (GET
-// /recordings/NAME, with the secret, hence fetched) and replayed: `preset FILE` at its first time.
-// The stopped movie can be downloaded as NAME.zip (GET /movies/NAME).
+// /recordings/NAME, with the secret, hence fetched: one scene with its base embedded) and replayed:
+// `preset FILE` at its first time. The stopped movie can be downloaded as NAME.zip (GET /movies/NAME).
 let recording = "";  // the path's name while `record start` runs
 let movie = "";      // the movie's name while `movie start` runs
 let recorded = null; // the last stopped path: { name, file, from }

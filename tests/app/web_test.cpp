@@ -5,6 +5,8 @@
 #include "app/web/downloads.h"
 #include "app/web/movie_archive.h"
 #include "app/web/status_json.h"
+#include "app/path_recorder.h"
+#include "components/registry.h"
 
 #include <gtest/gtest.h>
 
@@ -131,23 +133,67 @@ std::string readText(const std::filesystem::path& path)
 }
 } // namespace
 
-TEST(RecordingForDownload, TheBaseSceneBecomesAbsolute)
+// Every shipped scene (the derived ones two files deep) recorded, downloaded and saved elsewhere
+// reads as the recording does, with no other file: the same name, components, times, exposure and
+// camera keys, and no base.
+TEST(RecordingForDownload, EmbedsTheBaseScenesAndReadsAsTheRecording)
 {
-    const std::string text = "# comment\n[scene]\nbase = \"../config/scenes/a \\\"b\\\".toml\"\nstart_time_s = 0.0\n"
-                             "\n[[camera.key]]\nbase = \"x\"\n";
-    EXPECT_EQ(aw::app::web::recordingForDownload(text, "/out/rec"),
-              "# comment\n[scene]\nbase = \"/out/config/scenes/a \\\"b\\\".toml\"\nstart_time_s = 0.0\n"
-              "\n[[camera.key]]\nbase = \"x\"\n");
+    namespace fs = std::filesystem;
+    const fs::path recorded = freshFolder("recorded"), elsewhere = freshFolder("elsewhere");
+    int scenes = 0;
+    for (const auto& entry : fs::directory_iterator(AW_SCENES_DIR)) {
+        if (entry.path().extension() != ".toml")
+            continue;
+        const std::string file = (recorded / "flight.toml").string();
+        aw::app::PathRecorder recorder(file, entry.path().string(), 100.0, 0.25);
+        aw::cluster::FrameState state;
+        state.timeS = 100.0;
+        state.cameraPositionKm = {6500.0, 10.0, 20.0};
+        recorder.add(state);
+        state.timeS = 100.25;
+        state.cameraPositionKm = {6500.5, 10.25, 20.125};
+        state.zoom = 1.5;
+        recorder.add(state);
+        recorder.write();
+        const std::string copy = (elsewhere / (entry.path().stem().string() + ".toml")).string();
+        std::ofstream(copy, std::ios::binary) << aw::app::web::recordingForDownload(readText(file), recorded.string());
+        EXPECT_EQ(readText(copy).find("base ="), std::string::npos) << copy;
+        const aw::scene::Scene original = aw::components::loadScene(file);
+        aw::scene::Scene embedded;
+        ASSERT_NO_THROW(embedded = aw::components::loadScene(copy)) << readText(copy);
+        EXPECT_EQ(embedded.name, original.name) << copy;
+        EXPECT_EQ(embedded.startTimeS, original.startTimeS);
+        EXPECT_EQ(embedded.timeStepS, original.timeStepS);
+        EXPECT_EQ(embedded.exposure, original.exposure);
+        EXPECT_EQ(embedded.planetRadiusKm, original.planetRadiusKm);
+        ASSERT_EQ(embedded.components().size(), original.components().size()) << copy;
+        for (std::size_t i = 0; i < original.components().size(); ++i)
+            EXPECT_EQ(embedded.components()[i]->name(), original.components()[i]->name());
+        EXPECT_EQ(embedded.camera.positionKm, original.camera.positionKm);
+        EXPECT_EQ(embedded.camera.path.empty(), original.camera.path.empty());
+        ++scenes;
+    }
+    EXPECT_GE(scenes, 10);
+    fs::remove_all(recorded);
+    fs::remove_all(elsewhere);
 }
 
-TEST(RecordingForDownload, AnAbsoluteBaseOrNoneStaysAsItIs)
+TEST(RecordingForDownload, TextWithoutABaseStaysAsItIs)
 {
-    const std::string absolute = "[scene]\nbase = \"/data/s.toml\"\ntime_step_s = 0.5";
-    EXPECT_EQ(aw::app::web::recordingForDownload(absolute, "/out"), absolute);
     const std::string none = "[scene]\nstart_time_s = 1.0\n";
     EXPECT_EQ(aw::app::web::recordingForDownload(none, "/out"), none);
-    const std::string odd = "[scene]\nbase = \"a\\tb\"\n"; // an escape the recorder never writes
-    EXPECT_EQ(aw::app::web::recordingForDownload(odd, "/out"), odd);
+}
+
+TEST(RecordingForDownload, AMissingBaseSceneIsNamed)
+{
+    const std::string text = "[scene]\nbase = \"gone.toml\"\n";
+    try {
+        aw::app::web::recordingForDownload(text, "/nowhere");
+        FAIL() << "no error";
+    } catch (const std::runtime_error& e) {
+        EXPECT_NE(std::string(e.what()).find("/nowhere/gone.toml: the base scene cannot be read"), std::string::npos)
+            << e.what();
+    }
 }
 
 // A movie's folder as a zip: only the movie writer's files, in order, each stored whole under NAME/;

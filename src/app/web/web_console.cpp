@@ -175,16 +175,20 @@ struct WebConsole::Impl {
         res.set_content(std::move(bytes), type);
     }
 
-    // A recorded camera path, its base scene made absolute so that the copy replays anywhere on
-    // this machine.
+    // A recorded camera path with its base scene embedded, so that the copy replays on any machine.
     void recording(const std::string& name, httplib::Response& res)
     {
         std::string file;
         const std::string text = written(recordings, name, file);
         if (text.empty())
             return reply(res, 404, "error 404 no such recording (only the paths this wall recorded)");
-        attach(res, name, recordingForDownload(text, std::filesystem::path(file).parent_path().string()),
-               "application/toml");
+        std::string embedded;
+        try {
+            embedded = recordingForDownload(text, std::filesystem::path(file).parent_path().string());
+        } catch (const std::exception& e) {
+            return reply(res, 500, "error recording " + name + ": " + e.what());
+        }
+        attach(res, name, std::move(embedded), "application/toml");
     }
 
     void screenshot(const std::string& name, httplib::Response& res)

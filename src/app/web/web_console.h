@@ -4,7 +4,7 @@
 // web/ folder, POST /command, GET /status, GET /presets, GET /preview.png, GET /ranks (each
 // rank's last frame: the frame it drew, its render and wait times, the age of its last heartbeat;
 // the master's frame and the imbalance), GET /recordings/NAME (a camera path the wall recorded, its
-// base scene made absolute), GET /screenshots/NAME (a screenshot the wall wrote) and GET /movies/NAME (a
+// base scene embedded), GET /screenshots/NAME (a screenshot the wall wrote) and GET /movies/NAME (a
 // movie the wall recorded, once stopped, as one zip streamed from its folder).
 // It never touches the wall itself: commands and status go through a CommandMailbox that the frame
 // loop serves with the control port's lines, and the preview is the last wall the frame loop
