@@ -1,8 +1,9 @@
 #pragma once
 // GET /movies/NAME: a finished movie's folder as one zip, streamed. The frames are PNG (and OpenEXR),
-// already compressed, so they are stored as they are; the zip is written by Debian's libarchive
-// (zip64 past 4 GiB, CRC-32, the central directory), one file and 64 KiB at a time, so a movie of
-// any length never sits in memory.
+// already compressed, so they are stored as they are (method 0; zip64 past 4 GiB or 65535 files;
+// CRC-32 from zlib), one file and 64 KiB at a time, so a movie of any length never sits in memory.
+// Not libarchive: its Debian build pulls libxml2 and ICU (31 MB) into the binary, past what
+// launch/gpu-bundle may carry to a GPU node; a stored zip is a few fixed-layout records.
 #include <cstdint>
 #include <functional>
 #include <string>
