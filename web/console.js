@@ -84,6 +84,9 @@ function showStatus(s) {
   if (document.activeElement !== $("time")) $("time").value = Number(s.time_s).toFixed(1);
   if (document.activeElement !== $("time-slider")) $("time-slider").value = s.time_s;
   if (document.activeElement !== $("speed")) $("speed").value = s.speed;
+  // A movie frame that could not be written (a full disk): the movie writes no more frames.
+  $("movie-error").hidden = !s.movie_error;
+  if (s.movie_error) $("movie-error").textContent = "movie: " + s.movie_error + " (no more frames; stop the movie)";
 }
 
 async function pollStatus() {
@@ -185,18 +188,22 @@ $("screenshot").onclick = async () => {
 };
 // Recording: `record start` / `record stop` of a camera path and `movie start` / `movie stop` into the
 // wall's output folder, named by the time pressed. The stopped path can be downloaded (GET
-// /recordings/NAME, with the secret, hence fetched) and replayed: `preset FILE` at its first time.
+// /recordings/NAME, with the secret, hence fetched: one scene with its base embedded) and replayed:
+// `preset FILE` at its first time. The stopped movie can be downloaded as NAME.zip (GET /movies/NAME).
 let recording = "";  // the path's name while `record start` runs
-let movie = false;
+let movie = "";      // the movie's name while `movie start` runs
 let recorded = null; // the last stopped path: { name, file, from }
+let filmed = "";     // the last stopped movie's name
 
 function showRecording() {
   $("record").textContent = recording ? "stop path" : "record path";
   $("record").classList.toggle("on", !!recording);
   $("movie").textContent = movie ? "stop movie" : "record movie";
-  $("movie").classList.toggle("on", movie);
+  $("movie").classList.toggle("on", !!movie);
   $("download").hidden = $("replay").hidden = !recorded;
   if (recorded) $("download").textContent = "download " + recorded.name;
+  $("download-movie").hidden = !filmed;
+  if (filmed) $("download-movie").textContent = "download " + filmed + ".zip";
 }
 
 $("record").onclick = async () => {
@@ -214,10 +221,20 @@ $("record").onclick = async () => {
 };
 
 $("movie").onclick = async () => {
-  const answer = await command(movie ? "movie stop" : `movie start ${$("movie-exr").checked ? "exr " : ""}movie-${stamp()}`);
-  if (answer.startsWith("ok movie start")) movie = true;
-  else if (answer.startsWith("ok movie stop") || answer.startsWith("error movie stop")) movie = false;
+  const name = movie || `movie-${stamp()}`;
+  const answer = await command(movie ? "movie stop" : `movie start ${$("movie-exr").checked ? "exr " : ""}${name}`);
+  if (answer.startsWith("ok movie start")) movie = name;
+  else if (answer.startsWith("ok movie stop") || answer.startsWith("error movie stop")) {
+    if (!answer.includes("no movie runs")) filmed = movie; // its frames up to a failure too
+    movie = "";
+    $("movie-error").hidden = true;
+  }
   showRecording();
+};
+
+$("download-movie").onclick = (e) => {
+  e.preventDefault();
+  download("/movies/" + encodeURIComponent(filmed), filmed + ".zip");
 };
 
 $("download").onclick = (e) => {

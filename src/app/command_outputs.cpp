@@ -108,7 +108,8 @@ void CommandOutputs::startMovie(const control::OutputRequest& request, control::
         channel.answer(request.client, "error movie start " + request.name + ": " + request.path + ": " + error.message());
         return;
     }
-    movie_.emplace(Movie{request.path, MovieWriter(request.path, request.exr, toneMap_), request.client, 0, ""});
+    movie_.emplace(
+        Movie{request.path, MovieWriter(request.path, request.exr, toneMap_), request.client, 0, "", request.name});
 }
 
 void CommandOutputs::stopMovie(const control::OutputRequest& request, control::CommandChannel& channel)
@@ -117,6 +118,8 @@ void CommandOutputs::stopMovie(const control::OutputRequest& request, control::C
     movie_.reset();
     if (movie.starter)
         channel.answer(*movie.starter, "error movie start: stopped before its first frame");
+    else if (onMovie)
+        onMovie({movie.name, movie.folder, false, movie.error});
     if (!movie.error.empty())
         return channel.answer(request.client, "error movie stop: " + movie.error + "; the movie ended with " +
                                                   std::to_string(movie.frames) + " frames");
@@ -140,12 +143,17 @@ void CommandOutputs::writeMovieFrame(const io::Image& canvas, int gatherStatus, 
     if (movie.starter) { // the first frame: the start is answered, and a failure ends the movie
         channel.answer(*movie.starter, movie.error.empty() ? "ok movie start " + movie.folder
                                                           : "error movie start: " + movie.error);
-        if (!movie.error.empty())
+        if (!movie.error.empty()) {
             movie_.reset();
-        else
+        } else {
             movie.starter.reset();
+            if (onMovie)
+                onMovie({movie.name, movie.folder, true, ""});
+        }
         return;
     }
+    if (!movie.error.empty() && onMovie)
+        onMovie({movie.name, movie.folder, true, movie.error});
     if (!movie.error.empty())
         std::fprintf(stderr, "aurorawall render: movie: %s (no more frames; the wall goes on)\n", movie.error.c_str());
 }

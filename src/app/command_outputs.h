@@ -30,6 +30,16 @@ public:
     // Told of every recording once its first write has succeeded: the name as given, its file.
     std::function<void(const std::string& name, const std::string& file)> onRecorded;
 
+    // A movie's course, as the browser console shows it: running once its first frame is written,
+    // with an error once a frame could not be (no more frames are written), not running once stopped.
+    struct MovieNews {
+        std::string name;   // as given to `movie start`: relative to the output folder
+        std::string folder; // its path
+        bool running = false;
+        std::string error;  // the frame that could not be written, else ""
+    };
+    std::function<void(const MovieNews&)> onMovie;
+
     // At the frame the master has just decided: carries out this frame's requests in order (a recording
     // starts with this frame's camera, written at once, and is answered; a stop writes it a last time
     // and is answered; a movie starts with this frame, answered once written), then adds the frame's
@@ -65,6 +75,7 @@ private:
         std::optional<std::uint64_t> starter; // the client of `movie start`, until its first frame
         std::size_t frames = 0;
         std::string error; // the frame that could not be written: no more frames
+        std::string name;  // as given
     };
 
     void startRecording(const control::OutputRequest& request, const cluster::FrameState& state,

@@ -170,6 +170,9 @@ struct MasterState {
             outputs.onRecorded = [&web = *session.web](const std::string& name, const std::string& file) {
                 web.addRecording(name, file); // GET /recordings/NAME serves it
             };
+            outputs.onMovie = [&web = *session.web](const CommandOutputs::MovieNews& news) {
+                web.showMovie(news.name, news.folder, news.running, news.error); // GET /movies/NAME, /status
+            };
         }
         if (!session.options.movieDir.empty())
             movie.emplace(session.options.movieDir, session.options.movieExr, session.toneMap);

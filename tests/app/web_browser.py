@@ -16,8 +16,9 @@ listens to), a preset's button. After each, GET /status must show what was asked
 the time standing still, the slider's time, playing with the time running, the camera the preset's
 answer reports. The screenshot button: the browser downloads (Browser.setDownloadBehavior into
 WORK_DIR/downloads) the PNG the wall wrote, WALL_SIZE. The recording buttons: a path recorded and
-stopped, downloaded (the recorded file with its base scene made absolute) and the downloaded copy
-replayed with `preset COPY`, a movie recorded and stopped with its EXR box ticked (its PNGs and EXRs in WORK_DIR), the path
+stopped, downloaded (one scene, its base embedded: the recorded camera keys) and the downloaded copy
+replayed with `preset COPY`, a movie recorded and stopped with its EXR box ticked (its PNGs and EXRs in WORK_DIR)
+and downloaded as a zip (the folder's files, byte for byte), the path
 replayed. The preview on the page must change when the camera moves. While rank 1 is
 stopped (SIGSTOP, for at most 6 s), GET /ranks and the page must show its heartbeat's age growing
 past two periods and draw the rank red; once it runs again (SIGCONT), no longer. Writes
@@ -26,6 +27,7 @@ Exit status 0 when all holds, 1 otherwise (with one line saying what did not).
 """
 import base64
 import fcntl
+import io
 import json
 import math
 import os
@@ -34,7 +36,9 @@ import signal
 import subprocess
 import sys
 import time
+import tomllib
 import urllib.request
+import zipfile
 
 DEADLINE_S = 30.0  # for each condition polled; frames take 50-300 ms on a loaded 2-core machine
 POLL_S = 0.1
@@ -516,21 +520,20 @@ def check_screenshot(browser, work_dir, downloads, wall_size):
     print(f"screenshot: the page: {answer}; {len(data)} bytes, a {size} PNG, the file the wall wrote")
 
 
-def check_downloaded_recording(text, recorded, work_dir, name):
-    """The downloaded path is the recorded file but for its base scene, made absolute: the same file
-    as the recorded one names relative to its folder."""
-    def base(lines):
-        found = [l for l in lines if l.startswith("base = ")]
-        if len(found) != 1:
-            raise Failure(f"{name}: {len(found)} base lines")
-        return json.loads(found[0][len("base = "):])
-    got, had = text.splitlines(), recorded.splitlines()
-    if [l for l in got if not l.startswith("base = ")] != [l for l in had if not l.startswith("base = ")]:
-        raise Failure(f"the downloaded {name} differs from the recorded file beyond its base scene")
-    absolute, relative = base(got), base(had)
-    if not os.path.isabs(absolute) or not os.path.samefile(absolute, os.path.join(work_dir, os.path.dirname(name), relative)):
-        raise Failure(f"the downloaded {name} names the base {absolute!r}, the recorded one {relative!r}")
-    return absolute
+def check_downloaded_recording(text, recorded, name):
+    """The downloaded path is one self-contained scene: no base, the recorded [scene] times and
+    camera keys as recorded, the base scene's tables embedded. Returns its table names."""
+    got, had = tomllib.loads(text), tomllib.loads(recorded)
+    if "base" in got["scene"] or "base" not in had["scene"]:
+        raise Failure(f"the downloaded {name} still names a base scene (or the recorded one none)")
+    for key in ("start_time_s", "time_step_s"):
+        if got["scene"][key] != had["scene"][key]:
+            raise Failure(f"the downloaded {name}: [scene] {key} {got['scene'][key]} != {had['scene'][key]}")
+    if got["camera"] != had["camera"]:
+        raise Failure(f"the downloaded {name}: its camera keys differ from the recorded ones")
+    if not set(got["scene"]["components"]) <= set(got):
+        raise Failure(f"the downloaded {name} lacks tables of its components {got['scene']['components']}")
+    return sorted(got)
 
 
 def check_recording(browser, wall, work_dir, downloads):
@@ -551,7 +554,7 @@ def check_recording(browser, wall, work_dir, downloads):
     if (status, kind) != (200, "application/toml"):
         raise Failure(f"GET /recordings/{name}: {status} {kind}")
     with open(os.path.join(work_dir, name)) as f:
-        base = check_downloaded_recording(text, f.read(), work_dir, name)
+        tables = check_downloaded_recording(text, f.read(), name)
     browser.evaluate("awTest.click('download')")
     copy = os.path.join(downloads, name)
     if browser.downloaded(downloads, name).decode() != text:
@@ -560,7 +563,7 @@ def check_recording(browser, wall, work_dir, downloads):
     replayed = wall.command("preset " + copy)  # the downloaded copy, outside the output folder
     if not replayed.startswith("ok preset " + copy):
         raise Failure(f"preset {copy} (the downloaded path) answered {replayed}")
-    print(f"downloaded {copy} (base {base}); preset it -> {replayed}")
+    print(f"downloaded {copy} (self-contained: {', '.join(tables)}); preset it -> {replayed}")
     browser.evaluate("awTest.click('movie-exr')")  # the "EXR too" box: PNG and OpenEXR frames
     browser.evaluate("awTest.click('movie')")
     if "→ ok movie start" not in answer_after(browser, "movie start"):
@@ -573,11 +576,26 @@ def check_recording(browser, wall, work_dir, downloads):
     exrs = [f for f in os.listdir(folder) if f.endswith(".exr")]
     if len(pngs) != int(frames) or len(exrs) != int(frames) or int(frames) < 3:
         raise Failure(f"stop movie: {movie}, {len(pngs)} PNGs and {len(exrs)} EXRs in {folder}")
+    if not browser.evaluate("awTest.shown('download-movie')"):
+        raise Failure("stop movie: no download link for the movie")
+    browser.evaluate("awTest.click('download-movie')")
+    zip_name = os.path.basename(folder) + ".zip"
+    with zipfile.ZipFile(io.BytesIO(browser.downloaded(downloads, zip_name))) as z:
+        members = sorted(z.namelist())
+        want = sorted(os.path.basename(folder) + "/" + f for f in os.listdir(folder))
+        if members != want:
+            raise Failure(f"the downloaded {zip_name} holds {members}, the folder {want}")
+        for member in members:
+            with open(os.path.join(folder, os.path.basename(member)), "rb") as f:
+                if z.read(member) != f.read():
+                    raise Failure(f"{member} in the downloaded {zip_name} differs from the wall's file")
+    poll("the page's movie download", lambda: browser.evaluate("awTest.text('answer')") == "downloaded " + zip_name)
     browser.evaluate("awTest.click('replay')")
     replayed = answer_after(browser, "time ")
     if "→ ok time_s=" not in replayed:
         raise Failure(f"replay path: {replayed}")
-    print(f"recorded {name} ({stopped.split('keys=')[1]}), downloaded; movie of {frames} frames; {replayed}")
+    print(f"recorded {name} ({stopped.split('keys=')[1]}), downloaded; movie of {frames} frames, downloaded as "
+          f"{zip_name}; {replayed}")
 
 
 def check_silent_rank(browser, wall, pid):

@@ -1,11 +1,14 @@
 #!/bin/bash
 # Recording from the console: on a 2-rank headless wall (--web-port, no secret), POST /command
 # `record start flight.toml`, frames pass while the camera is steered, `record stop`; the file is
-# downloaded from GET /recordings/flight.toml (application/toml, the same bytes but for its base scene,
-# made absolute; other names and paths leaving the folder 404) into another folder, that copy
+# downloaded from GET /recordings/flight.toml (application/toml, one scene with its base embedded;
+# other names and paths leaving the folder 404) into another folder, that copy
 # replayed with `preset COPY` and `time FROM`, and recorded
 # again: every key's position, direction and up come back bit-identical (17 digits). `movie start`/`movie stop`
-# write PNG frames and none after the stop, `movie start exr` OpenEXR frames as well. Bad paths, a second start, a stop with nothing running are
+# write PNG frames and none after the stop, `movie start exr` OpenEXR frames as well; GET /movies/clip
+# is refused (409) while it records and is then the folder's files as a zip, byte for byte; a movie
+# whose folder is moved away while it records shows its error in GET /status (movie_error) until its
+# stop, and its download then answers 410. Bad paths, a second start, a stop with nothing running are
 # refused; on a full disk (a small tmpfs, skipped where it cannot be mounted) the commands answer
 # errors. The wall keeps drawing throughout, and exits 0 on quit.
 source "$(dirname "$0")/lib.sh"
@@ -71,19 +74,19 @@ note "$keys keys from $from s to $to s"
 refused "record stop" "record stop: no recording runs"
 [ -z "$(find "$out" -name '*.tmp*')" ] || { stop_wall; fail "a temporary file was left"; }
 
-note "download: the file with its base scene made absolute, saved elsewhere (the relative base would miss there)"
+note "download: one self-contained scene (its base embedded), saved elsewhere"
 copy="$WORK/downloads/deeper/flight.toml"
 mkdir -p "$(dirname "$copy")"
 code=$(curl -s -o "$copy" -w '%{http_code} %{content_type}' "$url/recordings/flight.toml")
 check [ "$code" = "200 application/toml" ]
-check cmp <(grep -v '^base = ' "$out/flight.toml") <(grep -v '^base = ' "$copy")
-base=$(sed -n 's/^base = "\(.*\)"$/\1/p' "$copy")
-echo "recorded: $(grep '^base = ' "$out/flight.toml"); downloaded: base = \"$base\""
-check [ "${base:0:1}" = / ]
-check [ "$base" -ef "$SCENE" ]
+check grep -q '^base = ' "$out/flight.toml"
+check [ -z "$(grep '^base = ' "$copy")" ]
+check grep -q '^\[\[aurora.curtain\]\]$' "$copy" # the base scene's tables
+check [ "$(grep -c '^\[\[camera.key\]\]$' "$copy")" = "$keys" ]
 for path in /recordings/other.toml /recordings/../flight.toml /recordings/..%2fout%2fflight.toml \
     /recordings/%2e%2e/%2e%2e/etc/passwd /recordings/ /recordings/screenshot.png \
-    /screenshots/flight.toml /screenshots/x.png /screenshots/..%2fout%2fflight.toml; do
+    /screenshots/flight.toml /screenshots/x.png /screenshots/..%2fout%2fflight.toml \
+    /movies/flight.toml /movies/clip /movies/..%2fout /movies/%2e%2e/%2e%2e/etc; do
     code=$(curl -s -o "$WORK/body" -w '%{http_code}' --path-as-is "$url$path")
     echo "GET $path -> $code $(cat "$WORK/body")"
     check [ "$code" = 404 ]
@@ -121,6 +124,9 @@ note "movie"
 check grep -qx "ok movie start $out/clip" <(post "movie start clip")
 refused "movie start clip2" "movie start clip2: a movie into $out/clip runs"
 frames 3
+code=$(curl -s -o "$WORK/body" -w '%{http_code}' "$url/movies/clip")
+check [ "$code" = 409 ]
+check grep -qx "error 409 movie clip is still recording (\`movie stop\` first)" "$WORK/body"
 answer=$(post "movie stop")
 n=$(sed -n "s|^ok movie stop $out/clip frames=\([0-9]*\)\$|\1|p" <<< "$answer")
 [ -n "$n" ] && [ "$n" -ge 3 ] || { stop_wall; fail "movie stop answered '$answer'"; }
@@ -129,6 +135,22 @@ check [ "$(($(wc -l < "$out/clip/frames.csv") - 1))" = "$n" ]
 frames 3
 check [ "$(ls "$out/clip"/frame-*.png | wc -l)" = "$n" ]
 note "$n movie frames, none after the stop"
+code=$(curl -s -D "$WORK/headers" -o "$WORK/clip.zip" -w '%{http_code} %{content_type}' "$url/movies/clip")
+check [ "$code" = "200 application/zip" ]
+check grep -qi '^content-disposition: attachment; filename="clip.zip"' "$WORK/headers"
+check python3 - "$WORK/clip.zip" "$out/clip" <<'PY'
+import os, sys, zipfile
+archive, folder = sys.argv[1:]
+with zipfile.ZipFile(archive) as z:
+    assert z.testzip() is None, "a damaged member"
+    names = sorted(z.namelist())
+    want = sorted("clip/" + f for f in os.listdir(folder))
+    assert names == want, f"{names} != {want}"
+    for name in names:
+        with open(os.path.join(folder, os.path.basename(name)), "rb") as f:
+            assert z.read(name) == f.read(), name
+print(f"the zip holds the movie's {len(names)} files, byte for byte")
+PY
 refused "movie start clip" "movie start clip: .*/clip already holds a movie"
 check [ -z "$(ls "$out/clip"/frame-*.exr 2>/dev/null)" ]
 check grep -qx "ok movie start $out/clip-exr" <(post "movie start exr clip-exr")
@@ -140,12 +162,28 @@ check [ "$(ls "$out/clip-exr"/frame-*.exr | wc -l)" = "$n" ]
 check [ "$(ls "$out/clip-exr"/frame-*.png | wc -l)" = "$n" ]
 note "movie start exr: $n frames as PNG and OpenEXR"
 
+note "a movie whose folder is moved away: its error in GET /status until the stop, which answers it too"
+check grep -qx "ok movie start $out/gone" <(post "movie start gone")
+mv "$out/gone" "$out/gone-away" # atomic, unlike rm -r racing the next frame's write
+for _ in $(seq 300); do curl -s "$url/status" | grep -q '"movie_error"' && break; sleep 0.1; done
+curl -s "$url/status"; echo
+check grep -q '"movie_error":"frame [0-9]* into '"$out"'/gone: ' <(curl -s "$url/status")
+check grep -q '^error movie stop: frame [0-9]* into .*/gone: .*; the movie ended with [0-9]* frames$' <(post "movie stop")
+check [ -z "$(curl -s "$url/status" | grep movie_error)" ]
+code=$(curl -s -o "$WORK/body" -w '%{http_code}' "$url/movies/gone")
+echo "GET /movies/gone -> $code $(cat "$WORK/body")"
+check [ "$code" = 410 ]
+
 if [ $mounted = 1 ]; then
     note "a full disk"
     check grep -qx "ok record start $out/full/long.toml" <(post "record start full/long.toml")
     answer=$(post "movie start full/m")
     frames 3
-    [[ "$answer" == "ok movie start"* ]] && check grep -q '^error movie stop: frame .*: ' <(post "movie stop")
+    if [[ "$answer" == "ok movie start"* ]]; then
+        check grep -q '"movie_error":"frame [0-9]* into .*/full/m: ' <(curl -s "$url/status")
+        check grep -q '^error movie stop: frame .*: ' <(post "movie stop")
+        check [ -z "$(curl -s "$url/status" | grep movie_error)" ]
+    fi
     [[ "$answer" == "error movie start: frame "* ]] || [[ "$answer" == "ok movie start"* ]] ||
         { stop_wall; fail "movie start on a full disk answered '$answer'"; }
     frames 40 # 8 KiB hold about 30 keys

@@ -3,10 +3,18 @@
 #include "app/control/command_channel.h"
 #include "app/web/command_mailbox.h"
 #include "app/web/downloads.h"
+#include "app/web/movie_archive.h"
 #include "app/web/status_json.h"
+#include "app/path_recorder.h"
+#include "components/registry.h"
 
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <thread>
 
 namespace aw = aurorawall;
@@ -107,21 +115,133 @@ TEST(RanksJson, EachRanksFrameTimesAndHeartbeatAge)
               R"({"frame":6,"render_ms":30,"wait_ms":0.25,"heartbeat_age_s":null}]})");
 }
 
-TEST(RecordingForDownload, TheBaseSceneBecomesAbsolute)
+namespace {
+// A fresh folder under the system's temporary one.
+std::filesystem::path freshFolder(const std::string& name)
 {
-    const std::string text = "# comment\n[scene]\nbase = \"../config/scenes/a \\\"b\\\".toml\"\nstart_time_s = 0.0\n"
-                             "\n[[camera.key]]\nbase = \"x\"\n";
-    EXPECT_EQ(aw::app::web::recordingForDownload(text, "/out/rec"),
-              "# comment\n[scene]\nbase = \"/out/config/scenes/a \\\"b\\\".toml\"\nstart_time_s = 0.0\n"
-              "\n[[camera.key]]\nbase = \"x\"\n");
+    const std::filesystem::path folder = std::filesystem::temp_directory_path() /
+                                         ("aw-web-test-" + std::to_string(::getpid()) + "-" + name);
+    std::filesystem::remove_all(folder);
+    std::filesystem::create_directories(folder);
+    return folder;
 }
 
-TEST(RecordingForDownload, AnAbsoluteBaseOrNoneStaysAsItIs)
+std::string readText(const std::filesystem::path& path)
 {
-    const std::string absolute = "[scene]\nbase = \"/data/s.toml\"\ntime_step_s = 0.5";
-    EXPECT_EQ(aw::app::web::recordingForDownload(absolute, "/out"), absolute);
+    std::ifstream in(path, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+} // namespace
+
+// Every shipped scene (the derived ones two files deep) recorded, downloaded and saved elsewhere
+// reads as the recording does, with no other file: the same name, components, times, exposure and
+// camera keys, and no base.
+TEST(RecordingForDownload, EmbedsTheBaseScenesAndReadsAsTheRecording)
+{
+    namespace fs = std::filesystem;
+    const fs::path recorded = freshFolder("recorded"), elsewhere = freshFolder("elsewhere");
+    int scenes = 0;
+    for (const auto& entry : fs::directory_iterator(AW_SCENES_DIR)) {
+        if (entry.path().extension() != ".toml")
+            continue;
+        const std::string file = (recorded / "flight.toml").string();
+        aw::app::PathRecorder recorder(file, entry.path().string(), 100.0, 0.25);
+        aw::cluster::FrameState state;
+        state.timeS = 100.0;
+        state.cameraPositionKm = {6500.0, 10.0, 20.0};
+        recorder.add(state);
+        state.timeS = 100.25;
+        state.cameraPositionKm = {6500.5, 10.25, 20.125};
+        state.zoom = 1.5;
+        recorder.add(state);
+        recorder.write();
+        const std::string copy = (elsewhere / (entry.path().stem().string() + ".toml")).string();
+        std::ofstream(copy, std::ios::binary) << aw::app::web::recordingForDownload(readText(file), recorded.string());
+        EXPECT_EQ(readText(copy).find("base ="), std::string::npos) << copy;
+        const aw::scene::Scene original = aw::components::loadScene(file);
+        aw::scene::Scene embedded;
+        ASSERT_NO_THROW(embedded = aw::components::loadScene(copy)) << readText(copy);
+        EXPECT_EQ(embedded.name, original.name) << copy;
+        EXPECT_EQ(embedded.startTimeS, original.startTimeS);
+        EXPECT_EQ(embedded.timeStepS, original.timeStepS);
+        EXPECT_EQ(embedded.exposure, original.exposure);
+        EXPECT_EQ(embedded.planetRadiusKm, original.planetRadiusKm);
+        ASSERT_EQ(embedded.components().size(), original.components().size()) << copy;
+        for (std::size_t i = 0; i < original.components().size(); ++i)
+            EXPECT_EQ(embedded.components()[i]->name(), original.components()[i]->name());
+        EXPECT_EQ(embedded.camera.positionKm, original.camera.positionKm);
+        EXPECT_EQ(embedded.camera.path.empty(), original.camera.path.empty());
+        ++scenes;
+    }
+    EXPECT_GE(scenes, 10);
+    fs::remove_all(recorded);
+    fs::remove_all(elsewhere);
+}
+
+TEST(RecordingForDownload, TextWithoutABaseStaysAsItIs)
+{
     const std::string none = "[scene]\nstart_time_s = 1.0\n";
     EXPECT_EQ(aw::app::web::recordingForDownload(none, "/out"), none);
-    const std::string odd = "[scene]\nbase = \"a\\tb\"\n"; // an escape the recorder never writes
-    EXPECT_EQ(aw::app::web::recordingForDownload(odd, "/out"), odd);
+}
+
+TEST(RecordingForDownload, AMissingBaseSceneIsNamed)
+{
+    const std::string text = "[scene]\nbase = \"gone.toml\"\n";
+    try {
+        aw::app::web::recordingForDownload(text, "/nowhere");
+        FAIL() << "no error";
+    } catch (const std::runtime_error& e) {
+        EXPECT_NE(std::string(e.what()).find("/nowhere/gone.toml: the base scene cannot be read"), std::string::npos)
+            << e.what();
+    }
+}
+
+// A movie's folder as a zip: only the movie writer's files, in order, each stored whole under NAME/;
+// a client that goes away ends the archive with an error.
+TEST(MovieArchive, TheFramesAndTheirTimesAsAZip)
+{
+    namespace fs = std::filesystem;
+    const fs::path folder = freshFolder("movie");
+    std::ofstream(folder / "frame-000001.png", std::ios::binary) << "png one";
+    std::ofstream(folder / "frame-000000.png", std::ios::binary) << "png zero";
+    std::ofstream(folder / "frame-000000.exr", std::ios::binary) << std::string(100000, 'e');
+    std::ofstream(folder / "frames.csv", std::ios::binary) << "frame,time_s\n0,1\n1,2\n";
+    std::ofstream(folder / "frames.csv.tmp123", std::ios::binary) << "half";
+    std::ofstream(folder / "notes.txt", std::ios::binary) << "not the movie's";
+    fs::create_directory(folder / "frame-000002.png");
+    fs::create_symlink("/etc/passwd", folder / "frame-000003.png");
+    const std::vector<aw::app::web::MovieFile> files = aw::app::web::movieFiles(folder.string());
+    std::vector<std::string> names;
+    for (const auto& f : files)
+        names.push_back(f.name);
+    EXPECT_EQ(names, (std::vector<std::string>{"frame-000000.exr", "frame-000000.png", "frame-000001.png", "frames.csv"}));
+    std::string zip;
+    EXPECT_EQ(aw::app::web::writeMovieZip(folder.string(), files, "clip", [&](const char* data, std::size_t n) {
+                  zip.append(data, n);
+                  return true;
+              }),
+              "");
+    EXPECT_EQ(zip.substr(0, 4), std::string("PK\x03\x04", 4));
+    EXPECT_NE(zip.find("clip/frame-000001.png"), std::string::npos);
+    EXPECT_NE(zip.find(std::string(100000, 'e')), std::string::npos); // stored, not compressed
+    EXPECT_NE(zip.find(std::string("PK\x05\x06", 4)), std::string::npos); // the end of the central directory
+    std::size_t sent = 0;
+    EXPECT_EQ(aw::app::web::writeMovieZip(folder.string(), files, "clip", [&](const char*, std::size_t n) {
+                  sent += n;
+                  return sent < 70000;
+              }),
+              "the client went away");
+    fs::remove(folder / "frame-000001.png");
+    EXPECT_NE(aw::app::web::writeMovieZip(folder.string(), files, "clip", [](const char*, std::size_t) { return true; })
+                  .find("frame-000001.png"),
+              std::string::npos);
+    EXPECT_THROW(aw::app::web::movieFiles((folder / "none").string()), std::runtime_error);
+    fs::remove_all(folder);
+}
+
+TEST(StatusJson, AMemberAdded)
+{
+    EXPECT_EQ(aw::app::web::withMember("{\"frame\":1}", "movie_error", "frame 2: \"x\" full"),
+              "{\"frame\":1,\"movie_error\":\"frame 2: \\\"x\\\" full\"}");
+    EXPECT_EQ(aw::app::web::withMember("{}", "a", "b"), "{\"a\":\"b\"}");
 }

@@ -36,6 +36,14 @@ std::string quoted(const std::string& text)
 
 } // namespace
 
+std::string withMember(const std::string& json, const std::string& name, const std::string& value)
+{
+    const std::string member = quoted(name) + ":" + quoted(value);
+    if (json.size() < 2 || json.back() != '}')
+        throw std::invalid_argument("not a JSON object: " + json);
+    return json.substr(0, json.size() - 1) + (json == "{}" ? "" : ",") + member + "}";
+}
+
 std::string statusJson(const std::string& statusLine)
 {
     if (statusLine.rfind("ok ", 0) != 0)

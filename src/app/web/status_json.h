@@ -13,6 +13,10 @@ namespace aurorawall::app::web {
 // member "paused". Throws std::invalid_argument for a line that does not begin with "ok ".
 std::string statusJson(const std::string& statusLine);
 
+// A JSON object ("{...}", as statusJson gives) with the string member NAME: VALUE added at its end
+// (VALUE escaped: quotes and backslashes, control characters as spaces).
+std::string withMember(const std::string& json, const std::string& name, const std::string& value);
+
 // {"frame":F,"imbalance":I,"heartbeat_period_s":P,"ranks":[{"frame":..,"render_ms":..,"wait_ms":..,
 // "heartbeat_age_s":..},...]}: the master's frame and each rank's report of it, with each rank's
 // seconds since its last heartbeat reached the master (heartbeatAgesS, in rank order; 0 for the

@@ -3,6 +3,7 @@
 #include "app/console_view.h"
 #include "app/web/command_mailbox.h"
 #include "app/web/downloads.h"
+#include "app/web/movie_archive.h"
 #include "app/web/status_json.h"
 #include "common/input_error.h"
 #include "io/png.h"
@@ -15,6 +16,7 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -59,6 +61,7 @@ struct WebConsole::Impl {
     CommandMailbox mailbox;
     std::thread thread;
     int port = 0;
+    std::atomic<bool> stopping{false}; // the wall quits: a movie still being sent is cut short
 
     // The preview: handed over by the frame loop, encoded by the first request that finds it new.
     std::atomic<double> previewAskedS{-1e9}; // when a browser last asked for it (steady clock)
@@ -69,6 +72,13 @@ struct WebConsole::Impl {
     std::optional<cluster::FrameRecord> lastFrame; // GET /ranks: the last frame's reports (previewMutex)
     std::map<std::string, std::string> recordings;  // GET /recordings/NAME: name as recorded -> file (previewMutex)
     std::map<std::string, std::string> screenshots; // GET /screenshots/NAME: name as asked -> file (previewMutex)
+    struct Movie {
+        std::string folder;
+        bool running = false;
+        std::string error;
+    };
+    std::map<std::string, Movie> movies; // GET /movies/NAME: name as given -> its folder (previewMutex)
+    std::string movieError;              // the running movie's failure, for GET /status (previewMutex)
 
     bool authorized(const httplib::Request& req, httplib::Response& res) const
     {
@@ -96,7 +106,13 @@ struct WebConsole::Impl {
         const std::optional<std::string> answer = mailbox.ask("status", kAnswerTimeoutS);
         if (!answer)
             return reply(res, 503, "error the wall did not answer");
-        res.set_content(statusJson(*answer), "application/json");
+        std::string json = statusJson(*answer);
+        {
+            std::lock_guard<std::mutex> lock(previewMutex);
+            if (!movieError.empty()) // the page shows it; the stop answers it too
+                json = withMember(json, "movie_error", movieError);
+        }
+        res.set_content(json, "application/json");
     }
 
     void presets(httplib::Response& res) const
@@ -143,25 +159,36 @@ struct WebConsole::Impl {
         return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     }
 
-    static void attach(httplib::Response& res, const std::string& name, std::string&& bytes, const char* type)
+    // The file name a download is saved under: the name's last part, quotable.
+    static std::string savedName(const std::string& name)
     {
         std::string base = std::filesystem::path(name).filename().string();
-        std::replace_if(base.begin(), base.end(), [](char c) { return c == '"' || c == '\\'; }, '_'); // quoted below
-        res.set_header("Content-Disposition", "attachment; filename=\"" + base + "\"");
+        std::replace_if(base.begin(), base.end(),
+                        [](char c) { return c == '"' || c == '\\' || static_cast<unsigned char>(c) < 0x20; }, '_');
+        return base;
+    }
+
+    static void attach(httplib::Response& res, const std::string& name, std::string&& bytes, const char* type)
+    {
+        res.set_header("Content-Disposition", "attachment; filename=\"" + savedName(name) + "\"");
         res.set_header("Cache-Control", "no-store");
         res.set_content(std::move(bytes), type);
     }
 
-    // A recorded camera path, its base scene made absolute so that the copy replays anywhere on
-    // this machine.
+    // A recorded camera path with its base scene embedded, so that the copy replays on any machine.
     void recording(const std::string& name, httplib::Response& res)
     {
         std::string file;
         const std::string text = written(recordings, name, file);
         if (text.empty())
             return reply(res, 404, "error 404 no such recording (only the paths this wall recorded)");
-        attach(res, name, recordingForDownload(text, std::filesystem::path(file).parent_path().string()),
-               "application/toml");
+        std::string embedded;
+        try {
+            embedded = recordingForDownload(text, std::filesystem::path(file).parent_path().string());
+        } catch (const std::exception& e) {
+            return reply(res, 500, "error recording " + name + ": " + e.what());
+        }
+        attach(res, name, std::move(embedded), "application/toml");
     }
 
     void screenshot(const std::string& name, httplib::Response& res)
@@ -171,6 +198,52 @@ struct WebConsole::Impl {
         if (bytes.empty())
             return reply(res, 404, "error 404 no such screenshot (only the files this wall wrote for `screenshot`)");
         attach(res, name, std::move(bytes), "image/png");
+    }
+
+    // A stopped movie as NAME.zip (its frames and frames.csv under NAME/), streamed from its folder:
+    // never held in memory. A failure on the way cuts the transfer short (no final chunk, no zip
+    // directory), so the client sees an incomplete download, never a short zip taken for whole; so
+    // does the wall's quit (a long download does not hold it up).
+    void movie(const std::string& name, httplib::Response& res)
+    {
+        std::optional<Movie> found;
+        {
+            std::lock_guard<std::mutex> lock(previewMutex);
+            const auto it = movies.find(name);
+            if (it != movies.end())
+                found = it->second;
+        }
+        if (!found)
+            return reply(res, 404, "error 404 no such movie (only the movies this wall recorded with `movie start`)");
+        if (found->running)
+            return reply(res, 409, "error 409 movie " + name + " is still recording (`movie stop` first)");
+        std::vector<MovieFile> files;
+        try {
+            files = movieFiles(found->folder);
+        } catch (const std::exception& e) {
+            return reply(res, 410, "error 410 movie " + name + ": " + e.what());
+        }
+        if (files.empty())
+            return reply(res, 410, "error 410 movie " + name + ": its folder holds no frames any more");
+        const std::string base = savedName(name);
+        res.set_header("Content-Disposition", "attachment; filename=\"" + base + ".zip\"");
+        res.set_header("Cache-Control", "no-store");
+        res.set_chunked_content_provider(
+            "application/zip", [this, folder = found->folder, files, base](std::size_t, httplib::DataSink& sink) {
+                const auto send = [this, &sink](const char* data, std::size_t n) {
+                    return !stopping && sink.write(data, n);
+                };
+                const std::string error = writeMovieZip(folder, files, base, send);
+                if (error == kClientGone)
+                    return false; // a cancelled download, a client too slow, or the wall's quit
+                if (!error.empty()) {
+                    std::fprintf(stderr, "aurorawall render: GET /movies/%s: %s (the download was cut short)\n",
+                                 base.c_str(), error.c_str());
+                    return false;
+                }
+                sink.done();
+                return true;
+            });
     }
 
     void preview(httplib::Response& res)
@@ -241,6 +314,10 @@ WebConsole::WebConsole(WebSettings settings) : impl_(std::make_unique<Impl>())
         if (w.authorized(req, res))
             w.screenshot(req.matches[1], res);
     });
+    s.Get(R"(/movies/(.+))", [&w](const httplib::Request& req, httplib::Response& res) {
+        if (w.authorized(req, res))
+            w.movie(req.matches[1], res);
+    });
     s.Get("/preview.png", [&w](const httplib::Request& req, httplib::Response& res) {
         if (w.authorized(req, res))
             w.preview(res);
@@ -271,6 +348,7 @@ WebConsole::WebConsole(WebSettings settings) : impl_(std::make_unique<Impl>())
 WebConsole::~WebConsole()
 {
     impl_->mailbox.close(); // first: a handler waiting for the wall returns, so the server can stop
+    impl_->stopping = true;  // and a movie being sent ends
     impl_->server.stop();
     impl_->thread.join();
 }
@@ -292,6 +370,13 @@ void WebConsole::addScreenshot(const std::string& name, const std::string& file)
 {
     std::lock_guard<std::mutex> lock(impl_->previewMutex);
     impl_->screenshots[name] = file;
+}
+
+void WebConsole::showMovie(const std::string& name, const std::string& folder, bool running, const std::string& error)
+{
+    std::lock_guard<std::mutex> lock(impl_->previewMutex);
+    impl_->movies[name] = {folder, running, error};
+    impl_->movieError = running ? error : "";
 }
 
 int WebConsole::port() const { return impl_->port; }

@@ -4,7 +4,8 @@
 // web/ folder, POST /command, GET /status, GET /presets, GET /preview.png, GET /ranks (each
 // rank's last frame: the frame it drew, its render and wait times, the age of its last heartbeat;
 // the master's frame and the imbalance), GET /recordings/NAME (a camera path the wall recorded, its
-// base scene made absolute) and GET /screenshots/NAME (a screenshot the wall wrote).
+// base scene embedded), GET /screenshots/NAME (a screenshot the wall wrote) and GET /movies/NAME (a
+// movie the wall recorded, once stopped, as one zip streamed from its folder).
 // It never touches the wall itself: commands and status go through a CommandMailbox that the frame
 // loop serves with the control port's lines, and the preview is the last wall the frame loop
 // handed over, downsampled and encoded here, on request.
@@ -67,6 +68,10 @@ public:
     void addRecording(const std::string& name, const std::string& file);
     // a screenshot the wall has written (`screenshot NAME`), for GET /screenshots/NAME, the same way.
     void addScreenshot(const std::string& name, const std::string& file);
+    // a movie's course (`movie start NAME`, its first frame written; a frame that failed; `movie
+    // stop`), for GET /movies/NAME (served once stopped; refused with 409 while it runs) and for
+    // GET /status, which carries a running movie's failure as "movie_error".
+    void showMovie(const std::string& name, const std::string& folder, bool running, const std::string& error);
 
 private:
     struct Impl;
