@@ -175,16 +175,9 @@ void openGraphics(const cluster::MpiWorld& world, WallSession& s)
 void reportDevices(const cluster::MpiWorld& world, const WallSession& s)
 {
     const std::string mine = s.context->rendererName();
-    std::vector<int> sizes;
-    const std::vector<char> all = world.gatherBytes(std::vector<char>(mine.begin(), mine.end()), sizes);
+    const std::vector<std::string> devices = world.gatherStrings(mine);
     if (!world.isMaster())
         return;
-    std::vector<std::string> devices;
-    size_t at = 0;
-    for (int size : sizes) {
-        devices.emplace_back(all.data() + at, static_cast<size_t>(size));
-        at += static_cast<size_t>(size);
-    }
     const bool mixed = std::any_of(devices.begin(), devices.end(), [&](const std::string& d) { return d != mine; });
     if (mixed)
         std::fprintf(stderr, "aurorawall: warning: the ranks draw on different GL devices: %s; their tiles can "

@@ -61,18 +61,12 @@ int MpiWorld::agreedStatus(int myStatus, const std::string& myError, const std::
     }
     if (agreed == 0)
         return 0;
-    std::vector<char> mine(myError.begin(), myError.end());
-    std::vector<int> sizes;
-    const std::vector<char> all = gatherBytes(mine, sizes);
+    const std::vector<std::string> errors = gatherStrings(myError);
     if (rank_ == 0) {
-        int failures = 0;
-        for (int s : sizes)
-            failures += s > 0;
+        const auto failures = std::count_if(errors.begin(), errors.end(), [](const std::string& e) { return !e.empty(); });
         std::set<std::string> printed;
-        size_t at = 0;
         for (int r = 0; r < size_; ++r) {
-            const std::string message(all.data() + at, static_cast<size_t>(sizes[r]));
-            at += static_cast<size_t>(sizes[r]);
+            const std::string& message = errors[static_cast<size_t>(r)];
             if (message.empty() || !printed.insert(message).second)
                 continue;
             if (failures == size_ || size_ == 1)
@@ -147,6 +141,19 @@ std::vector<char> MpiWorld::gatherBytes(const std::vector<char>& mine, std::vect
     MPI_Gatherv(mine.data(), mySize, MPI_BYTE, all.data(), sizesOut.data(), displacements.data(), MPI_BYTE, 0,
                 MPI_COMM_WORLD);
     return all;
+}
+
+std::vector<std::string> MpiWorld::gatherStrings(const std::string& mine) const
+{
+    std::vector<int> sizes;
+    const std::vector<char> all = gatherBytes(std::vector<char>(mine.begin(), mine.end()), sizes);
+    std::vector<std::string> strings;
+    size_t at = 0;
+    for (int size : sizes) {
+        strings.emplace_back(all.data() + at, static_cast<size_t>(size));
+        at += static_cast<size_t>(size);
+    }
+    return strings;
 }
 
 void MpiWorld::abortJob(int status) const

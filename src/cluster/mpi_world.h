@@ -59,6 +59,8 @@ public:
     std::vector<char> gather(const std::vector<char>& mine) const;
     // Rank 0 receives every rank's bytes of any size, concatenated in rank order, with their sizes.
     std::vector<char> gatherBytes(const std::vector<char>& mine, std::vector<int>& sizesOut) const;
+    // Every rank's string on rank 0, in rank order (gatherBytes); the others get an empty vector.
+    std::vector<std::string> gatherStrings(const std::string& mine) const;
 
     // All ranks wait here before their windows flip, so that every screen of the wall shows the
     // same frame: the swap barrier (windows only; headless ranks are kept in step by the frame's

@@ -347,8 +347,9 @@ Scene SceneLoader::load(const std::string& path, const Registry& registry, int d
     Scene s;
     const bool derived = meta.has("base");
     if (derived) {
-        if (depth >= 8)
-            meta.fail("base", "scenes derive from each other more than 8 deep (a cycle?)");
+        if (depth >= kMaxBaseScenes)
+            meta.fail("base", "scenes derive from each other more than " + std::to_string(kMaxBaseScenes) +
+                                  " deep (a cycle?)");
         const std::string base = (std::filesystem::path(path).parent_path() / meta.string("base")).string();
         s = load(base, registry, depth + 1);
     }

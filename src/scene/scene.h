@@ -81,6 +81,10 @@ LocalFrame localFrame(double latitudeDeg, double longitudeDeg);
 // horizon and an azimuth clockwise from north (degrees): where a light appears from the site.
 glm::dvec3 directionInSky(double latitudeDeg, double longitudeDeg, double elevationDeg, double azimuthDeg);
 
+// How many base scenes a scene may derive from, one above the other ([scene] base): deeper is taken
+// for a cycle.
+constexpr int kMaxBaseScenes = 8;
+
 // Reads and validates a scene file whose components come from `registry`. Throws InputError
 // naming file and line.
 Scene loadScene(const std::string& path, const Registry& registry);

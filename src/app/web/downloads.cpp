@@ -1,4 +1,5 @@
 #include "app/web/downloads.h"
+#include "scene/scene.h"
 
 #include <toml.hpp>
 
@@ -19,8 +20,6 @@ namespace fs = std::filesystem;
 
 // Sorted tables: the embedded scene reads in the same order at every download.
 using Toml = toml::basic_value<toml::discard_comments, std::map, std::vector>;
-
-constexpr int kMaxDepth = 8; // as the scene reader's guard against cycles
 
 Toml parse(std::istream& in, const std::string& name)
 {
@@ -54,21 +53,22 @@ void mergeInto(Toml& base, const Toml& derived)
     }
 }
 
-// The scene `scene` (read from a file in `folder`) with its base scenes resolved into it.
-Toml resolved(Toml scene, const fs::path& folder, int depth)
+// The scene `file` (read from a file in `folder`) with its base scenes resolved into it.
+Toml resolved(Toml file, const fs::path& folder, int depth)
 {
-    if (!isTable(scene, "scene") || !scene.at("scene").contains("base"))
-        return scene;
-    if (depth >= kMaxDepth)
-        throw std::runtime_error("scenes derive from each other more than 8 deep (a cycle?)");
-    const Toml& baseName = scene.at("scene").at("base");
+    if (!isTable(file, "scene") || !file.at("scene").contains("base"))
+        return file;
+    if (depth >= scene::kMaxBaseScenes)
+        throw std::runtime_error("scenes derive from each other more than " + std::to_string(scene::kMaxBaseScenes) +
+                                 " deep (a cycle?)");
+    const Toml& baseName = file.at("scene").at("base");
     if (!baseName.is_string())
         throw std::runtime_error("[scene] base must be a string");
     const fs::path basePath = (folder / fs::path(baseName.as_string().str)).lexically_normal();
     Toml out = resolved(parseFile(basePath), basePath.parent_path(), depth + 1);
     if (!out.is_table() || !isTable(out, "scene"))
         throw std::runtime_error(basePath.string() + ": no [scene] table");
-    for (const auto& [key, value] : scene.as_table()) {
+    for (const auto& [key, value] : file.as_table()) {
         if (key == "scene") {
             for (const auto& [k, v] : value.as_table())
                 if (k != "base")
