@@ -14,6 +14,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <regex>
 #include <stdexcept>
 #include <utility>
 
@@ -138,6 +139,12 @@ int gatherWallImage(WallSession& session, const cluster::MpiWorld& world, io::Im
 MovieWriter::MovieWriter(std::string dir, bool exr, io::ToneMap toneMap)
     : dir_(std::move(dir)), exr_(exr), toneMap_(toneMap)
 {
+}
+
+bool MovieWriter::writes(const std::string& name)
+{
+    static const std::regex frame(R"(frame-[0-9]{6,20}\.(png|exr))");
+    return name == "frames.csv" || std::regex_match(name, frame);
 }
 
 void MovieWriter::write(const io::Image& canvas, const cluster::FrameState& state)

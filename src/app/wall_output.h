@@ -26,6 +26,8 @@ class MovieWriter {
 public:
     MovieWriter(std::string dir, bool exr, io::ToneMap toneMap);
     void write(const io::Image& canvas, const cluster::FrameState& state);
+    // Whether `name` is the name of a file a movie writer writes (frame-NNNNNN.png or .exr, frames.csv).
+    static bool writes(const std::string& name);
 
 private:
     std::string dir_;

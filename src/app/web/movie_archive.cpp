@@ -1,4 +1,5 @@
 #include "app/web/movie_archive.h"
+#include "app/wall_output.h"
 
 #include <zlib.h>
 
@@ -11,7 +12,6 @@
 #include <cstring>
 #include <ctime>
 #include <filesystem>
-#include <regex>
 #include <stdexcept>
 #include <system_error>
 
@@ -20,12 +20,6 @@ namespace aurorawall::app::web {
 namespace {
 
 namespace fs = std::filesystem;
-
-bool movieFileName(const std::string& name)
-{
-    static const std::regex frame(R"(frame-[0-9]{6,20}\.(png|exr))");
-    return name == "frames.csv" || std::regex_match(name, frame);
-}
 
 // The zip format's numbers: little-endian, of 2, 4 or 8 bytes (PKWARE's APPNOTE.TXT 6.3, 4.3).
 void put(std::string& out, std::uint64_t value, int bytes)
@@ -194,7 +188,7 @@ std::vector<MovieFile> movieFiles(const std::string& folder)
     for (; it != fs::directory_iterator(); it.increment(error)) {
         const std::string name = it->path().filename().string();
         std::error_code statError;
-        if (!movieFileName(name) || !fs::is_regular_file(it->symlink_status(statError)))
+        if (!MovieWriter::writes(name) || !fs::is_regular_file(it->symlink_status(statError)))
             continue;
         const std::uintmax_t bytes = fs::file_size(it->path(), statError);
         if (!statError)
