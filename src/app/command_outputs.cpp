@@ -152,10 +152,11 @@ void CommandOutputs::writeMovieFrame(const io::Image& canvas, int gatherStatus, 
         }
         return;
     }
-    if (!movie.error.empty() && onMovie)
+    if (movie.error.empty())
+        return;
+    if (onMovie)
         onMovie({movie.name, movie.folder, true, movie.error});
-    if (!movie.error.empty())
-        std::fprintf(stderr, "aurorawall render: movie: %s (no more frames; the wall goes on)\n", movie.error.c_str());
+    std::fprintf(stderr, "aurorawall render: movie: %s (no more frames; the wall goes on)\n", movie.error.c_str());
 }
 
 void CommandOutputs::finish(control::CommandChannel& channel)

@@ -168,10 +168,16 @@ struct WebConsole::Impl {
         return base;
     }
 
+    // A download: saved as `fileName` (already made quotable), never cached.
+    static void attachmentHeaders(httplib::Response& res, const std::string& fileName)
+    {
+        res.set_header("Content-Disposition", "attachment; filename=\"" + fileName + "\"");
+        res.set_header("Cache-Control", "no-store");
+    }
+
     static void attach(httplib::Response& res, const std::string& name, std::string&& bytes, const char* type)
     {
-        res.set_header("Content-Disposition", "attachment; filename=\"" + savedName(name) + "\"");
-        res.set_header("Cache-Control", "no-store");
+        attachmentHeaders(res, savedName(name));
         res.set_content(std::move(bytes), type);
     }
 
@@ -226,8 +232,7 @@ struct WebConsole::Impl {
         if (files.empty())
             return reply(res, 410, "error 410 movie " + name + ": its folder holds no frames any more");
         const std::string base = savedName(name);
-        res.set_header("Content-Disposition", "attachment; filename=\"" + base + ".zip\"");
-        res.set_header("Cache-Control", "no-store");
+        attachmentHeaders(res, base + ".zip");
         res.set_chunked_content_provider(
             "application/zip", [this, folder = found->folder, files, base](std::size_t, httplib::DataSink& sink) {
                 const auto send = [this, &sink](const char* data, std::size_t n) {
