@@ -118,10 +118,23 @@ vec2 intersectLinearBand(vec2 range, float xm, float rate, float tm, float lo, f
     return vec2(max(range.x, min(ta, tb)), min(range.y, max(ta, tb)));
 }
 
+// The fastest the footprint of the ray o + t d (km) can move, in km on the ground per km of ray, from the
+// point p onward within the aurora shell: the footprint n = x/|x| moves at |dn/dt| = sin ζ / r = b / r², b
+// = |x × d| the ray's (constant) distance of closest approach to the planet's centre, so R b / r² on the
+// ground. r only grows ahead of a rising ray (p·d ≥ 0); a falling one gets no lower than b or the shell's
+// bottom (1 km below it covers the float segment ends). At most 1 above the ground.
+float footprintSpeedBound(vec3 p, vec3 d)
+{
+    float r = length(p);
+    float b = length(cross(p, d));
+    float lowest = dot(p, d) >= 0.0 ? r : max(b, uPlanetRadiusKm + uAuroraBottomKm - 1.0);
+    return clamp(uPlanetRadiusKm * b / (lowest * lowest) * 1.0001, 1e-3, 1.0);
+}
+
 // What the footprint map says of the step [t0, t1] of the ray o + t d (km): skipKm, how much farther along
 // the ray the following steps' midpoints must lie before a curtain can reach them (the map's lower bound
-// from this midpoint less the largest reach and half a step: the footprint moves at most 1 km a ray km),
-// and the curtains that can reach the step: (curtain, polyline point) of the nearest curtain and, where
+// from this midpoint less the largest reach and half a step, over the footprint's largest speed,
+// footprintSpeedBound), and the curtains that can reach the step: (curtain, polyline point) of the nearest curtain and, where
 // curtains overlap, of the nearest point of another (the map's fourth channel,
 // src/components/aurora/physics/footprint_map.h); curtain −1 where there is none, or where that curtain
 // has no flux or lies farther than its reach + step/2 from the midpoint.
@@ -140,11 +153,13 @@ StepCandidates stepCandidates(vec3 o, vec3 d, float t0, float t1)
     StepCandidates step;
     step.candidates = vec4(-1.0);
     float len = t1 - t0;
-    vec3 n = normalize(o + 0.5 * (t0 + t1) * d);
+    vec3 p = o + 0.5 * (t0 + t1) * d;
+    vec3 n = normalize(p);
+    float speed = footprintSpeedBound(p, d);
     float outsideKm = footprintMapOutsideKm(n, uFootprintCentre, uFootprintAngularRadius, uPlanetRadiusKm);
     if (outsideKm > 0.0) {
         // The map's cap holds every curtain with its reach (CPU side), so nothing emits out here.
-        step.skipKm = outsideKm;
+        step.skipKm = outsideKm / speed;
         return step;
     }
     vec2 texel = footprintMapTexel(footprintMapCoord(n, uFootprintCentre, uFootprintEast, uFootprintAngularRadius),
@@ -153,7 +168,7 @@ StepCandidates stepCandidates(vec3 o, vec3 d, float t0, float t1)
     COUNT_WORK(w, 1);
     float lowerKm = footprintConservativeKm(nearest.z, uFootprintMarginKm);
     // A step whose midpoint lies farther than the largest reach + step/2 from every curtain emits nothing.
-    step.skipKm = lowerKm - uCurtainReachKm - 0.5 * uAuroraStepKm;
+    step.skipKm = (lowerKm - uCurtainReachKm - 0.5 * uAuroraStepKm) / speed;
     if (step.skipKm > 0.0)
         return step;
     // lowerKm bounds the distance to every curtain from below, so it tests each candidate's own reach.
@@ -278,7 +293,7 @@ vec3 integrateCurtains(vec3 o, vec3 d, float t0, float t1, vec4 candidates)
 // Emission integrated along the ray segment [seg.x, seg.y] in steps [t_k, t_k+1] on the grid
 // t_k = seg.x + k·uAuroraStepKm (the last step ends at seg.y), each integrated across the curtains that
 // can reach it by integrateCurtains. With skipping, long jumps where the footprint map proves no curtain
-// is near (moving s km changes the footprint position by at most s km above the ground) go over whole
+// is near (the footprint moves at most footprintSpeedBound km on the ground per km of ray) go over whole
 // steps only, landing on the same grid: the skipping march evaluates a subset of the naive march's
 // steps, and every step it leaves out has its midpoint farther than the largest reach + step/2 from every
 // curtain, where integrateCurtains adds nothing, so both give the same sum
