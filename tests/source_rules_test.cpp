@@ -240,8 +240,6 @@ std::set<std::string> componentsNamed(const std::string& folder, const std::vect
 
 // What still names a component outside its folders, to be replaced by roles.
 const std::set<std::string> kStillNamed = {
-    "shaders/components/aurora/curtain_profile.glsl: fluid_detail",
-    "shaders/components/aurora/flux_column.glsl: fluid_detail",
     "src/app/accuracy_command.cpp: sky",
     "src/components/airglow/airglow.cpp: atmosphere",
     "src/components/aurora/aurora.cpp: atmosphere",
