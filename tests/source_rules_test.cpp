@@ -240,7 +240,6 @@ std::set<std::string> componentsNamed(const std::string& folder, const std::vect
 
 // What still names a component outside its folders, to be replaced by roles.
 const std::set<std::string> kStillNamed = {
-    "src/app/accuracy_command.cpp: sky",
     "src/components/airglow/airglow.cpp: atmosphere",
     "src/components/aurora/aurora.cpp: atmosphere",
     "src/components/aurora/tools/aurora_accuracy.cpp: atmosphere",
