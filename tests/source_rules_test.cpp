@@ -240,20 +240,12 @@ std::set<std::string> componentsNamed(const std::string& folder, const std::vect
 
 // What still names a component outside its folders, to be replaced by roles.
 const std::set<std::string> kStillNamed = {
-    "src/components/airglow/airglow.cpp: atmosphere",
-    "src/components/aurora/aurora.cpp: atmosphere",
     "src/components/aurora/tools/aurora_accuracy.cpp: atmosphere",
     "src/components/aurora/tools/aurora_accuracy.cpp: fluid_detail",
     "src/components/aurora/tools/aurora_accuracy.cpp: planet_texture",
     "src/components/aurora/tools/aurora_accuracy.cpp: plasma",
     "src/components/aurora/tools/aurora_accuracy.cpp: sky",
     "src/components/aurora/tools/aurora_accuracy.cpp: stars",
-    "src/components/glory/glory.cpp: atmosphere",
-    "src/components/plasma/box_renderer.cpp: aurora",
-    "src/components/plasma/box_renderer.h: aurora",
-    "src/components/plasma/plasma.cpp: aurora",
-    "src/components/plasma/plasma_detail.cpp: aurora",
-    "src/components/plasma/plasma_detail.h: aurora",
 };
 
 } // namespace
