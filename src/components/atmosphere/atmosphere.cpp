@@ -32,9 +32,9 @@ public:
     Reference(const Settings& s, double radiusKm) : s_(s), radiusKm_(radiusKm) {}
     scene::f64::Ray shade(scene::f64::Ray ray) const override
     {
-        ray.atmosphere = scene::f64::lowerShellSegment(ray, radiusKm_, s_.topKm);
-        if (ray.atmosphere.x < ray.atmosphere.y) {
-            const double airmass = physics::atmosphere::exactAirmass(ray.origin, ray.direction, ray.atmosphere.x, ray.atmosphere.y,
+        ray.lowerAtmosphere = scene::f64::lowerShellSegment(ray, radiusKm_, s_.topKm);
+        if (ray.lowerAtmosphere.x < ray.lowerAtmosphere.y) {
+            const double airmass = physics::atmosphere::exactAirmass(ray.origin, ray.direction, ray.lowerAtmosphere.x, ray.lowerAtmosphere.y,
                                                 s_.scaleHeightKm, radiusKm_);
             ray.transmittance = glm::exp(-s_.extinctionPerKm * airmass);
             ray.radiance += s_.skyGlow * (1.0 - ray.transmittance);
