@@ -27,8 +27,8 @@ struct LowerAir {
 class LowerAtmosphereProvider {
 public:
     virtual ~LowerAtmosphereProvider() = default;
-    // Its air as the scene sets it (readable from the provider's read on: providers come first in
-    // the registry).
+    // Its air as the scene holds it; while a scene is read, from the provider's table on (the
+    // registry lists the provider before the components that ask).
     virtual LowerAir air(const scene::Scene& scene) const = 0;
 };
 
