@@ -12,8 +12,7 @@
 //   another component's folders (src/ and shaders/), comments included. Naming is a reference a
 //   program can follow: its folder ("components/NAME/"), its name as a string ("NAME"), its
 //   namespace ("NAME::") or its shader define (HAS_NAME); the words of physics (the planet frame,
-//   the lower atmosphere) are not. kStillNamed lists the references that remain to be replaced by
-//   roles; the list may only shrink.
+//   the lower atmosphere) are not.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -238,27 +237,6 @@ std::set<std::string> componentsNamed(const std::string& folder, const std::vect
     return found;
 }
 
-// What still names a component outside its folders, to be replaced by roles.
-const std::set<std::string> kStillNamed = {
-    "shaders/components/aurora/curtain_profile.glsl: fluid_detail",
-    "shaders/components/aurora/flux_column.glsl: fluid_detail",
-    "src/app/accuracy_command.cpp: sky",
-    "src/components/airglow/airglow.cpp: atmosphere",
-    "src/components/aurora/aurora.cpp: atmosphere",
-    "src/components/aurora/tools/aurora_accuracy.cpp: atmosphere",
-    "src/components/aurora/tools/aurora_accuracy.cpp: fluid_detail",
-    "src/components/aurora/tools/aurora_accuracy.cpp: planet_texture",
-    "src/components/aurora/tools/aurora_accuracy.cpp: plasma",
-    "src/components/aurora/tools/aurora_accuracy.cpp: sky",
-    "src/components/aurora/tools/aurora_accuracy.cpp: stars",
-    "src/components/glory/glory.cpp: atmosphere",
-    "src/components/plasma/box_renderer.cpp: aurora",
-    "src/components/plasma/box_renderer.h: aurora",
-    "src/components/plasma/plasma.cpp: aurora",
-    "src/components/plasma/plasma_detail.cpp: aurora",
-    "src/components/plasma/plasma_detail.h: aurora",
-};
-
 } // namespace
 
 TEST(SourceRules, NoFunctionInSrcIsLongerThan80Lines)
@@ -313,9 +291,5 @@ TEST(SourceRules, NoComponentIsNamedOutsideItsFolders)
         named.merge(componentsNamed("shaders/components/" + component, names, component));
     }
     for (const std::string& n : named)
-        if (!kStillNamed.count(n))
-            ADD_FAILURE() << n << ": a component named outside its folders (find it by a role)";
-    for (const std::string& n : kStillNamed)
-        if (!named.count(n))
-            ADD_FAILURE() << n << ": no longer named; remove it from kStillNamed";
+        ADD_FAILURE() << n << ": a component named outside its folders (find it by a role)";
 }

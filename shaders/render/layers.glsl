@@ -12,7 +12,7 @@ Ray beginRay(vec3 o, vec3 d, real altitude)
     ray.blocked = false;
     ray.groundT = real(-1.0);
     ray.end = real(1e30);
-    ray.atmosphere = vec2(real(1.0), real(-1.0));
+    ray.lowerAtmosphere = vec2(real(1.0), real(-1.0));
     ray.transmittance = vec3(real(1.0));
     ray.radiance = vec3(real(0.0));
     return ray;
@@ -46,14 +46,14 @@ vec2 lowerShellSegment(Ray ray, real R, real top)
 }
 
 // Does the part `segment` of the ray lie behind the lower atmosphere, so that its light is
-// attenuated by the atmosphere's transmittance on the way to the camera?
-bool behindAtmosphere(vec2 segment, vec2 atmosphere)
+// attenuated by its transmittance on the way to the camera?
+bool behindAtmosphere(vec2 segment, vec2 lowerAtmosphere)
 {
-    return atmosphere.x < atmosphere.y && segment.x >= atmosphere.y;
+    return lowerAtmosphere.x < lowerAtmosphere.y && segment.x >= lowerAtmosphere.y;
 }
 
 // The transmittance between the camera and an emitting part of the ray.
 vec3 transmittanceTo(Ray ray, vec2 segment)
 {
-    return behindAtmosphere(segment, ray.atmosphere) ? ray.transmittance : vec3(real(1.0));
+    return behindAtmosphere(segment, ray.lowerAtmosphere) ? ray.transmittance : vec3(real(1.0));
 }

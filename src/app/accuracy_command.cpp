@@ -5,6 +5,7 @@
 #include "cli/exit_status.h"
 #include "components/tools.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <ostream>
 #include <string>
@@ -23,8 +24,8 @@ const std::vector<std::string> kSceneOptions = {"wall", "size", "pixels", "frame
 const std::vector<std::string> kSceneOnlyOptions = {"pixels", "threads", "reference-step-km", "feature-costs",
                                                     "work-stats"};
 
+// After "Usage: aurorawall accuracy --airmass | --sky [options]\n" (the tables of physics::atmosphere).
 const char* kUsageHead =
-    "Usage: aurorawall accuracy --airmass | --sky [options]\n"
     "       aurorawall accuracy --scene FILE [--wall FILE] [--size WxH] [--pixels N] [--frame K] [--feature-costs]\n"
     "       aurorawall accuracy --scene FILE --work-stats [--wall FILE] [--size WxH] [--frame K]\n";
 const char* kUsageBody =
@@ -46,10 +47,27 @@ const char* kSceneUsage =
     "the mean per pixel and the mean over 8x4-pixel blocks of each block's largest (what a 32-lane warp\n"
     "waits for), for the full scene with its defaults (CSV).\n";
 
+// The options of the atmosphere physics' tables (physics::atmosphere::shaderTables), "--airmass" and
+// "--sky", joined by `separator`.
+std::string shaderTableOptions(const std::string& separator)
+{
+    std::string text;
+    for (const physics::atmosphere::ShaderTable& t : physics::atmosphere::shaderTables())
+        text += (text.empty() ? "--" : separator + "--") + t.option;
+    return text;
+}
+
+// Whether one of the atmosphere physics' tables is given.
+bool shaderTableGiven(const cli::CommandLine& cli)
+{
+    const auto& tables = physics::atmosphere::shaderTables();
+    return std::any_of(tables.begin(), tables.end(), [&](const auto& t) { return cli.given(t.option); });
+}
+
 // The usage text: the generic runs, then each component's table.
 std::string usage()
 {
-    std::string text = kUsageHead;
+    std::string text = "Usage: aurorawall accuracy " + shaderTableOptions(" | ") + " [options]\n" + kUsageHead;
     for (const components::AccuracyTable& t : components::componentAccuracyTables())
         text += "       aurorawall accuracy --" + std::string(t.option) + " FILE [--wall FILE] [--size WxH] [--runs N]\n";
     text += kUsageBody;
@@ -60,11 +78,14 @@ std::string usage()
     return text + "Exit status: 0 success, 1 runtime failure (a file, no GL context, a shader), 2 usage error.\n";
 }
 
-// The generic runs ("--airmass", "--sky" of the atmosphere physics, "--scene FILE"), then "--OPTION FILE" for
-// each component's table.
+// The generic runs (the atmosphere physics' tables, "--scene FILE"), then "--OPTION FILE" for each
+// component's table.
 std::string runChoices()
 {
-    std::vector<std::string> runs = {"--airmass", "--sky", "--scene FILE"};
+    std::vector<std::string> runs;
+    for (const physics::atmosphere::ShaderTable& t : physics::atmosphere::shaderTables())
+        runs.push_back("--" + std::string(t.option));
+    runs.push_back("--scene FILE");
     for (const components::AccuracyTable& t : components::componentAccuracyTables())
         runs.push_back("--" + std::string(t.option) + " FILE");
     std::string text = runs.front();
@@ -101,8 +122,7 @@ bool parseSize(const std::string& text, glm::ivec2& size)
 
 // The options of every kind of run; the initial values are the defaults --help shows.
 struct AccuracyOptions {
-    bool airmass = false, sky = false;
-    physics::atmosphere::AccuracyReportSettings shader;  // --airmass, --sky
+    physics::atmosphere::AccuracyReportSettings shader;  // the atmosphere physics' tables
     accuracy::SceneAccuracySettings scene; // --scene, a component's table
     std::string size = "320x180"; // --size, parsed into scene.sizePx
 };
@@ -111,9 +131,9 @@ void declareOptions(cli::CommandLine& cli, AccuracyOptions& o)
 {
     physics::atmosphere::AccuracyReportSettings& shader = o.shader;
     accuracy::SceneAccuracySettings& scene = o.scene;
+    for (const physics::atmosphere::ShaderTable& t : physics::atmosphere::shaderTables())
+        cli.add()(t.option, po::bool_switch(), t.help);
     cli.add()
-        ("airmass", po::bool_switch(&o.airmass), "the airmass methods")
-        ("sky", po::bool_switch(&o.sky), "the several-lights sky")
         ("scene", po::value(&scene.sceneFile), "the march's quality knobs on this scene file");
     for (const components::AccuracyTable& t : components::componentAccuracyTables())
         cli.add()(t.option, po::value(&scene.sceneFile), t.help);
@@ -144,9 +164,9 @@ void declareOptions(cli::CommandLine& cli, AccuracyOptions& o)
          "--scene: the march's work per pixel and per 8x4-pixel block instead of the knobs (CSV)");
 }
 
-// Throws a usage error unless exactly one kind of run is chosen (--airmass and --sky go together)
-// and every option given applies to it.
-void checkRunKind(const cli::CommandLine& cli, const AccuracyOptions& o)
+// Throws a usage error unless exactly one kind of run is chosen (the atmosphere physics' tables go
+// together) and every option given applies to it.
+void checkRunKind(const cli::CommandLine& cli)
 {
     const components::AccuracyTable* table = givenTable(cli);
     for (const components::AccuracyTable& t : components::componentAccuracyTables())
@@ -156,13 +176,13 @@ void checkRunKind(const cli::CommandLine& cli, const AccuracyOptions& o)
         throw cli.usageError("--" + std::string(table->option) + " cannot be combined with --scene");
     const std::string runName = table ? "--" + std::string(table->option) : "--scene";
     const bool sceneRun = cli.given("scene") || table;
-    if (sceneRun && (o.airmass || o.sky))
-        throw cli.usageError(runName + " cannot be combined with --airmass or --sky");
-    if (!sceneRun && !o.airmass && !o.sky)
+    if (sceneRun && shaderTableGiven(cli))
+        throw cli.usageError(runName + " cannot be combined with " + shaderTableOptions(" or "));
+    if (!sceneRun && !shaderTableGiven(cli))
         throw cli.usageError("choose " + runChoices());
     for (const std::string& option : sceneRun ? kShaderOptions : kSceneOptions)
         if (cli.given(option))
-            throw cli.usageError("--" + option + " applies to " + (sceneRun ? "--airmass and --sky" : "--scene") +
+            throw cli.usageError("--" + option + " applies to " + (sceneRun ? shaderTableOptions(" and ") : "--scene") +
                                  " only");
     if (table)
         for (const std::string& option : kSceneOnlyOptions)
@@ -196,7 +216,7 @@ void runSceneKnobs(const cli::CommandLine& cli, AccuracyOptions& o, std::ostream
         throw cli.usageError("--scene: no compiled-in component sweeps a scene's knobs");
 }
 
-// --airmass and/or --sky: the options checked, then the tables on one GL context.
+// The atmosphere physics' tables given: the options checked, then the tables on one GL context.
 void runShaderTables(const cli::CommandLine& cli, const AccuracyOptions& o, std::ostream& out)
 {
     const physics::atmosphere::AccuracyReportSettings& shader = o.shader;
@@ -204,10 +224,9 @@ void runShaderTables(const cli::CommandLine& cli, const AccuracyOptions& o, std:
         (cli.given("copies") && shader.copies < 1))
         throw cli.usageError("--repeat, --copies, --view-steps and --light-steps must be >= 1");
     const auto context = accuracy::openAccuracyContext(out);
-    if (o.airmass)
-        physics::atmosphere::printAirmassAccuracy(shader, out);
-    if (o.sky)
-        physics::atmosphere::printSkyAccuracy(shader, out);
+    for (const physics::atmosphere::ShaderTable& t : physics::atmosphere::shaderTables())
+        if (cli.given(t.option))
+            t.print(shader, out);
 }
 
 } // namespace
@@ -222,7 +241,7 @@ int runAccuracyCommand(int argc, char** argv, std::ostream& out, std::ostream& e
             out << cli.help();
             return;
         }
-        checkRunKind(cli, options);
+        checkRunKind(cli);
         if (cli.given("scene") || givenTable(cli))
             runSceneKnobs(cli, options, out);
         else

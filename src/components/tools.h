@@ -2,15 +2,18 @@
 // What components add to the aurorawall binary: their own commands (`aurorawall NAME ...`), their
 // tables of error against run time (`aurorawall accuracy --OPTION FILE`, and the sweep of
 // `accuracy --scene FILE`), their tables of a scene (`aurorawall tables NAME --scene FILE`) and their
-// tables of options (`aurorawall tables NAME --OPTION VALUE ...`). A component with a
+// tables of options (`aurorawall tables NAME --OPTION VALUE ...`), and its quality knobs that the sweep
+// of `accuracy --scene` varies besides those of the march's component. A component with a
 // tools/ folder defines `const Tools& NAME::tools::registered()` there; src/components/CMakeLists.txt
 // compiles them into aw_component_tools and lists them.
 #include "accuracy/scene_view.h"
 #include "cli/command_line.h"
+#include "scene/scene.h"
 
 #include <functional>
 #include <iosfwd>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace aurorawall::components {
@@ -56,6 +59,26 @@ struct OptionTable {
 // of the march against error and run time, the features' costs or the march's work.
 using SceneSweep = void (*)(const accuracy::SceneAccuracySettings& settings, std::ostream& out);
 
+// A quality knob of a listed component that the sweep of `accuracy --scene` varies alone, every other
+// knob at the scene's value.
+struct SweepKnob {
+    std::string name; // its rows' knob in the table
+    // Its values, coarse to fine: each one's label in the table and what sets it in a scene.
+    std::vector<std::pair<std::string, std::function<void(scene::Scene&)>>> values;
+    std::function<void(scene::Scene&)> setFinest; // the value of its references
+    std::string finest;                           // that value in words ("16 steps per cell")
+    // What its finest value refines. The model itself (the cells of a simulation whose frames the CPU
+    // reference samples too): its rows compare with both references made again at its finest. Or only
+    // the GPU's approximation of it (a march's steps, which the CPU reference integrates exactly): it is
+    // part of every row's GPU reference, and its own rows compare with the scene's defaults at its finest.
+    bool refinesModel = false;
+    std::string gpuReference; // what the table's head adds to the GPU reference (", ..."); empty: nothing
+    std::string cpuReference; // and to the CPU reference
+};
+
+// A component's sweep knobs on a scene: none when the scene does not list it (or its knobs do not apply).
+using SweepKnobs = std::vector<SweepKnob> (*)(const scene::Scene& scene);
+
 struct Tools {
     std::vector<Command> commands;
     std::vector<AccuracyTable> accuracyTables;
@@ -65,6 +88,7 @@ struct Tools {
     // at most about 100 characters, the first at most 45).
     const char* sceneSweepKnobs = "";
     std::vector<OptionTable> optionTables = {};
+    SweepKnobs sweepKnobs = nullptr;
 };
 
 // The commands of every compiled-in component, in alphabetical order of their names.
@@ -77,5 +101,7 @@ const std::vector<OptionTable>& componentOptionTables();
 SceneSweep componentSceneSweep();
 // Its sceneSweepKnobs, or "" when there is none.
 const char* componentSceneSweepKnobs();
+// The sweep knobs of every compiled-in component on `scene`, in registry order.
+std::vector<SweepKnob> componentSweepKnobs(const scene::Scene& scene);
 
 } // namespace aurorawall::components

@@ -18,9 +18,9 @@ float airmassSegment(vec3 o, vec3 d, float t0, float t1)
 // it and adds its glow.
 Ray shadeAtmosphere(Ray ray)
 {
-    ray.atmosphere = lowerShellSegment(ray, uPlanetRadiusKm, uAtmosphereTopKm);
-    if (ray.atmosphere.x < ray.atmosphere.y) {
-        float airmass = airmassSegment(ray.origin, ray.direction, ray.atmosphere.x, ray.atmosphere.y);
+    ray.lowerAtmosphere = lowerShellSegment(ray, uPlanetRadiusKm, uAtmosphereTopKm);
+    if (ray.lowerAtmosphere.x < ray.lowerAtmosphere.y) {
+        float airmass = airmassSegment(ray.origin, ray.direction, ray.lowerAtmosphere.x, ray.lowerAtmosphere.y);
         ray.transmittance = exp(-uExtinctionPerKm * airmass);
         ray.radiance += uSkyGlow * (vec3(1.0) - ray.transmittance);
     }

@@ -1,6 +1,6 @@
-// The electron flux across and along a curtain, relative to its peak: from the fluid_detail or the
-// plasma simulation's frames when the scene lists one, else a smooth Gaussian. s: arclength along the curtain
-// (km), u: signed distance across it (km), c: the curtain.
+// The electron flux across and along a curtain, relative to its peak: from the frames of the curtain
+// detail's provider (a fluid or plasma simulation) when the scene lists one, else a smooth Gaussian.
+// s: arclength along the curtain (km), u: signed distance across it (km), c: the curtain.
 const int MAX_CURTAINS = 16;
 // Per curtain: detail offset along the curtain (km, drift reduced on the CPU), detail phase
 // (0 smooth ... 1 turbulent), lateral scale (simulation sigma / curtain sigma, or 1 / sigma), -.
@@ -14,7 +14,7 @@ uniform vec4 uCurtainDetail[MAX_CURTAINS];
 #ifdef HAS_CURTAIN_DETAIL // a listed component provides the role "curtain detail" (its frames)
 uniform sampler2DArray uFluxTables; // the running integrals of the frames' flux (1/km) across and along at the
                                     // cell centres, both tables in one texture
-                                    // (src/components/fluid_detail/simulation/flux_columns.h)
+                                    // (src/components/roles/flux_columns.h)
 uniform vec4 uFluxStrip;  // strip length km, strip width km, frame count, peak scale
 uniform vec4 uFluxLayout; // cells along, cells across, column entries per layer, row entries per layer
 

@@ -3,7 +3,7 @@
 // float on the GPU, float or double on the CPU.
 
 // The running integrals C(a) = ∫_{−w/2}^{a} F da' and M(a) = ∫_{−w/2}^{a} a' F da' of a flux F that is
-// linear between cell centres (src/components/fluid_detail/simulation/flux_columns.h), from the
+// linear between cell centres (src/components/roles/flux_columns.h), from the
 // table's entry at the centre c below a: texel = (C(c), M(c), F(c), F(c + Δ) − F(c)), x = a − c in
 // [0, Δ]. With F = F(c) + k x', k = (F(c + Δ) − F(c))/Δ:
 //   C(a) = C(c) + F(c) x + k x²/2,   M(a) = M(c) + c (C(a) − C(c)) + F(c) x²/2 + k x³/3.

@@ -3,10 +3,10 @@
 #include "physics/atmosphere/airmass_exact.h"
 #include "physics/colour.h"
 #include "physics/emission_lines.h"
-#include "components/atmosphere/atmosphere.h"
 #include "gl/shader_program.h"
 #include "scene/ray_steps.h"
 #include "scene/scene.h"
+#include "components/roles/lower_atmosphere.h"
 #include "components/roles/names.h"
 
 #include <cmath>
@@ -107,14 +107,14 @@ public:
         if (s.layers.size() > Settings::kMaxLayers)
             t.fail("layer", "at most " + std::to_string(Settings::kMaxLayers) + " layers");
         // The layers are composited behind or in front of the lower atmosphere as a whole.
-        if (scene.has("atmosphere"))
+        if (const auto air = roles::lowerAir(scene))
             for (const Layer& l : s.layers)
-                if (layerProfile(l).baseKm < scene.settings<atmosphere::Settings>().topKm)
-                    t.fail("layer", "a layer's base (peak - 0.39 fwhm) must not be below atmosphere.top_km");
+                if (layerProfile(l).baseKm < air->topKm)
+                    t.fail("layer", "a layer's base (peak - 0.39 fwhm) must not be below " + air->topKey);
     }
     std::vector<std::string> shaderModules() const override
     {
-        // The airmass modules may also come from the atmosphere component: each is included once.
+        // The airmass modules may also come from the lower atmosphere's provider: each is included once.
         return {"physics/atmosphere/airmass_common.glsl", "physics/atmosphere/airmass_chapman.glsl",
                 "components/airglow/airglow_layer.glsl", "components/airglow/airglow.glsl"};
     }

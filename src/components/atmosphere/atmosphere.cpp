@@ -4,6 +4,7 @@
 #include "gl/shader_program.h"
 #include "scene/ray_steps.h"
 #include "scene/scene.h"
+#include "components/roles/lower_atmosphere.h"
 #include "components/roles/names.h"
 
 namespace aurorawall::components::atmosphere {
@@ -31,9 +32,9 @@ public:
     Reference(const Settings& s, double radiusKm) : s_(s), radiusKm_(radiusKm) {}
     scene::f64::Ray shade(scene::f64::Ray ray) const override
     {
-        ray.atmosphere = scene::f64::lowerShellSegment(ray, radiusKm_, s_.topKm);
-        if (ray.atmosphere.x < ray.atmosphere.y) {
-            const double airmass = physics::atmosphere::exactAirmass(ray.origin, ray.direction, ray.atmosphere.x, ray.atmosphere.y,
+        ray.lowerAtmosphere = scene::f64::lowerShellSegment(ray, radiusKm_, s_.topKm);
+        if (ray.lowerAtmosphere.x < ray.lowerAtmosphere.y) {
+            const double airmass = physics::atmosphere::exactAirmass(ray.origin, ray.direction, ray.lowerAtmosphere.x, ray.lowerAtmosphere.y,
                                                 s_.scaleHeightKm, radiusKm_);
             ray.transmittance = glm::exp(-s_.extinctionPerKm * airmass);
             ray.radiance += s_.skyGlow * (1.0 - ray.transmittance);
@@ -46,7 +47,7 @@ private:
     double radiusKm_;
 };
 
-class Atmosphere : public scene::ComponentWith<Settings> {
+class Atmosphere : public scene::ComponentWith<Settings>, public roles::LowerAtmosphereProvider {
 public:
     std::vector<std::string> needs() const override { return {roles::kGround}; }
     std::vector<std::string> provides() const override { return {roles::kLowerAtmosphere}; }
@@ -74,6 +75,11 @@ public:
                                                           const scene::ReferenceContext&) const override
     {
         return std::make_unique<Reference>(scene.settings<Settings>(), scene.planetRadiusKm);
+    }
+    roles::LowerAir air(const scene::Scene& scene) const override
+    {
+        const Settings& s = scene.settings<Settings>();
+        return {s.topKm, s.scaleHeightKm, s.extinctionPerKm, std::string(Settings::kComponent) + ".top_km"};
     }
 };
 

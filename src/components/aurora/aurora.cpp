@@ -3,13 +3,14 @@
 #include "components/aurora/aurora_reference.h"
 #include "components/aurora/aurora_tables.h"
 #include "components/aurora/curtain_field.h"
+#include "components/aurora/curtain_frames.h"
 #include "components/aurora/physics/curtain_geometry.h"
-#include "components/atmosphere/atmosphere.h"
 #include "components/roles/curtain_detail.h"
 #include "common/data_dir.h"
 #include "gl/context.h"
 #include "gl/shader_program.h"
 #include "scene/scene.h"
+#include "components/roles/lower_atmosphere.h"
 #include "components/roles/names.h"
 
 namespace aurorawall::components::aurora {
@@ -122,7 +123,7 @@ Curtain readCurtain(const config::TableReader& t, double planetRadiusKm, double 
     return c;
 }
 
-class Aurora : public scene::ComponentWith<Settings> {
+class Aurora : public scene::ComponentWith<Settings>, public roles::CurtainsProvider {
 public:
     std::vector<std::string> needs() const override { return {roles::kGround}; }
     std::vector<std::string> provides() const override { return {roles::kCurtains}; }
@@ -137,8 +138,8 @@ public:
         a.topKm = t.number("top_km", 1.0, 5000.0, a.topKm);
         if (a.topKm <= a.bottomKm)
             t.fail("top_km", "must be above aurora.bottom_km");
-        if (scene.has("atmosphere") && a.bottomKm < scene.settings<atmosphere::Settings>().topKm)
-            t.fail("bottom_km", "must not be below atmosphere.top_km (the layers are composited in order)");
+        if (const auto air = roles::lowerAir(scene); air && a.bottomKm < air->topKm)
+            t.fail("bottom_km", "must not be below " + air->topKey + " (the layers are composited in order)");
         a.stepKm = t.number("step_km", 0.05, 100.0, a.stepKm);
         a.resolveKm = t.number("resolve_km", 0.01, 100.0, a.resolveKm);
         a.resolveCells = t.number("resolve_cells", 0.05, 100.0, a.resolveCells);
@@ -185,7 +186,7 @@ public:
         const roles::FluxFrames* frames = roles::referenceFrames(context);
         if ((provider != nullptr) != (frames != nullptr))
             throw std::invalid_argument(
-                "the reference needs the detail frames exactly when the scene lists fluid_detail or plasma");
+                "the reference needs the detail frames exactly when the scene lists a provider of the curtain detail");
         std::optional<roles::DetailShape> shape;
         double stripWidthKm = 0.0;
         if (provider) {
@@ -194,6 +195,15 @@ public:
         }
         return std::make_unique<AuroraReference>(scene.settings<Settings>(), scene.planetRadiusKm, context.timeS,
                                                  context.stepKm, frames, shape, stripWidthKm);
+    }
+    roles::DetailPhase firstCurtainDetailPhase(const scene::Scene& scene, double stripLengthKm) const override
+    {
+        const std::vector<Curtain>& curtains = scene.settings<Settings>().curtains;
+        if (curtains.empty() || curtains.front().keys.empty())
+            return [](double) { return 0.0; };
+        return [curtain = curtains.front(), stripLengthKm](double timeS) {
+            return curtainAt(curtain, timeS, stripLengthKm).detailPhase;
+        };
     }
 };
 

@@ -2,11 +2,11 @@
 #include "components/glory/glory.h"
 
 #include "physics/atmosphere/airmass_exact.h"
-#include "components/atmosphere/atmosphere.h"
 #include "components/glory/mie/mie_coefficients.h"
 #include "components/glory/mie/mie_scattering.h"
 #include "physics/colour_matching.h"
 #include "components/glory/optics/water.h"
+#include "components/roles/lower_atmosphere.h"
 #include "components/roles/names.h"
 #include "gl/shader_program.h"
 #include "gl/texture.h"
@@ -184,10 +184,9 @@ public:
         const GloryTables tables = gloryTables(fine);
         grid_ = tables.phase.angles;
         colour_ = optics::gloryLinearSrgb(optics::gloryXyz(tables.phase, s.light));
-        if (scene.has("atmosphere")) {
-            const auto& air = scene.settings<atmosphere::Settings>();
-            air_ = {air.topKm, air.scaleHeightKm};
-            extinctionPerKm_ = air.extinctionPerKm;
+        if (const auto air = roles::lowerAir(scene)) {
+            air_ = {air->topKm, air->scaleHeightKm};
+            extinctionPerKm_ = air->extinctionPerKm;
         }
     }
     f64::Ray bound(f64::Ray ray) const override
@@ -242,7 +241,7 @@ private:
     glm::dvec3 lightRgb_;
     optics::AngleGrid grid_;
     std::vector<glm::dvec3> colour_;
-    glm::dvec2 air_{0.0};              // the atmosphere's top and scale height (km); top 0: none
+    glm::dvec2 air_{0.0};              // the lower atmosphere's top and scale height (km); top 0: none
     glm::dvec3 extinctionPerKm_{0.0};
 };
 
@@ -273,8 +272,8 @@ public:
         s.deckThicknessKm = t.numberAbove("deck_thickness_km", 0.0, 50.0, s.deckThicknessKm);
         if (s.deckThicknessKm > s.deckTopKm)
             t.fail("deck_thickness_km", "the deck's base (deck_top_km - deck_thickness_km) must not be below the ground");
-        if (scene.has("atmosphere") && s.deckTopKm >= scene.settings<atmosphere::Settings>().topKm)
-            t.fail("deck_top_km", "the deck must lie below atmosphere.top_km");
+        if (const auto air = roles::lowerAir(scene); air && s.deckTopKm >= air->topKm)
+            t.fail("deck_top_km", "the deck must lie below " + air->topKey);
         s.opticalThickness = t.numberAbove("optical_thickness", 0.0, 1000.0, s.opticalThickness);
         s.effectiveRadiusUm = t.number("effective_radius_um", 0.5, 50.0, s.effectiveRadiusUm);
         s.effectiveVariance = t.number("effective_variance", 0.0, 0.3, s.effectiveVariance);

@@ -15,8 +15,8 @@
 
 namespace aurorawall::components::plasma {
 
-BoxRenderer::BoxRenderer(const Settings& plasma, const aurora::Settings& aurora, double planetRadiusKm)
-    : PlasmaDetail(plasma, aurora), box_(plasma.kind == Settings::Kind::Box), settings_(plasma),
+BoxRenderer::BoxRenderer(const Settings& plasma, const scene::Scene& scene, double planetRadiusKm)
+    : PlasmaDetail(plasma, scene), box_(plasma.kind == Settings::Kind::Box), settings_(plasma),
       boxFrames_(gl::Texture::create3D(1, 1, 1, gl::TexelFormat::R32F, gl::Filter::Linear, gl::Wrap::Repeat))
 {
     boxSummary_ = PlasmaDetail::precomputationLog();

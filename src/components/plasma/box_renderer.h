@@ -14,7 +14,8 @@ namespace aurorawall::components::plasma {
 
 class BoxRenderer : public PlasmaDetail {
 public:
-    BoxRenderer(const Settings& plasma, const aurora::Settings& aurora, double planetRadiusKm);
+    // scene: for the curtain detail (PlasmaDetail).
+    BoxRenderer(const Settings& plasma, const scene::Scene& scene, double planetRadiusKm);
 
     std::string precomputationLog() const override { return boxSummary_; }
     // The box's centre from the camera (double, then float), its frame position at this time

@@ -139,8 +139,7 @@ public:
     std::unique_ptr<scene::ComponentRenderer> makeRenderer(const scene::Scene& scene,
                                                            const scene::FindRenderer&) const override
     {
-        return std::make_unique<BoxRenderer>(scene.settings<Settings>(), scene.settings<aurora::Settings>(),
-                                             scene.planetRadiusKm);
+        return std::make_unique<BoxRenderer>(scene.settings<Settings>(), scene, scene.planetRadiusKm);
     }
     // The box's emission (box_reference.h); with kind = "curls" nothing of its own.
     std::unique_ptr<scene::ReferenceShader> makeReference(const scene::Scene& scene,

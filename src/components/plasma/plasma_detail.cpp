@@ -1,7 +1,6 @@
 #include "components/plasma/plasma_detail.h"
 
 #include "common/data_dir.h"
-#include "components/aurora/curtain_frames.h"
 #include "components/plasma/simulation/plasma_parameters.h"
 #include "gl/functions.h"
 #include "gl/shader_program.h"
@@ -14,11 +13,9 @@ namespace aurorawall::components::plasma {
 
 namespace pic = aurorawall::components::plasma::simulation;
 
-PlasmaDetail::PlasmaDetail(const Settings& plasma, const aurora::Settings& aurora)
-    : spec_(sheetFramesSpec(plasma))
+PlasmaDetail::PlasmaDetail(const Settings& plasma, const scene::Scene& scene)
+    : spec_(sheetFramesSpec(plasma)), phase_(roles::firstCurtainDetailPhase(scene, spec_.sheet.lengthM * 1e-3))
 {
-    if (!aurora.curtains.empty())
-        curtain_ = aurora.curtains.front();
     const auto start = std::chrono::steady_clock::now();
     roles::FluxFrames f;
     std::string outcome;
@@ -68,9 +65,7 @@ void PlasmaDetail::setFrame(gl::Program&, const cluster::FrameState& frame)
 {
     if (!live_)
         return;
-    const double phase =
-        curtain_.keys.empty() ? 0.0 : aurora::curtainAt(curtain_, frame.timeS, spec_.sheet.lengthM * 1e-3).detailPhase;
-    live_->showStep(curlsStep(spec_, phase), [this](const std::vector<float>& density) {
+    live_->showStep(curlsStep(spec_, phase_(frame.timeS)), [this](const std::vector<float>& density) {
         liveFrame_.flux = density;
         columns_.upload(liveFrame_);
     });

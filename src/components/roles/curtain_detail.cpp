@@ -30,6 +30,11 @@ const CurtainDetailProvider* curtainDetailProvider(const scene::Scene& scene)
     return dynamic_cast<const CurtainDetailProvider*>(scene.provider(kCurtainDetail));
 }
 
+DetailPhase firstCurtainDetailPhase(const scene::Scene& scene, double stripLengthKm)
+{
+    return dynamic_cast<const CurtainsProvider&>(*scene.provider(kCurtains)).firstCurtainDetailPhase(scene, stripLengthKm);
+}
+
 std::shared_ptr<const roles::FluxFrames> curtainDetailFrames(const scene::Scene& scene)
 {
     const CurtainDetailProvider* provider = curtainDetailProvider(scene);

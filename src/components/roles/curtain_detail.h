@@ -6,6 +6,7 @@
 #include "components/roles/flux_frames.h"
 #include "scene/component.h"
 
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -57,6 +58,23 @@ public:
 const CurtainDetailProvider* curtainDetailProvider(const scene::Scene& scene);
 // Its frames (CurtainDetailProvider::referenceFrames), null when the scene lists no provider.
 std::shared_ptr<const roles::FluxFrames> curtainDetailFrames(const scene::Scene& scene);
+
+// The detail phase (0 smooth ... 1 turbulent) of a curtain over animation time (s).
+using DetailPhase = std::function<double(double timeS)>;
+
+// The provider of the curtains, as a provider of their detail sees them (a provider derives from it
+// besides scene::Component).
+class CurtainsProvider {
+public:
+    virtual ~CurtainsProvider() = default;
+    // The detail phase of the scene's first curtain, its detail on a strip `stripLengthKm` long (km):
+    // 0 at every time when the scene has no curtain. It holds a copy of what it needs of the scene.
+    virtual DetailPhase firstCurtainDetailPhase(const scene::Scene& scene, double stripLengthKm) const = 0;
+};
+
+// The first curtain's detail phase of the scene's provider of the curtains (the provider of the
+// detail needs it, so the scene lists one).
+DetailPhase firstCurtainDetailPhase(const scene::Scene& scene, double stripLengthKm);
 
 // The reference's role data (ReferenceContext::roleData) holds the frames the aurora's reference
 // samples under kCurtainDetail, as a `const roles::FluxFrames*`: the provider's own or others on the

@@ -8,8 +8,4 @@ namespace aurorawall::components::roles {
 // planetRadiusKm (set by its provider when it reads its table).
 inline constexpr const char* kGround = "ground";
 
-// The lower atmosphere: the dense air whose extinction and scattering the ray's later steps see
-// through (scene/shell.h, Shell::LowerAtmosphere).
-inline constexpr const char* kLowerAtmosphere = "lower atmosphere";
-
 } // namespace aurorawall::components::roles

@@ -3,7 +3,7 @@
 #include "physics/constants.h"
 #include "gl/shader_program.h"
 #include "scene/scene.h"
-#include "components/roles/names.h"
+#include "components/roles/lower_atmosphere.h"
 
 #include <cmath>
 

@@ -308,4 +308,11 @@ void printSkyAccuracy(const AccuracyReportSettings& settings, std::ostream& out)
     }
 }
 
+const std::vector<ShaderTable>& shaderTables()
+{
+    static const std::vector<ShaderTable> tables = {{"airmass", "the airmass methods", printAirmassAccuracy},
+                                                    {"sky", "the several-lights sky", printSkyAccuracy}};
+    return tables;
+}
+
 } // namespace aurorawall::physics::atmosphere

@@ -27,4 +27,14 @@ struct AccuracyReportSettings {
 void printAirmassAccuracy(const AccuracyReportSettings& settings, std::ostream& out);
 void printSkyAccuracy(const AccuracyReportSettings& settings, std::ostream& out);
 
+// A table of `aurorawall accuracy --OPTION` that takes no scene: one of the two above.
+struct ShaderTable {
+    const char* option; // without the dashes
+    const char* help;   // its line in `accuracy --help`
+    void (*print)(const AccuracyReportSettings& settings, std::ostream& out);
+};
+
+// The airmass methods, then the several-lights sky.
+const std::vector<ShaderTable>& shaderTables();
+
 } // namespace aurorawall::physics::atmosphere

@@ -1,15 +1,13 @@
 #include "components/aurora/tools/aurora_accuracy.h"
 
 #include "common/data_dir.h"
-#include "components/fluid_detail/simulation/curtain_detail.h"
 #include "gl/context.h"
 #include "gl/float_target.h"
 #include "gl/full_screen_triangle.h"
 #include "components/aurora/aurora.h"
-#include "components/fluid_detail/curtain_detail.h"
-#include "components/plasma/plasma.h"
 #include "components/registry.h"
 #include "components/roles/curtain_detail.h"
+#include "components/tools.h"
 #include "render/tile_renderer.h"
 
 #include <algorithm>
@@ -23,8 +21,6 @@
 namespace aurorawall::components::aurora::tools {
 
 using AuroraSettings = components::aurora::Settings;
-using FluidSettings = components::fluid_detail::Settings;
-using PlasmaSettings = components::plasma::Settings;
 using accuracy::openAccuracyContext;
 using accuracy::pixelRadiance;
 using accuracy::referencePixels;
@@ -36,16 +32,6 @@ using accuracy::SceneView;
 using accuracy::sceneView;
 using accuracy::TimedRender;
 
-namespace {
-
-scene::Scene without(scene::Scene s, const std::string& component)
-{
-    s.remove(component);
-    return s;
-}
-
-} // namespace
-
 void applyFinestSettings(scene::Scene& s)
 {
     s.settings<AuroraSettings>().stepKm = 0.25;
@@ -56,8 +42,9 @@ void applyFinestSettings(scene::Scene& s)
     s.settings<AuroraSettings>().tableAltitudeStepKm = 0.25;
     s.settings<AuroraSettings>().tableEnergyCount = 128;
     s.settings<AuroraSettings>().polylineSpacingKm = 1.0;
-    if (s.has("plasma"))
-        s.settings<PlasmaSettings>().boxStepsPerCell = 16;
+    for (const SweepKnob& knob : componentSweepKnobs(s))
+        if (!knob.refinesModel)
+            knob.setFinest(s);
 }
 
 namespace {
@@ -67,15 +54,8 @@ struct Variant {
     std::string knob;
     std::string value;
     std::function<void(scene::Scene&)> apply;
+    int knobIndex = -1; // the other component's knob (componentSweepKnobs) it sets; -1: the aurora's
 };
-
-void finestFluid(scene::Scene& s)
-{
-    if (!s.has("fluid_detail"))
-        return;
-    s.settings<FluidSettings>().cellsAlong = 1024;
-    s.settings<FluidSettings>().cellsAcross = 256;
-}
 
 std::string number(double v)
 {
@@ -84,7 +64,8 @@ std::string number(double v)
     return text;
 }
 
-std::vector<Variant> knobVariants()
+// The aurora's knobs, then the other components' (their own references), then the polylines'.
+std::vector<Variant> knobVariants(const std::vector<SweepKnob>& others)
 {
     std::vector<Variant> v;
     v.push_back({"default", "-", [](scene::Scene&) {}});
@@ -104,17 +85,9 @@ std::vector<Variant> knobVariants()
                      [step](scene::Scene& s) { s.settings<AuroraSettings>().tableAltitudeStepKm = step; }});
     for (int count : {32, 64, 128})
         v.push_back({"table_energy_count", number(count), [count](scene::Scene& s) { s.settings<AuroraSettings>().tableEnergyCount = count; }});
-    for (int along : {256, 512, 1024})
-        v.push_back({"fluid_cells", number(along) + "x" + number(along / 4), [along](scene::Scene& s) {
-                         if (!s.has("fluid_detail"))
-                             return;
-                         s.settings<FluidSettings>().cellsAlong = along;
-                         s.settings<FluidSettings>().cellsAcross = along / 4;
-                     }});
-    for (int steps : {1, 2, 4, 8, 16})
-        v.push_back({"box_steps_per_cell", number(steps), [steps](scene::Scene& s) {
-                         s.settings<PlasmaSettings>().boxStepsPerCell = steps;
-                     }});
+    for (std::size_t k = 0; k < others.size(); ++k)
+        for (const auto& [label, set] : others[k].values)
+            v.push_back({others[k].name, label, set, static_cast<int>(k)});
     for (double spacing : {1.0, 2.0, 4.0})
         v.push_back({"polyline_spacing_km", number(spacing),
                      [spacing](scene::Scene& s) { s.settings<AuroraSettings>().polylineSpacingKm = spacing; }});
@@ -127,7 +100,7 @@ struct Feature {
     const char* paper; // the paper's change in frame time, or "-"
 };
 
-std::vector<Feature> featureVariants()
+std::vector<Feature> auroraFeatures()
 {
     return {
         {{"default", "-", [](scene::Scene&) {}}, "-"},
@@ -143,11 +116,45 @@ std::vector<Feature> featureVariants()
               s.settings<AuroraSettings>().tableAltitudeStepKm *= 0.5;
               s.settings<AuroraSettings>().tableEnergyCount *= 2;
           }}, "-"},
-        {{"no fluid detail", "", [](scene::Scene& s) { s = without(s, "fluid_detail"); }}, "-"},
-        {{"no planet texture", "", [](scene::Scene& s) { s = without(s, "planet_texture"); }}, "-"},
-        {{"no atmosphere", "", [](scene::Scene& s) { s = without(without(s, "atmosphere"), "sky"); }}, "-"},
-        {{"no stars", "", [](scene::Scene& s) { s = without(s, "stars"); }}, "-"},
     };
+}
+
+// Whether the scene lists a component, or a provider of a role, for each of `c`'s needs.
+bool needsMet(const scene::Scene& s, const scene::Component& c)
+{
+    for (const std::string& needed : c.needs())
+        if (!s.has(needed) && !s.provider(needed))
+            return false;
+    return true;
+}
+
+// The scene without `component`, and without what then misses something it needs (the scattering
+// sky without the air it scatters in).
+scene::Scene without(scene::Scene s, const std::string& component)
+{
+    s.remove(component);
+    for (;;) {
+        const std::vector<const scene::Component*>& listed = s.components();
+        const auto unmet = std::find_if(listed.begin(), listed.end(), [&](const scene::Component* c) { return !needsMet(s, *c); });
+        if (unmet == listed.end())
+            return s;
+        s.remove((*unmet)->name());
+    }
+}
+
+// The aurora's features, then each other listed component left out ("no NAME", with what needs it)
+// that the aurora can do without, in registry order.
+std::vector<Feature> featureVariants(const scene::Scene& base)
+{
+    std::vector<Feature> features = auroraFeatures();
+    for (const scene::Component* c : base.components()) {
+        std::string name = c->name();
+        if (!without(base, name).has(AuroraSettings::kComponent))
+            continue;
+        std::replace(name.begin(), name.end(), '_', ' ');
+        features.push_back({{"no " + name, "", [component = c->name()](scene::Scene& s) { s = without(s, component); }}, "-"});
+    }
+    return features;
 }
 
 std::vector<glm::dvec3> imagePixels(const io::Image& image, const std::vector<glm::ivec2>& pixels)
@@ -187,8 +194,8 @@ double secondsSince(std::chrono::steady_clock::time_point start)
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-// The two references of one fluid resolution: the GPU render at the finest settings and the CPU
-// reference at the sampled pixels.
+// The two references of a knob's rows: the GPU render at the finest settings and the CPU reference
+// at the sampled pixels.
 struct References {
     scene::Scene scene;
     TimedRender gpu;
@@ -208,32 +215,34 @@ void computeReferences(References& r, const SceneView& view, const std::vector<g
     r.cpuSeconds = secondsSince(start);
 }
 
-void printKnobTable(const scene::Scene& base, const SceneView& view, const std::string& shaderDir,
-                    const SceneAccuracySettings& settings, std::ostream& out)
+// The references of another component's knob (SweepKnob::refinesModel): both made again at its finest
+// on top of the common GPU reference's settings, or the GPU's alone from the scene's defaults.
+References knobReferences(const SweepKnob& knob, const scene::Scene& base, const References& common, const SceneView& view,
+                          const std::vector<glm::ivec2>& sampled, const std::string& shaderDir,
+                          const SceneAccuracySettings& settings)
+{
+    References r{base, {}, common.cpu, common.cpuSeconds};
+    if (knob.refinesModel)
+        applyFinestSettings(r.scene);
+    knob.setFinest(r.scene);
+    r.gpu = renderView(r.scene, view, shaderDir, 0);
+    if (knob.refinesModel)
+        computeReferences(r, view, sampled, settings);
+    return r;
+}
+
+// The table's head: the noise floor and both references, and what the other components' knobs compare with.
+void printReferences(const scene::Scene& base, const References& common, const std::vector<glm::ivec2>& sampled,
+                     const std::vector<SweepKnob>& knobs, const SceneAccuracySettings& settings, std::ostream& out)
 {
     const double floor = 1.0 / (255.0 * base.exposure);
-    const std::vector<glm::ivec2> all = allPixels(settings.sizePx);
-
-    References common{base, {}, {}, 0.0}, fluid{base, {}, {}, 0.0};
-    applyFinestSettings(common.scene);
-    applyFinestSettings(fluid.scene);
-    finestFluid(fluid.scene);
-    const bool hasFluid = base.has("fluid_detail");
-    const bool hasBox = base.has("plasma") && base.settings<PlasmaSettings>().kind == PlasmaSettings::Kind::Box;
-    common.gpu = renderView(common.scene, view, shaderDir, 0);
-    if (hasFluid)
-        fluid.gpu = renderView(fluid.scene, view, shaderDir, 0);
-    const std::vector<glm::ivec2> sampled = samplePixels(common.gpu.image, floor, settings.pixels);
-    computeReferences(common, view, sampled, settings);
-    if (hasFluid)
-        computeReferences(fluid, view, sampled, settings);
-    // The box's march alone: the scene's defaults with the finest march as the GPU reference.
-    References box{base, {}, common.cpu, common.cpuSeconds};
-    if (hasBox) {
-        box.scene.settings<PlasmaSettings>().boxStepsPerCell = 16;
-        box.gpu = renderView(box.scene, view, shaderDir, 0);
+    std::string gpuExtras, cpuExtras, notes;
+    for (const SweepKnob& k : knobs) {
+        gpuExtras += k.gpuReference;
+        cpuExtras += k.cpuReference;
+        notes += "; for " + k.name + (k.refinesModel ? " both references use " : " the GPU reference is the scene's defaults with ") +
+                 k.finest;
     }
-
     const RelativeError gpuVsCpu = relativeError(imagePixels(common.gpu.image, sampled), common.cpu, floor);
     char line[768];
     std::snprintf(line, sizeof line,
@@ -241,24 +250,38 @@ void printKnobTable(const scene::Scene& base, const SceneView& view, const std::
                   "GPU reference: step 0.25 km, skipping, footprint map 1024, tables 0.25 km x 128 energies, "
                   "polylines 1 km%s; its error against the CPU reference at the %zu sampled pixels: rms %.3g, max %.3g\n"
                   "CPU reference: double, midpoint rule %.3g km where a curtain is in reach%s; %.1f s on %d threads",
-                  floor, base.exposure, hasBox ? ", plasma box 16 steps per cell" : "", sampled.size(), gpuVsCpu.rms,
-                  gpuVsCpu.max, settings.referenceStepKm, hasBox ? ", the plasma box's column exact" : "",
-                  common.cpuSeconds, settings.threads);
-    out << line << (hasFluid ? "; for fluid_cells both references use 1024x256 fluid cells" : "")
-        << (hasBox ? "; for box_steps_per_cell the GPU reference is the scene's defaults with 16 steps per cell" : "")
-        << "\n";
+                  floor, base.exposure, gpuExtras.c_str(), sampled.size(), gpuVsCpu.rms, gpuVsCpu.max,
+                  settings.referenceStepKm, cpuExtras.c_str(), common.cpuSeconds, settings.threads);
+    out << line << notes << "\n";
+}
+
+void printKnobTable(const scene::Scene& base, const SceneView& view, const std::string& shaderDir,
+                    const SceneAccuracySettings& settings, std::ostream& out)
+{
+    const double floor = 1.0 / (255.0 * base.exposure);
+    const std::vector<glm::ivec2> all = allPixels(settings.sizePx);
+    const std::vector<SweepKnob> knobs = componentSweepKnobs(base);
+
+    References common{base, {}, {}, 0.0};
+    applyFinestSettings(common.scene);
+    common.gpu = renderView(common.scene, view, shaderDir, 0);
+    const std::vector<glm::ivec2> sampled = samplePixels(common.gpu.image, floor, settings.pixels);
+    computeReferences(common, view, sampled, settings);
+    std::vector<References> own;
+    for (const SweepKnob& knob : knobs)
+        own.push_back(knobReferences(knob, base, common, view, sampled, shaderDir, settings));
+
+    printReferences(base, common, sampled, knobs, settings, out);
     out << "knob                     value     rms_rel_gpu max_rel_gpu rms_rel_cpu max_rel_cpu ms_per_frame\n";
-    for (const Variant& variant : knobVariants()) {
-        const bool fluidKnob = variant.knob == "fluid_cells", boxKnob = variant.knob == "box_steps_per_cell";
-        if ((fluidKnob && !hasFluid) || (boxKnob && !hasBox))
-            continue;
-        const References& ref = fluidKnob ? fluid : boxKnob ? box : common;
+    for (const Variant& variant : knobVariants(knobs)) {
+        const References& ref = variant.knobIndex < 0 ? common : own[variant.knobIndex];
         scene::Scene s = base;
         variant.apply(s);
         const TimedRender render = renderView(s, view, shaderDir, settings.runs);
         const RelativeError gpu =
             relativeError(imagePixels(render.image, all), imagePixels(ref.gpu.image, all), floor);
         const RelativeError cpu = relativeError(imagePixels(render.image, sampled), ref.cpu, floor);
+        char line[256];
         std::snprintf(line, sizeof line, "%-24s %-9s %-11.3g %-11.3g %-11.3g %-11.3g %.1f\n", variant.knob.c_str(),
                       variant.value.c_str(), gpu.rms, gpu.max, cpu.rms, cpu.max, render.msPerFrame);
         out << line << std::flush;
@@ -270,7 +293,7 @@ void printFeatureCosts(const scene::Scene& base, const SceneView& view, const st
 {
     out << "feature                                   ms_per_frame change   paper\n";
     double defaultMs = 0.0;
-    for (const Feature& feature : featureVariants()) {
+    for (const Feature& feature : featureVariants(base)) {
         scene::Scene s = base;
         feature.variant.apply(s);
         const double ms = renderView(s, view, shaderDir, settings.runs).msPerFrame;

@@ -1,8 +1,8 @@
 #pragma once
 // The aurora's sweep of `aurorawall accuracy --scene FILE` (components/tools.h): error against run
-// time of the march's quality knobs (with fluid_cells and box_steps_per_cell where the scene has
-// fluid_detail or the plasma box) and the cost of each feature (Lawlor & Genetti's table 2), on one
-// headless EGL context in one process (no MPI), with the means of accuracy/scene_view.h.
+// time of the march's quality knobs (with the other listed components' knobs, components::SweepKnob)
+// and the cost of each feature (Lawlor & Genetti's table 2), on one headless EGL context in one
+// process (no MPI), with the means of accuracy/scene_view.h.
 #include "accuracy/scene_view.h"
 #include "scene/scene.h"
 
@@ -11,10 +11,12 @@
 namespace aurorawall::components::aurora::tools {
 
 // The GPU reference's settings: 0.25 km steps, the finest tables, footprint map and polylines of the
-// knob ranges, 16 steps per cell in the plasma box. With empty-space skipping, which gives the naive
-// march's image (tests/render/skipping_test.cpp) in a fraction of its loop iterations: llvmpipe ends
-// every loop of a shader invocation after 65535 iterations of all its loops together, which the naive
-// 0.25 km march reaches on long rays near curtains.
+// knob ranges, and the finest value of each other component's knob that refines only the GPU's
+// approximation (SweepKnob::refinesModel false: 16 steps per cell in the plasma box). With
+// empty-space skipping, which gives the naive march's image (tests/render/skipping_test.cpp) in a
+// fraction of its loop iterations: llvmpipe ends every loop of a shader invocation after 65535
+// iterations of all its loops together, which the naive 0.25 km march reaches on long rays near
+// curtains.
 void applyFinestSettings(scene::Scene& scene);
 
 // The knob table (or, with featureCosts, the feature costs; with workStats, the work counts) on
