@@ -1,5 +1,5 @@
 // The electron flux across and along a curtain, relative to its peak: from the frames of the curtain
-// detail's provider (a fluid or plasma simulation) when the scene lists one, else a smooth Gaussian.
+// detail's provider (a simulation of its small-scale structure) when the scene lists one, else a smooth Gaussian.
 // s: arclength along the curtain (km), u: signed distance across it (km), c: the curtain.
 const int MAX_CURTAINS = 16;
 // Per curtain: detail offset along the curtain (km, drift reduced on the CPU), detail phase

@@ -52,7 +52,7 @@ struct Settings : scene::SettingsOf<Settings> {
     double topKm = 300.0;
     double stepKm = 12.0;             // march step inside curtains (curtain coordinates once per step)
     double resolveKm = 1.0;           // sub-steps: altitude and position along a curtain change by at most this
-    double resolveCells = 0.75;       // and, with fluid or plasma detail, the coordinate a sub-step is not
+    double resolveCells = 0.75;       // and, with curtain detail, the coordinate a sub-step is not
                                       // integrated over (along or across) by at most this many detail cells
     double polylineSpacingKm = 2.0;   // curtain splines are sampled this finely for the shader
     int footprintMapSize = 512;       // texels per side of the jump-flooded footprint map

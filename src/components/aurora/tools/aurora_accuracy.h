@@ -12,7 +12,7 @@ namespace aurorawall::components::aurora::tools {
 
 // The GPU reference's settings: 0.25 km steps, the finest tables, footprint map and polylines of the
 // knob ranges, and the finest value of each other component's knob that refines only the GPU's
-// approximation (SweepKnob::refinesModel false: 16 steps per cell in the plasma box). With
+// approximation (SweepKnob::refinesModel false, e.g. a particle push's steps per cell). With
 // empty-space skipping, which gives the naive march's image (tests/render/skipping_test.cpp) in a
 // fraction of its loop iterations: llvmpipe ends every loop of a shader invocation after 65535
 // iterations of all its loops together, which the naive 0.25 km march reaches on long rays near

@@ -8,8 +8,8 @@ namespace aurorawall::components::aurora::tools {
 const Tools& registered()
 {
     static const Tools tools{{}, {}, {}, runSceneAccuracy,
-                             "the aurora's;\n"
-                             "fluid_cells, box_steps_per_cell where the scene has fluid_detail or the plasma box",
+                             "the aurora's and those of the other components\n"
+                             "the scene lists: fluid_cells, box_steps_per_cell",
                              {depositionTable()}};
     return tools;
 }
