@@ -7,7 +7,7 @@
 #include "components/fluid_detail/curtain_detail.h"
 #include "components/aurora/aurora.h"
 #include "components/aurora/aurora_march.h"
-#include "components/aurora/aurora_tables.h"
+#include "components/aurora/physics/emission_table.h"
 #include "components/aurora/curtain_model.h"
 #include "components/atmosphere/atmosphere.h"
 #include "components/registry.h"
@@ -72,9 +72,13 @@ protected:
 //    dh <= dx + 2 u r; its footprint's curtain coordinates (s, u) = R (atan2, asin) of dot products of unit
 //    vectors (n, the float segment normal: a few u each), dq <= dx + 10 u R (6.2e-3 km).
 //  - the sky's glow G (1 - T) (bounded by the pixel): the airmass integrates exp(-h/H), so it moves by dh/H of
-//    itself (4.0e-4; the closed form's own few dozen operations add some 1e-6).
-//  - the emission rows (linear between nodes dz apart): by (dh + 2^-9 dz) times their largest relative
-//    slope (a GPU rounds a filter weight to 8 bits of fraction: 2^-9 of a node spacing), of the aurora's light.
+//    itself (4.0e-4; the closed form's own few dozen operations, a few u each, within the 128 u below).
+//  - the emission rows (linear between nodes dz apart): by at most (dh + 2^-9 dz) x the march of |dE/dz| (the
+//    march in double over rows holding that slope; a GPU rounds a filter weight to 8 bits of fraction: 2^-9
+//    of a node spacing).
+//  - the closed forms' cancellation: a sub-step's integral is a difference of running integrals, each within
+//    a few u of the column's whole integral: at most 64 sub-steps a step, 128 u (7.6e-6) of the crossing's;
+//    the moment's difference moves a sub-step's mean position within the sub-step (not bounded here).
 //  - the flux: a step's curtain coordinates are found once, at its midpoint, so their error dq shifts the
 //    closed-form integrals of the whole step: by at most dq x the march of |dF/du| + |dF/ds| (the march in
 //    double over frames holding that slope: the same steps, emission and flux scale); the filter weights
@@ -82,12 +86,11 @@ protected:
 // A discrete choice the round-off flips (a sub-step count, a candidate curtain) changes a step by its
 // discretization, which the reference's tolerance holds (tests/render/shader_steps_test.cpp).
 struct FloatBound {
-    double dq = 0.0;       // km
-    double glow = 0.0;     // relative, of the glow
-    double emission = 0.0; // relative, of the aurora
-    // The aurora's march in double, and the same over frames of |dF/du| + |dF/ds| (1/km^2) and of the
-    // neighbouring cells' and frames' |F' - F| (1/km).
-    std::unique_ptr<scene::ReferenceShader> light, slope, steps;
+    double dh = 0.0, dq = 0.0; // km
+    double glow = 0.0;         // relative, of the pixel: the glow's, and the closed forms' cancellation
+    // The aurora's march in double over emission rows of |dE/dz| (1/km), and over frames of |dF/du| + |dF/ds|
+    // (1/km^2) and of the neighbouring cells' and frames' |F' - F| (1/km).
+    std::unique_ptr<scene::ReferenceShader> emissionSlope, slope, steps;
 
     // The bound at the pixel of radiance `pixel` whose ray starts at o in direction d.
     double at(glm::dvec3 pixel, glm::dvec3 o, glm::dvec3 d, double planetRadiusKm) const
@@ -100,32 +103,26 @@ struct FloatBound {
         ray.end = 1e30;
         ray.transmittance = glm::dvec3(1.0);
         const double flux = dq * glm::length(slope->shade(ray).radiance) + std::ldexp(glm::length(steps->shade(ray).radiance), -9);
-        return glow * glm::length(pixel) + emission * glm::length(light->shade(ray).radiance) + flux;
+        return glow * glm::length(pixel) + dh * glm::length(emissionSlope->shade(ray).radiance) + flux;
     }
 };
 
-// The largest relative slope of the emission rows (1/km) of these curtains, between neighbouring nodes
-// that both hold at least 1e-3 of their row's peak.
-double emissionSlopePerKm(const components::aurora::Settings& aurora, const std::vector<components::aurora::CurtainState>& states)
+// Each emission row's node replaced by the largest |E' - E| / dz of its neighbours (per channel): linear
+// between nodes, that bounds |dE/dz| on either segment.
+void rowSlopes(std::vector<float>& rows, int nodes, double nodeSpacingKm)
 {
-    const auto tables = components::aurora::physics::buildEmissionTables(components::aurora::emissionTableSpec(aurora));
-    const size_t nodes = size_t(tables.nodeCount());
-    std::vector<float> row(4 * nodes);
-    double slope = 0.0;
-    for (const components::aurora::CurtainState& state : states) {
-        components::aurora::physics::emissionRow(tables, static_cast<float>(state.energyKeV), row.data());
-        for (size_t c = 0; c < 3; ++c) {
-            double peak = 0.0;
-            for (size_t k = 0; k < nodes; ++k)
-                peak = std::max(peak, double(row[4 * k + c]));
-            for (size_t k = 0; k + 1 < nodes; ++k) {
-                const double a = row[4 * k + c], b = row[4 * k + 4 + c];
-                if (peak > 0.0 && std::min(a, b) >= 1e-3 * peak)
-                    slope = std::max(slope, std::abs(b - a) / (tables.nodeSpacingKm() * std::min(a, b)));
+    const std::vector<float> e = rows;
+    for (size_t row = 0; row < rows.size() / (4 * size_t(nodes)); ++row)
+        for (size_t k = 0; k < size_t(nodes); ++k)
+            for (size_t c = 0; c < 4; ++c) {
+                const size_t i = 4 * (row * nodes + k) + c;
+                double step = 0.0;
+                if (k > 0)
+                    step = std::abs(e[i] - e[i - 4]);
+                if (k + 1 < size_t(nodes))
+                    step = std::max(step, double(std::abs(e[i + 4] - e[i])));
+                rows[i] = float(step / nodeSpacingKm);
             }
-        }
-    }
-    return slope;
 }
 
 // Frames holding, at each cell, the largest |F' - F| of its neighbours across, along (scaled by `along`
@@ -160,17 +157,16 @@ FloatBound floatBound(const scene::Scene& s, const components::roles::FluxFrames
     for (size_t i = 0; i < aurora.curtains.size(); ++i)
         lateralScale = std::max(lateralScale, model.lateralScale(i));
     FloatBound b;
-    const double dx = 6.0 * u * r, dh = dx + 2.0 * u * r;
+    const double dx = 6.0 * u * r, dz = aurora.tableAltitudeStepKm / components::aurora::physics::kEmissionSubdivisions;
     b.dq = dx + 10.0 * u * R;
-    b.glow = dh / s.settings<components::atmosphere::Settings>().scaleHeightKm;
-    const double dz = aurora.tableAltitudeStepKm / components::aurora::physics::kEmissionSubdivisions; // the rows' nodes
-    b.emission = (dh + std::ldexp(dz, -9)) * emissionSlopePerKm(aurora, model.statesAt(timeS));
+    b.glow = (dx + 2.0 * u * r) / s.settings<components::atmosphere::Settings>().scaleHeightKm + 128.0 * u;
+    b.dh = dx + 2.0 * u * r + std::ldexp(dz, -9); // and the filter weight's 2^-9 of a node spacing
     // Slopes per curtain km: a cell along is texelKmX, one across texelKmY simulation km, lateralScale of them per km.
     const components::roles::FluxFrames slopes =
         neighbourSteps(frames, 1.0 / frames.texelKmX, lateralScale / frames.texelKmY, false);
     const components::roles::FluxFrames steps = neighbourSteps(frames, 1.0, 1.0, true);
     const double width = provider.stripWidthKm(s);
-    b.light = components::aurora::makeAuroraMarch(aurora, R, timeS, &frames, shape, width);
+    b.emissionSlope = components::aurora::makeAuroraMarch(aurora, R, timeS, &frames, shape, width, rowSlopes);
     b.slope = components::aurora::makeAuroraMarch(aurora, R, timeS, &slopes, shape, width);
     b.steps = components::aurora::makeAuroraMarch(aurora, R, timeS, &steps, shape, width);
     return b;
@@ -219,8 +215,8 @@ TEST_F(ReferenceRay, GpuAtItsFinestSettingsAgreesWithTheReference)
     }
     const accuracy::RelativeError f = accuracy::relativeError(values, marched, floor());
     const accuracy::RelativeError e = accuracy::relativeError(values, reference, floor());
-    std::printf("float bound: glow %.3g, emission %.3g relative, flux by the marches of its slopes and steps: at most "
-                "%.3g relative\n", bound.glow, bound.emission, largestBound);
+    std::printf("float bound: glow %.3g relative; with the emission's and the flux's slopes and steps at most %.3g "
+                "relative\n", bound.glow, largestBound);
     std::printf("GPU (0.25 km, finest tables) vs the march in double at %zu pixels: rms %.3g, max %.3g, at most "
                 "%.3g of the float bound; vs CPU reference: rms %.3g, max %.3g\n",
                 f.pixels, f.rms, f.max, largestShare, e.rms, e.max);

@@ -68,7 +68,8 @@ common::glsl::Sampler<double> sampler(int width, int height, int layers, std::ve
 // What the aurora component's renderer binds (Renderer::setFrame, CurtainField, AuroraTables): the
 // settings and the curtains at timeS, with the footprint map built on the CPU.
 template <class Program>
-void setCurtains(Program& p, const Settings& a, double planetRadiusKm, const CurtainModel& model, double timeS)
+void setCurtains(Program& p, const Settings& a, double planetRadiusKm, const CurtainModel& model, double timeS,
+                 const EditEmissionRows& editRows)
 {
     const std::vector<CurtainState> states = model.statesAt(timeS);
     CurtainBuild build = buildCurtains(model, states, MapBuilder::Cpu);
@@ -94,6 +95,8 @@ void setCurtains(Program& p, const Settings& a, double planetRadiusKm, const Cur
             p.uCurtainReachKm = std::max<double>(p.uCurtainReachKm, state.w);
         physics::emissionRow(tables, state.y, &rows[4 * size_t(nodes) * i]);
     }
+    if (editRows)
+        editRows(rows, nodes, tables.nodeSpacingKm());
     p.uCurtainEmission = sampler(nodes, 1, static_cast<int>(std::max<size_t>(states.size(), 1)), std::move(rows));
     p.uCurtainEmissionAxes = tables.axes();
     p.uCurtainPolylines = sampler(build.polylineWidth, build.polylineRows, 1, std::move(build.polylineTexels));
@@ -132,16 +135,16 @@ private:
 std::unique_ptr<scene::ReferenceShader> makeAuroraMarch(const Settings& aurora, double planetRadiusKm, double timeS,
                                                         const roles::FluxFrames* frames,
                                                         const std::optional<roles::DetailShape>& shape,
-                                                        double stripWidthKm)
+                                                        double stripWidthKm, const EditEmissionRows& editRows)
 {
     const CurtainModel model(aurora, planetRadiusKm, shape ? &*shape : nullptr);
     if (!frames) {
         auto program = std::make_unique<f64::SmoothProgram>();
-        setCurtains(*program, aurora, planetRadiusKm, model, timeS);
+        setCurtains(*program, aurora, planetRadiusKm, model, timeS, editRows);
         return std::make_unique<AuroraMarch<f64::SmoothProgram>>(std::move(program));
     }
     auto program = std::make_unique<f64::DetailProgram>();
-    setCurtains(*program, aurora, planetRadiusKm, model, timeS);
+    setCurtains(*program, aurora, planetRadiusKm, model, timeS, editRows);
     setFluxTables(*program, *frames, *shape, stripWidthKm);
     return std::make_unique<AuroraMarch<f64::DetailProgram>>(std::move(program));
 }

@@ -10,16 +10,22 @@
 #include "components/roles/curtain_detail.h"
 #include "scene/component.h"
 
+#include <functional>
 #include <memory>
 #include <optional>
+#include <vector>
 
 namespace aurorawall::components::aurora {
+
+// Changes the emission rows before the march reads them: RGBA, `nodes` per curtain, nodeSpacingKm apart
+// (a bound's march of their slopes, tests/render/reference_ray_test.cpp).
+using EditEmissionRows = std::function<void(std::vector<float>& rows, int nodes, double nodeSpacingKm)>;
 
 // frames: the curtain detail frames when the scene lists a provider of the role, else null; shape:
 // their shape; stripWidthKm: their strip's width (as AuroraReference).
 std::unique_ptr<scene::ReferenceShader> makeAuroraMarch(const Settings& aurora, double planetRadiusKm, double timeS,
                                                         const roles::FluxFrames* frames,
                                                         const std::optional<roles::DetailShape>& shape,
-                                                        double stripWidthKm);
+                                                        double stripWidthKm, const EditEmissionRows& editRows = {});
 
 } // namespace aurorawall::components::aurora
