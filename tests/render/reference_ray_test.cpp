@@ -12,7 +12,10 @@
 #include "components/atmosphere/atmosphere.h"
 #include "components/registry.h"
 #include "components/roles/curtain_detail.h"
+#include "float_bounds.h"
+#include "physics/atmosphere/airmass.h"
 #include "render/reference_ray.h"
+#include "scene/ray_steps.h"
 #include "scene_samples.h"
 #include "scene/scene.h"
 
@@ -65,20 +68,23 @@ protected:
     static components::roles::FluxFrames* frames_;
 };
 
-// How far a float march (unit round-off u = 2^-24) can lie from the same march in double given the same data
-// (ReferenceSettings::shaderSteps), at one pixel, to first order in u:
-//  - positions: a sample o + t d at |x| <= r = R + aurora top (6671 km) carries the camera's and the
-//    direction's rounding and that of the product and sum, |dx| <= 6 u r (2.4e-3 km); its altitude |x| - R,
-//    dh <= dx + 2 u r; its footprint's curtain coordinates (s, u) = R (atan2, asin) of dot products of unit
-//    vectors (n, the float segment normal: a few u each), dq <= dx + 10 u R (6.2e-3 km).
-//  - the sky's glow G (1 - T) (bounded by the pixel): the airmass integrates exp(-h/H), so it moves by dh/H of
-//    itself (4.0e-4; the closed form's own few dozen operations, a few u each, within the 128 u below).
-//  - the emission rows (linear between nodes dz apart): by at most (dh + 2^-9 dz) x the march of |dE/dz| (the
-//    march in double over rows holding that slope; a GPU rounds a filter weight to 8 bits of fraction: 2^-9
-//    of a node spacing).
+// How far a float march can lie from the same march in double given the same data (ReferenceSettings::
+// shaderSteps) at one pixel, to first order in u = 2^-24, with the GLSL allowances of float_bounds.h (and
+// atan, asin 4096 ULP, as Vulkan allows):
+//  - the ray's own rounding (camera position, direction): rayRoundingBound through the march in double;
+//  - each sample o + t d at |x| <= r = R + the aurora's top rounds its product and sum, dx <= 2 u r; its
+//    altitude |x| - R (a dot product, a square root), dh <= dx + 12 u r; its footprint n = x / |x| (19 u)
+//    and the float segment normal (10 u) are unit vectors whose dot product (3 u) gives the curtain
+//    coordinate R asin(n·normal) to 32 u R, and asin (atan along) adds 8192 u of the largest reach:
+//    dq <= dx + 32 u R + 8192 u reach (8.6e-3 km here);
+//  - the sky's glow G (1 - T), at most the pixel: the closed-form airmass's float error (floatAirmassError,
+//    heights up to the atmosphere's top), and 1 - T's cancellation, GLSL's exp error over 1 - e^-y, y the
+//    smallest extinction times the airmass;
+//  - the emission rows (linear between nodes dz apart): (dh + 2^-9 dz) x the march of |dE/dz| (the march in
+//    double over rows holding that slope; a GPU rounds a filter weight to 8 bits of fraction);
 //  - the closed forms' cancellation: a sub-step's integral is a difference of running integrals, each within
-//    a few u of the column's whole integral: at most 64 sub-steps a step, 128 u (7.6e-6) of the crossing's;
-//    the moment's difference moves a sub-step's mean position within the sub-step (not bounded here).
+//    a few u of the column's whole integral: at most 64 sub-steps a step, 128 u of the crossing's (the
+//    moment's difference moves a sub-step's mean position within the sub-step: not bounded here);
 //  - the flux: a step's curtain coordinates are found once, at its midpoint, so their error dq shifts the
 //    closed-form integrals of the whole step: by at most dq x the march of |dF/du| + |dF/ds| (the march in
 //    double over frames holding that slope: the same steps, emission and flux scale); the filter weights
@@ -86,24 +92,33 @@ protected:
 // A discrete choice the round-off flips (a sub-step count, a candidate curtain) changes a step by its
 // discretization, which the reference's tolerance holds (tests/render/shader_steps_test.cpp).
 struct FloatBound {
-    double dh = 0.0, dq = 0.0; // km
-    double glow = 0.0;         // relative, of the pixel: the glow's, and the closed forms' cancellation
+    double dh = 0.0, dq = 0.0; // km: dh with the filter weight's 2^-9 of a node spacing
+    double relative = 0.0;     // of the pixel: the airmass's float error and the closed forms' cancellation
+    double scaleHeightKm = 0.0, atmosphereTopKm = 0.0, extinctionPerKm = 0.0; // the smallest extinction
     // The aurora's march in double over emission rows of |dE/dz| (1/km), and over frames of |dF/du| + |dF/ds|
     // (1/km^2) and of the neighbouring cells' and frames' |F' - F| (1/km).
     std::unique_ptr<scene::ReferenceShader> emissionSlope, slope, steps;
 
-    // The bound at the pixel of radiance `pixel` whose ray starts at o in direction d.
+    // The bound at the pixel of radiance `pixel` whose ray starts at o in direction d (without the ray's own
+    // rounding).
     double at(glm::dvec3 pixel, glm::dvec3 o, glm::dvec3 d, double planetRadiusKm) const
     {
         scene::f64::Ray ray{};
         ray.origin = o;
         ray.direction = d;
-        ray.altitude = glm::length(o) - planetRadiusKm;
         ray.groundT = -1.0;
         ray.end = 1e30;
-        ray.transmittance = glm::dvec3(1.0);
+        ray.transmittance = glm::dvec3(1.0); // at most 1: the marches below stand in front of the atmosphere
+        ray = scene::f64::boundByGround(ray, planetRadiusKm, glm::length(o) - planetRadiusKm);
+        const glm::dvec2 air = scene::f64::lowerShellSegment(ray, planetRadiusKm, atmosphereTopKm);
+        double glow = 0.0;
+        if (air.x < air.y) {
+            const double y = extinctionPerKm * physics::atmosphere::findAirmassMethod(physics::atmosphere::kDefaultAirmassMethod)
+                                                   ->float64(o, d, air.x, air.y, scaleHeightKm, planetRadiusKm);
+            glow = test::glslExpError(y) / -std::expm1(-y);
+        }
         const double flux = dq * glm::length(slope->shade(ray).radiance) + std::ldexp(glm::length(steps->shade(ray).radiance), -9);
-        return glow * glm::length(pixel) + dh * glm::length(emissionSlope->shade(ray).radiance) + flux;
+        return (relative + glow) * glm::length(pixel) + dh * glm::length(emissionSlope->shade(ray).radiance) + flux;
     }
 };
 
@@ -149,18 +164,22 @@ components::roles::FluxFrames neighbourSteps(const components::roles::FluxFrames
 FloatBound floatBound(const scene::Scene& s, const components::roles::FluxFrames& frames, double timeS)
 {
     const auto& aurora = s.settings<components::aurora::Settings>();
-    const double u = std::ldexp(1.0, -24), R = s.planetRadiusKm, r = R + aurora.topKm;
+    const double u = test::kUnitRoundoff, R = s.planetRadiusKm, r = R + aurora.topKm;
     const components::roles::CurtainDetailProvider& provider = *components::roles::curtainDetailProvider(s);
     const components::roles::DetailShape shape = provider.referenceShape(s, frames);
     const components::aurora::CurtainModel model(aurora, R, &shape);
     double lateralScale = 0.0;
     for (size_t i = 0; i < aurora.curtains.size(); ++i)
         lateralScale = std::max(lateralScale, model.lateralScale(i));
+    const auto& atmosphere = s.settings<components::atmosphere::Settings>();
     FloatBound b;
-    const double dx = 6.0 * u * r, dz = aurora.tableAltitudeStepKm / components::aurora::physics::kEmissionSubdivisions;
-    b.dq = dx + 10.0 * u * R;
-    b.glow = (dx + 2.0 * u * r) / s.settings<components::atmosphere::Settings>().scaleHeightKm + 128.0 * u;
-    b.dh = dx + 2.0 * u * r + std::ldexp(dz, -9); // and the filter weight's 2^-9 of a node spacing
+    const double dx = 2.0 * u * r, dz = aurora.tableAltitudeStepKm / components::aurora::physics::kEmissionSubdivisions;
+    b.dq = dx + 32.0 * u * R + 8192.0 * u * model.reachKm();
+    b.dh = dx + 12.0 * u * r + std::ldexp(dz, -9);
+    b.scaleHeightKm = atmosphere.scaleHeightKm;
+    b.atmosphereTopKm = atmosphere.topKm;
+    b.extinctionPerKm = std::min({atmosphere.extinctionPerKm.x, atmosphere.extinctionPerKm.y, atmosphere.extinctionPerKm.z});
+    b.relative = test::floatAirmassError(atmosphere.topKm / atmosphere.scaleHeightKm) + 128.0 * u;
     // Slopes per curtain km: a cell along is texelKmX, one across texelKmY simulation km, lateralScale of them per km.
     const components::roles::FluxFrames slopes =
         neighbourSteps(frames, 1.0 / frames.texelKmX, lateralScale / frames.texelKmY, false);
@@ -183,8 +202,9 @@ components::roles::FluxFrames* ReferenceRay::frames_ = nullptr;
 // image (most lit by the sky's glow): only float is left between them, bounded by FloatBound from this
 // scene's data. Then against the fine CPU reference, whose difference from the march in double is its
 // discretization (tests/render/shader_steps_test.cpp holds it to 1e-3): the two bounds add. Measured
-// (llvmpipe): against the march RMS 3.3e-5, max 1.1e-4; against the reference RMS 3.6e-5, max 1.2e-4 (before
-// the curtain-normal fix of aurora_curtains.glsl it was RMS 1.7e-2: the test caught the float bug).
+// (llvmpipe): against the march RMS 3.3e-5, max 1.1e-4, at most 18% of a pixel's bound (the bounds reach
+// 5.8e-2 of a pixel, from the flux's slopes); against the reference RMS 3.6e-5, max 1.2e-4 (before the
+// curtain-normal fix of aurora_curtains.glsl it was RMS 1.7e-2: the test caught the float bug).
 TEST_F(ReferenceRay, GpuAtItsFinestSettingsAgreesWithTheReference)
 {
     const io::Image gpu = accuracy::renderView(*scene_, *view_, kSource + "/shaders", 0).image;
@@ -204,7 +224,8 @@ TEST_F(ReferenceRay, GpuAtItsFinestSettingsAgreesWithTheReference)
     double largestShare = 0.0, largestBound = 0.0; // |GPU - march| / bound; bound / |march|
     for (size_t i = 0; i < pixels.size(); ++i) {
         const glm::dvec3 o = view_->frame.cameraPositionKm, d = accuracy::pixelDirection(*view_, pixels[i].x, pixels[i].y);
-        const double limit = bound.at(marched[i], o, d, scene_->planetRadiusKm);
+        const double limit = bound.at(marched[i], o, d, scene_->planetRadiusKm) +
+                             test::rayRoundingBound(march, *view_, pixels[i].x, pixels[i].y);
         const double difference = glm::length(values[i] - marched[i]);
         largestShare = std::max(largestShare, difference / limit);
         largestBound = std::max(largestBound, limit / glm::length(marched[i]));
@@ -215,8 +236,7 @@ TEST_F(ReferenceRay, GpuAtItsFinestSettingsAgreesWithTheReference)
     }
     const accuracy::RelativeError f = accuracy::relativeError(values, marched, floor());
     const accuracy::RelativeError e = accuracy::relativeError(values, reference, floor());
-    std::printf("float bound: glow %.3g relative; with the emission's and the flux's slopes and steps at most %.3g "
-                "relative\n", bound.glow, largestBound);
+    std::printf("float bound: dh %.3g km, dq %.3g km; at most %.3g of a pixel\n", bound.dh, bound.dq, largestBound);
     std::printf("GPU (0.25 km, finest tables) vs the march in double at %zu pixels: rms %.3g, max %.3g, at most "
                 "%.3g of the float bound; vs CPU reference: rms %.3g, max %.3g\n",
                 f.pixels, f.rms, f.max, largestShare, e.rms, e.max);
