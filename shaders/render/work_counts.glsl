@@ -13,3 +13,4 @@ ivec4 gWork = ivec4(0);
 // The ray's work by which the load balancer shares out a draw's measured time (pixel.glsl: 1 + this):
 // each component that marches adds its steps.
 int gRayWork = 0;
+#define COUNT_RAY_WORK(n) (gRayWork += (n))

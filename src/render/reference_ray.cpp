@@ -13,6 +13,7 @@ ReferenceModel::ReferenceModel(const scene::Scene& scene, double timeS, scene::R
     scene::ReferenceContext context;
     context.timeS = timeS;
     context.stepKm = settings.stepKm;
+    context.shaderSteps = settings.shaderSteps;
     context.roleData = std::move(roleData);
     for (const scene::Component* c : scene.components()) {
         std::unique_ptr<scene::ReferenceShader> shader = c->makeReference(scene, context);

@@ -17,6 +17,7 @@ namespace aurorawall::render {
 
 struct ReferenceSettings {
     double stepKm = 0.05; // fine fixed step for emission integrals
+    bool shaderSteps = false; // scene::ReferenceContext::shaderSteps
 };
 
 class ReferenceModel {

@@ -73,6 +73,9 @@ using RoleData = std::map<std::string, std::any>;
 struct ReferenceContext {
     double timeS = 0.0;   // animation time
     double stepKm = 0.05; // fine fixed step for emission integrals
+    // Each component that can evaluates as its shader does, in double (the shader's steps, tables and
+    // closed forms: the aurora's march, the atmosphere's airmass) instead of finely or exactly.
+    bool shaderSteps = false;
     RoleData roleData;
 };
 

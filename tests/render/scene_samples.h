@@ -28,6 +28,30 @@ inline std::string testName(std::string scene)
     return scene;
 }
 
+// `count` pixels evenly spaced in row-major order among those of a width-wide image of radiances (row-major)
+// at or above `floor` (none if none is).
+inline std::vector<glm::ivec2> litPixels(const std::vector<glm::dvec3>& radiance, int width, double floor, int count)
+{
+    std::vector<glm::ivec2> lit, chosen;
+    for (size_t i = 0; i < radiance.size(); ++i)
+        if (glm::length(radiance[i]) >= floor)
+            lit.emplace_back(int(i % size_t(width)), int(i / size_t(width)));
+    for (int i = 0; i < count && !lit.empty(); ++i)
+        chosen.push_back(lit[std::size_t(i) * lit.size() / std::size_t(count)]);
+    return chosen;
+}
+
+// The CPU reference at every pixel of a width × height view, row-major.
+inline std::vector<glm::dvec3> referenceImage(const render::ReferenceModel& model, const accuracy::SceneView& view,
+                                              int width, int height)
+{
+    std::vector<glm::ivec2> all;
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x)
+            all.emplace_back(x, y);
+    return accuracy::referencePixels(model, view, all, 2);
+}
+
 // `count` pixels evenly spaced in row-major order among those at or above `floor` (none if none is).
 inline std::vector<glm::ivec2> litPixels(const io::Image& image, double floor, int count)
 {

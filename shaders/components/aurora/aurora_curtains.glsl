@@ -6,28 +6,28 @@
 // the segments around that point to exact curtain coordinates (s along, u across), so detail is
 // not limited by the map's texels. Emission = peak energy flux x profile(s, u) x the tabulated
 // line emission of the curtain's electrons at this altitude (aurora/curtain_emission.glsl).
-uniform float uAuroraBottomKm;
-uniform float uAuroraTopKm;
-uniform float uAuroraStepKm;
-uniform float uAuroraResolveKm;      // sub-steps (at most 64 a step): altitude and position along a curtain change by at most this
-uniform float uAuroraResolveCells;   // and the coordinate not integrated over by at most this many of the detail's cells
+uniform real uAuroraBottomKm;
+uniform real uAuroraTopKm;
+uniform real uAuroraStepKm;
+uniform real uAuroraResolveKm;       // sub-steps (at most 64 a step): altitude and position along a curtain change by at most this
+uniform real uAuroraResolveCells;    // and the coordinate not integrated over by at most this many of the detail's cells
 uniform int uSkipEmptySpace;         // 0: the naive fine march everywhere (the reference)
 uniform int uCurtainCount;
 uniform sampler2D uCurtainPolylines; // RGBA32F, row c: xyz unit vector, w arclength km
 uniform vec4 uCurtainState[MAX_CURTAINS];  // peak energy flux erg cm^-2 s^-1, energy keV (the emission rows' key), point count,
                                            // reach km: beyond it from its centre line and its ends the curtain does not emit
-uniform float uCurtainLengthKm[MAX_CURTAINS];    // the polyline's arclength, its last point's (a uniform: no fetch)
-uniform float uCurtainCornerSlope[MAX_CURTAINS]; // tan(θ/2) of its polyline's largest turn θ between segments, with
+uniform real uCurtainLengthKm[MAX_CURTAINS];     // the polyline's arclength, its last point's (a uniform: no fetch)
+uniform real uCurtainCornerSlope[MAX_CURTAINS];  // tan(θ/2) of its polyline's largest turn θ between segments, with
                                                  // room for the float segment normals' tilt (CurtainField)
-uniform float uCurtainReachKm;       // the largest reach of the curtains that emit (flux > 0) this frame: beyond it
+uniform real uCurtainReachKm;        // the largest reach of the curtains that emit (flux > 0) this frame: beyond it
                                      // from every centre line nothing emits
 
 uniform sampler2D uFootprintMap;     // RGBA32F, nearest: curtain id, point index, distance km, other curtain
 uniform vec3 uFootprintCentre;
 uniform vec3 uFootprintEast;
-uniform float uFootprintAngularRadius;
-uniform float uFootprintSize;
-uniform float uFootprintMarginKm;
+uniform real uFootprintAngularRadius;
+uniform real uFootprintSize;
+uniform real uFootprintMarginKm;
 
 // Point j of curtain c's polyline: unit vector, arclength km.
 vec4 polylinePoint(int c, int j)
@@ -42,9 +42,9 @@ vec4 polylinePoint(int c, int j)
 // inside the segment or the jumps turn back (n lies off a corner's outer side, between two
 // segments' ends), then take the closest of that segment and its neighbours. Each point is read once.
 struct CurtainCoordinates {
-    float s;        // km along the curtain (beyond its ends: negative, or more than its length)
-    float u;        // km across it (signed)
-    float distance; // km from its polyline
+    real s;         // km along the curtain (beyond its ends: negative, or more than its length)
+    real u;         // km across it (signed)
+    real distance;  // km from its polyline
     vec3 normal;    // unit normal of the closest segment's great circle: u grows along it
 };
 
@@ -55,8 +55,8 @@ CurtainCoordinates curtainCoordinates(int c, int i, vec3 n)
     int j = clamp(i, 0, last);
     vec4 a = polylinePoint(c, j);
     vec4 b = polylinePoint(c, j + 1);
-    vec3 normal = segmentNormal(a.xyz, b.xyz);
-    vec4 p = projectOnSegmentWithNormal(a.xyz, normal, b.w - a.w, n, uPlanetRadiusKm);
+    vec3 normal = segmentNormal(vec3(a), vec3(b));
+    vec4 p = projectOnSegmentWithNormal(vec3(a), normal, b.w - a.w, n, uPlanetRadiusKm);
     int direction = 0;
     for (int jump = 0; jump < 6; ++jump) {
         int step = int(floor(p.x / max(p.y, 1e-6)));
@@ -69,8 +69,8 @@ CurtainCoordinates curtainCoordinates(int c, int i, vec3 n)
         b = next == j - 1 ? a : polylinePoint(c, next + 1);
         a = start;
         j = next;
-        normal = segmentNormal(a.xyz, b.xyz);
-        p = projectOnSegmentWithNormal(a.xyz, normal, b.w - a.w, n, uPlanetRadiusKm);
+        normal = segmentNormal(vec3(a), vec3(b));
+        p = projectOnSegmentWithNormal(vec3(a), normal, b.w - a.w, n, uPlanetRadiusKm);
     }
     CurtainCoordinates best;
     best.distance = length(vec2(p.z, p.w));
@@ -81,15 +81,15 @@ CurtainCoordinates curtainCoordinates(int c, int i, vec3 n)
     // turning by θ at the shared end can be nearer only where n projects within |u| tan(θ/2) of that end (on
     // the corner's inner side; on its outer side the shared end is the neighbour's nearest point, no nearer
     // than |u|), so it is read only there; 50 m more covers the float distances' ties.
-    float endZoneKm = abs(p.z) * uCurtainCornerSlope[c] + 0.05;
+    real endZoneKm = abs(p.z) * uCurtainCornerSlope[c] + 0.05;
     for (int side = 0; side < 2; ++side) {
         if (side == 0 ? j == 0 || p.x > endZoneKm : j == last || p.x < p.y - endZoneKm)
             continue;
         vec4 start = side == 0 ? polylinePoint(c, j - 1) : b;
         vec4 end = side == 0 ? a : polylinePoint(c, j + 2);
-        vec3 sideNormal = segmentNormal(start.xyz, end.xyz);
-        vec4 q = projectOnSegmentWithNormal(start.xyz, sideNormal, end.w - start.w, n, uPlanetRadiusKm);
-        float distance = length(vec2(q.z, q.w));
+        vec3 sideNormal = segmentNormal(vec3(start), vec3(end));
+        vec4 q = projectOnSegmentWithNormal(vec3(start), sideNormal, end.w - start.w, n, uPlanetRadiusKm);
+        real distance = length(vec2(q.z, q.w));
         if (distance < best.distance) {
             best.s = start.w + q.x;
             best.u = q.z;
@@ -101,7 +101,7 @@ CurtainCoordinates curtainCoordinates(int c, int i, vec3 n)
 }
 
 // Linear sRGB emitted per km of path per unit of curtain c's flux profile at the point o + t d.
-vec3 curtainEmissionAt(vec3 o, vec3 d, float t, int c)
+vec3 curtainEmissionAt(vec3 o, vec3 d, real t, int c)
 {
     COUNT_WORK(w, 1);
     return curtainEmissionRgbPerKm(length(o + t * d) - uPlanetRadiusKm, c);
@@ -109,12 +109,12 @@ vec3 curtainEmissionAt(vec3 o, vec3 d, float t, int c)
 
 // The part of the interval [range.x, range.y] of t where x(t) = x_m + rate (t − t_m) lies within
 // [lo, hi] (empty: x ≥ y).
-vec2 intersectLinearBand(vec2 range, float xm, float rate, float tm, float lo, float hi)
+vec2 intersectLinearBand(vec2 range, real xm, real rate, real tm, real lo, real hi)
 {
     if (abs(rate) < 1e-9)
         return xm >= lo && xm <= hi ? range : vec2(range.y, range.y);
-    float ta = tm + (lo - xm) / rate;
-    float tb = tm + (hi - xm) / rate;
+    real ta = tm + (lo - xm) / rate;
+    real tb = tm + (hi - xm) / rate;
     return vec2(max(range.x, min(ta, tb)), min(range.y, max(ta, tb)));
 }
 
@@ -123,11 +123,11 @@ vec2 intersectLinearBand(vec2 range, float xm, float rate, float tm, float lo, f
 // = |x × d| the ray's (constant) distance of closest approach to the planet's centre, so R b / r² on the
 // ground. r only grows ahead of a rising ray (p·d ≥ 0); a falling one gets no lower than b or the shell's
 // bottom (1 km below it covers the float segment ends). At most 1 above the ground.
-float footprintSpeedBound(vec3 p, vec3 d)
+real footprintSpeedBound(vec3 p, vec3 d)
 {
-    float r = length(p);
-    float b = length(cross(p, d));
-    float lowest = dot(p, d) >= 0.0 ? r : max(b, uPlanetRadiusKm + uAuroraBottomKm - 1.0);
+    real r = length(p);
+    real b = length(cross(p, d));
+    real lowest = dot(p, d) >= 0.0 ? r : max(b, uPlanetRadiusKm + uAuroraBottomKm - 1.0);
     return clamp(uPlanetRadiusKm * b / (lowest * lowest) * 1.0001, 1e-3, 1.0);
 }
 
@@ -139,24 +139,24 @@ float footprintSpeedBound(vec3 p, vec3 d)
 // src/components/aurora/physics/footprint_map.h); curtain −1 where there is none, or where that curtain
 // has no flux or lies farther than its reach + step/2 from the midpoint.
 struct StepCandidates {
-    float skipKm;
+    real skipKm;
     vec4 candidates;
 };
 
-bool canReachStep(int c, float lowerKm, float len)
+bool canReachStep(int c, real lowerKm, real len)
 {
     return uCurtainState[c].x > 0.0 && lowerKm - 0.5 * len <= uCurtainState[c].w;
 }
 
-StepCandidates stepCandidates(vec3 o, vec3 d, float t0, float t1)
+StepCandidates stepCandidates(vec3 o, vec3 d, real t0, real t1)
 {
     StepCandidates step;
     step.candidates = vec4(-1.0);
-    float len = t1 - t0;
+    real len = t1 - t0;
     vec3 p = o + 0.5 * (t0 + t1) * d;
     vec3 n = normalize(p);
-    float speed = footprintSpeedBound(p, d);
-    float outsideKm = footprintMapOutsideKm(n, uFootprintCentre, uFootprintAngularRadius, uPlanetRadiusKm);
+    real speed = footprintSpeedBound(p, d);
+    real outsideKm = footprintMapOutsideKm(n, uFootprintCentre, uFootprintAngularRadius, uPlanetRadiusKm);
     if (outsideKm > 0.0) {
         // The map's cap holds every curtain with its reach (CPU side), so nothing emits out here.
         step.skipKm = outsideKm / speed;
@@ -166,18 +166,22 @@ StepCandidates stepCandidates(vec3 o, vec3 d, float t0, float t1)
                                    uFootprintSize);
     vec4 nearest = texelFetch(uFootprintMap, ivec2(texel), 0);
     COUNT_WORK(w, 1);
-    float lowerKm = footprintConservativeKm(nearest.z, uFootprintMarginKm);
+    real lowerKm = footprintConservativeKm(nearest.z, uFootprintMarginKm);
     // A step whose midpoint lies farther than the largest reach + step/2 from every curtain emits nothing.
     step.skipKm = (lowerKm - uCurtainReachKm - 0.5 * uAuroraStepKm) / speed;
     if (step.skipKm > 0.0)
         return step;
     // lowerKm bounds the distance to every curtain from below, so it tests each candidate's own reach.
-    if (nearest.x >= 0.0 && canReachStep(int(nearest.x), lowerKm, len))
-        step.candidates.xy = nearest.xy;
+    if (nearest.x >= 0.0 && canReachStep(int(nearest.x), lowerKm, len)) {
+        step.candidates.x = nearest.x;
+        step.candidates.y = nearest.y;
+    }
     if (nearest.w >= 0.0) {
-        float second = floor(nearest.w / 65536.0); // the map packs curtain · 65536 + point
-        if (canReachStep(int(second), lowerKm, len))
-            step.candidates.zw = vec2(second, nearest.w - 65536.0 * second);
+        real second = floor(nearest.w / 65536.0); // the map packs curtain · 65536 + point
+        if (canReachStep(int(second), lowerKm, len)) {
+            step.candidates.z = second;
+            step.candidates.w = nearest.w - 65536.0 * second;
+        }
     }
     return step;
 }
@@ -195,37 +199,37 @@ StepCandidates stepCandidates(vec3 o, vec3 d, float t0, float t1)
 // the sub-step, from the first moment (curtain_profile.glsl, curtainIntegral). A sub-step that changes
 // the integrated coordinate by less than 1 m takes the midpoint rule. The step's midpoint decides which
 // curtains are near, as a point sample did.
-vec3 integrateCurtains(vec3 o, vec3 d, float t0, float t1, vec4 candidates)
+vec3 integrateCurtains(vec3 o, vec3 d, real t0, real t1, vec4 candidates)
 {
     vec3 radiance = vec3(0.0);
-    float tm = 0.5 * (t0 + t1);
-    float len = t1 - t0;
+    real tm = 0.5 * (t0 + t1);
+    real len = t1 - t0;
     vec3 p = o + tm * d;
-    float r = length(p);
+    real r = length(p);
     vec3 n = p / r;
     // How fast the footprint moves per km of ray, dn/dt = (d − n (n·d)) / r, and the altitude, dh/dt = n·d.
     vec3 footprintRate = (d - n * dot(n, d)) / r;
-    float hRate = dot(n, d);
+    real hRate = dot(n, d);
     // Integrated across, a sub-step reads the flux at one position along: the sub-steps resolve it to
     // uAuroraResolveKm or, finer, to uAuroraResolveCells of the detail's cells along. The fluxes of
     // overlapping curtains add.
-    float alongResolveKm = min(uAuroraResolveKm, uAuroraResolveCells * fluxCellAlongKm());
+    real alongResolveKm = min(uAuroraResolveKm, uAuroraResolveCells * fluxCellAlongKm());
     for (int k = 0; k < 2; ++k) {
-        vec2 candidate = k == 0 ? candidates.xy : candidates.zw;
+        vec2 candidate = k == 0 ? vec2(candidates.x, candidates.y) : vec2(candidates.z, candidates.w);
         if (candidate.x < 0.0)
             continue;
         int c = int(candidate.x);
-        float reach = uCurtainState[c].w;
+        real reach = uCurtainState[c].w;
         CurtainCoordinates cc = curtainCoordinates(c, int(candidate.y), n);
         if (cc.distance - 0.5 * len > reach)
             continue;
-        float lengthKm = uCurtainLengthKm[c];
+        real lengthKm = uCurtainLengthKm[c];
         // u = R asin(n·normal), so du/dt = R (normal·dn/dt) / √(1 − (n·normal)²); s runs along
         // cross(normal, n), the direction from the segment's start to its end.
-        float across = dot(n, cc.normal);
-        float scale = uPlanetRadiusKm * inversesqrt(max(1.0 - across * across, 1e-12));
-        float uRate = scale * dot(cc.normal, footprintRate);
-        float sRate = scale * dot(cross(cc.normal, n), footprintRate);
+        real across = dot(n, cc.normal);
+        real scale = uPlanetRadiusKm * inversesqrt(max(1.0 - across * across, 1e-12));
+        real uRate = scale * dot(cc.normal, footprintRate);
+        real sRate = scale * dot(cross(cc.normal, n), footprintRate);
         // Only the part of the step within the curtain's reach, |u| ≤ reach and −reach ≤ s ≤ length + reach
         // (u and s linear over the step), can emit: the sub-steps cover that part alone.
         vec2 within = vec2(t0, t1);
@@ -233,47 +237,47 @@ vec3 integrateCurtains(vec3 o, vec3 d, float t0, float t1, vec4 candidates)
         within = intersectLinearBand(within, cc.s, sRate, tm, -reach, lengthKm + reach);
         if (within.x >= within.y)
             continue;
-        float start = within.x;
-        float span = within.y - within.x;
+        real start = within.x;
+        real span = within.y - within.x;
         // A step that moves through more of the detail's cells along than across (and stays between the
         // curtain's ends) is integrated along in closed form, with sub-steps that bound the change across;
         // any other, across, with sub-steps that bound the change along.
-        float alongParts = abs(sRate) / alongResolveKm;
-        float acrossParts = abs(uRate) / (uAuroraResolveCells * fluxCellAcrossKm(c));
-        float sStart = cc.s + sRate * (within.x - tm);
-        float sEnd = cc.s + sRate * (within.y - tm);
+        real alongParts = abs(sRate) / alongResolveKm;
+        real acrossParts = abs(uRate) / (uAuroraResolveCells * fluxCellAcrossKm(c));
+        real sStart = cc.s + sRate * (within.x - tm);
+        real sEnd = cc.s + sRate * (within.y - tm);
         bool alongMode = kProfileVariesAlong && acrossParts < alongParts && min(sStart, sEnd) >= 0.0 &&
                          max(sStart, sEnd) <= lengthKm;
-        float resolveParts = alongMode ? acrossParts : alongParts;
+        real resolveParts = alongMode ? acrossParts : alongParts;
         int parts = int(clamp(ceil(max(abs(hRate) / uAuroraResolveKm, resolveParts) * span), 1.0, 64.0));
-        float part = span / float(parts);
+        real part = span / real(parts);
         COUNT_WORK(z, parts);
         // Runs of sub-steps over which the altitude changes by at most uAuroraResolveKm share one emission,
         // at their flux-weighted mean position (where it changes less than that over the whole step, all
         // the step's sub-steps do).
         int run = int(clamp(floor(uAuroraResolveKm / max(abs(hRate) * part, 1e-6)), 1.0, 64.0));
         // The sub-step's change in the coordinate integrated in closed form, and its rate per km of ray.
-        float rate = alongMode ? sRate : uRate;
-        float change = rate * part;
+        real rate = alongMode ? sRate : uRate;
+        real change = rate * part;
         vec3 energy = vec3(0.0);
-        float runMass = 0.0;
-        float runMoment = 0.0; // ∫ t profile dt, km²
+        real runMass = 0.0;
+        real runMoment = 0.0; // ∫ t profile dt, km²
         for (int i = 0; i < parts; ++i) {
-            float ta = start + float(i) * part;
-            float tMid = ta + 0.5 * part;
-            float u = cc.u + uRate * (tMid - tm);
-            float s = cc.s + sRate * (tMid - tm);
+            real ta = start + real(i) * part;
+            real tMid = ta + 0.5 * part;
+            real u = cc.u + uRate * (tMid - tm);
+            real s = cc.s + sRate * (tMid - tm);
             // Beyond its reach (across, or around the curtain's ends) a curtain does not emit.
-            float beyondEnds = max(max(-s, s - lengthKm), 0.0);
+            real beyondEnds = max(max(-s, s - lengthKm), 0.0);
             if (length(vec2(u, beyondEnds)) <= reach) {
                 // (∫ profile, ∫ offset from the sub-step's start × profile, mean profile at its ends) over
                 // the integrated coordinate.
                 vec3 column = curtainIntegral(c, alongMode, alongMode ? u : clamp(s, 0.0, lengthKm),
                                               (alongMode ? s : u) - 0.5 * change, change);
                 bool pointLike = abs(change) < 1e-3;
-                float mass = pointLike ? column.z * part : column.x / rate; // ∫ profile dt over the sub-step, km
+                real mass = pointLike ? column.z * part : column.x / rate; // ∫ profile dt over the sub-step, km
                 if (mass > 0.0) {
-                    float tMean = pointLike ? tMid : clamp(ta + column.y / column.x / rate, ta, ta + part);
+                    real tMean = pointLike ? tMid : clamp(ta + column.y / column.x / rate, ta, ta + part);
                     runMass += mass;
                     runMoment += mass * tMean;
                 }
@@ -311,14 +315,14 @@ vec3 auroraSegment(vec3 o, vec3 d, vec2 seg)
     int steps = int(min(ceil((seg.y - seg.x) / uAuroraStepKm), 4.0e6));
     int k = 0;
     while (k < steps) {
-        float t0 = 0.0, t1 = 0.0;
+        real t0 = 0.0, t1 = 0.0;
         StepCandidates step;
         // A step j steps on can emit only where j·step ≥ skipKm: the next one to read is ceil(skipKm / step) on.
         for (; k < steps; k += uSkipEmptySpace != 0 ? int(clamp(ceil(step.skipKm / uAuroraStepKm), 1.0, 4.0e6)) : 1) {
-            t0 = seg.x + float(k) * uAuroraStepKm;
+            t0 = seg.x + real(k) * uAuroraStepKm;
             t1 = min(t0 + uAuroraStepKm, seg.y);
             step = stepCandidates(o, d, t0, t1);
-            ++gRayWork; // the ray's work (render/work_counts.glsl)
+            COUNT_RAY_WORK(1);
             COUNT_WORK(x, 1);
             if (step.candidates.x >= 0.0 || step.candidates.z >= 0.0)
                 break;

@@ -7,7 +7,7 @@ uniform vec3 uCurtainEmissionAxes;       // (z_0 km, node spacing km, node count
 
 // Linear sRGB added per km of path per erg cm⁻² s⁻¹ by curtain c's electrons at altitude z (km):
 // multiply by the local energy flux and the path length in km.
-vec3 curtainEmissionRgbPerKm(float altitudeKm, int c)
+vec3 curtainEmissionRgbPerKm(real altitudeKm, int c)
 {
-    return textureLod(uCurtainEmission, vec3(emissionTexCoord(altitudeKm, uCurtainEmissionAxes), 0.5, float(c)), 0.0).rgb;
+    return vec3(textureLod(uCurtainEmission, vec3(emissionTexCoord(altitudeKm, uCurtainEmissionAxes), 0.5, real(c)), 0.0));
 }

@@ -1,5 +1,6 @@
 #include "components/atmosphere/atmosphere.h"
 
+#include "physics/atmosphere/airmass.h"
 #include "physics/atmosphere/airmass_exact.h"
 #include "gl/shader_program.h"
 #include "scene/ray_steps.h"
@@ -26,16 +27,25 @@ private:
     const Settings& s_;
 };
 
-// shadeAtmosphere with the exact airmass (adaptive Gauss-Kronrod) instead of the closed form.
+// shadeAtmosphere with the exact airmass (adaptive Gauss-Kronrod) instead of the closed form, or, with
+// shaderSteps, the shader's closed form in double.
 class Reference : public scene::ReferenceShader {
 public:
-    Reference(const Settings& s, double radiusKm) : s_(s), radiusKm_(radiusKm) {}
+    Reference(const Settings& s, double radiusKm, bool shaderSteps)
+        : s_(s), radiusKm_(radiusKm),
+          closedForm_(shaderSteps ? physics::atmosphere::findAirmassMethod(physics::atmosphere::kDefaultAirmassMethod)->float64
+                                  : nullptr)
+    {
+    }
     scene::f64::Ray shade(scene::f64::Ray ray) const override
     {
         ray.lowerAtmosphere = scene::f64::lowerShellSegment(ray, radiusKm_, s_.topKm);
         if (ray.lowerAtmosphere.x < ray.lowerAtmosphere.y) {
-            const double airmass = physics::atmosphere::exactAirmass(ray.origin, ray.direction, ray.lowerAtmosphere.x, ray.lowerAtmosphere.y,
-                                                s_.scaleHeightKm, radiusKm_);
+            const double airmass =
+                closedForm_ ? closedForm_(ray.origin, ray.direction, ray.lowerAtmosphere.x, ray.lowerAtmosphere.y,
+                                          s_.scaleHeightKm, radiusKm_)
+                            : physics::atmosphere::exactAirmass(ray.origin, ray.direction, ray.lowerAtmosphere.x,
+                                                                ray.lowerAtmosphere.y, s_.scaleHeightKm, radiusKm_);
             ray.transmittance = glm::exp(-s_.extinctionPerKm * airmass);
             ray.radiance += s_.skyGlow * (1.0 - ray.transmittance);
         }
@@ -45,6 +55,7 @@ public:
 private:
     const Settings& s_;
     double radiusKm_;
+    double (*closedForm_)(glm::dvec3, glm::dvec3, double, double, double, double); // null: the exact airmass
 };
 
 class Atmosphere : public scene::ComponentWith<Settings>, public roles::LowerAtmosphereProvider {
@@ -72,9 +83,9 @@ public:
         return std::make_unique<Renderer>(scene.settings<Settings>());
     }
     std::unique_ptr<scene::ReferenceShader> makeReference(const scene::Scene& scene,
-                                                          const scene::ReferenceContext&) const override
+                                                          const scene::ReferenceContext& context) const override
     {
-        return std::make_unique<Reference>(scene.settings<Settings>(), scene.planetRadiusKm);
+        return std::make_unique<Reference>(scene.settings<Settings>(), scene.planetRadiusKm, context.shaderSteps);
     }
     roles::LowerAir air(const scene::Scene& scene) const override
     {

@@ -1,5 +1,6 @@
 #include "components/aurora/aurora.h"
 
+#include "components/aurora/aurora_march.h"
 #include "components/aurora/aurora_reference.h"
 #include "components/aurora/aurora_tables.h"
 #include "components/aurora/curtain_field.h"
@@ -193,6 +194,9 @@ public:
             shape = provider->referenceShape(scene, *frames);
             stripWidthKm = provider->stripWidthKm(scene);
         }
+        if (context.shaderSteps)
+            return makeAuroraMarch(scene.settings<Settings>(), scene.planetRadiusKm, context.timeS, frames, shape,
+                                   stripWidthKm);
         return std::make_unique<AuroraReference>(scene.settings<Settings>(), scene.planetRadiusKm, context.timeS,
                                                  context.stepKm, frames, shape, stripWidthKm);
     }

@@ -5,9 +5,7 @@
 
 namespace aurorawall::components::aurora {
 
-namespace {
-
-physics::DepositionTableSpec specFor(const Settings& a)
+physics::DepositionTableSpec emissionTableSpec(const Settings& a)
 {
     physics::DepositionTableSpec spec;
     spec.altitudeStepKm = a.tableAltitudeStepKm;
@@ -15,6 +13,8 @@ physics::DepositionTableSpec specFor(const Settings& a)
     spec.spectrum = a.spectrum;
     return spec;
 }
+
+namespace {
 
 // A layer of nodes × 1 texels per curtain (at least one layer), filtered along the altitude only.
 gl::Texture emissionTexture(int nodes, int curtains)
@@ -28,7 +28,7 @@ gl::Texture emissionTexture(int nodes, int curtains)
 AuroraTables::AuroraTables(const Settings& a) : emission_(emissionTexture(1, 1))
 {
     const auto start = std::chrono::steady_clock::now();
-    tables_ = physics::buildEmissionTables(specFor(a));
+    tables_ = physics::buildEmissionTables(emissionTableSpec(a));
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     char text[160];
     std::snprintf(text, sizeof text, "aurora deposition table %d x %d (%s), line yields %zu: %.1f ms",

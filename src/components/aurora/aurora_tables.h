@@ -13,6 +13,9 @@
 
 namespace aurorawall::components::aurora {
 
+// The deposition table's resolution and spectrum of these settings.
+physics::DepositionTableSpec emissionTableSpec(const Settings& aurora);
+
 class AuroraTables {
 public:
     explicit AuroraTables(const Settings& aurora);

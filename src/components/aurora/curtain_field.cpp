@@ -21,6 +21,17 @@ gl::Texture& sized(std::unique_ptr<gl::Texture>& texture, int width, int height)
 
 } // namespace
 
+glm::vec4 curtainStateUniform(const CurtainModel& model, size_t i, const CurtainState& s, size_t pointCount)
+{
+    return glm::vec4(s.energyFluxErgPerCm2S, s.energyKeV, static_cast<float>(pointCount),
+                     static_cast<float>(model.reachKm(i, s.detailPhase)));
+}
+
+glm::vec4 curtainDetailUniform(const CurtainModel& model, size_t i, const CurtainState& s)
+{
+    return glm::vec4(s.detailOffsetKm, s.detailPhase, model.lateralScale(i), 0.0f);
+}
+
 CurtainField::CurtainField(const CurtainModel& model, MapBuilder builder, const std::string& shaderDir)
     : model_(model), ahead_(model, builder),
       gpuMap_(builder == MapBuilder::Gpu ? std::make_unique<FootprintMapGpu>(shaderDir) : nullptr)
@@ -52,9 +63,8 @@ void CurtainField::update(double timeS, double nextTimeS)
     reachKm_ = 0.0f;
     for (size_t i = 0; i < states.size(); ++i) {
         const CurtainState& s = states[i];
-        state_[i] = glm::vec4(s.energyFluxErgPerCm2S, s.energyKeV, static_cast<float>(pointCounts_[i]),
-                              static_cast<float>(model_.reachKm(i, s.detailPhase)));
-        detailUniform_[i] = glm::vec4(s.detailOffsetKm, s.detailPhase, model_.lateralScale(i), 0.0f);
+        state_[i] = curtainStateUniform(model_, i, s, pointCounts_[i]);
+        detailUniform_[i] = curtainDetailUniform(model_, i, s);
         if (state_[i].x > 0.0f)
             reachKm_ = std::max(reachKm_, state_[i].w);
     }

@@ -25,6 +25,12 @@
 
 namespace aurorawall::components::aurora {
 
+// Curtain i's uniforms of shaders/components/aurora/aurora_curtains.glsl in state s, its polyline of
+// pointCount points: uCurtainState (peak flux, energy keV, point count, reach km) and uCurtainDetail
+// (detail offset km, phase, lateral scale, 0).
+glm::vec4 curtainStateUniform(const CurtainModel& model, size_t i, const CurtainState& s, size_t pointCount);
+glm::vec4 curtainDetailUniform(const CurtainModel& model, size_t i, const CurtainState& s);
+
 class CurtainField {
 public:
     // builder: Cpu or Gpu (not Auto); shaderDir holds components/aurora/ (the GPU's map build).
