@@ -41,6 +41,20 @@ inline std::vector<glm::ivec2> litPixels(const std::vector<glm::dvec3>& radiance
     return chosen;
 }
 
+// The `count` brightest pixels of a width-wide image of radiances (row-major), brightest first.
+inline std::vector<glm::ivec2> brightestPixels(const std::vector<glm::dvec3>& radiance, int width, size_t count)
+{
+    std::vector<size_t> order(radiance.size());
+    for (size_t i = 0; i < order.size(); ++i)
+        order[i] = i;
+    std::stable_sort(order.begin(), order.end(),
+                     [&](size_t a, size_t b) { return glm::length(radiance[a]) > glm::length(radiance[b]); });
+    std::vector<glm::ivec2> chosen;
+    for (size_t i = 0; i < std::min(count, order.size()); ++i)
+        chosen.emplace_back(int(order[i] % size_t(width)), int(order[i] / size_t(width)));
+    return chosen;
+}
+
 // The CPU reference at every pixel of a width × height view, row-major.
 inline std::vector<glm::dvec3> referenceImage(const render::ReferenceModel& model, const accuracy::SceneView& view,
                                               int width, int height)

@@ -60,9 +60,9 @@ namespace aurorawall::components::aurora {
 namespace {
 
 // A texture's level 0 as uploaded (RGBA32F).
-common::glsl::Sampler<double> sampler(int width, int height, int layers, std::vector<float> texels)
+common::GlslSampler<double> sampler(int width, int height, int layers, std::vector<float> texels)
 {
-    return common::glsl::Sampler<double>{width, height, layers, std::move(texels)};
+    return common::GlslSampler<double>{width, height, layers, std::move(texels)};
 }
 
 // What the aurora component's renderer binds (Renderer::setFrame, CurtainField, AuroraTables): the
