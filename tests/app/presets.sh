@@ -1,7 +1,7 @@
 #!/bin/bash
 # Regression: every shipped camera preset renders the same pixels as the images in data/presets,
 # rendered at 192x108 by the code before the components became plug-ins (twilight re-rendered
-# after its sky air became the atmosphere's: docs/aurora.md shows before and after; every preset
+# after its sky air became the atmosphere's: docs/aurora-physics.md shows before and after; every preset
 # with curtains re-rendered when the march began to integrate each step across the curtains, and
 # those with fluid detail when its sub-steps began to resolve the detail's cells along and again
 # when steps running along a curtain began to be integrated along it, and all when the emission

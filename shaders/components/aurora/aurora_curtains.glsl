@@ -307,7 +307,7 @@ vec3 integrateCurtains(vec3 o, vec3 d, real t0, real t1, vec4 candidates)
 // reads the map step by step until it reaches a step that some curtain can reach (or its end), and only
 // then integrates that step: the lanes integrate their near steps together, while their cheap steps in
 // between run in the inner loop (the same steps in the same order as one loop over both, so the same
-// image, in 0.56-0.77x the time on llvmpipe: docs/aurora.md).
+// image, in 0.56-0.77x the time on llvmpipe: docs/aurora-physics.md).
 vec3 auroraSegment(vec3 o, vec3 d, vec2 seg)
 {
     vec3 sum = vec3(0.0);

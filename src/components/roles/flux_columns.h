@@ -1,6 +1,6 @@
 #pragma once
 // The flux frames' running integrals across the strip, so that the renderer integrates a ray step
-// across a thin curtain in closed form instead of point-sampling it (docs/aurora.md, "Integrating
+// across a thin curtain in closed form instead of point-sampling it (docs/aurora-physics.md, "Integrating
 // across the curtain"). The flux F(s, u), as the renderer's texture lookup gives it
 // (sampleFlux: linear between cell centres, periodic), has the running integrals across it
 //   C(u) = ∫_{−Ly/2}^{u} F du',   M(u) = ∫_{−Ly/2}^{u} u' F du'
