@@ -178,7 +178,7 @@ real airmassChapmanAsymptoticUnit(vec3 origin, vec3 direction, real t0, real t1,
     return t1 < t0 ? -airmass : airmass;
 }
 
-// The default method for any finite input (docs/airmass.md, "Extreme inputs"). I is homogeneous in the
+// The default method for any finite input (docs/airmass.md, "Definitions", extreme inputs). I is homogeneous in the
 // lengths, I(k·o, d, k·t0, k·t1, k·H, k·R) = k·I, and does not depend on |d|: both are scaled by powers of
 // two, which is exact in float, so that the largest of |o_i|, R and H, and the largest |d_i|, lie in
 // [1/2, 1) (up to 8 for lengths near float's maximum). Then no square above leaves float's range. After

@@ -1,4 +1,4 @@
-// Not a test: the cost of the plasma's CPU reference (docs/PLASMA.md, "Cost"). Prints the Poisson
+// Not a test: the cost of the plasma's CPU reference (docs/PLASMA.md, "Cost on the CPU"). Prints the Poisson
 // solvers' residual and time per solve (Jacobi sweeps against the FFT) on a 64³ and a 256² grid, and
 // the time per particle per step of push, deposit and gather on a 64³ grid.
 #include "common/glsl.h"
