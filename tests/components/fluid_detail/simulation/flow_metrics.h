@@ -32,6 +32,12 @@ inline double maxAbsDifference(const PeriodicField& a, const PeriodicField& b)
     return e;
 }
 
+// The largest difference of either component over the faces of two velocities of one grid.
+inline double maxAbsDifference(const MacVelocity& a, const MacVelocity& b)
+{
+    return std::max(maxAbsDifference(a.u, b.u), maxAbsDifference(a.v, b.v));
+}
+
 // rms of the discrete divergence over the cells.
 inline double divergenceRms(const MacVelocity& velocity)
 {
