@@ -198,10 +198,9 @@ TEST(RenderOptions, MistakesAreUsageErrorsNamingTheOption)
 
 using Result = test::CommandOutput;
 
-Result runTables(std::vector<std::string> words)
+Result runTables(std::vector<std::string> options)
 {
-    words.insert(words.begin(), "tables");
-    return test::runInProcess(runTablesCommand, std::move(words));
+    return test::runInProcess(runTablesCommand, "tables", std::move(options));
 }
 
 TEST(TablesCommand, PrintsTheDepositionProfile)
@@ -345,10 +344,9 @@ TEST(AirmassCommand, FieldsBeyondFloatAndNonFiniteResultsAreErrors)
 
 // ---- accuracy, up to its first GL call ----
 
-Result runAccuracy(std::vector<std::string> words)
+Result runAccuracy(std::vector<std::string> options)
 {
-    words.insert(words.begin(), "accuracy");
-    return test::runInProcess(runAccuracyCommand, std::move(words));
+    return test::runInProcess(runAccuracyCommand, "accuracy", std::move(options));
 }
 
 TEST(AccuracyCommand, OneParserForTheThreeKinds)

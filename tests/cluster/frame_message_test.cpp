@@ -29,6 +29,18 @@ FrameMessage sampleFrame()
     return m;
 }
 
+// The events `sent`, each field of each, are the events `got`.
+void expectTheSameEvents(const std::vector<InputEvent>& got, const std::vector<InputEvent>& sent)
+{
+    ASSERT_EQ(got.size(), sent.size());
+    for (size_t i = 0; i < sent.size(); ++i) {
+        EXPECT_EQ(got[i].type, sent[i].type) << "event " << i;
+        EXPECT_EQ(got[i].code, sent[i].code) << "event " << i;
+        EXPECT_EQ(got[i].x, sent[i].x) << "event " << i;
+        EXPECT_EQ(got[i].y, sent[i].y) << "event " << i;
+    }
+}
+
 } // namespace
 
 TEST(FrameMessage, RoundTripKeepsEveryField)
@@ -46,13 +58,7 @@ TEST(FrameMessage, RoundTripKeepsEveryField)
     EXPECT_EQ(got.state.exposure, sent.state.exposure);
     EXPECT_EQ(got.state.quit, sent.state.quit);
     EXPECT_EQ(got.assignment, sent.assignment);
-    ASSERT_EQ(got.events.size(), sent.events.size());
-    for (size_t i = 0; i < sent.events.size(); ++i) {
-        EXPECT_EQ(got.events[i].type, sent.events[i].type);
-        EXPECT_EQ(got.events[i].code, sent.events[i].code);
-        EXPECT_EQ(got.events[i].x, sent.events[i].x);
-        EXPECT_EQ(got.events[i].y, sent.events[i].y);
-    }
+    ASSERT_NO_FATAL_FAILURE(expectTheSameEvents(got.events, sent.events));
     EXPECT_EQ(got.hud, sent.hud);
 }
 
@@ -152,13 +158,7 @@ TEST(RankMessage, RoundTripOfSeveralRanks)
             EXPECT_EQ(got[r].costs[i].cpuMs, sent[r].costs[i].cpuMs);
             EXPECT_EQ(got[r].costs[i].work, sent[r].costs[i].work);
         }
-        ASSERT_EQ(got[r].events.size(), sent[r].events.size()) << "rank " << r;
-        for (size_t i = 0; i < sent[r].events.size(); ++i) {
-            EXPECT_EQ(got[r].events[i].type, sent[r].events[i].type);
-            EXPECT_EQ(got[r].events[i].code, sent[r].events[i].code);
-            EXPECT_EQ(got[r].events[i].x, sent[r].events[i].x);
-            EXPECT_EQ(got[r].events[i].y, sent[r].events[i].y);
-        }
+        ASSERT_NO_FATAL_FAILURE(expectTheSameEvents(got[r].events, sent[r].events)) << "rank " << r;
     }
 
     // The balancer's input: one value per band by the chosen measure, NaN where nobody drew it.

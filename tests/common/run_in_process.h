@@ -4,6 +4,7 @@
 #include <ostream>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace aurorawall::test {
@@ -23,6 +24,14 @@ CommandOutput runInProcess(const Command& command, std::vector<std::string> word
     std::ostringstream out, err;
     const int status = command(int(argv.size()), argv.data(), out, err);
     return {status, out.str(), err.str()};
+}
+
+// The same on argv = name, options...: runInProcess(runMieCommand, "mie", {"--x", "100"}).
+template <class Command>
+CommandOutput runInProcess(const Command& command, const std::string& name, std::vector<std::string> options)
+{
+    options.insert(options.begin(), name);
+    return runInProcess(command, std::move(options));
 }
 
 // The text's lines, without their newlines.

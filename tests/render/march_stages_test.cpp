@@ -2,6 +2,7 @@
 // image on every shipped scene: the same text but for how each stage finds its pixel and writes it.
 #include "accuracy/scene_view.h"
 #include "components/registry.h"
+#include "egl_suite.h"
 #include "gl/context.h"
 #include "gl/float_target.h"
 #include "gl/full_screen_triangle.h"
@@ -24,13 +25,7 @@ namespace {
 
 const std::string kSource = AURORAWALL_SOURCE_DIR;
 
-class MarchStages : public ::testing::TestWithParam<std::string> {
-protected:
-    static void SetUpTestSuite() { context_ = gl::createContext(gl::Backend::Egl); }
-    static void TearDownTestSuite() { context_.reset(); }
-    static std::unique_ptr<gl::Context> context_;
-};
-std::unique_ptr<gl::Context> MarchStages::context_;
+class MarchStages : public test::EglSuite<std::string> {};
 
 } // namespace
 

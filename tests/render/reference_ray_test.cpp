@@ -120,13 +120,7 @@ TEST_F(ReferenceRay, GpuAtItsFinestSettingsAgreesWithTheReference)
 TEST_F(ReferenceRay, ReferenceConverges)
 {
     const io::Image gpu = accuracy::renderView(*scene_, *view_, kSource + "/shaders", 0).image;
-    std::vector<glm::ivec2> all;
-    for (int y = 0; y < gpu.height; ++y)
-        for (int x = 0; x < gpu.width; ++x)
-            all.emplace_back(x, y);
-    std::sort(all.begin(), all.end(), [&](glm::ivec2 a, glm::ivec2 b) {
-        return glm::length(accuracy::pixelRadiance(gpu, a.x, a.y)) > glm::length(accuracy::pixelRadiance(gpu, b.x, b.y));
-    });
+    const std::vector<glm::ivec2> all = test::brightestFirst(gpu, test::allPixels(gpu));
     // Four of the brightest twenty, spread out.
     const std::vector<glm::ivec2> pixels = {all[0], all[6], all[12], all[19]};
     render::ReferenceSettings fine, finer;

@@ -79,4 +79,24 @@ inline std::vector<glm::ivec2> litPixels(const io::Image& image, double floor, i
     return chosen;
 }
 
+// Every pixel of `image`, row-major.
+inline std::vector<glm::ivec2> allPixels(const io::Image& image)
+{
+    std::vector<glm::ivec2> pixels;
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x)
+            pixels.emplace_back(x, y);
+    return pixels;
+}
+
+// `pixels` of `image` sorted brightest first, by the length of their radiance (std::sort: equals in no
+// set order).
+inline std::vector<glm::ivec2> brightestFirst(const io::Image& image, std::vector<glm::ivec2> pixels)
+{
+    std::sort(pixels.begin(), pixels.end(), [&](glm::ivec2 a, glm::ivec2 b) {
+        return glm::length(accuracy::pixelRadiance(image, a.x, a.y)) > glm::length(accuracy::pixelRadiance(image, b.x, b.y));
+    });
+    return pixels;
+}
+
 } // namespace aurorawall::test

@@ -63,6 +63,38 @@ scene::Scene* ShaderSteps::scene_ = nullptr;
 accuracy::SceneView* ShaderSteps::view_ = nullptr;
 components::roles::FluxFrames* ShaderSteps::frames_ = nullptr;
 
+// Scene s with the aurora's march refined: half the step, sub-steps and altitude step of the emission rows,
+// and 4x their energies.
+scene::Scene refinedMarch(const scene::Scene& s)
+{
+    scene::Scene refined = s;
+    auto& aurora = refined.settings<components::aurora::Settings>();
+    aurora.stepKm /= 2.0;
+    aurora.resolveKm /= 2.0;
+    aurora.resolveCells /= 2.0;
+    aurora.tableAltitudeStepKm /= 2.0;
+    aurora.tableEnergyCount *= 4;
+    return refined;
+}
+
+// The march (coarse) and the refined march (fine) against the reference at `pixels` of `view`, relative
+// errors above `floor`: the march's largest below `maxError`, the refined march's below `share` of it.
+void expectTheDiscretization(const std::string& name, const render::ReferenceModel& coarse,
+                             const render::ReferenceModel& fine, const render::ReferenceModel& reference,
+                             const accuracy::SceneView& view, const std::vector<glm::ivec2>& pixels, double floor,
+                             double maxError, double share)
+{
+    SCOPED_TRACE(name);
+    const std::vector<glm::dvec3> r = accuracy::referencePixels(reference, view, pixels, 2);
+    const accuracy::RelativeError e = accuracy::relativeError(accuracy::referencePixels(coarse, view, pixels, 2), r, floor);
+    const accuracy::RelativeError eFine = accuracy::relativeError(accuracy::referencePixels(fine, view, pixels, 2), r, floor);
+    std::printf("%s: march in double vs CPU reference at %zu pixels: rms %.3g, max %.3g; refined march: rms %.3g, max %.3g\n",
+                name.c_str(), e.pixels, e.rms, e.max, eFine.rms, eFine.max);
+    EXPECT_EQ(e.pixels, pixels.size());
+    EXPECT_LT(e.max, maxError);
+    EXPECT_LT(eFine.max, share * e.max);
+}
+
 } // namespace
 
 // At the pixels of tests/render/reference_ray_test.cpp (16 lit pixels of the march's image, most lit by the
@@ -79,27 +111,12 @@ TEST_F(ShaderSteps, DiffersFromTheReferenceByItsDiscretization)
     for (size_t i = 0; i < 16; ++i)
         brightest.push_back(brightest64[4 * i]);
 
-    scene::Scene refined = *scene_;
-    auto& aurora = refined.settings<components::aurora::Settings>();
-    aurora.stepKm /= 2.0;
-    aurora.resolveKm /= 2.0;
-    aurora.resolveCells /= 2.0;
-    aurora.tableAltitudeStepKm /= 2.0;
-    aurora.tableEnergyCount *= 4;
+    const scene::Scene refined = refinedMarch(*scene_); // outlives the model, which refers to it
     const render::ReferenceModel fine = march(refined);
     const render::ReferenceModel reference(*scene_, view_->frame.timeS, curtainDetailData(frames_));
-    for (const std::vector<glm::ivec2>& pixels : {test::litPixels(image, kWidth, floor(), 16), brightest}) {
-        const std::vector<glm::dvec3> r = accuracy::referencePixels(reference, *view_, pixels, 2);
-        const accuracy::RelativeError e =
-            accuracy::relativeError(accuracy::referencePixels(coarse, *view_, pixels, 2), r, floor());
-        const accuracy::RelativeError eFine =
-            accuracy::relativeError(accuracy::referencePixels(fine, *view_, pixels, 2), r, floor());
-        std::printf("march in double vs CPU reference at %zu pixels: rms %.3g, max %.3g; refined march: rms %.3g, max %.3g\n",
-                    e.pixels, e.rms, e.max, eFine.rms, eFine.max);
-        EXPECT_EQ(e.pixels, pixels.size());
-        EXPECT_LT(e.max, 1e-3);
-        EXPECT_LT(eFine.max, 0.5 * e.max);
-    }
+    expectTheDiscretization("substorm, lit pixels", coarse, fine, reference, *view_,
+                            test::litPixels(image, kWidth, floor(), 16), floor(), 1e-3, 0.5);
+    expectTheDiscretization("substorm, brightest pixels", coarse, fine, reference, *view_, brightest, floor(), 1e-3, 0.5);
 }
 
 // The plasma's electron strip (tests/app/data/plasma-seam.toml at the finest settings) at the 16 brightest
@@ -116,24 +133,10 @@ TEST(ShaderStepsOnPlasma, DifferFromTheReferenceByTheirDiscretization)
     settings.shaderSteps = true;
     const render::ReferenceModel coarse(s, view.frame.timeS, curtainDetailData(&frames), settings);
     const std::vector<glm::ivec2> pixels = test::brightestPixels(test::referenceImage(coarse, view, kWidth, kHeight), kWidth, 16);
-    scene::Scene refined = s;
-    auto& aurora = refined.settings<components::aurora::Settings>();
-    aurora.stepKm /= 2.0;
-    aurora.resolveKm /= 2.0;
-    aurora.resolveCells /= 2.0;
-    aurora.tableAltitudeStepKm /= 2.0;
-    aurora.tableEnergyCount *= 4;
+    const scene::Scene refined = refinedMarch(s);
     const render::ReferenceModel fine(refined, view.frame.timeS, curtainDetailData(&frames), settings);
     const render::ReferenceModel reference(s, view.frame.timeS, curtainDetailData(&frames));
-    const double floor = 1.0 / (255.0 * s.exposure);
-    const std::vector<glm::dvec3> r = accuracy::referencePixels(reference, view, pixels, 2);
-    const accuracy::RelativeError e = accuracy::relativeError(accuracy::referencePixels(coarse, view, pixels, 2), r, floor);
-    const accuracy::RelativeError eFine = accuracy::relativeError(accuracy::referencePixels(fine, view, pixels, 2), r, floor);
-    std::printf("plasma: march in double vs CPU reference at %zu pixels: rms %.3g, max %.3g; refined march: rms %.3g, max %.3g\n",
-                e.pixels, e.rms, e.max, eFine.rms, eFine.max);
-    EXPECT_EQ(e.pixels, pixels.size());
-    EXPECT_LT(e.max, 5e-3);
-    EXPECT_LT(eFine.max, 0.75 * e.max);
+    expectTheDiscretization("plasma", coarse, fine, reference, view, pixels, 1.0 / (255.0 * s.exposure), 5e-3, 0.75);
 }
 
 // common/glsl.h reads a texture as GL does: texelFetch the texel; textureLod at level 0 of a linear,

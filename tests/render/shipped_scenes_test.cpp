@@ -5,6 +5,7 @@
 #include "components/aurora/tools/aurora_accuracy.h"
 #include "components/registry.h"
 #include "components/roles/curtain_detail.h"
+#include "egl_suite.h"
 #include "gl/context.h"
 #include "render/reference_ray.h"
 #include "scene/scene.h"
@@ -25,13 +26,7 @@ namespace {
 
 const std::string kSource = AURORAWALL_SOURCE_DIR;
 
-class ShippedScene : public ::testing::TestWithParam<std::string> {
-protected:
-    static void SetUpTestSuite() { context_ = gl::createContext(gl::Backend::Egl); }
-    static void TearDownTestSuite() { context_.reset(); }
-    static std::unique_ptr<gl::Context> context_;
-};
-std::unique_ptr<gl::Context> ShippedScene::context_;
+class ShippedScene : public test::EglSuite<std::string> {};
 
 } // namespace
 

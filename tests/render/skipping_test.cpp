@@ -4,6 +4,7 @@
 // jumps over whole steps of the naive march's grid, so the samples it takes are the naive march's.
 // So the image is also the same whether the CPU or the GPU built the map.
 #include "accuracy/scene_view.h"
+#include "egl_suite.h"
 #include "gl/context.h"
 #include "components/aurora/aurora.h"
 #include "components/fluid_detail/fluid_detail.h"
@@ -48,14 +49,7 @@ Difference skipAgainstNaive(const std::string& preset, double stepKm)
     return d;
 }
 
-class Skipping : public ::testing::TestWithParam<const char*> {
-protected:
-    static void SetUpTestSuite() { context_ = gl::createContext(gl::Backend::Egl); }
-    static void TearDownTestSuite() { context_.reset(); }
-    static std::unique_ptr<gl::Context> context_;
-};
-
-std::unique_ptr<gl::Context> Skipping::context_;
+class Skipping : public test::EglSuite<const char*> {};
 
 } // namespace
 

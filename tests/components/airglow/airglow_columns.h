@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <random>
+#include <vector>
 
 // A named namespace: not every function of the modules is used.
 namespace aurorawall::airglow_columns::f32 {
@@ -76,6 +78,34 @@ inline double marchedColumn(const LayerProfile& p, glm::dvec3 o, glm::dvec3 d, d
         sum += step * components::airglow::volumeEmission(p, glm::length(o + (t + 0.5 * step) * d) - R);
     }
     return sum;
+}
+
+// A ray of the closed form's test and cost table: its origin's altitude (km), origin and direction (unit).
+struct Ray {
+    double altitude;
+    glm::dvec3 o, d;
+};
+
+// The rays for one layer: from the ground, just above it, inside the layers, at the peak, from orbit and
+// far in space, each in 12 random directions (drawn from `random`) and tangent to the sphere through the
+// peak and through the base, where it exists.
+inline std::vector<Ray> layerRays(const components::airglow::Layer& layer, std::mt19937& random)
+{
+    const double R = kPlanetRadiusKm;
+    const LayerProfile p = components::airglow::layerProfile(layer);
+    std::uniform_real_distribution<double> uniform(-1.0, 1.0);
+    std::vector<Ray> rays;
+    for (double altitude : {0.0, 0.001, 50.0, layer.peakKm, 400.0, 36000.0}) {
+        const glm::dvec3 o(0.0, 0.0, R + altitude);
+        for (int i = 0; i < 12; ++i)
+            rays.push_back({altitude, o, glm::normalize(glm::dvec3(uniform(random), uniform(random), uniform(random)))});
+        for (double h : {layer.peakKm, p.baseKm + 0.01})
+            if (altitude > h) {
+                const double s = (R + h) / (R + altitude);
+                rays.push_back({altitude, o, {s, 0.0, -std::sqrt(1.0 - s * s)}});
+            }
+    }
+    return rays;
 }
 
 } // namespace aurorawall::airglow_columns

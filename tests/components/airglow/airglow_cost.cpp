@@ -62,27 +62,15 @@ int main()
 {
     std::vector<Case> cases;
     std::mt19937 random(7);
-    std::uniform_real_distribution<double> uniform(-1.0, 1.0);
     const std::vector<Layer> layers = components::airglow::Settings().layers;
     for (const Layer& layer : {layers[0], layers[2]}) {
         const LayerProfile p = components::airglow::layerProfile(layer);
-        for (double altitude : {0.0, 0.001, 50.0, layer.peakKm, 400.0, 36000.0}) {
-            const glm::dvec3 o(0.0, 0.0, R + altitude);
-            std::vector<glm::dvec3> directions;
-            for (int i = 0; i < 12; ++i)
-                directions.push_back(glm::normalize(glm::dvec3(uniform(random), uniform(random), uniform(random))));
-            for (double h : {layer.peakKm, p.baseKm + 0.01})
-                if (altitude > h) {
-                    const double s = (R + h) / (R + altitude);
-                    directions.push_back({s, 0.0, -std::sqrt(1.0 - s * s)});
-                }
-            for (const glm::dvec3& d : directions) {
-                Case c{p, glm::vec3(o), glm::vec3(d), {}, marchedColumn(p, o, d, 0.01)};
-                if (c.exact < 1e-3 * layer.zenithRayleigh)
-                    continue;
-                c.shell = airglow_columns::shellParts(p, o, d);
-                cases.push_back(c);
-            }
+        for (const airglow_columns::Ray& ray : airglow_columns::layerRays(layer, random)) {
+            Case c{p, glm::vec3(ray.o), glm::vec3(ray.d), {}, marchedColumn(p, ray.o, ray.d, 0.01)};
+            if (c.exact < 1e-3 * layer.zenithRayleigh)
+                continue;
+            c.shell = airglow_columns::shellParts(p, ray.o, ray.d);
+            cases.push_back(c);
         }
     }
     std::printf("method,max_rel_error,rms_rel_error,ns_per_ray\n");

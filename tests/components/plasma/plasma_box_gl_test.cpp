@@ -12,6 +12,7 @@
 #include "io/table_cache.h"
 #include "render/float_bounds.h"
 #include "render/reference_ray.h"
+#include "render/scene_samples.h"
 #include "scene/scene.h"
 
 #include <gtest/gtest.h>
@@ -33,13 +34,7 @@ const std::string kSource = AURORAWALL_SOURCE_DIR;
 // The `count` brightest pixels of an image: on the box.
 std::vector<glm::ivec2> brightestPixels(const io::Image& image, size_t count)
 {
-    std::vector<glm::ivec2> pixels;
-    for (int y = 0; y < image.height; ++y)
-        for (int x = 0; x < image.width; ++x)
-            pixels.emplace_back(x, y);
-    std::sort(pixels.begin(), pixels.end(), [&](glm::ivec2 a, glm::ivec2 b) {
-        return glm::length(accuracy::pixelRadiance(image, a.x, a.y)) > glm::length(accuracy::pixelRadiance(image, b.x, b.y));
-    });
+    std::vector<glm::ivec2> pixels = test::brightestFirst(image, test::allPixels(image));
     pixels.resize(std::min(count, pixels.size()));
     return pixels;
 }

@@ -8,6 +8,7 @@
 #include "components/plasma/sheet_frames.h"
 #include "components/registry.h"
 #include "components/roles/curtain_detail.h"
+#include "plasma_scene_text.h"
 #include "scene/load_error.h"
 
 #include <gtest/gtest.h>
@@ -145,10 +146,7 @@ TEST(PlasmaBoxReference, FramePositionLoopsOverThePlayTime)
     EXPECT_DOUBLE_EQ(components::plasma::boxFramePosition(p, 18.0), 11.5);
 }
 
-const std::string kHead = "[scene]\nname = \"t\"\ncomponents = [\"planet\", \"aurora\", \"plasma\"]\n"
-                          "[camera]\nlatitude_deg = 0.0\nlongitude_deg = 0.0\naltitude_km = 1.0\n"
-                          "heading_deg = 0.0\nelevation_deg = 10.0\n"
-                          "[[aurora.curtain]]\npoints_lat_lon_deg = [[0.0, 0.0], [0.0, 1.0]]\n[plasma]\n";
+const std::string kHead = test::plasmaSceneHead() + "[plasma]\n";
 
 // box_steps_per_cell: default 2, read with kind = "box", refused outside [1, 64] and with
 // kind = "curls", the error naming file, line and key.

@@ -9,6 +9,7 @@
 #include "components/plasma/simulation/plasma_parameters.h"
 #include "components/registry.h"
 
+#include "plasma_scene_text.h"
 #include "scene/load_error.h"
 
 #include <gtest/gtest.h>
@@ -239,10 +240,7 @@ std::string sceneError(const std::string& text)
     return test::loadErrorOfText("plasma_box_settings.toml", text);
 }
 
-const std::string kHead = "[scene]\nname = \"t\"\ncomponents = [\"planet\", \"aurora\", \"plasma\"]\n"
-                          "[camera]\nlatitude_deg = 0.0\nlongitude_deg = 0.0\naltitude_km = 1.0\n"
-                          "heading_deg = 0.0\nelevation_deg = 10.0\n"
-                          "[[aurora.curtain]]\npoints_lat_lon_deg = [[0.0, 0.0], [0.0, 1.0]]\n[plasma]\n";
+const std::string kHead = test::plasmaSceneHead() + "[plasma]\n";
 
 TEST(PlasmaBoxSettings, DefaultIsCurlsAndBoxReadsItsKeys)
 {

@@ -7,6 +7,7 @@
 #include "components/plasma/simulation/electron_sheet.h"
 #include "components/registry.h"
 
+#include "plasma_scene_text.h"
 #include "scene/load_error.h"
 
 #include <gtest/gtest.h>
@@ -44,10 +45,7 @@ std::string sceneError(const std::string& text)
     return test::loadErrorOfText("plasma_settings.toml", text);
 }
 
-const std::string kSceneHead = "[scene]\nname = \"t\"\ncomponents = [\"planet\", \"aurora\", \"plasma\"]\n"
-                               "[camera]\nlatitude_deg = 0.0\nlongitude_deg = 0.0\naltitude_km = 1.0\n"
-                               "heading_deg = 0.0\nelevation_deg = 10.0\n"
-                               "[[aurora.curtain]]\npoints_lat_lon_deg = [[0.0, 0.0], [0.0, 1.0]]\n";
+const std::string kSceneHead = test::plasmaSceneHead();
 
 } // namespace
 

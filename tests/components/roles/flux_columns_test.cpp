@@ -92,42 +92,53 @@ void expectTheQuadratureEverywhere(const FluxFrames& f, const FluxIntegrals& t, 
             }
 }
 
+// Table t holds `cells` lines of `entries` entries in each of `frames` frames, 4 floats each.
+void expectTheShape(const FluxIntegrals& t, int cells, int entries, int frames)
+{
+    ASSERT_EQ(t.cells, cells);
+    ASSERT_EQ(t.entries, entries);
+    ASSERT_EQ(t.frames, frames);
+    ASSERT_EQ(t.texels.size(), std::size_t(4 * cells * entries * frames));
+}
+
+// Over a short interval at 200 places q from `lo` to `hi` along cell 2's centre line, in frame 1 (phase 1),
+// the line's mass is the flux there times the interval's length: the table has the flux's own
+// resolution, not a cell average's.
+void expectTheLocalFlux(const FluxFrames& f, const FluxIntegrals& t, bool along, double lo, double hi, unsigned seed)
+{
+    const double fixed = along ? 2.5 * f.texelKmY - 0.5 * f.ny * f.texelKmY : 2.5 * f.texelKmX;
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> place(lo, hi);
+    for (int n = 0; n < 200; ++n) {
+        const double q = place(rng), h = 1e-4;
+        const double mass = tableAt(t, f, along, 1, 2, q + h).x - tableAt(t, f, along, 1, 2, q).x;
+        const double flux = along ? sampleFlux(f, q + 0.5 * h, fixed, 1.0) : sampleFlux(f, fixed, q + 0.5 * h, 1.0);
+        EXPECT_NEAR(mass / h, flux, 2e-3) << q;
+    }
+}
+
 } // namespace
 
 TEST(FluxColumns, EqualTheIntegralsOfTheBilinearFluxAnywhereAcross)
 {
     const FluxFrames f = randomFrames(6, 8, 3, 7);
     const FluxIntegrals c = fluxColumns(f);
-    ASSERT_EQ(c.cells, 6);
-    ASSERT_EQ(c.entries, 9);
-    ASSERT_EQ(c.frames, 3);
-    ASSERT_EQ(c.texels.size(), std::size_t(4 * 6 * 9 * 3));
+    ASSERT_NO_FATAL_FAILURE(expectTheShape(c, 6, 9, 3));
     expectTheQuadratureEverywhere(f, c, false, 3);
 }
 
-// Over a short interval the column's mass is the flux there times its width: the table has the
-// flux's own resolution, not a cell average's.
+// Over a short interval the column's mass is the flux there times its width.
 TEST(FluxColumns, ShortIntervalsSeeTheLocalFlux)
 {
     const FluxFrames f = randomFrames(4, 16, 2, 11);
-    const FluxIntegrals c = fluxColumns(f);
-    std::mt19937 rng(5);
-    std::uniform_real_distribution<double> across(-1.9, 1.9);
-    for (int n = 0; n < 200; ++n) {
-        const double u = across(rng), h = 1e-4;
-        const double mass = tableAt(c, f, false, 1, 2, u + h).x - tableAt(c, f, false, 1, 2, u).x;
-        EXPECT_NEAR(mass / h, sampleFlux(f, 2.5 * f.texelKmX, u + 0.5 * h, 1.0), 2e-3) << u;
-    }
+    expectTheLocalFlux(f, fluxColumns(f), false, -1.9, 1.9, 5);
 }
 
 TEST(FluxRows, EqualTheIntegralsOfTheBilinearFluxAnywhereAlong)
 {
     const FluxFrames f = randomFrames(7, 5, 3, 13);
     const FluxIntegrals r = fluxRows(f);
-    ASSERT_EQ(r.cells, 5);
-    ASSERT_EQ(r.entries, 8);
-    ASSERT_EQ(r.frames, 3);
-    ASSERT_EQ(r.texels.size(), std::size_t(4 * 5 * 8 * 3));
+    ASSERT_NO_FATAL_FAILURE(expectTheShape(r, 5, 8, 3));
     expectTheQuadratureEverywhere(f, r, true, 17);
 }
 
@@ -135,15 +146,7 @@ TEST(FluxRows, EqualTheIntegralsOfTheBilinearFluxAnywhereAlong)
 TEST(FluxRows, ShortIntervalsSeeTheLocalFlux)
 {
     const FluxFrames f = randomFrames(16, 4, 2, 19);
-    const FluxIntegrals r = fluxRows(f);
-    const double u = 2.5 * f.texelKmY - 0.5 * f.ny * f.texelKmY;
-    std::mt19937 rng(23);
-    std::uniform_real_distribution<double> along(0.0, f.nx * f.texelKmX - 1e-3);
-    for (int n = 0; n < 200; ++n) {
-        const double s = along(rng), h = 1e-4;
-        const double mass = tableAt(r, f, true, 1, 2, s + h).x - tableAt(r, f, true, 1, 2, s).x;
-        EXPECT_NEAR(mass / h, sampleFlux(f, s + 0.5 * h, u, 1.0), 2e-3) << s;
-    }
+    expectTheLocalFlux(f, fluxRows(f), true, 0.0, f.nx * f.texelKmX - 1e-3, 23);
 }
 
 // The packed texture holds every entry of both tables at its documented place, with the periodic

@@ -36,6 +36,14 @@ using random_curtains::kR;
 using random_curtains::randomCurtains;
 using random_curtains::randomInCap;
 
+// The default map but `size` texels on a side.
+FootprintMapSpec mapSpec(int size)
+{
+    FootprintMapSpec spec;
+    spec.size = size;
+    return spec;
+}
+
 // Great-circle distance in km from direction p to the polyline of great-circle arcs: the perpendicular
 // distance R asin|p·n| where p projects inside the arc (n = a × b normalized), else the nearer end.
 double distanceToArcKm(const glm::dvec3& p, const glm::dvec3& a, const glm::dvec3& b)
@@ -143,9 +151,7 @@ TEST(FootprintMap, TexelsHoldExactIntegers)
 {
     std::mt19937_64 rng(3);
     const std::vector<CurtainPolyline> curtains = randomCurtains(rng, 4, 800.0, 5.0);
-    FootprintMapSpec spec;
-    spec.size = 64;
-    const FootprintMap map = buildFootprintMap(curtains, spec, kR);
+    const FootprintMap map = buildFootprintMap(curtains, mapSpec(64), kR);
     ASSERT_EQ(map.texels.size(), 64u * 64u * 4u);
     for (size_t t = 0; t < map.texels.size(); t += 4) {
         const float id = map.texels[t], index = map.texels[t + 1];
@@ -178,8 +184,7 @@ TEST(FootprintMap, SecondCurtainAgainstBruteForce)
 {
     std::mt19937_64 rng(5);
     const std::vector<CurtainPolyline> curtains = randomCurtains(rng, 6, 1000.0, 5.0);
-    FootprintMapSpec spec;
-    spec.size = 128;
+    FootprintMapSpec spec = mapSpec(128);
     spec.reachKm = 200.0;
     const FootprintMap map = buildFootprintMap(curtains, spec, kR);
     int texels = 0, withSecond = 0;
@@ -222,8 +227,7 @@ TEST(FootprintMap, BandIsExactAndFarTexelsAreLowerBounds)
 {
     std::mt19937_64 rng(4);
     for (int size : {64, 128, 256, 512}) {
-        FootprintMapSpec spec;
-        spec.size = size;
+        FootprintMapSpec spec = mapSpec(size);
         spec.reachKm = 20.0;
         long bandTexels = 0, farTexels = 0;
         double farSlackTexels = 0.0, tightestTexels = 1e30;
@@ -331,10 +335,8 @@ TEST(FootprintMap, BuildIsDeterministic)
 {
     std::mt19937_64 rng(6);
     const std::vector<CurtainPolyline> curtains = randomCurtains(rng, 10, 1000.0, 2.0);
-    FootprintMapSpec spec;
-    spec.size = 256;
-    const FootprintMap a = buildFootprintMap(curtains, spec, kR);
-    const FootprintMap b = buildFootprintMap(curtains, spec, kR);
+    const FootprintMap a = buildFootprintMap(curtains, mapSpec(256), kR);
+    const FootprintMap b = buildFootprintMap(curtains, mapSpec(256), kR);
     ASSERT_EQ(a.texels.size(), b.texels.size());
     EXPECT_EQ(std::memcmp(a.texels.data(), b.texels.data(), a.texels.size() * sizeof(float)), 0);
     EXPECT_EQ(a.marginKm, b.marginKm);
@@ -344,8 +346,7 @@ TEST(FootprintMap, FarAndEmpty)
 {
     std::mt19937_64 rng(7);
     const std::vector<CurtainPolyline> curtains = randomCurtains(rng, 3, 500.0, 5.0);
-    FootprintMapSpec spec;
-    spec.size = 128;
+    const FootprintMapSpec spec = mapSpec(128);
     const FootprintMap map = buildFootprintMap(curtains, spec, kR);
     for (int k = 0; k < 1000; ++k) {
         const glm::dvec3 p = randomInCap(rng, map.centre, map.east, aurorawall::physics::kPi);

@@ -4,6 +4,7 @@
 #include "components/fluid_detail/simulation/fft_poisson.h"
 #include "physics/constants.h"
 #include "components/fluid_detail/simulation/multigrid.h"
+#include "flow_metrics.h"
 
 #include <gtest/gtest.h>
 
@@ -47,14 +48,6 @@ double maxAbs(const PeriodicField& f)
     for (double q : f.values)
         m = std::max(m, std::abs(q));
     return m;
-}
-
-double maxAbsDifference(const PeriodicField& a, const PeriodicField& b)
-{
-    double e = 0.0;
-    for (std::size_t k = 0; k < a.values.size(); ++k)
-        e = std::max(e, std::abs(a.values[k] - b.values[k]));
-    return e;
 }
 
 TEST(FftPoisson, RecoversAFieldFromItsDiscreteLaplacian)

@@ -2,7 +2,9 @@
 // Diagnostics the fluid tests share.
 #include "components/fluid_detail/simulation/stable_fluids.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstddef>
 
 namespace aurorawall::components::fluid_detail::simulation {
 
@@ -19,6 +21,21 @@ inline double gradientRms(const MacVelocity& velocity)
             sum += ux * ux + uy * uy + vx * vx + vy * vy;
         }
     return std::sqrt(sum / double(u.nx * u.ny));
+}
+
+// The largest |a − b| over the cells of two fields of one grid.
+inline double maxAbsDifference(const PeriodicField& a, const PeriodicField& b)
+{
+    double e = 0.0;
+    for (std::size_t k = 0; k < a.values.size(); ++k)
+        e = std::max(e, std::abs(a.values[k] - b.values[k]));
+    return e;
+}
+
+// The largest difference of either component over the faces of two velocities of one grid.
+inline double maxAbsDifference(const MacVelocity& a, const MacVelocity& b)
+{
+    return std::max(maxAbsDifference(a.u, b.u), maxAbsDifference(a.v, b.v));
 }
 
 // rms of the discrete divergence over the cells.

@@ -2,6 +2,7 @@
 // manufactured problem, and the checkerboard mode that plain Jacobi cannot remove.
 #include "physics/constants.h"
 #include "components/fluid_detail/simulation/multigrid.h"
+#include "flow_metrics.h"
 
 #include <gtest/gtest.h>
 
@@ -45,14 +46,6 @@ Manufactured manufactured(int nx, int ny, double lx, double ly)
             m.rhs(i, j) = laplacianOfPhi(x, y, lx, ly);
         }
     return m;
-}
-
-double maxAbsDifference(const PeriodicField& a, const PeriodicField& b)
-{
-    double e = 0.0;
-    for (std::size_t k = 0; k < a.values.size(); ++k)
-        e = std::max(e, std::abs(a.values[k] - b.values[k]));
-    return e;
 }
 
 // Every V-cycle cuts the residual by at least 10× until it reaches round-off.

@@ -22,10 +22,9 @@ using test::exactly;
 using test::lines;
 using test::nonFiniteCell;
 
-Result runMie(std::vector<std::string> words)
+Result runMie(std::vector<std::string> options)
 {
-    words.insert(words.begin(), "mie");
-    return test::runInProcess(runMieCommand, std::move(words));
+    return test::runInProcess(runMieCommand, "mie", std::move(options));
 }
 
 std::vector<double> csvNumbers(const std::string& row)

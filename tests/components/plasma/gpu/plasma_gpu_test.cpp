@@ -23,6 +23,7 @@
 #include "gl/context.h"
 #include "poisson_test_density.h"
 #include "render/reference_ray.h"
+#include "render/scene_samples.h"
 #include "scene/scene.h"
 
 #include <algorithm>
@@ -959,13 +960,11 @@ TEST(PlasmaLive, RenderAgreesWithTheReference)
     const io::Image gpu = accuracy::renderView(s, view, kShaders, 0).image;
     const double floor = 1.0 / (255.0 * s.exposure);
     // The middle half of the view: the arc's ends (near x = 10 and 53 of 64) lie outside it.
-    std::vector<glm::ivec2> pixels;
+    std::vector<glm::ivec2> middle;
     for (int y = 0; y < gpu.height; ++y)
         for (int x = gpu.width / 4; x < 3 * gpu.width / 4; ++x)
-            pixels.emplace_back(x, y);
-    std::sort(pixels.begin(), pixels.end(), [&](glm::ivec2 a, glm::ivec2 b) {
-        return glm::length(accuracy::pixelRadiance(gpu, a.x, a.y)) > glm::length(accuracy::pixelRadiance(gpu, b.x, b.y));
-    });
+            middle.emplace_back(x, y);
+    std::vector<glm::ivec2> pixels = test::brightestFirst(gpu, middle);
     pixels.resize(16);
     const components::roles::FluxFrames frames = component::simulateSheetFrames(seamStrip());
     const render::ReferenceModel model(s, view.frame.timeS, components::roles::curtainDetailData(&frames));

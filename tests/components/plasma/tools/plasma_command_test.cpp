@@ -24,10 +24,9 @@ using test::exactly;
 using test::lines;
 using test::nonFiniteCell;
 
-Result runPlasma(std::vector<std::string> words)
+Result runPlasma(std::vector<std::string> options)
 {
-    words.insert(words.begin(), "plasma");
-    return test::runInProcess(runPlasmaCommand, std::move(words));
+    return test::runInProcess(runPlasmaCommand, "plasma", std::move(options));
 }
 
 // Time steps and spacings where a case cannot measure are usage errors naming the option: at
