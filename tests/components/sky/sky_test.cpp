@@ -2,6 +2,7 @@
 // site's sky, checked against the site's own local frame built here from latitude and longitude, its
 // default illuminance, and one-line errors for what the shader cannot take.
 #include "common/planet_frame.h"
+#include "physics/constants.h"
 #include "components/registry.h"
 #include "components/sky/sky.h"
 #include "scene/load_error.h"
@@ -34,7 +35,7 @@ components::sky::Settings skyOf(const std::string& name, const std::string& text
 
 double degrees(double radians)
 {
-    return radians * 180.0 / std::acos(-1.0);
+    return radians * 180.0 / physics::kPi;
 }
 
 } // namespace
