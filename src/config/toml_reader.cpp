@@ -238,17 +238,22 @@ static bool toNumber(const TomlValue& v, double& out)
     return false;
 }
 
-double TableReader::number(const std::string& key, double lo, double hi) const
+double TableReader::boundedNumber(const std::string& key, double lo, double hi, bool loIncluded) const
 {
     double x = 0;
     if (!toNumber(at(key), x))
         fail(key, "expected a number");
-    if (!std::isfinite(x) || x < lo || x > hi) {
+    if (!std::isfinite(x) || (loIncluded ? x < lo : x <= lo) || x > hi) {
         std::ostringstream s;
-        s << "must be a finite number in [" << lo << ", " << hi << "] (got " << x << ")";
+        s << "must be a finite number in " << (loIncluded ? "[" : "(") << lo << ", " << hi << "] (got " << x << ")";
         fail(key, s.str());
     }
     return x;
+}
+
+double TableReader::number(const std::string& key, double lo, double hi) const
+{
+    return boundedNumber(key, lo, hi, true);
 }
 
 double TableReader::number(const std::string& key, double lo, double hi, double fallback) const
@@ -258,15 +263,7 @@ double TableReader::number(const std::string& key, double lo, double hi, double 
 
 double TableReader::numberAbove(const std::string& key, double lo, double hi) const
 {
-    double x = 0;
-    if (!toNumber(at(key), x))
-        fail(key, "expected a number");
-    if (!std::isfinite(x) || x <= lo || x > hi) {
-        std::ostringstream s;
-        s << "must be a finite number in (" << lo << ", " << hi << "] (got " << x << ")";
-        fail(key, s.str());
-    }
-    return x;
+    return boundedNumber(key, lo, hi, false);
 }
 
 double TableReader::numberAbove(const std::string& key, double lo, double hi, double fallback) const

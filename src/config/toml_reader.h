@@ -81,6 +81,8 @@ public:
 
 private:
     const TomlValue& at(const std::string& key) const;
+    // A finite number in [lo, hi], or in (lo, hi] when !loIncluded.
+    double boundedNumber(const std::string& key, double lo, double hi, bool loIncluded) const;
     std::string qualified(const std::string& key) const;
 
     int fileLine(const TomlValue& value) const; // the value's line in the file

@@ -77,21 +77,15 @@ std::string mapLog(const std::string& log, const ShaderSource& source)
     return mapped;
 }
 
-std::string shaderLog(GLuint shader)
+// The info log of a shader or a program, read with that object's pair of GL calls
+// (glGetShaderiv and glGetShaderInfoLog, or glGetProgramiv and glGetProgramInfoLog).
+template <class GetParameter, class GetInfoLog>
+std::string infoLog(GLuint object, GetParameter getParameter, GetInfoLog getInfoLog)
 {
     GLint length = 0;
-    glGetShaderiv(shader, GL_INFO_LOG_LENGTH, &length);
+    getParameter(object, GL_INFO_LOG_LENGTH, &length);
     std::string log(static_cast<size_t>(length > 0 ? length : 1), '\0');
-    glGetShaderInfoLog(shader, length, nullptr, log.data());
-    return log.c_str();
-}
-
-std::string programLog(GLuint program)
-{
-    GLint length = 0;
-    glGetProgramiv(program, GL_INFO_LOG_LENGTH, &length);
-    std::string log(static_cast<size_t>(length > 0 ? length : 1), '\0');
-    glGetProgramInfoLog(program, length, nullptr, log.data());
+    getInfoLog(object, length, nullptr, log.data());
     return log.c_str();
 }
 
@@ -117,7 +111,7 @@ GLuint compile(GLenum stage, const ShaderSource& source)
     GLint ok = GL_FALSE;
     glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
     if (!ok) {
-        const std::string log = mapLog(shaderLog(shader), source);
+        const std::string log = mapLog(infoLog(shader, glGetShaderiv, glGetShaderInfoLog), source);
         glDeleteShader(shader);
         throw ShaderError(stageName(stage) + ": " + log);
     }
@@ -137,7 +131,7 @@ GLuint link(const std::vector<GLuint>& shaders)
     GLint ok = GL_FALSE;
     glGetProgramiv(program, GL_LINK_STATUS, &ok);
     if (!ok) {
-        const std::string log = programLog(program);
+        const std::string log = infoLog(program, glGetProgramiv, glGetProgramInfoLog);
         glDeleteProgram(program);
         throw ShaderError("link: " + log);
     }

@@ -51,6 +51,13 @@ Hermite hermite(double s)
     return {2 * s3 - 3 * s2 + 1, s3 - 2 * s2 + s, -2 * s3 + 3 * s2, s3 - s2};
 }
 
+// The end key whose values hold at timeS when timeS is at or beyond that end of the path; null
+// between the ends.
+const CameraKey* endKeyAt(const std::vector<CameraKey>& keys, double timeS)
+{
+    return timeS <= keys.front().timeS ? &keys.front() : timeS >= keys.back().timeS ? &keys.back() : nullptr;
+}
+
 } // namespace
 
 double zoomOf(double fieldOfViewDeg, double wallTanHalfFov)
@@ -137,10 +144,8 @@ std::size_t CameraPath::segment(double timeS, double& s) const
 
 glm::dvec3 CameraPath::positionAt(double timeS) const
 {
-    if (timeS <= keys_.front().timeS)
-        return keys_.front().positionKm;
-    if (timeS >= keys_.back().timeS)
-        return keys_.back().positionKm;
+    if (const CameraKey* end = endKeyAt(keys_, timeS))
+        return end->positionKm;
     double s = 0.0;
     const std::size_t i = segment(timeS, s);
     const double h = keys_[i + 1].timeS - keys_[i].timeS;
@@ -152,10 +157,8 @@ glm::dvec3 CameraPath::positionAt(double timeS) const
 double CameraPath::zoomAt(double timeS, double wallTanHalfFov) const
 {
     const auto zoom = [&](std::size_t k) { return zoomOf(keys_[k], wallTanHalfFov); };
-    if (timeS <= keys_.front().timeS)
-        return zoom(0);
-    if (timeS >= keys_.back().timeS)
-        return zoom(keys_.size() - 1);
+    if (const CameraKey* end = endKeyAt(keys_, timeS))
+        return zoomOf(*end, wallTanHalfFov);
     double s = 0.0;
     const std::size_t i = segment(timeS, s);
     if (s == 0.0) // exactly the key's zoom, not exp(ln z) rounded
@@ -176,10 +179,9 @@ CameraFrame CameraPath::frameAt(double timeS) const
 {
     const auto at = std::lower_bound(keys_.begin(), keys_.end(), timeS,
                                      [](const CameraKey& k, double t) { return k.timeS < t; });
-    const CameraKey* key = timeS <= keys_.front().timeS ? &keys_.front()
-                           : timeS >= keys_.back().timeS ? &keys_.back()
-                           : at != keys_.end() && at->timeS == timeS ? &*at
-                                                                      : nullptr;
+    const CameraKey* key = endKeyAt(keys_, timeS);
+    if (!key && at != keys_.end() && at->timeS == timeS)
+        key = &*at;
     if (key && key->frame)
         return *key->frame;
     return frameOf(orientationAt(timeS));
@@ -187,10 +189,8 @@ CameraFrame CameraPath::frameAt(double timeS) const
 
 glm::dquat CameraPath::orientationAt(double timeS) const
 {
-    if (timeS <= keys_.front().timeS)
-        return keys_.front().orientation;
-    if (timeS >= keys_.back().timeS)
-        return keys_.back().orientation;
+    if (const CameraKey* end = endKeyAt(keys_, timeS))
+        return end->orientation;
     double s = 0.0;
     const std::size_t i = segment(timeS, s);
     const glm::dquat along = slerp(keys_[i].orientation, keys_[i + 1].orientation, s);

@@ -127,14 +127,18 @@ public:
 
     // The GPU part (needs a current GL context): precomputes its tables.
     virtual std::unique_ptr<ComponentRenderer> makeRenderer(const Scene& scene, const FindRenderer& find) const = 0;
-    // Whether the CPU reference models it (most do). One it does not model (an image lookup, a hash
-    // of directions, a model with a reference of its own) throws NotInReference from makeReference,
-    // and withoutUnmodelled (scene/scene.h) leaves it out of the scenes that the reference and the
-    // accuracy sweeps render.
-    virtual bool inReference() const { return true; }
+    // Why the CPU reference does not model it (an image lookup, a hash of directions, a model with a
+    // reference of its own); empty when it does (most do). withoutUnmodelled (scene/scene.h) leaves
+    // one it does not model out of the scenes that the reference and the accuracy sweeps render.
+    virtual std::string notInReferenceBecause() const { return {}; }
+    bool inReference() const { return notInReferenceBecause().empty(); }
     // Its part of the CPU reference; null when it adds nothing by itself (e.g. data another
-    // component uses). Throws NotInReference when the reference cannot model it.
-    virtual std::unique_ptr<ReferenceShader> makeReference(const Scene& scene, const ReferenceContext& context) const = 0;
+    // component uses). One the reference does not model keeps this default, which throws
+    // NotInReference with the reason above.
+    virtual std::unique_ptr<ReferenceShader> makeReference(const Scene&, const ReferenceContext&) const
+    {
+        throw NotInReference(notInReferenceBecause());
+    }
 };
 
 // A component whose settings are S (S::kComponent is its name): the name and the defaults.

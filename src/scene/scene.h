@@ -68,6 +68,16 @@ private:
     std::map<std::string, std::unique_ptr<ComponentSettings>> settings_;
 };
 
+// A component with settings S whose GPU part R is made from its settings alone (most are).
+template <class S, class R>
+class ComponentWithRenderer : public ComponentWith<S> {
+public:
+    std::unique_ptr<ComponentRenderer> makeRenderer(const Scene& scene, const FindRenderer&) const override
+    {
+        return std::make_unique<R>(scene.settings<S>());
+    }
+};
+
 // A point at geographic latitude/longitude (degrees) and distance `radius` from the centre.
 glm::dvec3 planetPoint(double latitudeDeg, double longitudeDeg, double radius);
 

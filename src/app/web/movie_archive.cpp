@@ -55,13 +55,10 @@ void setDosTime(Entry& e, std::time_t t)
     e.dosDate = std::uint16_t((local.tm_year - 80) << 9 | (local.tm_mon + 1) << 5 | local.tm_mday);
 }
 
-// A local header: stored (method 0), CRC-32 and sizes known before the data (no data descriptor),
-// sizes past 4 GiB in a zip64 extra field.
-std::string localHeader(const Entry& e)
+// The fields a local header and a central directory header share, from the version needed to
+// extract to the name's length; `big`: the sizes are in the zip64 extra field.
+void putSharedFields(std::string& h, const Entry& e, bool big)
 {
-    const bool big = e.bytes >= kMax32;
-    std::string h;
-    put(h, kLocalHeader, 4);
     put(h, kVersion, 2);
     put(h, 0, 2); // flags
     put(h, 0, 2); // stored
@@ -71,6 +68,16 @@ std::string localHeader(const Entry& e)
     put(h, big ? kMax32 : e.bytes, 4);
     put(h, big ? kMax32 : e.bytes, 4);
     put(h, e.name.size(), 2);
+}
+
+// A local header: stored (method 0), CRC-32 and sizes known before the data (no data descriptor),
+// sizes past 4 GiB in a zip64 extra field.
+std::string localHeader(const Entry& e)
+{
+    const bool big = e.bytes >= kMax32;
+    std::string h;
+    put(h, kLocalHeader, 4);
+    putSharedFields(h, e, big);
     put(h, big ? 20 : 0, 2);
     h += e.name;
     if (big) {
@@ -89,15 +96,7 @@ std::string centralHeader(const Entry& e)
     std::string h;
     put(h, kCentralHeader, 4);
     put(h, 3 << 8 | kVersion, 2); // made on Unix: the external attributes are a mode
-    put(h, kVersion, 2);
-    put(h, 0, 2);
-    put(h, 0, 2);
-    put(h, e.dosTime, 2);
-    put(h, e.dosDate, 2);
-    put(h, e.crc, 4);
-    put(h, big ? kMax32 : e.bytes, 4);
-    put(h, big ? kMax32 : e.bytes, 4);
-    put(h, e.name.size(), 2);
+    putSharedFields(h, e, big);
     put(h, extra ? extra + 4 : 0, 2);
     put(h, 0, 2);                        // comment
     put(h, 0, 2);                        // disk

@@ -93,7 +93,7 @@ Layer readLayer(const config::TableReader& t)
     return l;
 }
 
-class Airglow : public scene::ComponentWith<Settings> {
+class Airglow : public scene::ComponentWithRenderer<Settings, Renderer> {
 public:
     std::vector<std::string> needs() const override { return {roles::kGround}; }
     void read(const config::TableReader& t, scene::Scene& scene, scene::ComponentSettings& settings) const override
@@ -120,11 +120,6 @@ public:
     }
     std::string shaderShadeCall() const override { return "shadeAirglow(ray)"; }
     scene::Shell shell() const override { return scene::Shell::EmittingLayers; }
-    std::unique_ptr<scene::ComponentRenderer> makeRenderer(const scene::Scene& scene,
-                                                           const scene::FindRenderer&) const override
-    {
-        return std::make_unique<Renderer>(scene.settings<Settings>());
-    }
     std::unique_ptr<scene::ReferenceShader> makeReference(const scene::Scene& scene,
                                                           const scene::ReferenceContext&) const override
     {

@@ -58,7 +58,7 @@ private:
     double (*closedForm_)(glm::dvec3, glm::dvec3, double, double, double, double); // null: the exact airmass
 };
 
-class Atmosphere : public scene::ComponentWith<Settings>, public roles::LowerAtmosphereProvider {
+class Atmosphere : public scene::ComponentWithRenderer<Settings, Renderer>, public roles::LowerAtmosphereProvider {
 public:
     std::vector<std::string> needs() const override { return {roles::kGround}; }
     std::vector<std::string> provides() const override { return {roles::kLowerAtmosphere}; }
@@ -77,11 +77,6 @@ public:
     }
     std::string shaderShadeCall() const override { return "shadeAtmosphere(ray)"; }
     scene::Shell shell() const override { return scene::Shell::LowerAtmosphere; }
-    std::unique_ptr<scene::ComponentRenderer> makeRenderer(const scene::Scene& scene,
-                                                           const scene::FindRenderer&) const override
-    {
-        return std::make_unique<Renderer>(scene.settings<Settings>());
-    }
     std::unique_ptr<scene::ReferenceShader> makeReference(const scene::Scene& scene,
                                                           const scene::ReferenceContext& context) const override
     {

@@ -13,7 +13,7 @@ namespace {
 // It provides the curtain detail (roles/curtain_detail.h): the curtains' profile samples these frames
 // (under HAS_CURTAIN_DETAIL), and the curtains' reference samples them in double: the component adds
 // no shader module and no reference step of its own.
-class FluidDetail : public scene::ComponentWith<Settings>, public roles::CurtainDetailProvider {
+class FluidDetail : public scene::ComponentWithRenderer<Settings, CurtainDetail>, public roles::CurtainDetailProvider {
 public:
     std::vector<std::string> needs() const override { return {roles::kCurtains}; }
     std::vector<std::string> provides() const override { return {roles::kCurtainDetail}; }
@@ -37,11 +37,6 @@ public:
                                : simulation::PressureSolver::Multigrid;
     }
     std::vector<std::string> shaderModules() const override { return {}; }
-    std::unique_ptr<scene::ComponentRenderer> makeRenderer(const scene::Scene& scene,
-                                                           const scene::FindRenderer&) const override
-    {
-        return std::make_unique<CurtainDetail>(scene.settings<Settings>());
-    }
     std::unique_ptr<scene::ReferenceShader> makeReference(const scene::Scene&,
                                                           const scene::ReferenceContext&) const override
     {

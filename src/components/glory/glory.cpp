@@ -262,7 +262,7 @@ void readLight(const config::TableReader& t, Settings& s)
     t.rejectUnknownKeys();
 }
 
-class Glory : public scene::ComponentWith<Settings> {
+class Glory : public scene::ComponentWithRenderer<Settings, Renderer> {
 public:
     std::vector<std::string> needs() const override { return {roles::kGround}; }
     void read(const config::TableReader& t, scene::Scene& scene, scene::ComponentSettings& settings) const override
@@ -305,11 +305,6 @@ public:
     std::string shaderGeometryCall() const override { return "boundByCloudDeck(ray)"; }
     std::string shaderShadeCall() const override { return "shadeGlory(ray)"; }
     scene::Shell shell() const override { return scene::Shell::CloudDeck; }
-    std::unique_ptr<scene::ComponentRenderer> makeRenderer(const scene::Scene& scene,
-                                                           const scene::FindRenderer&) const override
-    {
-        return std::make_unique<Renderer>(scene.settings<Settings>());
-    }
     std::unique_ptr<scene::ReferenceShader> makeReference(const scene::Scene& scene,
                                                           const scene::ReferenceContext&) const override
     {

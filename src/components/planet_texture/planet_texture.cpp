@@ -19,7 +19,7 @@ private:
     NightLights lights_;
 };
 
-class PlanetTexture : public scene::ComponentWith<Settings> {
+class PlanetTexture : public scene::ComponentWithRenderer<Settings, Renderer> {
 public:
     std::vector<std::string> needs() const override { return {roles::kGround}; }
     void read(const config::TableReader& t, scene::Scene&, scene::ComponentSettings& settings) const override
@@ -35,16 +35,9 @@ public:
     std::string shaderShadeCall() const override { return "shadeNightLights(ray)"; }
     // Lights on the ground: after the ground surface (it needs the planet).
     scene::Shell shell() const override { return scene::Shell::Ground; }
-    std::unique_ptr<scene::ComponentRenderer> makeRenderer(const scene::Scene& scene,
-                                                           const scene::FindRenderer&) const override
+    std::string notInReferenceBecause() const override
     {
-        return std::make_unique<Renderer>(scene.settings<Settings>());
-    }
-    bool inReference() const override { return false; }
-    std::unique_ptr<scene::ReferenceShader> makeReference(const scene::Scene&,
-                                                          const scene::ReferenceContext&) const override
-    {
-        throw scene::NotInReference("planet_texture is an image lookup, not a model the reference evaluates");
+        return "planet_texture is an image lookup, not a model the reference evaluates";
     }
 };
 

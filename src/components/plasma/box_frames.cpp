@@ -1,6 +1,7 @@
 #include "physics/constants.h"
 #include "components/plasma/box_frames.h"
 
+#include "components/plasma/recorded_frames.h"
 #include "components/plasma/simulation/electrostatic_pic.h"
 #include "components/plasma/simulation/particle_mesh.h"
 #include "components/plasma/simulation/plasma_parameters.h"
@@ -88,13 +89,8 @@ BoxFrames simulateBoxFrames(const BoxFramesSpec& s)
     f.cells = s.cells;
     f.frames = s.frames;
     f.density.reserve(grid.nodeCount() * s.frames);
-    for (int k = 0; k < s.frames; ++k) {
-        if (k > 0)
-            for (int n = 0; n < s.stepsPerFrame; ++n)
-                sim.step();
-        const std::vector<float> n = boxFrameDensity(s, grid, sim.electrons());
-        f.density.insert(f.density.end(), n.begin(), n.end());
-    }
+    recordFrames(sim, s.frames, s.stepsPerFrame, f.density,
+                 [&](const pic::Particles& electrons) { return boxFrameDensity(s, grid, electrons); });
     return f;
 }
 

@@ -1,5 +1,6 @@
 #include "components/plasma/sheet_frames.h"
 
+#include "components/plasma/recorded_frames.h"
 #include "components/plasma/simulation/particle_mesh.h"
 #include "components/plasma/simulation/plasma_parameters.h"
 #include "io/table_cache.h"
@@ -54,13 +55,8 @@ roles::FluxFrames simulateSheetFrames(const SheetFramesSpec& spec)
     f.texelKmX = static_cast<float>(grid.spacing[0] * 1e-3);
     f.texelKmY = static_cast<float>(grid.spacing[1] * 1e-3);
     f.flux.reserve(grid.nodeCount() * spec.frames);
-    for (int k = 0; k < spec.frames; ++k) {
-        if (k > 0)
-            for (int n = 0; n < spec.stepsPerFrame; ++n)
-                sim.step();
-        const std::vector<float> frame = sheetFrameDensity(spec, grid, sim.electrons());
-        f.flux.insert(f.flux.end(), frame.begin(), frame.end());
-    }
+    recordFrames(sim, spec.frames, spec.stepsPerFrame, f.flux,
+                 [&](const pic::Particles& electrons) { return sheetFrameDensity(spec, grid, electrons); });
     return f;
 }
 

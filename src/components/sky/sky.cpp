@@ -45,7 +45,7 @@ Light readLight(const config::TableReader& t)
     return l;
 }
 
-class Sky : public scene::ComponentWith<Settings> {
+class Sky : public scene::ComponentWithRenderer<Settings, Renderer> {
 public:
     std::vector<std::string> needs() const override { return {roles::kLowerAtmosphere}; }
     void read(const config::TableReader& t, scene::Scene&, scene::ComponentSettings& settings) const override
@@ -69,16 +69,9 @@ public:
     std::string shaderShadeCall() const override { return "shadeSky(ray)"; }
     // The light the lower atmosphere scatters: after its extinction (it needs the atmosphere).
     scene::Shell shell() const override { return scene::Shell::LowerAtmosphere; }
-    std::unique_ptr<scene::ComponentRenderer> makeRenderer(const scene::Scene& scene,
-                                                           const scene::FindRenderer&) const override
+    std::string notInReferenceBecause() const override
     {
-        return std::make_unique<Renderer>(scene.settings<Settings>());
-    }
-    bool inReference() const override { return false; }
-    std::unique_ptr<scene::ReferenceShader> makeReference(const scene::Scene&,
-                                                          const scene::ReferenceContext&) const override
-    {
-        throw scene::NotInReference("the sky has its own reference (aurorawall accuracy --sky), not this one");
+        return "the sky has its own reference (aurorawall accuracy --sky), not this one";
     }
 };
 

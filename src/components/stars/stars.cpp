@@ -20,7 +20,7 @@ private:
     const Settings& s_;
 };
 
-class Stars : public scene::ComponentWith<Settings> {
+class Stars : public scene::ComponentWithRenderer<Settings, Renderer> {
 public:
     void read(const config::TableReader& t, scene::Scene&, scene::ComponentSettings& settings) const override
     {
@@ -31,16 +31,9 @@ public:
     std::vector<std::string> shaderModules() const override { return {"components/stars/stars.glsl"}; }
     std::string shaderShadeCall() const override { return "shadeStars(ray)"; }
     scene::Shell shell() const override { return scene::Shell::Space; }
-    std::unique_ptr<scene::ComponentRenderer> makeRenderer(const scene::Scene& scene,
-                                                           const scene::FindRenderer&) const override
+    std::string notInReferenceBecause() const override
     {
-        return std::make_unique<Renderer>(scene.settings<Settings>());
-    }
-    bool inReference() const override { return false; }
-    std::unique_ptr<scene::ReferenceShader> makeReference(const scene::Scene&,
-                                                          const scene::ReferenceContext&) const override
-    {
-        throw scene::NotInReference("stars are a hash of float direction bits, not a model the reference converges to");
+        return "stars are a hash of float direction bits, not a model the reference converges to";
     }
 };
 

@@ -216,6 +216,31 @@ VerifyHistory exponentialHistory(const std::string& timeName, const std::string&
     return history;
 }
 
+// An exponential phase: its samples (time, log amplitude) and the line fitted from fitStart on.
+struct ExponentialPhase {
+    std::vector<double> t, logAmplitude;
+    Line fit;
+};
+
+// Steps `run` through steps 0 … last, sampling logAmplitude() at the steps from time fitStart on,
+// or at every step when allSamples (for a history); a step is omegaDt in the time's unit.
+template <class LogAmplitude>
+ExponentialPhase sampledExponentialPhase(PicRun& run, double omegaDt, double fitStart, long last, bool allSamples,
+                                         LogAmplitude logAmplitude)
+{
+    ExponentialPhase phase;
+    for (long n = 0; n <= last; ++n) {
+        const double time = n * omegaDt;
+        if (allSamples || time >= fitStart) {
+            phase.t.push_back(time);
+            phase.logAmplitude.push_back(logAmplitude());
+        }
+        run.step();
+    }
+    phase.fit = fittedLine(phase.t, phase.logAmplitude, fitStart);
+    return phase;
+}
+
 void requireLeapfrogStable(double wpDt)
 {
     if (!(wpDt >= kMinVerifyWpDt && wpDt < 2.0))
@@ -387,22 +412,17 @@ std::vector<VerifyRow> verifyTwoStream(double wpDt, const PicDevice& device, Ver
     // end) is still far below saturation. A history keeps the samples from the start too.
     const double gamma = twoStreamGrowthRate(kv0);
     const double fitStart = 6.0 / gamma;
-    std::vector<double> t, logAmplitude;
     const long last = long(std::ceil(9.0 / (gamma * wpDt)));
-    for (long n = 0; n <= last; ++n) {
-        const double time = n * wpDt; // in 1/ω_p
-        if (history || time >= fitStart) {
-            t.push_back(time);
-            logAmplitude.push_back(std::log(std::abs(fieldMode(run->nodeField(), 1))));
-        }
-        run->step();
-    }
-    const Line fit = fittedLine(t, logAmplitude, fitStart);
+    // Times in 1/ω_p.
+    const ExponentialPhase growth = sampledExponentialPhase(*run, wpDt, fitStart, last, history != nullptr, [&] {
+        return std::log(std::abs(fieldMode(run->nodeField(), 1)));
+    });
     if (history)
-        *history = exponentialHistory("t_wp", "field_mode_V_per_m", t, logAmplitude, fitStart, fit, gamma);
+        *history = exponentialHistory("t_wp", "field_mode_V_per_m", growth.t, growth.logAmplitude, fitStart, growth.fit,
+                                      gamma);
     return rows({setting("wp_dt", wpDt), setting("cells", kCells), setting("particles", 2 * kPerBeam),
                  setting("k_v0_over_wp", kv0), setting("seed_displacement_over_length", seed)},
-                device.settings(2 * kPerBeam, 1), {{"growth_rate_over_wp", fit.slope, gamma}});
+                device.settings(2 * kPerBeam, 1), {{"growth_rate_over_wp", growth.fit.slope, gamma}});
 }
 
 std::vector<VerifyRow> verifyEnergy(double wpDt, const PicDevice& device, VerifyHistory* history)
@@ -657,25 +677,20 @@ std::vector<VerifyRow> verifyDiocotron(double wcDt, double wpOverWc, const PicDe
     // seed has fallen to e^-8 of the growing one, and the displacement (1e-5 a at the start) stays
     // below 0.011 a, linear. A history keeps the samples from the start too.
     const double fitStart = 4.0 / expected;
-    std::vector<double> t, logAmplitude;
     const long last = long(std::ceil(7.0 / (expected * wdDt)));
-    for (long n = 0; n <= last; ++n) {
-        const double time = n * wdDt; // in 1/ω_D
-        if (history || time >= fitStart) {
-            t.push_back(time);
-            logAmplitude.push_back(0.5 * std::log(modeEnergy()));
-        }
-        run->step();
-    }
-    const Line fit = fittedLine(t, logAmplitude, fitStart);
+    // Times in 1/ω_D.
+    const ExponentialPhase growth = sampledExponentialPhase(*run, wdDt, fitStart, last, history != nullptr, [&] {
+        return 0.5 * std::log(modeEnergy());
+    });
     if (history)
-        *history = exponentialHistory("t_wd", "mode_amplitude", t, logAmplitude, fitStart, fit, expected);
+        *history = exponentialHistory("t_wd", "mode_amplitude", growth.t, growth.logAmplitude, fitStart, growth.fit,
+                                      expected);
     const std::size_t particles = electrons.position.size();
     return rows({setting("wc_dt", wcDt), setting("wp_dt", wpOverWc * wcDt), setting("wp_over_wc", wpOverWc),
                  setting("k_a", kHalfThickness), setting("cells", double(nx) * ny),
                  setting("particles", double(particles)), setting("steps", double(last)),
                  setting("seed_displacement_over_a", 1e-5)},
-                device.settings(particles, 2), {{"growth_rate_over_wd", fit.slope, expected}});
+                device.settings(particles, 2), {{"growth_rate_over_wd", growth.fit.slope, expected}});
 }
 
 } // namespace aurorawall::components::plasma::simulation
