@@ -4,6 +4,8 @@
 #include "scene/scene.h"
 #include "components/roles/names.h"
 
+#include <filesystem>
+
 namespace aurorawall::components::planet_texture {
 
 namespace {
@@ -25,7 +27,12 @@ public:
     void read(const config::TableReader& t, scene::Scene&, scene::ComponentSettings& settings) const override
     {
         auto& s = dynamic_cast<Settings&>(settings);
-        s.nightImage = t.string("night_image", s.nightImage);
+        // The default image is optional (the ground stays uniform without it); one the file names is not.
+        if (t.has("night_image")) {
+            s.nightImage = t.string("night_image", s.nightImage);
+            if (!std::filesystem::is_regular_file(s.nightImage))
+                t.fail("night_image", "no such image file: " + s.nightImage);
+        }
         s.nightLightsRadiance = t.number("night_lights_cd_m2", 0.0, 1e6, s.nightLightsRadiance);
     }
     std::vector<std::string> shaderModules() const override
