@@ -14,6 +14,7 @@
 #include "scene/scene.h"
 
 #include <glm/glm.hpp>
+#include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
@@ -143,6 +144,40 @@ inline AuroraFloatBound auroraFloatBound(const scene::Scene& s, const components
     b.slope = components::aurora::makeAuroraMarch(aurora, R, timeS, &slopes, shape, width);
     b.steps = components::aurora::makeAuroraMarch(aurora, R, timeS, &steps, shape, width);
     return b;
+}
+
+// The GPU's pixels against the march in double (ReferenceSettings::shaderSteps) at the same pixels: each
+// within its float bound (auroraFloatBound, plus the ray's own rounding), and against the fine CPU
+// reference within that bound plus the reference's discretization, `discretization` of its radiance.
+// Returns the largest |GPU − march| / bound and bound / |march|, and the bound's dh and dq, for the test's report.
+struct FloatBoundCheck {
+    double largestShare = 0.0;
+    double largestBound = 0.0;
+    double dh = 0.0, dq = 0.0;
+};
+
+inline FloatBoundCheck expectWithinFloatBound(const scene::Scene& s, const components::roles::FluxFrames& frames,
+                                              const render::ReferenceModel& march, const accuracy::SceneView& view,
+                                              const std::vector<glm::ivec2>& pixels, const std::vector<glm::dvec3>& gpu,
+                                              const std::vector<glm::dvec3>& marched,
+                                              const std::vector<glm::dvec3>& reference, double discretization)
+{
+    const AuroraFloatBound bound = auroraFloatBound(s, frames, view.frame.timeS);
+    FloatBoundCheck check;
+    check.dh = bound.dh;
+    check.dq = bound.dq;
+    for (size_t i = 0; i < pixels.size(); ++i) {
+        const glm::ivec2 p = pixels[i];
+        const glm::dvec3 o = view.frame.cameraPositionKm, d = accuracy::pixelDirection(view, p.x, p.y);
+        const double limit = bound.at(marched[i], o, d, s.planetRadiusKm) + rayRoundingBound(march, view, p.x, p.y);
+        const double difference = glm::length(gpu[i] - marched[i]);
+        check.largestShare = std::max(check.largestShare, difference / limit);
+        check.largestBound = std::max(check.largestBound, limit / glm::length(marched[i]));
+        EXPECT_LT(difference, limit) << "pixel " << p.x << ", " << p.y;
+        EXPECT_LT(glm::length(gpu[i] - reference[i]), limit + discretization * glm::length(reference[i]))
+            << "pixel " << p.x << ", " << p.y;
+    }
+    return check;
 }
 
 } // namespace aurorawall::test

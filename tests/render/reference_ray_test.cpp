@@ -91,26 +91,15 @@ TEST_F(ReferenceRay, GpuAtItsFinestSettingsAgreesWithTheReference)
         values.push_back(accuracy::pixelRadiance(gpu, p.x, p.y));
         marched.push_back(marchImage[size_t(p.y * gpu.width + p.x)]);
     }
-    const test::AuroraFloatBound bound = test::auroraFloatBound(*scene_, *frames_, view_->frame.timeS);
-    double largestShare = 0.0, largestBound = 0.0; // |GPU - march| / bound; bound / |march|
-    for (size_t i = 0; i < pixels.size(); ++i) {
-        const glm::dvec3 o = view_->frame.cameraPositionKm, d = accuracy::pixelDirection(*view_, pixels[i].x, pixels[i].y);
-        const double limit = bound.at(marched[i], o, d, scene_->planetRadiusKm) +
-                             test::rayRoundingBound(march, *view_, pixels[i].x, pixels[i].y);
-        const double difference = glm::length(values[i] - marched[i]);
-        largestShare = std::max(largestShare, difference / limit);
-        largestBound = std::max(largestBound, limit / glm::length(marched[i]));
-        EXPECT_LT(difference, limit) << "pixel " << pixels[i].x << ", " << pixels[i].y;
-        // The reference lies within its discretization (1e-3 relative) of the march in double.
-        EXPECT_LT(glm::length(values[i] - reference[i]), limit + 1e-3 * glm::length(reference[i]))
-            << "pixel " << pixels[i].x << ", " << pixels[i].y;
-    }
+    // The reference lies within its discretization (1e-3 relative) of the march in double.
+    const test::FloatBoundCheck check =
+        test::expectWithinFloatBound(*scene_, *frames_, march, *view_, pixels, values, marched, reference, 1e-3);
     const accuracy::RelativeError f = accuracy::relativeError(values, marched, floor());
     const accuracy::RelativeError e = accuracy::relativeError(values, reference, floor());
-    std::printf("float bound: dh %.3g km, dq %.3g km; at most %.3g of a pixel\n", bound.dh, bound.dq, largestBound);
+    std::printf("float bound: dh %.3g km, dq %.3g km; at most %.3g of a pixel\n", check.dh, check.dq, check.largestBound);
     std::printf("GPU (0.25 km, finest tables) vs the march in double at %zu pixels: rms %.3g, max %.3g, at most "
                 "%.3g of the float bound; vs CPU reference: rms %.3g, max %.3g\n",
-                f.pixels, f.rms, f.max, largestShare, e.rms, e.max);
+                f.pixels, f.rms, f.max, check.largestShare, e.rms, e.max);
     EXPECT_EQ(f.pixels, pixels.size());
     EXPECT_EQ(e.pixels, pixels.size());
 }
