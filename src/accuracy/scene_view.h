@@ -14,6 +14,7 @@
 
 #include <glm/glm.hpp>
 
+#include <cstdint>
 #include <iosfwd>
 #include <memory>
 #include <string>
@@ -77,6 +78,8 @@ struct SceneAccuracySettings {
     double referenceStepKm = 0.05; // CPU reference step where a curtain is in reach
     bool featureCosts = false;    // the frame time of each feature toggled alone instead of the knobs
     bool workStats = false;       // the march's work per pixel and per 8x4 block instead of the knobs
+    int views = 0;                // > 0: the default's error at this many views drawn at random instead of the knobs
+    std::uint64_t seed = 1;       // the views' seed (random_views.h)
 };
 
 } // namespace aurorawall::accuracy

@@ -18,16 +18,17 @@ namespace po = boost::program_options;
 
 // The options of each kind of run; giving one to the other kind is a usage error.
 const std::vector<std::string> kShaderOptions = {"repeat", "copies", "view-steps", "light-steps"};
-const std::vector<std::string> kSceneOptions = {"wall", "size", "pixels", "frame", "runs",
-                                                "threads", "reference-step-km", "feature-costs", "work-stats"};
+const std::vector<std::string> kSceneOptions = {"wall", "size", "pixels", "frame", "runs", "threads",
+                                                "reference-step-km", "feature-costs", "work-stats", "views", "seed"};
 // The --scene options that the components' tables (components/tools.h) do not take.
 const std::vector<std::string> kSceneOnlyOptions = {"pixels", "threads", "reference-step-km", "feature-costs",
-                                                    "work-stats"};
+                                                    "work-stats", "views", "seed"};
 
 // After "Usage: aurorawall accuracy --airmass | --sky [options]\n" (the tables of physics::atmosphere).
 const char* kUsageHead =
     "       aurorawall accuracy --scene FILE [--wall FILE] [--size WxH] [--pixels N] [--frame K] [--feature-costs]\n"
-    "       aurorawall accuracy --scene FILE --work-stats [--wall FILE] [--size WxH] [--frame K]\n";
+    "       aurorawall accuracy --scene FILE --work-stats [--wall FILE] [--size WxH] [--frame K]\n"
+    "       aurorawall accuracy --scene FILE --views N [--seed S] [--wall FILE] [--size WxH] [--pixels N] [--frame K]\n";
 const char* kUsageBody =
     "Error against cost of the approximations (docs/ACCURACY.md), on one headless EGL context in one\n"
     "process (no mpirun).\n"
@@ -45,7 +46,9 @@ const char* kSceneUsage =
     "feature toggled alone, the full scene (the paper's table 2). --work-stats: instead, the work of the\n"
     "march per pixel, counted on the GPU: march steps, curtains evaluated, sub-steps and texture fetches, as\n"
     "the mean per pixel and the mean over 8x4-pixel blocks of each block's largest (what a 32-lane warp\n"
-    "waits for), for the full scene with its defaults (CSV).\n";
+    "waits for), for the full scene with its defaults (CSV). --views N: instead, the defaults' error against\n"
+    "both references at N views drawn at random from seed S (cameras on the ground, inside the auroral\n"
+    "layer, above it and far in space, in turn, near frame K's camera, at random times; CSV).\n";
 
 // The options of the atmosphere physics' tables (physics::atmosphere::shaderTables), "--airmass" and
 // "--sky", joined by `separator`.
@@ -108,6 +111,8 @@ const components::AccuracyTable* givenTable(const cli::CommandLine& cli)
 // 1/step, and at 1e-300 it would never end).
 constexpr double kMinReferenceStepKm = 0.001;
 constexpr double kMaxReferenceStepKm = 0.25;
+// The most views of one --views run (each a few seconds on llvmpipe).
+constexpr int kMaxViews = 10000;
 
 // "WxH" with positive W and H.
 bool parseSize(const std::string& text, glm::ivec2& size)
@@ -161,7 +166,10 @@ void declareOptions(cli::CommandLine& cli, AccuracyOptions& o)
         ("feature-costs", po::bool_switch(&scene.featureCosts),
          "--scene: the paper's table 2 (frame time of each feature) instead of the knobs")
         ("work-stats", po::bool_switch(&scene.workStats),
-         "--scene: the march's work per pixel and per 8x4-pixel block instead of the knobs (CSV)");
+         "--scene: the march's work per pixel and per 8x4-pixel block instead of the knobs (CSV)")
+        ("views", po::value(&scene.views),
+         "--scene: the defaults' error at this many views drawn at random instead of the knobs (1 to 10000)")
+        ("seed", po::value(&scene.seed)->default_value(scene.seed), "--views: the seed the views are drawn from");
 }
 
 // Throws a usage error unless exactly one kind of run is chosen (the atmosphere physics' tables go
@@ -201,6 +209,12 @@ void runSceneKnobs(const cli::CommandLine& cli, AccuracyOptions& o, std::ostream
         throw cli.usageError("--size must be WxH with positive whole W and H (got '" + common::echoedInput(o.size) + "')");
     if (scene.frame < 0 || scene.frame > 100000000)
         throw cli.usageError("--frame must be a whole number in [0, 1e8] (got " + std::to_string(scene.frame) + ")");
+    if (cli.given("views") && !(scene.views >= 1 && scene.views <= kMaxViews))
+        throw cli.usageError("--views must be a whole number in [1, 10000] (got " + std::to_string(scene.views) + ")");
+    if (cli.given("seed") && !cli.given("views"))
+        throw cli.usageError("--seed applies to --views only");
+    if (int(scene.featureCosts) + int(scene.workStats) + int(cli.given("views")) > 1)
+        throw cli.usageError("choose at most one of --feature-costs, --work-stats and --views");
     if (scene.pixels < 1 || scene.runs < 1 || scene.threads < 1)
         throw cli.usageError("--pixels, --runs and --threads must be positive");
     if (!(scene.referenceStepKm >= kMinReferenceStepKm && scene.referenceStepKm <= kMaxReferenceStepKm)) {

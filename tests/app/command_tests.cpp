@@ -367,6 +367,12 @@ TEST(AccuracyCommand, OneParserForTheThreeKinds)
         {{"--scene", "s.toml", "--reference-step-km", "1e-300"}, "--reference-step-km must be in [0.001, 0.25] km (got 1e-300)"},
         {{"--scene", "s.toml", "--reference-step-km", "0.2500001"}, "--reference-step-km"},
         {{"--scene", "s.toml", "--reference-step-km", "-0"}, "--reference-step-km"},
+        {{"--scene", "s.toml", "--views", "0"}, "--views must be a whole number in [1, 10000] (got 0)"},
+        {{"--scene", "s.toml", "--views", "10001"}, "--views must be a whole number in [1, 10000]"},
+        {{"--scene", "s.toml", "--views", "two"}, "--views"},
+        {{"--scene", "s.toml", "--seed", "3"}, "--seed applies to --views only"},
+        {{"--scene", "s.toml", "--views", "4", "--work-stats"}, "choose at most one of --feature-costs, --work-stats and --views"},
+        {{"--glory", "s.toml", "--views", "4"}, "--views applies to --scene only"},
     };
     for (const auto& [words, expected] : usage) {
         const Result r = runAccuracy(words);
@@ -377,7 +383,7 @@ TEST(AccuracyCommand, OneParserForTheThreeKinds)
     }
     const Result help = runAccuracy({"--help"});
     EXPECT_EQ(help.status, 0);
-    for (const char* option : {"--airmass", "--sky", "--scene", "--repeat", "--feature-costs"})
+    for (const char* option : {"--airmass", "--sky", "--scene", "--repeat", "--feature-costs", "--views", "--seed"})
         EXPECT_NE(help.out.find(option), std::string::npos) << option;
 }
 

@@ -1,5 +1,6 @@
 #include "components/aurora/tools/aurora_accuracy.h"
 
+#include "accuracy/random_views.h"
 #include "common/data_dir.h"
 #include "gl/context.h"
 #include "gl/float_target.h"
@@ -174,19 +175,38 @@ std::vector<glm::ivec2> allPixels(glm::ivec2 size)
     return pixels;
 }
 
-// `count` pixels evenly spaced (in row-major order) among those of the GPU reference at or above the
-// floor, so that the CPU reference is spent where the error is measured.
+// `count` pixels evenly spaced (in row-major order) among `lit`.
+std::vector<glm::ivec2> evenlySpaced(const std::vector<glm::ivec2>& lit, int count)
+{
+    std::vector<glm::ivec2> chosen;
+    for (int i = 0; i < count && !lit.empty(); ++i)
+        chosen.push_back(lit[(size_t(i) * lit.size()) / size_t(count)]);
+    chosen.erase(std::unique(chosen.begin(), chosen.end()), chosen.end());
+    return chosen;
+}
+
+// `count` pixels evenly spaced among those of the GPU reference at or above the floor, so that the CPU
+// reference is spent where the error is measured.
 std::vector<glm::ivec2> samplePixels(const io::Image& reference, double floor, int count)
 {
     std::vector<glm::ivec2> lit;
     for (const glm::ivec2& p : allPixels({reference.width, reference.height}))
         if (glm::length(pixelRadiance(reference, p.x, p.y)) >= floor)
             lit.push_back(p);
-    std::vector<glm::ivec2> chosen;
-    for (int i = 0; i < count && !lit.empty(); ++i)
-        chosen.push_back(lit[(size_t(i) * lit.size()) / size_t(count)]);
-    chosen.erase(std::unique(chosen.begin(), chosen.end()), chosen.end());
-    return chosen;
+    return evenlySpaced(lit, count);
+}
+
+// The pixels at or above the floor where the aurora gives at least half the radiance: `image` less
+// `withoutAurora` (the same view without the aurora component).
+std::vector<glm::ivec2> auroraPixels(const io::Image& image, const io::Image& withoutAurora, double floor)
+{
+    std::vector<glm::ivec2> pixels;
+    for (const glm::ivec2& p : allPixels({image.width, image.height})) {
+        const glm::dvec3 all = pixelRadiance(image, p.x, p.y);
+        if (glm::length(all) >= floor && glm::length(all - pixelRadiance(withoutAurora, p.x, p.y)) >= 0.5 * glm::length(all))
+            pixels.push_back(p);
+    }
+    return pixels;
 }
 
 double secondsSince(std::chrono::steady_clock::time_point start)
@@ -306,7 +326,98 @@ void printFeatureCosts(const scene::Scene& base, const SceneView& view, const st
     }
 }
 
+
+// How many pixels where the aurora gives at least half the radiance (auroraPixels) a view needs to be
+// measured; a drawn view with fewer (looking past the layer, at the ground or at a sky it does not
+// light) is drawn again, up to kViewDrawsPerView times.
+constexpr size_t kViewAuroraPixels = 16;
+constexpr int kViewDrawsPerView = 200;
+
+std::string vectorText(glm::dvec3 v)
+{
+    char text[96];
+    std::snprintf(text, sizeof text, "%.6f %.6f %.6f", v.x, v.y, v.z);
+    return text;
+}
+
+// One line of the views' CSV.
+void printViewError(const scene::Scene& scene, int index, const ViewError& e, std::ostream& out)
+{
+    char line[512];
+    std::snprintf(line, sizeof line, "%d,%s,%.3f,%.3f,%s,%s,%s,%zu,", index, accuracy::viewKindName(e.kind),
+                  glm::length(e.frame.cameraPositionKm) - scene.planetRadiusKm, e.frame.timeS,
+                  vectorText(e.frame.cameraPositionKm).c_str(), vectorText(-e.frame.cameraBack).c_str(),
+                  vectorText(e.frame.cameraUp).c_str(), e.auroraPixels);
+    out << line;
+    if (e.auroraPixels == 0) {
+        out << "-,-,-,-\n" << std::flush;
+        return;
+    }
+    std::snprintf(line, sizeof line, "%.3g,%.3g,%.3g,%.3g\n", e.gpu.rms, e.gpu.max, e.cpu.rms, e.cpu.max);
+    out << line << std::flush;
+}
+
+// The views' table (measureViews) as CSV, then how many views stay within 1% RMS of the CPU reference.
+void printViewErrors(const scene::Scene& scene, const SceneView& start, const std::string& shaderDir,
+                     const SceneAccuracySettings& settings, std::ostream& out)
+{
+    out << "views drawn at random from seed " << settings.seed << " (accuracy/random_views.h); the default settings "
+        << "over the pixels where the aurora gives at least half the radiance, against the GPU reference (every such "
+        << "pixel) and the CPU reference (" << settings.pixels << " of them)\n"
+        << "view,kind,altitude_km,time_s,position_km,forward,up,aurora_pixels,rms_rel_gpu,max_rel_gpu,rms_rel_cpu,"
+           "max_rel_cpu\n";
+    int index = 0, measured = 0, withinOnePercent = 0;
+    RelativeError worst;
+    measureViews(scene, start, shaderDir, settings, [&](const ViewError& e) {
+        printViewError(scene, index++, e, out);
+        if (e.auroraPixels == 0)
+            return;
+        ++measured;
+        withinOnePercent += e.cpu.rms <= 0.01;
+        worst.rms = std::max(worst.rms, e.cpu.rms);
+        worst.max = std::max(worst.max, e.cpu.max);
+    });
+    char summary[256];
+    std::snprintf(summary, sizeof summary,
+                  "within 1%% RMS of the CPU reference: %d of %d measured views (of %d drawn); largest rms %.3g, "
+                  "largest max %.3g\n",
+                  withinOnePercent, measured, settings.views, worst.rms, worst.max);
+    out << summary;
+}
+
 } // namespace
+
+void measureViews(const scene::Scene& scene, const SceneView& start, const std::string& shaderDir,
+                  const SceneAccuracySettings& settings, const std::function<void(const ViewError&)>& measured)
+{
+    const double floor = 1.0 / (255.0 * scene.exposure);
+    scene::Scene finest = scene;
+    applyFinestSettings(finest);
+    const scene::Scene noAurora = without(scene, AuroraSettings::kComponent);
+    accuracy::RandomViews draws(settings.seed, {scene.planetRadiusKm});
+    for (int k = 0; k < settings.views; ++k) {
+        ViewError e;
+        e.kind = accuracy::ViewKind(k % accuracy::kViewKinds);
+        SceneView view;
+        io::Image image;
+        std::vector<glm::ivec2> lit;
+        for (int draw = 0; draw < kViewDrawsPerView && lit.size() < kViewAuroraPixels; ++draw) {
+            view = draws.draw(start, e.kind);
+            image = renderView(scene, view, shaderDir, 0).image;
+            lit = auroraPixels(image, renderView(noAurora, view, shaderDir, 0).image, floor);
+        }
+        e.frame = view.frame;
+        if (lit.size() >= kViewAuroraPixels) {
+            References ref{finest, renderView(finest, view, shaderDir, 0), {}, 0.0};
+            const std::vector<glm::ivec2> sampled = evenlySpaced(lit, settings.pixels);
+            computeReferences(ref, view, sampled, settings);
+            e.auroraPixels = lit.size();
+            e.gpu = relativeError(imagePixels(image, lit), imagePixels(ref.gpu.image, lit), floor);
+            e.cpu = relativeError(imagePixels(image, sampled), ref.cpu, floor);
+        }
+        measured(e);
+    }
+}
 
 namespace {
 
@@ -349,6 +460,8 @@ void runSceneAccuracy(const SceneAccuracySettings& settings, std::ostream& out)
         printFeatureCosts(scene, view, dataDir + "/shaders", settings, out);
     else if (settings.workStats)
         printWorkStats(scene, view, dataDir + "/shaders", out);
+    else if (settings.views > 0)
+        printViewErrors(scene, view, dataDir + "/shaders", settings, out);
     else
         printKnobTable(scene, view, dataDir + "/shaders", settings, out);
 }
