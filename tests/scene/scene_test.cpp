@@ -155,6 +155,7 @@ TEST(SceneErrors, NameFileAndLine)
         {"nan_value.toml", ":6: ", "atmosphere.scale_height_km: must be a finite number"},
         {"absurd_value.toml", ":8: ", "aurora.step_km: must be a finite number in [0.05, 100]"},
         {"absurd_resolve_cells.toml", ":9: ", "aurora.resolve_cells: must be a finite number in [0.05, 100]"},
+        {"unknown_sub_step_flux.toml", ":9: ", "aurora.sub_step_flux"},
         {"unknown_component.toml", ":3: ", "unknown component 'rainbow'"},
         {"unlisted_table.toml", ":5: ", "unknown key 'stars'"},
         // Arrays are parsed with a line break after each comma: the lines are still the file's.

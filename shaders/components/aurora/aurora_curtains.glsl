@@ -11,6 +11,8 @@ uniform real uAuroraTopKm;
 uniform real uAuroraStepKm;
 uniform real uAuroraResolveKm;       // sub-steps (at most 64 a step): altitude and position along a curtain change by at most this
 uniform real uAuroraResolveCells;    // and the coordinate not integrated over by at most this many of the detail's cells
+uniform int uAuroraExactSubSteps;    // 1: each sub-step integrated exactly in the detail's bilinear flux
+                                     // (curtainIntegralExact), its sub-steps within one cell (at most 1 cell)
 uniform int uSkipEmptySpace;         // 0: the naive fine march everywhere (the reference)
 uniform int uCurtainCount;
 uniform sampler2D uCurtainPolylines; // RGBA32F, row c: xyz unit vector, w arclength km
@@ -195,7 +197,8 @@ StepCandidates stepCandidates(vec3 o, vec3 d, real t0, real t1)
 // over the coordinate that changes through more of the detail's cells, across the curtain,
 //   ∫ flux(s, u(t)) E(h(t)) dt ≈ E(h(t̄)) · (1/u') ∫_{u(ta)}^{u(tb)} flux(s_mid, u) du,
 // or along it (s and u exchanged), and the other coordinate changes by at most uAuroraResolveCells of
-// the detail's cells (along, also by at most uAuroraResolveKm). t̄ is the flux-weighted mean position of
+// the detail's cells (along, also by at most uAuroraResolveKm); with uAuroraExactSubSteps the flux is
+// integrated exactly over the sub-step's slanted path instead (curtainIntegralExact). t̄ is the flux-weighted mean position of
 // the sub-step, from the first moment (curtain_profile.glsl, curtainIntegral). A sub-step that changes
 // the integrated coordinate by less than 1 m takes the midpoint rule. The step's midpoint decides which
 // curtains are near, as a point sample did.
@@ -213,7 +216,8 @@ vec3 integrateCurtains(vec3 o, vec3 d, real t0, real t1, vec4 candidates)
     // Integrated across, a sub-step reads the flux at one position along: the sub-steps resolve it to
     // uAuroraResolveKm or, finer, to uAuroraResolveCells of the detail's cells along. The fluxes of
     // overlapping curtains add.
-    real alongResolveKm = min(uAuroraResolveKm, uAuroraResolveCells * fluxCellAlongKm());
+    real resolveCells = uAuroraExactSubSteps != 0 ? min(uAuroraResolveCells, 1.0) : uAuroraResolveCells;
+    real alongResolveKm = min(uAuroraResolveKm, resolveCells * fluxCellAlongKm());
     for (int k = 0; k < 2; ++k) {
         vec2 candidate = k == 0 ? vec2(candidates.x, candidates.y) : vec2(candidates.z, candidates.w);
         if (candidate.x < 0.0)
@@ -243,7 +247,7 @@ vec3 integrateCurtains(vec3 o, vec3 d, real t0, real t1, vec4 candidates)
         // curtain's ends) is integrated along in closed form, with sub-steps that bound the change across;
         // any other, across, with sub-steps that bound the change along.
         real alongParts = abs(sRate) / alongResolveKm;
-        real acrossParts = abs(uRate) / (uAuroraResolveCells * fluxCellAcrossKm(c));
+        real acrossParts = abs(uRate) / (resolveCells * fluxCellAcrossKm(c));
         real sStart = cc.s + sRate * (within.x - tm);
         real sEnd = cc.s + sRate * (within.y - tm);
         bool alongMode = kProfileVariesAlong && acrossParts < alongParts && min(sStart, sEnd) >= 0.0 &&
@@ -272,8 +276,13 @@ vec3 integrateCurtains(vec3 o, vec3 d, real t0, real t1, vec4 candidates)
             if (length(vec2(u, beyondEnds)) <= reach) {
                 // (∫ profile, ∫ offset from the sub-step's start × profile, mean profile at its ends) over
                 // the integrated coordinate.
-                vec3 column = curtainIntegral(c, alongMode, alongMode ? u : clamp(s, 0.0, lengthKm),
-                                              (alongMode ? s : u) - 0.5 * change, change);
+                real q0 = (alongMode ? s : u) - 0.5 * change;
+                real fixedChange = (alongMode ? uRate : sRate) * part;
+                real fixedA = alongMode ? u - 0.5 * fixedChange : clamp(s - 0.5 * fixedChange, 0.0, lengthKm);
+                real fixedB = alongMode ? u + 0.5 * fixedChange : clamp(s + 0.5 * fixedChange, 0.0, lengthKm);
+                vec3 column = uAuroraExactSubSteps != 0
+                                  ? curtainIntegralExact(c, alongMode, fixedA, fixedB, q0, change)
+                                  : curtainIntegral(c, alongMode, alongMode ? u : clamp(s, 0.0, lengthKm), q0, change);
                 bool pointLike = abs(change) < 1e-3;
                 real mass = pointLike ? column.z * part : column.x / rate; // ∫ profile dt over the sub-step, km
                 if (mass > 0.0) {

@@ -63,24 +63,29 @@ vec3 fluxTableAt(FluxTable t, real p, real frameY, real q)
     return vec3(fluxColumnValue(texel, centre, q - centre, t.cellKm), texel.z + texel.w * (q - centre) / t.cellKm);
 }
 
-// The closed-form integral over a sub-step: across (along = false) from u0 = q0 to u0 + dq at s = fixedKm,
-// or along (along = true) from s0 = q0 to s0 + dq at u = fixedKm (km, dq either sign); see above. Both
-// read the texture through the same two fetches (a third where a step along leaves the strip's period).
-vec3 curtainIntegral(int c, bool along, real fixedKm, real q0, real dq)
+// The fixed coordinate p of curtainIntegralAt at fixedKm (km across when along, else along): in the
+// entries' cells, 0 at the first cell's centre; along the strip reduced into its period.
+real curtainFixedCell(int c, bool along, real fixedKm)
+{
+    vec4 detail = uCurtainDetail[c];
+    return along ? (fixedKm * detail.z + 0.5 * uFluxStrip.y) / (uFluxStrip.y / uFluxLayout.y) - 0.5
+                 : mod((fixedKm + detail.x) / (uFluxStrip.x / uFluxLayout.x), uFluxLayout.x) - 0.5;
+}
+
+// The closed-form integral over a sub-step at the fixed coordinate p (cells, curtainFixedCell): across
+// (along = false) from u0 = q0 to u0 + dq, or along (along = true) from s0 = q0 to s0 + dq (km, dq either
+// sign); see above. Both read the texture through the same two fetches (a third where a step along leaves
+// the strip's period).
+vec3 curtainIntegralAt(int c, bool along, real p, real q0, real dq)
 {
     vec4 detail = uCurtainDetail[c];
     FluxTable t = fluxTable(along);
     real frameY = (detail.y * (uFluxStrip.z - 1.0) + 0.5) / uFluxStrip.z;
     real halfWidth = 0.5 * uFluxStrip.y;
     real stripKm = uFluxStrip.x;
-    // Across (simulation km) where the step runs along, and the ends of q: along, from s0 reduced into the
-    // strip (periodic); across, in simulation km.
-    real a = fixedKm * detail.z;
+    // The ends of q: along, from s0 reduced into the strip (periodic); across, in simulation km.
     real qa = along ? mod(q0 + detail.x, stripKm) : q0 * detail.z;
     real qb = along ? qa + dq : (q0 + dq) * detail.z;
-    // p: the fixed coordinate in the entries' cells; along, periodic; across, beyond the strip no flux.
-    real p = along ? (a + halfWidth) / (uFluxStrip.y / uFluxLayout.y) - 0.5
-                   : mod((fixedKm + detail.x) / (stripKm / uFluxLayout.x), uFluxLayout.x) - 0.5;
     // Along, the end may lie in the next or previous period, where the integrals continue by the
     // period's: x = kL + y gives A = A(y) + k A(L), B = B(y) + k B(L) + L (k(k − 1)/2 A(L) + k A(y)).
     real k = along ? floor(qb / stripKm) : 0.0;
@@ -93,7 +98,8 @@ vec3 curtainIntegral(int c, bool along, real fixedKm, real q0, real dq)
         hi.y += k * period.y + stripKm * (0.5 * k * (k - 1.0) * period.x + k * hi.x);
         hi.x += k * period.x;
     }
-    if (along && abs(a) >= halfWidth)
+    // Along, beyond the strip across (simulation km from its middle) there is no flux.
+    if (along && abs((p + 0.5) * (uFluxStrip.y / uFluxLayout.y) - halfWidth) >= halfWidth)
         return vec3(0.0);
     if (!along) {
         lo.z = abs(qa) < halfWidth ? lo.z : 0.0;
@@ -103,6 +109,12 @@ vec3 curtainIntegral(int c, bool along, real fixedKm, real q0, real dq)
     real mass = (hi.x - lo.x) / scale;
     real start = along ? qa : q0;        // q's start in the units of the moment: strip km, or curtain km
     return uFluxStrip.w * vec3(mass, (hi.y - lo.y) / (scale * scale) - start * mass, 0.5 * (lo.z + hi.z));
+}
+
+// The same at fixedKm: a sub-step that reads the flux at the middle of the coordinate it does not integrate over.
+vec3 curtainIntegral(int c, bool along, real fixedKm, real q0, real dq)
+{
+    return curtainIntegralAt(c, along, curtainFixedCell(c, along, fixedKm), q0, dq);
 }
 
 // The width across curtain c (km) over which its flux is resolved: the frames' cell across, scaled to it.
@@ -117,6 +129,45 @@ real fluxCellAlongKm()
 {
     return uFluxStrip.x / uFluxLayout.x;
 }
+
+// The integral over a sub-step whose fixed coordinate runs linearly from fixedA to fixedB (km) while q runs
+// from q0 to q0 + dq, exact for the flux as the texture gives it (linear between cell centres in both
+// coordinates): over a part of the sub-step between the centres p_i and p_i + 1 of the fixed coordinate,
+// F = (1 − λ) F_i + λ F_{i+1} with λ = p − p_i linear in q, so with the columns' integrals (A, B) at p_i
+// and p_i + 1 over that part,
+//   ∫ F dq = A_i + λ_a (A_{i+1} − A_i) + (λ_b − λ_a) (B_{i+1} − B_i) / Δq.
+// A sub-step that changes p by less than 1 holds at most one centre, where it is cut in two: 4 or 8
+// fetches (λ is kept in [0, 1], so a longer one errs no more than a column at its middle would). The first
+// moment and the mean profile take λ at each part's middle.
+vec3 curtainIntegralExact(int c, bool along, real fixedA, real fixedB, real q0, real dq)
+{
+    real pa = curtainFixedCell(c, along, fixedA);
+    real pb = pa + (fixedB - fixedA) / (along ? fluxCellAcrossKm(c) : fluxCellAlongKm());
+    real centre = floor(max(pa, pb));
+    bool cut = centre > min(pa, pb);
+    real share = cut ? (centre - pa) / (pb - pa) : 1.0; // of the sub-step before the centre
+    vec3 sum = vec3(0.0);
+    for (int part = 0; part < 2; ++part) {
+        if (part == 1 && !cut)
+            break;
+        real p0 = part == 0 ? pa : centre;
+        real p1 = part == 0 && cut ? centre : pb;
+        real qStart = part == 0 ? q0 : q0 + share * dq;
+        real dqPart = part == 0 ? share * dq : dq - share * dq;
+        real cell = floor(min(p0, p1));
+        vec3 lo = curtainIntegralAt(c, along, cell, qStart, dqPart);
+        vec3 hi = curtainIntegralAt(c, along, cell + 1.0, qStart, dqPart);
+        real la = clamp(p0 - cell, 0.0, 1.0);
+        real lb = clamp(p1 - cell, 0.0, 1.0);
+        real lm = 0.5 * (la + lb);
+        real mass = abs(dqPart) < 1e-6 ? mix(lo.x, hi.x, lm)
+                                       : lo.x + la * (hi.x - lo.x) + (lb - la) / dqPart * (hi.y - lo.y);
+        sum.x += mass;
+        sum.y += mix(lo.y, hi.y, lm) + (qStart - q0) * mass;
+        sum.z += mix(lo.z, hi.z, lm) * (cut ? 0.5 : 1.0);
+    }
+    return sum;
+}
 #else
 // The smooth Gaussian does not change along a curtain: the column across is exact for any sub-step.
 const bool kProfileVariesAlong = false;
@@ -130,6 +181,12 @@ vec3 curtainIntegral(int c, bool along, real fixedKm, real q0, real dq)
     real mass = gaussianMass(a0, a1) / scale;
     return vec3(mass, gaussianMoment(a0, a1) / (scale * scale) - q0 * mass,
                 0.5 * (exp(-0.5 * a0 * a0) + exp(-0.5 * a1 * a1)));
+}
+
+// The Gaussian does not change along, and a sub-step across never runs along it.
+vec3 curtainIntegralExact(int c, bool along, real fixedA, real fixedB, real q0, real dq)
+{
+    return curtainIntegral(c, along, 0.5 * (fixedA + fixedB), q0, dq);
 }
 
 real fluxCellAcrossKm(int c)

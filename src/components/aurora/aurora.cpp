@@ -42,6 +42,7 @@ public:
         program.set("uAuroraResolveKm", static_cast<float>(s_.resolveKm));
         program.set("uAuroraResolveCells", static_cast<float>(s_.resolveCells));
         program.set("uSkipEmptySpace", s_.skipEmptySpace ? 1 : 0);
+        program.set("uAuroraExactSubSteps", s_.exactSubSteps ? 1 : 0);
         field_.update(frame.timeS, frame.nextTimeS);
         tables_.update(field_.energiesKeV());
     }
@@ -151,6 +152,7 @@ public:
         a.footprintMapBuild = static_cast<MapBuilder>(
             t.choice("footprint_map_build", {"auto", "cpu", "gpu"}, static_cast<int>(a.footprintMapBuild)));
         a.skipEmptySpace = t.choice("skip_empty_space", {"no", "yes"}, a.skipEmptySpace) == 1;
+        a.exactSubSteps = t.choice("sub_step_flux", {"midpoint", "exact"}, a.exactSubSteps) == 1;
         a.tableAltitudeStepKm = t.number("table_altitude_step_km", 0.05, 10.0, a.tableAltitudeStepKm);
         a.tableEnergyCount = static_cast<int>(t.number("table_energy_count", 2, 4096, a.tableEnergyCount));
         if (t.has("curtain")) {

@@ -80,6 +80,7 @@ void setCurtains(Program& p, const Settings& a, double planetRadiusKm, const Cur
     p.uAuroraResolveKm = static_cast<float>(a.resolveKm);
     p.uAuroraResolveCells = static_cast<float>(a.resolveCells);
     p.uSkipEmptySpace = a.skipEmptySpace ? 1 : 0;
+    p.uAuroraExactSubSteps = a.exactSubSteps ? 1 : 0;
     p.uCurtainCount = static_cast<int>(states.size());
     p.uCurtainReachKm = 0.0;
     const physics::EmissionTables tables = physics::buildEmissionTables(emissionTableSpec(a));

@@ -77,6 +77,9 @@ std::vector<Variant> knobVariants(const std::vector<SweepKnob>& others)
     for (double cells : {0.5, 0.75, 1.0, 1.5, 2.0, 4.0})
         v.push_back({"resolve_cells", number(cells),
                      [cells](scene::Scene& s) { s.settings<AuroraSettings>().resolveCells = cells; }});
+    for (bool exact : {false, true})
+        v.push_back({"sub_step_flux", exact ? "exact" : "midpoint",
+                     [exact](scene::Scene& s) { s.settings<AuroraSettings>().exactSubSteps = exact; }});
     for (bool skip : {true, false})
         v.push_back({"skip_empty_space", skip ? "yes" : "no", [skip](scene::Scene& s) { s.settings<AuroraSettings>().skipEmptySpace = skip; }});
     for (int size : {128, 256, 512, 1024})
