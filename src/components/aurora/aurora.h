@@ -54,6 +54,7 @@ struct Settings : scene::SettingsOf<Settings> {
     double resolveKm = 1.0;           // sub-steps: altitude and position along a curtain change by at most this
     double resolveCells = 0.75;       // and, with curtain detail, the coordinate a sub-step is not
                                       // integrated over (along or across) by at most this many detail cells
+                                      // (at most 1 with exactSubSteps)
     bool exactSubSteps = true;        // sub_step_flux = "exact": each sub-step integrated exactly in the detail's
                                       // bilinear flux (4-8 texture reads, not 2), its sub-steps within 1 cell
     double polylineSpacingKm = 2.0;   // curtain splines are sampled this finely for the shader
