@@ -72,6 +72,8 @@ gl::ShaderSource marchShaderSource(const scene::Scene& scene, const std::string&
         source.defines.push_back(defineOf(c->name()));
         for (const std::string& role : c->provides())
             source.defines.push_back(defineOf(role));
+        for (const std::string& define : c->shaderDefines(scene))
+            source.defines.push_back(define);
     }
     for (const std::string& name : marchModuleNames(scene, stage)) {
         if (name == kPixel)

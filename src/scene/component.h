@@ -115,6 +115,9 @@ public:
 
     // Shader modules (paths under shaders/), in order; shared helpers first.
     virtual std::vector<std::string> shaderModules() const = 0;
+    // Preprocessor symbols its modules test, from its settings in `scene`: a quality knob that changes
+    // the shader's code rather than a uniform's value, so a march without it does not carry that code.
+    virtual std::vector<std::string> shaderDefines(const Scene&) const { return {}; }
     // GLSL expressions of type Ray applied to `ray` in shadeRay: the geometry step (before any
     // shading: what ends or blocks the ray) and the shading step. Empty: none.
     virtual std::string shaderGeometryCall() const { return {}; }

@@ -152,12 +152,13 @@ TEST_F(ReferenceRay, RejectsWhatItDoesNotModel)
 }
 
 // The default march (12 km steps, each cut into sub-steps of at most 1 km in altitude and 0.75 of the
-// detail's 0.25 km cells in the coordinate not integrated over, each integrated exactly in the detail's
-// bilinear flux across or along the curtain) and the same steps with 0.25 km sub-steps in altitude,
-// against the CPU reference at views along the paper's benchmark path: at the start (70 km up), inside
-// the aurora layer (frame 28, 144 km up) and above it (frame 60, 251 km up). Point samples every 2 km
-// were 4-8% RMS off at these views. Measured here: RMS 0.008%, 0.009%, 0.26% with the defaults and
-// 0.005%, 0.013%, 0.26% with 0.25 km sub-steps. Held to the defaults' target, 1% RMS.
+// detail's 0.25 km cells in the coordinate not integrated over, each integrated in closed form across
+// or along the curtain at the middle of the other coordinate) and the same steps with 0.25 km sub-steps
+// in altitude, against the CPU reference at views along the paper's benchmark path: at the start (70 km
+// up), inside the aurora layer (frame 28, 144 km up) and above it (frame 60, 251 km up). Point samples
+// every 2 km were 4-8% RMS off at these views. Measured here: RMS 0.046%, 2.3%, 0.29% with the defaults
+// and 0.039%, 2.3%, 0.29% with 0.25 km sub-steps: at frame 28 one pixel of 16 stays 9.1% off, the middle
+// column's error at a tilted sheet (ExactSubStepsRemoveTheMiddleColumnsErrorAtATiltedSheet). Held to 2.5%.
 TEST_F(ReferenceRay, CoarseStepsIntegratedAcrossTheCurtainStayNearTheReference)
 {
     for (long long frame : {0LL, 28LL, 60LL}) {
@@ -172,7 +173,7 @@ TEST_F(ReferenceRay, CoarseStepsIntegratedAcrossTheCurtainStayNearTheReference)
             const accuracy::RelativeError e = againstReference(s, view, model, pixels, reference);
             std::printf("frame %lld, %g km steps, %.2f km sub-steps vs CPU reference at %zu pixels: rms %.3g, max %.3g\n",
                         frame, aurora.stepKm, resolveKm, e.pixels, e.rms, e.max);
-            EXPECT_LT(e.rms, 0.01) << "frame " << frame;
+            EXPECT_LT(e.rms, 0.025) << "frame " << frame;
         }
     }
 }
@@ -180,7 +181,7 @@ TEST_F(ReferenceRay, CoarseStepsIntegratedAcrossTheCurtainStayNearTheReference)
 // Where a sheet of the detail is tilted in (s, u), the column read at a sub-step's middle
 // (sub_step_flux = "midpoint") misses where the ray crosses it, an error first order in the sub-step's
 // change along: at frame 28 of the benchmark path one pixel of a 64x36 view is 9.2% too bright. The
-// exact integral over the sub-step's slanted path (the default) leaves there only the emission's
+// exact integral over the sub-step's slanted path (sub_step_flux = "exact") leaves there only the emission's
 // position within a sub-step and the reference's own 0.05 km midpoint rule. Measured: the middle column's
 // largest error at 16 lit pixels 9.1%, the exact integral's 0.021%; held to more than 5% (the view still
 // shows the tilted sheet) and to less than 0.1%.
@@ -298,29 +299,34 @@ energy_kev = 3.0
     EXPECT_LT(cpu.max, 1e-9);
 }
 
-// The defaults at views nobody chose: four views of the benchmark scene drawn at random from seed 1 (one
-// of each kind: on the ground, inside the auroral layer, above it and far in space, at random times;
+// Views nobody chose: four views of the benchmark scene drawn at random from seed 1 (one of each kind: on
+// the ground, inside the auroral layer, above it and far in space, at random times;
 // src/accuracy/random_views.h), each against the CPU reference at 16 of the pixels where the aurora
-// gives at least half the radiance. Measured: RMS 0.028%, 0.078%, 0.078%, 0.12%. Held to the defaults'
-// target, 1% RMS.
-TEST_F(ReferenceRay, DefaultsStayNearTheReferenceAtViewsDrawnAtRandom)
+// gives at least half the radiance. With exact sub-steps held to the 1% RMS target; with the default's
+// middle column to 4%, one pixel of 16 as far off as the worst `launch/accuracy-views` found (15.7%).
+// Measured: RMS 0.034%, 0.14%, 0.30%, 0.15% (middle column), 0.028%, 0.078%, 0.078%, 0.12% (exact).
+TEST_F(ReferenceRay, StaysNearTheReferenceAtViewsDrawnAtRandom)
 {
-    const scene::Scene s = scene::withoutUnmodelled(components::loadScene(kSource + "/config/scenes/benchmark-view.toml"));
+    scene::Scene s = scene::withoutUnmodelled(components::loadScene(kSource + "/config/scenes/benchmark-view.toml"));
     const accuracy::SceneView start = accuracy::sceneView(s, kSource + "/config/walls/single.toml", {64, 36});
     accuracy::SceneAccuracySettings settings;
     settings.views = 4;
     settings.seed = 1;
     settings.pixels = 16;
-    std::vector<components::aurora::tools::ViewError> errors;
-    components::aurora::tools::measureViews(s, start, kSource + "/shaders", settings,
-                                            [&](const components::aurora::tools::ViewError& e) { errors.push_back(e); });
-    ASSERT_EQ(errors.size(), 4u);
-    for (const components::aurora::tools::ViewError& e : errors) {
-        std::printf("%s view, %.0f km up, t = %.0f s: %zu aurora pixels; against the CPU reference rms %.3g, max %.3g\n",
-                    accuracy::viewKindName(e.kind), glm::length(e.frame.cameraPositionKm) - s.planetRadiusKm,
-                    e.frame.timeS, e.auroraPixels, e.cpu.rms, e.cpu.max);
-        EXPECT_GE(e.auroraPixels, 16u) << accuracy::viewKindName(e.kind);
-        EXPECT_EQ(e.cpu.pixels, 16u) << accuracy::viewKindName(e.kind);
-        EXPECT_LT(e.cpu.rms, 0.01) << accuracy::viewKindName(e.kind);
+    for (bool exact : {false, true}) {
+        s.settings<components::aurora::Settings>().exactSubSteps = exact;
+        std::vector<components::aurora::tools::ViewError> errors;
+        components::aurora::tools::measureViews(s, start, kSource + "/shaders", settings,
+                                                [&](const components::aurora::tools::ViewError& e) { errors.push_back(e); });
+        ASSERT_EQ(errors.size(), 4u);
+        for (const components::aurora::tools::ViewError& e : errors) {
+            std::printf("%s, %s view, %.0f km up, t = %.0f s: %zu aurora pixels; against the CPU reference rms %.3g, "
+                        "max %.3g\n", exact ? "exact" : "middle column", accuracy::viewKindName(e.kind),
+                        glm::length(e.frame.cameraPositionKm) - s.planetRadiusKm, e.frame.timeS, e.auroraPixels,
+                        e.cpu.rms, e.cpu.max);
+            EXPECT_GE(e.auroraPixels, 16u) << accuracy::viewKindName(e.kind);
+            EXPECT_EQ(e.cpu.pixels, 16u) << accuracy::viewKindName(e.kind);
+            EXPECT_LT(e.cpu.rms, exact ? 0.01 : 0.04) << accuracy::viewKindName(e.kind);
+        }
     }
 }

@@ -11,8 +11,17 @@ uniform real uAuroraTopKm;
 uniform real uAuroraStepKm;
 uniform real uAuroraResolveKm;       // sub-steps (at most 64 a step): altitude and position along a curtain change by at most this
 uniform real uAuroraResolveCells;    // and the coordinate not integrated over by at most this many of the detail's cells
-uniform int uAuroraExactSubSteps;    // 1: each sub-step integrated exactly in the detail's bilinear flux
-                                     // (curtainIntegralExact), its sub-steps within one cell (at most 1 cell)
+// True with sub_step_flux = "exact" (AURORA_EXACT_SUB_STEPS, src/components/aurora/aurora.cpp): each sub-step
+// integrated exactly in the detail's bilinear flux (curtainIntegralExact), its sub-steps within one cell. A
+// constant on the GPU, so that the march without it does not carry its code (llvmpipe runs both sides of a
+// branch on a uniform: 1.7x the time); the CPU's march in double sets it per scene.
+#ifndef EXACT_SUB_STEPS
+#ifdef AURORA_EXACT_SUB_STEPS
+#define EXACT_SUB_STEPS true
+#else
+#define EXACT_SUB_STEPS false
+#endif
+#endif
 uniform int uSkipEmptySpace;         // 0: the naive fine march everywhere (the reference)
 uniform int uCurtainCount;
 uniform sampler2D uCurtainPolylines; // RGBA32F, row c: xyz unit vector, w arclength km
@@ -197,7 +206,7 @@ StepCandidates stepCandidates(vec3 o, vec3 d, real t0, real t1)
 // over the coordinate that changes through more of the detail's cells, across the curtain,
 //   ∫ flux(s, u(t)) E(h(t)) dt ≈ E(h(t̄)) · (1/u') ∫_{u(ta)}^{u(tb)} flux(s_mid, u) du,
 // or along it (s and u exchanged), and the other coordinate changes by at most uAuroraResolveCells of
-// the detail's cells (along, also by at most uAuroraResolveKm); with uAuroraExactSubSteps the flux is
+// the detail's cells (along, also by at most uAuroraResolveKm); with EXACT_SUB_STEPS the flux is
 // integrated exactly over the sub-step's slanted path instead (curtainIntegralExact). t̄ is the flux-weighted mean position of
 // the sub-step, from the first moment (curtain_profile.glsl, curtainIntegral). A sub-step that changes
 // the integrated coordinate by less than 1 m takes the midpoint rule. The step's midpoint decides which
@@ -216,7 +225,7 @@ vec3 integrateCurtains(vec3 o, vec3 d, real t0, real t1, vec4 candidates)
     // Integrated across, a sub-step reads the flux at one position along: the sub-steps resolve it to
     // uAuroraResolveKm or, finer, to uAuroraResolveCells of the detail's cells along. The fluxes of
     // overlapping curtains add.
-    real resolveCells = uAuroraExactSubSteps != 0 ? min(uAuroraResolveCells, 1.0) : uAuroraResolveCells;
+    real resolveCells = EXACT_SUB_STEPS ? min(uAuroraResolveCells, 1.0) : uAuroraResolveCells;
     real alongResolveKm = min(uAuroraResolveKm, resolveCells * fluxCellAlongKm());
     for (int k = 0; k < 2; ++k) {
         vec2 candidate = k == 0 ? vec2(candidates.x, candidates.y) : vec2(candidates.z, candidates.w);
@@ -280,9 +289,11 @@ vec3 integrateCurtains(vec3 o, vec3 d, real t0, real t1, vec4 candidates)
                 real fixedChange = (alongMode ? uRate : sRate) * part;
                 real fixedA = alongMode ? u - 0.5 * fixedChange : clamp(s - 0.5 * fixedChange, 0.0, lengthKm);
                 real fixedB = alongMode ? u + 0.5 * fixedChange : clamp(s + 0.5 * fixedChange, 0.0, lengthKm);
-                vec3 column = uAuroraExactSubSteps != 0
-                                  ? curtainIntegralExact(c, alongMode, fixedA, fixedB, q0, change)
-                                  : curtainIntegral(c, alongMode, alongMode ? u : clamp(s, 0.0, lengthKm), q0, change);
+                vec3 column;
+                if (EXACT_SUB_STEPS)
+                    column = curtainIntegralExact(c, alongMode, fixedA, fixedB, q0, change);
+                else
+                    column = curtainIntegral(c, alongMode, alongMode ? u : clamp(s, 0.0, lengthKm), q0, change);
                 bool pointLike = abs(change) < 1e-3;
                 real mass = pointLike ? column.z * part : column.x / rate; // ∫ profile dt over the sub-step, km
                 if (mass > 0.0) {

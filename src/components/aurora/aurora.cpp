@@ -42,7 +42,6 @@ public:
         program.set("uAuroraResolveKm", static_cast<float>(s_.resolveKm));
         program.set("uAuroraResolveCells", static_cast<float>(s_.resolveCells));
         program.set("uSkipEmptySpace", s_.skipEmptySpace ? 1 : 0);
-        program.set("uAuroraExactSubSteps", s_.exactSubSteps ? 1 : 0);
         field_.update(frame.timeS, frame.nextTimeS);
         tables_.update(field_.energiesKeV());
     }
@@ -162,6 +161,12 @@ public:
         }
         if (a.curtains.size() > size_t(kMaxCurtains))
             t.fail("curtain", "at most " + std::to_string(kMaxCurtains) + " curtains are supported");
+    }
+    std::vector<std::string> shaderDefines(const scene::Scene& scene) const override
+    {
+        if (scene.settings<Settings>().exactSubSteps)
+            return {"AURORA_EXACT_SUB_STEPS"};
+        return {};
     }
     std::vector<std::string> shaderModules() const override
     {

@@ -55,8 +55,9 @@ struct Settings : scene::SettingsOf<Settings> {
     double resolveCells = 0.75;       // and, with curtain detail, the coordinate a sub-step is not
                                       // integrated over (along or across) by at most this many detail cells
                                       // (at most 1 with exactSubSteps)
-    bool exactSubSteps = true;        // sub_step_flux = "exact": each sub-step integrated exactly in the detail's
-                                      // bilinear flux (4-8 texture reads, not 2), its sub-steps within 1 cell
+    bool exactSubSteps = false;       // sub_step_flux = "exact": each sub-step integrated exactly in the detail's
+                                      // bilinear flux (4-8 texture reads, not 2), its sub-steps within 1 cell;
+                                      // compiled in only then (AURORA_EXACT_SUB_STEPS)
     double polylineSpacingKm = 2.0;   // curtain splines are sampled this finely for the shader
     int footprintMapSize = 512;       // texels per side of the jump-flooded footprint map
     MapBuilder footprintMapBuild = MapBuilder::Auto; // where the map is built each frame

@@ -28,10 +28,12 @@ namespace {
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wunused-parameter" // the smooth profile's curtainIntegral ignores some
 #define uniform
+#define EXACT_SUB_STEPS uAuroraExactSubSteps
 #define COUNT_WORK(field, n)
 #define COUNT_RAY_WORK(n)
 struct SmoothProgram {
     real uPlanetRadiusKm = 0.0;
+    bool uAuroraExactSubSteps = false; // the shader's EXACT_SUB_STEPS, per scene
 #include "components/aurora/curtain_emission.glsl"
 #include "components/aurora/curtain_profile.glsl"
 #include "components/aurora/aurora_curtains.glsl"
@@ -41,6 +43,7 @@ static_assert(MAX_CURTAINS == kMaxCurtains, "the shader's uniform arrays hold kM
 #define HAS_CURTAIN_DETAIL
 struct DetailProgram {
     real uPlanetRadiusKm = 0.0;
+    bool uAuroraExactSubSteps = false; // the shader's EXACT_SUB_STEPS, per scene
 #include "components/aurora/curtain_emission.glsl"
 #include "components/aurora/curtain_profile.glsl"
 #include "components/aurora/aurora_curtains.glsl"
@@ -49,6 +52,7 @@ struct DetailProgram {
 #undef MAX_CURTAINS
 #undef COUNT_RAY_WORK
 #undef COUNT_WORK
+#undef EXACT_SUB_STEPS
 #undef uniform
 #pragma GCC diagnostic pop
 
@@ -80,7 +84,7 @@ void setCurtains(Program& p, const Settings& a, double planetRadiusKm, const Cur
     p.uAuroraResolveKm = static_cast<float>(a.resolveKm);
     p.uAuroraResolveCells = static_cast<float>(a.resolveCells);
     p.uSkipEmptySpace = a.skipEmptySpace ? 1 : 0;
-    p.uAuroraExactSubSteps = a.exactSubSteps ? 1 : 0;
+    p.uAuroraExactSubSteps = a.exactSubSteps;
     p.uCurtainCount = static_cast<int>(states.size());
     p.uCurtainReachKm = 0.0;
     const physics::EmissionTables tables = physics::buildEmissionTables(emissionTableSpec(a));
