@@ -286,14 +286,16 @@ vec3 integrateCurtains(vec3 o, vec3 d, real t0, real t1, vec4 candidates)
                 // (∫ profile, ∫ offset from the sub-step's start × profile, mean profile at its ends) over
                 // the integrated coordinate.
                 real q0 = (alongMode ? s : u) - 0.5 * change;
-                real fixedChange = (alongMode ? uRate : sRate) * part;
-                real fixedA = alongMode ? u - 0.5 * fixedChange : clamp(s - 0.5 * fixedChange, 0.0, lengthKm);
-                real fixedB = alongMode ? u + 0.5 * fixedChange : clamp(s + 0.5 * fixedChange, 0.0, lengthKm);
                 vec3 column;
-                if (EXACT_SUB_STEPS)
+                if (EXACT_SUB_STEPS) {
+                    // The other coordinate at the sub-step's two ends (along, kept within the curtain's ends).
+                    real halfChange = 0.5 * (alongMode ? uRate : sRate) * part;
+                    real fixedA = alongMode ? u - halfChange : clamp(s - halfChange, 0.0, lengthKm);
+                    real fixedB = alongMode ? u + halfChange : clamp(s + halfChange, 0.0, lengthKm);
                     column = curtainIntegralExact(c, alongMode, fixedA, fixedB, q0, change);
-                else
+                } else {
                     column = curtainIntegral(c, alongMode, alongMode ? u : clamp(s, 0.0, lengthKm), q0, change);
+                }
                 bool pointLike = abs(change) < 1e-3;
                 real mass = pointLike ? column.z * part : column.x / rate; // ∫ profile dt over the sub-step, km
                 if (mass > 0.0) {

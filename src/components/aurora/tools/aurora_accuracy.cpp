@@ -364,7 +364,7 @@ void printViewError(const scene::Scene& scene, int index, const ViewError& e, st
 void printViewErrors(const scene::Scene& scene, const SceneView& start, const std::string& shaderDir,
                      const SceneAccuracySettings& settings, std::ostream& out)
 {
-    out << "views drawn at random from seed " << settings.seed << " (accuracy/random_views.h); the default settings "
+    out << "views drawn at random from seed " << settings.seed << " (accuracy/random_views.h); the scene's settings "
         << "over the pixels where the aurora gives at least half the radiance, against the GPU reference (every such "
         << "pixel) and the CPU reference (" << settings.pixels << " of them)\n"
         << "view,kind,altitude_km,time_s,position_km,forward,up,aurora_pixels,rms_rel_gpu,max_rel_gpu,rms_rel_cpu,"

@@ -21,9 +21,9 @@ namespace aurorawall::components::aurora::tools {
 // curtains.
 void applyFinestSettings(scene::Scene& scene);
 
-// The default settings' error at `settings.views` views drawn at random from `settings.seed`
+// The error of the scene's settings at `settings.views` views drawn at random from `settings.seed`
 // (accuracy/random_views.h), the kinds of view in turn from `start` (the scene's view at its frame),
-// over the pixels where the aurora gives at least half the radiance at the default settings: against the
+// over the pixels where the aurora gives at least half the radiance at those settings: against the
 // GPU render at the finest settings at every such pixel, and against the CPU reference at
 // `settings.pixels` of them, evenly spaced. A kind's view is drawn again (up to 200 times) until it
 // has 16 such pixels. `scene` lists only what the CPU reference models (scene::withoutUnmodelled).
