@@ -11,7 +11,8 @@
 # those with curtains of several thicknesses when each curtain came to emit within its own reach, and
 # all with detail when that reach came to follow the detail phase, and those with curtains when the
 # default step became 12 km with sub-steps of 0.75 detail cells, and all when each pixel came to sum
-# the stars of the neighbouring cells; their
+# the stars of the neighbouring cells, and those with fluid detail when its flux came to be integrated
+# exactly along each ray's path through the detail's cells; their
 # accuracy tests/render/reference_ray_test.cpp checks against the CPU reference). Float
 # reordering inside a component may move a value by one half-float step, so HALF_ULPS (default 2)
 # are allowed.

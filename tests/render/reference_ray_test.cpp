@@ -92,35 +92,43 @@ components::roles::FluxFrames* ReferenceRay::frames_ = nullptr;
 // image (most lit by the sky's glow): only float is left between them, bounded per pixel by AuroraFloatBound
 // (aurora_float_bound.h) from this scene's data. Then against the fine CPU reference, whose difference from
 // the march in double is its discretization (tests/render/shader_steps_test.cpp holds it to 1e-3): the two
-// bounds add. Measured (llvmpipe): against the march RMS 3.3e-5, max 1.1e-4, at most 18% of a pixel's bound
-// (the bounds reach 5.8e-2 of a pixel, from the flux's slopes); against the reference RMS 3.6e-5, max 1.2e-4
-// (before the curtain-normal fix of aurora_curtains.glsl it was RMS 1.7e-2: the test caught the float bug).
+// bounds add. Both sub-step fluxes: the middle column's bound is the tighter (the exact pieces' moments
+// add up to 528 u Q / cell of the crossing). Measured (llvmpipe), the middle column against the march RMS
+// 3.3e-5, max 1.1e-4, at most 18% of a pixel's bound (the bounds reach 5.8e-2 of a pixel, from the flux's
+// slopes); the exact pieces RMS 2.7e-5, max 7.6e-5; against the reference RMS 3.6e-5 and 5.0e-5, max 1.2e-4
+// and 1.9e-4 (before the curtain-normal fix of aurora_curtains.glsl it was RMS 1.7e-2: the test caught the
+// float bug).
 TEST_F(ReferenceRay, GpuAtItsFinestSettingsAgreesWithTheReference)
 {
-    const io::Image gpu = accuracy::renderView(*scene_, *view_, kSource + "/shaders", 0).image;
-    render::ReferenceSettings shaderSteps;
-    shaderSteps.shaderSteps = true;
-    const render::ReferenceModel march(*scene_, view_->frame.timeS, curtainDetailData(frames_), shaderSteps);
-    const std::vector<glm::dvec3> marchImage = test::referenceImage(march, *view_, gpu.width, gpu.height);
-    const std::vector<glm::ivec2> pixels = test::litPixels(marchImage, gpu.width, floor(), 16);
-    const render::ReferenceModel model(*scene_, view_->frame.timeS, curtainDetailData(frames_));
-    const std::vector<glm::dvec3> reference = accuracy::referencePixels(model, *view_, pixels, 2);
-    std::vector<glm::dvec3> values, marched;
-    for (const glm::ivec2& p : pixels) {
-        values.push_back(accuracy::pixelRadiance(gpu, p.x, p.y));
-        marched.push_back(marchImage[size_t(p.y * gpu.width + p.x)]);
+    for (bool exact : {false, true}) {
+        scene::Scene s = *scene_;
+        s.settings<components::aurora::Settings>().exactSubSteps = exact;
+        const io::Image gpu = accuracy::renderView(s, *view_, kSource + "/shaders", 0).image;
+        render::ReferenceSettings shaderSteps;
+        shaderSteps.shaderSteps = true;
+        const render::ReferenceModel march(s, view_->frame.timeS, curtainDetailData(frames_), shaderSteps);
+        const std::vector<glm::dvec3> marchImage = test::referenceImage(march, *view_, gpu.width, gpu.height);
+        const std::vector<glm::ivec2> pixels = test::litPixels(marchImage, gpu.width, floor(), 16);
+        const render::ReferenceModel model(s, view_->frame.timeS, curtainDetailData(frames_));
+        const std::vector<glm::dvec3> reference = accuracy::referencePixels(model, *view_, pixels, 2);
+        std::vector<glm::dvec3> values, marched;
+        for (const glm::ivec2& p : pixels) {
+            values.push_back(accuracy::pixelRadiance(gpu, p.x, p.y));
+            marched.push_back(marchImage[size_t(p.y * gpu.width + p.x)]);
+        }
+        // The reference lies within its discretization (1e-3 relative) of the march in double.
+        const test::FloatBoundCheck check =
+            test::expectWithinFloatBound(s, *frames_, march, *view_, pixels, values, marched, reference, 1e-3);
+        const accuracy::RelativeError f = accuracy::relativeError(values, marched, floor());
+        const accuracy::RelativeError e = accuracy::relativeError(values, reference, floor());
+        std::printf("%s: float bound: dh %.3g km, dq %.3g km; at most %.3g of a pixel\n", exact ? "exact" : "midpoint",
+                    check.dh, check.dq, check.largestBound);
+        std::printf("GPU (0.25 km, finest tables) vs the march in double at %zu pixels: rms %.3g, max %.3g, at most "
+                    "%.3g of the float bound; vs CPU reference: rms %.3g, max %.3g\n",
+                    f.pixels, f.rms, f.max, check.largestShare, e.rms, e.max);
+        EXPECT_EQ(f.pixels, pixels.size());
+        EXPECT_EQ(e.pixels, pixels.size());
     }
-    // The reference lies within its discretization (1e-3 relative) of the march in double.
-    const test::FloatBoundCheck check =
-        test::expectWithinFloatBound(*scene_, *frames_, march, *view_, pixels, values, marched, reference, 1e-3);
-    const accuracy::RelativeError f = accuracy::relativeError(values, marched, floor());
-    const accuracy::RelativeError e = accuracy::relativeError(values, reference, floor());
-    std::printf("float bound: dh %.3g km, dq %.3g km; at most %.3g of a pixel\n", check.dh, check.dq, check.largestBound);
-    std::printf("GPU (0.25 km, finest tables) vs the march in double at %zu pixels: rms %.3g, max %.3g, at most "
-                "%.3g of the float bound; vs CPU reference: rms %.3g, max %.3g\n",
-                f.pixels, f.rms, f.max, check.largestShare, e.rms, e.max);
-    EXPECT_EQ(f.pixels, pixels.size());
-    EXPECT_EQ(e.pixels, pixels.size());
 }
 
 // Halving the reference's step (0.05 -> 0.025 km) changes it by less than 1e-3 relative, at the
@@ -181,10 +189,10 @@ TEST_F(ReferenceRay, CoarseStepsIntegratedAcrossTheCurtainStayNearTheReference)
 // Where a sheet of the detail is tilted in (s, u), the column read at a sub-step's middle
 // (sub_step_flux = "midpoint") misses where the ray crosses it, an error first order in the sub-step's
 // change along: at frame 28 of the benchmark path one pixel of a 64x36 view is 9.2% too bright. The
-// exact integral over the sub-step's slanted path (sub_step_flux = "exact") leaves there only the emission's
-// position within a sub-step and the reference's own 0.05 km midpoint rule. Measured: the middle column's
-// largest error at 16 lit pixels 9.1%, the exact integral's 0.021%; held to more than 5% (the view still
-// shows the tilted sheet) and to less than 0.1%.
+// exact integral along the slanted path (sub_step_flux = "exact", the default) leaves there only the
+// emission's position within a run of pieces and the reference's own 0.05 km midpoint rule. Measured: the
+// middle column's largest error at 16 lit pixels 9.1%, the exact integral's 0.055%; held to more than 5%
+// (the view still shows the tilted sheet) and to less than 0.1%.
 TEST_F(ReferenceRay, ExactSubStepsRemoveTheMiddleColumnsErrorAtATiltedSheet)
 {
     scene::Scene s = scene::withoutUnmodelled(components::loadScene(kSource + "/config/scenes/benchmark-view.toml"));
@@ -302,9 +310,9 @@ energy_kev = 3.0
 // Views nobody chose: four views of the benchmark scene drawn at random from seed 1 (one of each kind: on
 // the ground, inside the auroral layer, above it and far in space, at random times;
 // src/accuracy/random_views.h), each against the CPU reference at 16 of the pixels where the aurora
-// gives at least half the radiance. With exact sub-steps held to the 1% RMS target; with the default's
-// middle column to 4%, one pixel of 16 as far off as the worst `launch/accuracy-views` found (15.7%).
-// Measured: RMS 0.034%, 0.14%, 0.30%, 0.15% (middle column), 0.028%, 0.078%, 0.078%, 0.12% (exact).
+// gives at least half the radiance. The default's exact flux held to the 1% RMS target; the middle
+// column to 4%, one pixel of 16 as far off as the worst `launch/accuracy-views` found for it (15.7%).
+// Measured: RMS 0.034%, 0.14%, 0.30%, 0.15% (middle column), 0.017%, 0.10%, 0.10%, 0.069% (exact).
 TEST_F(ReferenceRay, StaysNearTheReferenceAtViewsDrawnAtRandom)
 {
     scene::Scene s = scene::withoutUnmodelled(components::loadScene(kSource + "/config/scenes/benchmark-view.toml"));

@@ -11,8 +11,8 @@ uniform real uAuroraTopKm;
 uniform real uAuroraStepKm;
 uniform real uAuroraResolveKm;       // sub-steps (at most 64 a step): altitude and position along a curtain change by at most this
 uniform real uAuroraResolveCells;    // and the coordinate not integrated over by at most this many of the detail's cells
-// True with sub_step_flux = "exact" (AURORA_EXACT_SUB_STEPS, src/components/aurora/aurora.cpp): each sub-step
-// integrated exactly in the detail's bilinear flux (curtainIntegralExact), its sub-steps within one cell. A
+// True with sub_step_flux = "exact" (AURORA_EXACT_SUB_STEPS, src/components/aurora/aurora.cpp): with curtain
+// detail, each curtain's part of a step integrated exactly in the detail's bilinear flux (curtainEnergyExact). A
 // constant on the GPU, so that the march without it does not carry its code (llvmpipe runs both sides of a
 // branch on a uniform: 1.7x the time); the CPU's march in double sets it per scene.
 #ifndef EXACT_SUB_STEPS
@@ -197,6 +197,127 @@ StepCandidates stepCandidates(vec3 o, vec3 d, real t0, real t1)
     return step;
 }
 
+#ifdef HAS_CURTAIN_DETAIL
+// The energy (per unit of peak flux) of curtain c over the part `span` of a step of the ray o + t d (km),
+// its flux integrated exactly along the ray's slanted path through the detail's bilinear flux
+// (sub_step_flux = "exact"). As in integrateCurtains, q (u across, s along: `alongMode`) and the other,
+// fixed coordinate f (s across, kept within the curtain's ends; u along) run linearly from the step's
+// midpoint tm; p = f / (cell km) counts the detail's cells. The path is cut into pieces where
+//  - p passes a cell centre: between two centres the flux is a linear mix of the columns there, which
+//    bilinearPiece integrates exactly;
+//  - f meets its band's edge: across, a curtain end, beyond which p stays at the end's; along, the strip's
+//    edge, beyond which there is no flux;
+//  - the altitude has changed by uAuroraResolveKm since the last such cut: the pieces between two of
+//    these cuts, a run, share one emission at their flux-weighted mean position;
+//  - along, s leaves the strip's period.
+// A piece reads the two columns at its end (2 fetches), and the next one starts from those, reading a third
+// where it has crossed into the next cell: about 3 fetches a cell crossed. Where p would cross more than 64
+// centres, the pieces take `stride` cells at a time, each with the two columns around its middle (λ kept
+// in [0, 1]): no worse than a column at its middle.
+vec3 curtainEnergyExact(vec3 o, vec3 d, int c, CurtainCoordinates cc, real tm, vec2 span, real uRate, real sRate,
+                        real hRate, bool alongMode)
+{
+    real reach = uCurtainState[c].w;
+    real lengthKm = uCurtainLengthKm[c];
+    real stripKm = uFluxStrip.x;
+    real rate = alongMode ? sRate : uRate; // q's, curtain km per km of ray
+    real fixedRate = alongMode ? uRate : sRate;
+    real halfWidthKm = 0.5 * uFluxStrip.y / uCurtainDetail[c].z;
+    vec2 band = intersectLinearBand(span, alongMode ? cc.u : cc.s, fixedRate, tm, alongMode ? -halfWidthKm : 0.0,
+                                    alongMode ? halfWidthKm : lengthKm);
+    real fixedStart = alongMode ? cc.u + uRate * (span.x - tm) : clamp(cc.s + sRate * (span.x - tm), 0.0, lengthKm);
+    real p = curtainFixedCell(c, alongMode, fixedStart); // not reduced again as it runs: columns are read periodically
+    real pRate = fixedRate / (alongMode ? fluxCellAcrossKm(c) : fluxCellAlongKm());
+    real qCellKm = alongMode ? fluxCellAlongKm() : fluxCellAcrossKm(c);
+    real stride = max(1.0, ceil(abs(pRate) * (span.y - span.x) / 64.0));
+    real group = pRate < 0.0 ? ceil(p / stride) - 1.0 : floor(p / stride); // p lies in [group, group + 1] strides
+    real runs = clamp(ceil(abs(hRate) * (span.y - span.x) / uAuroraResolveKm), 1.0, 64.0);
+    real runKm = (span.y - span.x) / runs;
+    real run = 0.0;
+    real q = alongMode ? mod(cc.s + sRate * (span.x - tm) + uCurtainDetail[c].x, stripKm) : cc.u + uRate * (span.x - tm);
+    // The two columns' values at the piece's start, of the pair from column `held` (none: −1e30).
+    real held = -1.0e30;
+    vec3 lo = vec3(0.0);
+    vec3 loNext = vec3(0.0);
+    vec3 energy = vec3(0.0);
+    real runMass = 0.0;
+    real runMoment = 0.0; // ∫ t profile dt, km²
+    real ta = span.x;
+    // At most 64 runs, 65 strides, 2 band edges and the strip's periods: the bound never binds.
+    for (int piece = 0; piece < 256 && ta < span.y; ++piece) {
+        bool inBand = ta >= band.x && ta < band.y;
+        real pRateNow = inBand ? pRate : 0.0;
+        real tCentre = pRateNow > 0.0 ? ta + ((group + 1.0) * stride - p) / pRateNow
+                     : pRateNow < 0.0 ? ta + (group * stride - p) / pRateNow : 1.0e30;
+        real tBand = ta < band.x ? band.x : ta < band.y ? band.y : 1.0e30;
+        real tRun = run + 1.0 >= runs ? span.y : span.x + (run + 1.0) * runKm;
+        real tWrap = !alongMode || sRate == 0.0 ? 1.0e30 : ta + ((sRate > 0.0 ? stripKm : 0.0) - q) / sRate;
+        real tb = max(min(min(min(tCentre, tBand), min(tRun, tWrap)), span.y), ta);
+        real len = tb - ta;
+        bool centre = tCentre <= tb;
+        bool wrap = tWrap <= tb;
+        real pb = centre ? (pRateNow > 0.0 ? group + 1.0 : group) * stride : p + pRateNow * len;
+        real qb = wrap ? (sRate > 0.0 ? stripKm : 0.0) : q + rate * len;
+        real tMid = ta + 0.5 * len;
+        real u = cc.u + uRate * (tMid - tm);
+        real s = cc.s + sRate * (tMid - tm);
+        // Beyond its reach (across, or around the curtain's ends) a curtain does not emit; along, nor
+        // beyond the strip.
+        real beyondEnds = max(max(-s, s - lengthKm), 0.0);
+        bool emits = length(vec2(u, beyondEnds)) <= reach && (inBand || !alongMode);
+        if (!emits) {
+            held = -1.0e30;
+        } else if (len > 0.0) {
+            COUNT_WORK(z, 1);
+            real cell = clamp(floor(0.5 * (p + pb)), group * stride, (group + 1.0) * stride - 1.0);
+            if (held != cell) {
+                // Into the next cell up or down, one of the held columns is the new pair's; else both are read.
+                bool down = held == cell + 1.0;
+                vec3 kept = down ? lo : loNext;
+                if (!down && held != cell - 1.0)
+                    kept = fluxColumnPoint(c, alongMode, cell, q);
+                vec3 read = fluxColumnPoint(c, alongMode, down ? cell : cell + 1.0, q);
+                lo = down ? read : kept;
+                loNext = down ? kept : read;
+            }
+            vec3 hi = fluxColumnPoint(c, alongMode, cell, qb);
+            vec3 hiNext = fluxColumnPoint(c, alongMode, cell + 1.0, qb);
+            real dq = qb - q;
+            vec3 column = bilinearPiece(lo, loNext, hi, hiNext, q, dq, clamp(p - cell, 0.0, 1.0),
+                                        clamp(pb - cell, 0.0, 1.0), qCellKm);
+            bool pointLike = abs(dq) < 1e-3;
+            real mass = pointLike ? column.z * len : column.x / rate; // ∫ profile dt over the piece, km
+            if (mass > 0.0) {
+                real tMean = pointLike ? tMid : clamp(ta + column.y / column.x / rate, ta, tb);
+                runMass += mass;
+                runMoment += mass * tMean;
+            }
+            lo = hi;
+            loNext = hiNext;
+            held = cell;
+        }
+        if (wrap) {
+            q = sRate > 0.0 ? 0.0 : stripKm; // the same point of the periodic strip, its integrals from 0 again
+            held = -1.0e30;
+        } else {
+            q = qb;
+        }
+        if (centre)
+            group += pRateNow > 0.0 ? 1.0 : -1.0;
+        p = pb;
+        if (tRun <= tb) {
+            if (runMass > 0.0)
+                energy += runMass * curtainEmissionAt(o, d, runMoment / runMass, c);
+            runMass = 0.0;
+            runMoment = 0.0;
+            run += 1.0;
+        }
+        ta = tb;
+    }
+    return energy;
+}
+#endif
+
 // The emission of the ray o + t d over the step [t0, t1] (km) of the curtains that can reach it
 // (stepCandidates), as linear sRGB radiance. The curtain coordinates are found
 // once, at the step's midpoint t_m, and the footprint's motion is linear over the step:
@@ -207,7 +328,7 @@ StepCandidates stepCandidates(vec3 o, vec3 d, real t0, real t1)
 //   ∫ flux(s, u(t)) E(h(t)) dt ≈ E(h(t̄)) · (1/u') ∫_{u(ta)}^{u(tb)} flux(s_mid, u) du,
 // or along it (s and u exchanged), and the other coordinate changes by at most uAuroraResolveCells of
 // the detail's cells (along, also by at most uAuroraResolveKm); with EXACT_SUB_STEPS the flux is
-// integrated exactly over the sub-step's slanted path instead (curtainIntegralExact). t̄ is the flux-weighted mean position of
+// integrated exactly along the slanted path instead, in pieces cut at the detail's cell centres (curtainEnergyExact). t̄ is the flux-weighted mean position of
 // the sub-step, from the first moment (curtain_profile.glsl, curtainIntegral). A sub-step that changes
 // the integrated coordinate by less than 1 m takes the midpoint rule. The step's midpoint decides which
 // curtains are near, as a point sample did.
@@ -225,8 +346,7 @@ vec3 integrateCurtains(vec3 o, vec3 d, real t0, real t1, vec4 candidates)
     // Integrated across, a sub-step reads the flux at one position along: the sub-steps resolve it to
     // uAuroraResolveKm or, finer, to uAuroraResolveCells of the detail's cells along. The fluxes of
     // overlapping curtains add.
-    real resolveCells = EXACT_SUB_STEPS ? min(uAuroraResolveCells, 1.0) : uAuroraResolveCells;
-    real alongResolveKm = min(uAuroraResolveKm, resolveCells * fluxCellAlongKm());
+    real alongResolveKm = min(uAuroraResolveKm, uAuroraResolveCells * fluxCellAlongKm());
     for (int k = 0; k < 2; ++k) {
         vec2 candidate = k == 0 ? vec2(candidates.x, candidates.y) : vec2(candidates.z, candidates.w);
         if (candidate.x < 0.0)
@@ -256,11 +376,21 @@ vec3 integrateCurtains(vec3 o, vec3 d, real t0, real t1, vec4 candidates)
         // curtain's ends) is integrated along in closed form, with sub-steps that bound the change across;
         // any other, across, with sub-steps that bound the change along.
         real alongParts = abs(sRate) / alongResolveKm;
-        real acrossParts = abs(uRate) / (resolveCells * fluxCellAcrossKm(c));
+        real acrossParts = abs(uRate) / (uAuroraResolveCells * fluxCellAcrossKm(c));
         real sStart = cc.s + sRate * (within.x - tm);
         real sEnd = cc.s + sRate * (within.y - tm);
-        bool alongMode = kProfileVariesAlong && acrossParts < alongParts && min(sStart, sEnd) >= 0.0 &&
-                         max(sStart, sEnd) <= lengthKm;
+        bool betweenEnds = min(sStart, sEnd) >= 0.0 && max(sStart, sEnd) <= lengthKm;
+        bool alongMode = kProfileVariesAlong && acrossParts < alongParts && betweenEnds;
+#ifdef HAS_CURTAIN_DETAIL
+        if (EXACT_SUB_STEPS) {
+            // Exact along the slanted path, integrated in closed form over the coordinate whose cells it
+            // crosses more of, cut at the other's cell centres.
+            bool moreAlong = abs(uRate) / fluxCellAcrossKm(c) < abs(sRate) / fluxCellAlongKm();
+            radiance += uCurtainState[c].x *
+                        curtainEnergyExact(o, d, c, cc, tm, within, uRate, sRate, hRate, moreAlong && betweenEnds);
+            continue;
+        }
+#endif
         real resolveParts = alongMode ? acrossParts : alongParts;
         int parts = int(clamp(ceil(max(abs(hRate) / uAuroraResolveKm, resolveParts) * span), 1.0, 64.0));
         real part = span / real(parts);
@@ -286,16 +416,7 @@ vec3 integrateCurtains(vec3 o, vec3 d, real t0, real t1, vec4 candidates)
                 // (∫ profile, ∫ offset from the sub-step's start × profile, mean profile at its ends) over
                 // the integrated coordinate.
                 real q0 = (alongMode ? s : u) - 0.5 * change;
-                vec3 column;
-                if (EXACT_SUB_STEPS) {
-                    // The other coordinate at the sub-step's two ends (along, kept within the curtain's ends).
-                    real halfChange = 0.5 * (alongMode ? uRate : sRate) * part;
-                    real fixedA = alongMode ? u - halfChange : clamp(s - halfChange, 0.0, lengthKm);
-                    real fixedB = alongMode ? u + halfChange : clamp(s + halfChange, 0.0, lengthKm);
-                    column = curtainIntegralExact(c, alongMode, fixedA, fixedB, q0, change);
-                } else {
-                    column = curtainIntegral(c, alongMode, alongMode ? u : clamp(s, 0.0, lengthKm), q0, change);
-                }
+                vec3 column = curtainIntegral(c, alongMode, alongMode ? u : clamp(s, 0.0, lengthKm), q0, change);
                 bool pointLike = abs(change) < 1e-3;
                 real mass = pointLike ? column.z * part : column.x / rate; // ∫ profile dt over the sub-step, km
                 if (mass > 0.0) {

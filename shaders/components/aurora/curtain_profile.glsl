@@ -63,6 +63,12 @@ vec3 fluxTableAt(FluxTable t, real p, real frameY, real q)
     return vec3(fluxColumnValue(texel, centre, q - centre, t.cellKm), texel.z + texel.w * (q - centre) / t.cellKm);
 }
 
+// The texture's coordinate between the frames for curtain c's detail phase (the texture blends two frames).
+real fluxFrameY(int c)
+{
+    return (uCurtainDetail[c].y * (uFluxStrip.z - 1.0) + 0.5) / uFluxStrip.z;
+}
+
 // The fixed coordinate p of curtainIntegralAt at fixedKm (km across when along, else along): in the
 // entries' cells, 0 at the first cell's centre; along the strip reduced into its period.
 real curtainFixedCell(int c, bool along, real fixedKm)
@@ -80,7 +86,7 @@ vec3 curtainIntegralAt(int c, bool along, real p, real q0, real dq)
 {
     vec4 detail = uCurtainDetail[c];
     FluxTable t = fluxTable(along);
-    real frameY = (detail.y * (uFluxStrip.z - 1.0) + 0.5) / uFluxStrip.z;
+    real frameY = fluxFrameY(c);
     real halfWidth = 0.5 * uFluxStrip.y;
     real stripKm = uFluxStrip.x;
     // The ends of q: along, from s0 reduced into the strip (periodic); across, in simulation km.
@@ -130,43 +136,42 @@ real fluxCellAlongKm()
     return uFluxStrip.x / uFluxLayout.x;
 }
 
-// The integral over a sub-step whose fixed coordinate runs linearly from fixedA to fixedB (km) while q runs
-// from q0 to q0 + dq, exact for the flux as the texture gives it (linear between cell centres in both
-// coordinates): over a part of the sub-step between the centres p_i and p_i + 1 of the fixed coordinate,
-// F = (1 − λ) F_i + λ F_{i+1} with λ = p − p_i linear in q, so with the columns' integrals (A, B) at p_i
-// and p_i + 1 over that part,
-//   ∫ F dq = A_i + λ_a (A_{i+1} − A_i) + (λ_b − λ_a) (B_{i+1} − B_i) / Δq.
-// A sub-step that changes p by less than 1 holds at most one centre, where it is cut in two: 4 or 8
-// fetches (λ is kept in [0, 1], so a longer one errs no more than a column at its middle would). The first
-// moment and the mean profile take λ at each part's middle.
-vec3 curtainIntegralExact(int c, bool along, real fixedA, real fixedB, real q0, real dq)
+// The running integrals and the flux (A, B, F) of the detail's column `cell` (an integer, counted
+// periodically as the frames are) at q (curtain km: along, s reduced into the strip's period; across, u),
+// in curtainIntegralAt's units times its peak scale: across, outside the strip, the integrals at its edge
+// and no flux. One fetch.
+vec3 fluxColumnPoint(int c, bool along, real cell, real q)
 {
-    real pa = curtainFixedCell(c, along, fixedA);
-    real pb = pa + (fixedB - fixedA) / (along ? fluxCellAcrossKm(c) : fluxCellAlongKm());
-    real centre = floor(max(pa, pb));
-    bool cut = centre > min(pa, pb);
-    real share = cut ? (centre - pa) / (pb - pa) : 1.0; // of the sub-step before the centre
-    vec3 sum = vec3(0.0);
-    for (int part = 0; part < 2; ++part) {
-        if (part == 1 && !cut)
-            break;
-        real p0 = part == 0 ? pa : centre;
-        real p1 = part == 0 && cut ? centre : pb;
-        real qStart = part == 0 ? q0 : q0 + share * dq;
-        real dqPart = part == 0 ? share * dq : dq - share * dq;
-        real cell = floor(min(p0, p1));
-        vec3 lo = curtainIntegralAt(c, along, cell, qStart, dqPart);
-        vec3 hi = curtainIntegralAt(c, along, cell + 1.0, qStart, dqPart);
-        real la = clamp(p0 - cell, 0.0, 1.0);
-        real lb = clamp(p1 - cell, 0.0, 1.0);
-        real lm = 0.5 * (la + lb);
-        real mass = abs(dqPart) < 1e-6 ? mix(lo.x, hi.x, lm)
-                                       : lo.x + la * (hi.x - lo.x) + (lb - la) / dqPart * (hi.y - lo.y);
-        sum.x += mass;
-        sum.y += mix(lo.y, hi.y, lm) + (qStart - q0) * mass;
-        sum.z += mix(lo.z, hi.z, lm) * (cut ? 0.5 : 1.0);
-    }
-    return sum;
+    FluxTable t = fluxTable(along);
+    real halfWidth = 0.5 * uFluxStrip.y;
+    real scale = along ? 1.0 : uCurtainDetail[c].z; // simulation km per curtain km along q
+    real qSim = q * scale;
+    vec3 v = fluxTableAt(t, mod(cell, t.cells), fluxFrameY(c), along ? qSim : clamp(qSim, -halfWidth, halfWidth));
+    v.z = along || abs(qSim) < halfWidth ? v.z : 0.0;
+    return uFluxStrip.w * vec3(v.x / scale, v.y / (scale * scale), v.z);
+}
+
+// A piece of a sub-step between the centres of two neighbouring columns i and j = i + 1, over which q runs
+// from q0 to q0 + dq and the share λ of column j runs linearly from la to lb, integrated exactly for the
+// flux as the texture gives it, F = (1 − λ) F_i + λ F_j (linear between the centres in both coordinates):
+// with each column's (A, B) over the piece (fluxColumnPoint at its two ends, `lo` and `hi`),
+//   ∫ F dq = A_i + la (A_j − A_i) + (lb − la) (B_j − B_i) / dq,   B the moment about q0.
+// (∫ F dq, ∫ (q − q0) F dq, the mean F at the ends) as curtainIntegralAt; the moment takes λ at the middle.
+// The moments are differences of running integrals as large as the table's largest |q| (Q) times the
+// column's whole integral, so in float their difference over (λ_b − λ_a)/dq costs up to 8 u Q/qCellKm of
+// that integral where λ changes by at most one cell of q's (qCellKm) over dq, as where the path crosses
+// more cells of q than of the fixed coordinate; elsewhere (beyond a curtain's end, where the pieces run
+// across while s changes faster) the mass takes λ at the middle, off by at most (λ_b − λ_a) dq² |F_j' − F_i'| / 12.
+vec3 bilinearPiece(vec3 loI, vec3 loJ, vec3 hiI, vec3 hiJ, real q0, real dq, real la, real lb, real qCellKm)
+{
+    real massI = hiI.x - loI.x;
+    real massJ = hiJ.x - loJ.x;
+    real momentI = hiI.y - loI.y - q0 * massI;
+    real momentJ = hiJ.y - loJ.y - q0 * massJ;
+    real lm = 0.5 * (la + lb);
+    real mass = abs(lb - la) * qCellKm < abs(dq) ? massI + la * (massJ - massI) + (lb - la) / dq * (momentJ - momentI)
+                                                 : mix(massI, massJ, lm);
+    return vec3(mass, mix(momentI, momentJ, lm), 0.5 * (mix(loI.z, loJ.z, la) + mix(hiI.z, hiJ.z, lb)));
 }
 #else
 // The smooth Gaussian does not change along a curtain: the column across is exact for any sub-step.
@@ -181,12 +186,6 @@ vec3 curtainIntegral(int c, bool along, real fixedKm, real q0, real dq)
     real mass = gaussianMass(a0, a1) / scale;
     return vec3(mass, gaussianMoment(a0, a1) / (scale * scale) - q0 * mass,
                 0.5 * (exp(-0.5 * a0 * a0) + exp(-0.5 * a1 * a1)));
-}
-
-// The Gaussian does not change along, and a sub-step across never runs along it.
-vec3 curtainIntegralExact(int c, bool along, real fixedA, real fixedB, real q0, real dq)
-{
-    return curtainIntegral(c, along, 0.5 * (fixedA + fixedB), q0, dq);
 }
 
 real fluxCellAcrossKm(int c)

@@ -52,12 +52,13 @@ struct Settings : scene::SettingsOf<Settings> {
     double topKm = 300.0;
     double stepKm = 12.0;             // march step inside curtains (curtain coordinates once per step)
     double resolveKm = 1.0;           // sub-steps: altitude and position along a curtain change by at most this
-    double resolveCells = 0.75;       // and, with curtain detail, the coordinate a sub-step is not
-                                      // integrated over (along or across) by at most this many detail cells
-                                      // (at most 1 with exactSubSteps)
-    bool exactSubSteps = false;       // sub_step_flux = "exact": each sub-step integrated exactly in the detail's
-                                      // bilinear flux (4-8 texture reads, not 2), its sub-steps within 1 cell;
-                                      // compiled in only then (AURORA_EXACT_SUB_STEPS)
+    double resolveCells = 0.75;       // and, with curtain detail and the middle column, the coordinate a
+                                      // sub-step is not integrated over (along or across) by at most this many
+                                      // detail cells
+    bool exactSubSteps = true;        // sub_step_flux = "exact": with curtain detail, each step's flux integrated
+                                      // exactly along its slanted path, in pieces cut at the detail's cell
+                                      // centres (about 3 texture reads a cell); "midpoint": the middle column,
+                                      // 2 reads a sub-step (AURORA_EXACT_SUB_STEPS selects the code)
     double polylineSpacingKm = 2.0;   // curtain splines are sampled this finely for the shader
     int footprintMapSize = 512;       // texels per side of the jump-flooded footprint map
     MapBuilder footprintMapBuild = MapBuilder::Auto; // where the map is built each frame
