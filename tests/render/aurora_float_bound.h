@@ -42,9 +42,10 @@ namespace aurorawall::test {
 //    moment's difference moves a sub-step's mean position within the sub-step: not bounded here); the
 //    exact pieces (sub_step_flux = "exact") also take the mass from the moments' difference times
 //    (λ_b − λ_a)/Δq, at most 1 / cell (bilinearPiece), and the moments B reach Q times the column's
-//    integral, Q / cell at most the table's entries: the pieces within one cell share their B reads, whose
-//    errors cancel but for the cell's first and last, 4 values within 2 u Q each, over at most 66 cells a
-//    step (curtainEnergyExact), 528 u Q / cell of the crossing's;
+//    integral, Q / cell at most the table's entries: consecutive pieces share their B reads, whose errors
+//    cancel but for the first and last of each run of shared reads, 4 values within 2 u Q each; a step
+//    has at most 76 such runs (65 cell centres, 2 band edges, 4 reach circles, the strip's period, ...:
+//    curtainEnergyExact), 608 u Q / cell of the crossing's;
 //  - the flux: a step's curtain coordinates are found once, at its midpoint, so their error dq shifts the
 //    closed-form integrals of the whole step: by at most dq x the march of |dF/du| + |dF/ds| (the march in
 //    double over frames holding that slope: the same steps, emission and flux scale); the filter weights
@@ -141,7 +142,7 @@ inline AuroraFloatBound auroraFloatBound(const scene::Scene& s, const components
     b.extinctionPerKm = std::min({atmosphere.extinctionPerKm.x, atmosphere.extinctionPerKm.y, atmosphere.extinctionPerKm.z});
     const double entries = std::max(frames.nx, frames.ny) + 1.0;
     b.relative = floatAirmassError(atmosphere.topKm / atmosphere.scaleHeightKm) + 128.0 * u +
-                 (aurora.exactSubSteps ? 528.0 * u * entries : 0.0);
+                 (aurora.exactSubSteps ? 608.0 * u * entries : 0.0);
     // Slopes per curtain km: a cell along is texelKmX, one across texelKmY simulation km, lateralScale of them per km.
     const components::roles::FluxFrames slopes =
         neighbourSteps(frames, 1.0 / frames.texelKmX, lateralScale / frames.texelKmY, false);

@@ -93,9 +93,9 @@ components::roles::FluxFrames* ReferenceRay::frames_ = nullptr;
 // (aurora_float_bound.h) from this scene's data. Then against the fine CPU reference, whose difference from
 // the march in double is its discretization (tests/render/shader_steps_test.cpp holds it to 1e-3): the two
 // bounds add. Both sub-step fluxes: the middle column's bound is the tighter (the exact pieces' moments
-// add up to 528 u Q / cell of the crossing). Measured (llvmpipe), the middle column against the march RMS
+// add up to 608 u Q / cell of the crossing). Measured (llvmpipe), the middle column against the march RMS
 // 3.3e-5, max 1.1e-4, at most 18% of a pixel's bound (the bounds reach 5.8e-2 of a pixel, from the flux's
-// slopes); the exact pieces RMS 2.7e-5, max 7.6e-5; against the reference RMS 3.6e-5 and 5.0e-5, max 1.2e-4
+// slopes); the exact pieces RMS 2.7e-5, max 7.6e-5; against the reference RMS 3.6e-5 and 4.9e-5, max 1.2e-4
 // and 1.9e-4 (before the curtain-normal fix of aurora_curtains.glsl it was RMS 1.7e-2: the test caught the
 // float bug).
 TEST_F(ReferenceRay, GpuAtItsFinestSettingsAgreesWithTheReference)
@@ -312,7 +312,7 @@ energy_kev = 3.0
 // src/accuracy/random_views.h), each against the CPU reference at 16 of the pixels where the aurora
 // gives at least half the radiance. The default's exact flux held to the 1% RMS target; the middle
 // column to 4%, one pixel of 16 as far off as the worst `launch/accuracy-views` found for it (15.7%).
-// Measured: RMS 0.034%, 0.14%, 0.30%, 0.15% (middle column), 0.017%, 0.10%, 0.10%, 0.069% (exact).
+// Measured: RMS 0.034%, 0.14%, 0.30%, 0.15% (middle column), 0.018%, 0.10%, 0.10%, 0.069% (exact).
 TEST_F(ReferenceRay, StaysNearTheReferenceAtViewsDrawnAtRandom)
 {
     scene::Scene s = scene::withoutUnmodelled(components::loadScene(kSource + "/config/scenes/benchmark-view.toml"));

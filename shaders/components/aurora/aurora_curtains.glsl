@@ -198,6 +198,27 @@ StepCandidates stepCandidates(vec3 o, vec3 d, real t0, real t1)
 }
 
 #ifdef HAS_CURTAIN_DETAIL
+// Where the ray, u(t) = u_m + u' (t − t_m) and s(t) = s_m + s' (t − t_m), meets the circles of radius
+// `reach` around the curtain's ends s = 0 and s = lengthKm: the roots t of u² + (s − end)² = reach², by
+// the stable quadratic formula (1e30 where there is none).
+vec4 endReachCuts(CurtainCoordinates cc, real tm, real uRate, real sRate, real reach, real lengthKm)
+{
+    vec4 cuts = vec4(1.0e30);
+    real a = uRate * uRate + sRate * sRate;
+    for (int e = 0; e < 2; ++e) {
+        real offset = cc.s - (e == 0 ? 0.0 : lengthKm);
+        real halfB = cc.u * uRate + offset * sRate;
+        real c = cc.u * cc.u + offset * offset - reach * reach;
+        real discriminant = halfB * halfB - a * c;
+        if (a > 0.0 && discriminant > 0.0) {
+            real q = -(halfB + (halfB >= 0.0 ? 1.0 : -1.0) * sqrt(discriminant));
+            cuts[2 * e] = tm + q / a;
+            cuts[2 * e + 1] = q != 0.0 ? tm + c / q : cuts[2 * e];
+        }
+    }
+    return cuts;
+}
+
 // The energy (per unit of peak flux) of curtain c over the part `span` of a step of the ray o + t d (km),
 // its flux integrated exactly along the ray's slanted path through the detail's bilinear flux
 // (sub_step_flux = "exact"). As in integrateCurtains, q (u across, s along: `alongMode`) and the other,
@@ -209,7 +230,9 @@ StepCandidates stepCandidates(vec3 o, vec3 d, real t0, real t1)
 //    edge, beyond which there is no flux;
 //  - the altitude has changed by uAuroraResolveKm since the last such cut: the pieces between two of
 //    these cuts, a run, share one emission at their flux-weighted mean position;
-//  - along, s leaves the strip's period.
+//  - along, s leaves the strip's period;
+//  - the path meets the circle of the curtain's reach around either end (endReachCuts), so that each
+//    piece lies wholly within or beyond the reach there.
 // A piece reads the two columns at its end (2 fetches), and the next one starts from those, reading a third
 // where it has crossed into the next cell: about 3 fetches a cell crossed. Where p would cross more than 64
 // centres, the pieces take `stride` cells at a time, each with the two columns around its middle (λ kept
@@ -235,6 +258,7 @@ vec3 curtainEnergyExact(vec3 o, vec3 d, int c, CurtainCoordinates cc, real tm, v
     real runKm = (span.y - span.x) / runs;
     real run = 0.0;
     real q = alongMode ? mod(cc.s + sRate * (span.x - tm) + uCurtainDetail[c].x, stripKm) : cc.u + uRate * (span.x - tm);
+    vec4 endCuts = endReachCuts(cc, tm, uRate, sRate, reach, lengthKm);
     // The two columns' values at the piece's start, of the pair from column `held` (none: −1e30).
     real held = -1.0e30;
     vec3 lo = vec3(0.0);
@@ -243,7 +267,7 @@ vec3 curtainEnergyExact(vec3 o, vec3 d, int c, CurtainCoordinates cc, real tm, v
     real runMass = 0.0;
     real runMoment = 0.0; // ∫ t profile dt, km²
     real ta = span.x;
-    // At most 64 runs, 65 strides, 2 band edges and the strip's periods: the bound never binds.
+    // At most 64 runs, 65 strides, 2 band edges, 4 reach circles and the strip's periods: the bound never binds.
     for (int piece = 0; piece < 256 && ta < span.y; ++piece) {
         bool inBand = ta >= band.x && ta < band.y;
         real pRateNow = inBand ? pRate : 0.0;
@@ -252,7 +276,10 @@ vec3 curtainEnergyExact(vec3 o, vec3 d, int c, CurtainCoordinates cc, real tm, v
         real tBand = ta < band.x ? band.x : ta < band.y ? band.y : 1.0e30;
         real tRun = run + 1.0 >= runs ? span.y : span.x + (run + 1.0) * runKm;
         real tWrap = !alongMode || sRate == 0.0 ? 1.0e30 : ta + ((sRate > 0.0 ? stripKm : 0.0) - q) / sRate;
-        real tb = max(min(min(min(tCentre, tBand), min(tRun, tWrap)), span.y), ta);
+        real tEnd = 1.0e30;
+        for (int k = 0; k < 4; ++k)
+            tEnd = endCuts[k] > ta ? min(tEnd, endCuts[k]) : tEnd;
+        real tb = max(min(min(min(tCentre, tBand), min(tRun, tWrap)), min(tEnd, span.y)), ta);
         real len = tb - ta;
         bool centre = tCentre <= tb;
         bool wrap = tWrap <= tb;

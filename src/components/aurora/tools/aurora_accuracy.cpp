@@ -74,9 +74,12 @@ std::vector<Variant> knobVariants(const std::vector<SweepKnob>& others)
         v.push_back({"step_km", number(step), [step](scene::Scene& s) { s.settings<AuroraSettings>().stepKm = step; }});
     for (double resolve : {0.25, 0.5, 1.0, 2.0, 100.0})
         v.push_back({"resolve_km", number(resolve), [resolve](scene::Scene& s) { s.settings<AuroraSettings>().resolveKm = resolve; }});
+    // resolve_cells acts only with the middle column: its rows take it.
     for (double cells : {0.5, 0.75, 1.0, 1.5, 2.0, 4.0})
-        v.push_back({"resolve_cells", number(cells),
-                     [cells](scene::Scene& s) { s.settings<AuroraSettings>().resolveCells = cells; }});
+        v.push_back({"resolve_cells", number(cells), [cells](scene::Scene& s) {
+                         s.settings<AuroraSettings>().resolveCells = cells;
+                         s.settings<AuroraSettings>().exactSubSteps = false;
+                     }});
     for (bool exact : {false, true})
         v.push_back({"sub_step_flux", exact ? "exact" : "midpoint",
                      [exact](scene::Scene& s) { s.settings<AuroraSettings>().exactSubSteps = exact; }});
