@@ -151,7 +151,7 @@ vec3 fluxColumnPoint(int c, bool along, real cell, real q)
     return uFluxStrip.w * vec3(v.x / scale, v.y / (scale * scale), v.z);
 }
 
-// A piece of a sub-step between the centres of two neighbouring columns i and j = i + 1, over which q runs
+// A piece of a step's path between the centres of two neighbouring columns i and j = i + 1, over which q runs
 // from q0 to q0 + dq and the share λ of column j runs linearly from la to lb, integrated exactly for the
 // flux as the texture gives it, F = (1 − λ) F_i + λ F_j (linear between the centres in both coordinates):
 // with each column's (A, B) over the piece (fluxColumnPoint at its two ends, `lo` and `hi`),
