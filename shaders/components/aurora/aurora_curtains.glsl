@@ -197,6 +197,29 @@ StepCandidates stepCandidates(vec3 o, vec3 d, real t0, real t1)
     return step;
 }
 
+// Whether a curtain of length lengthKm emits at its coordinates (s, u) (km): beyond its reach, across or
+// around its ends, it does not.
+bool withinReach(real s, real u, real lengthKm, real reach)
+{
+    real beyondEnds = max(max(-s, s - lengthKm), 0.0);
+    return length(vec2(u, beyondEnds)) <= reach;
+}
+
+// What a sub-step or piece [ta, ta + len] of the ray (km) adds to its run, from its closed-form column
+// (∫ profile dq, ∫ (q − q0) profile dq, mean profile at its ends: curtainIntegral, bilinearPiece) over
+// the change dq = rate · len of the integrated coordinate: (∫ profile dt in km, ∫ t profile dt in km²),
+// at the flux-weighted mean position from the first moment; the midpoint rule where q changes by less
+// than 1 m; nothing where the mass is not positive.
+vec2 runShare(vec3 column, real dq, real rate, real ta, real len)
+{
+    bool pointLike = abs(dq) < 1e-3;
+    real mass = pointLike ? column.z * len : column.x / rate;
+    if (mass <= 0.0)
+        return vec2(0.0);
+    real tMean = pointLike ? ta + 0.5 * len : clamp(ta + column.y / column.x / rate, ta, ta + len);
+    return vec2(mass, mass * tMean);
+}
+
 #ifdef HAS_CURTAIN_DETAIL
 // Where the ray, u(t) = u_m + u' (t − t_m) and s(t) = s_m + s' (t − t_m), meets the circles of radius
 // `reach` around the curtain's ends s = 0 and s = lengthKm: the roots t of u² + (s − end)² = reach², by
@@ -288,10 +311,8 @@ vec3 curtainEnergyExact(vec3 o, vec3 d, int c, CurtainCoordinates cc, real tm, v
         real tMid = ta + 0.5 * len;
         real u = cc.u + uRate * (tMid - tm);
         real s = cc.s + sRate * (tMid - tm);
-        // Beyond its reach (across, or around the curtain's ends) a curtain does not emit; along, nor
-        // beyond the strip.
-        real beyondEnds = max(max(-s, s - lengthKm), 0.0);
-        bool emits = length(vec2(u, beyondEnds)) <= reach && (inBand || !alongMode);
+        // Along, nor beyond the strip.
+        bool emits = withinReach(s, u, lengthKm, reach) && (inBand || !alongMode);
         if (!emits) {
             held = -1.0e30;
         } else if (len > 0.0) {
@@ -312,13 +333,9 @@ vec3 curtainEnergyExact(vec3 o, vec3 d, int c, CurtainCoordinates cc, real tm, v
             real dq = qb - q;
             vec3 column = bilinearPiece(lo, loNext, hi, hiNext, q, dq, clamp(p - cell, 0.0, 1.0),
                                         clamp(pb - cell, 0.0, 1.0), qCellKm);
-            bool pointLike = abs(dq) < 1e-3;
-            real mass = pointLike ? column.z * len : column.x / rate; // ∫ profile dt over the piece, km
-            if (mass > 0.0) {
-                real tMean = pointLike ? tMid : clamp(ta + column.y / column.x / rate, ta, tb);
-                runMass += mass;
-                runMoment += mass * tMean;
-            }
+            vec2 share = runShare(column, dq, rate, ta, len);
+            runMass += share.x;
+            runMoment += share.y;
             lo = hi;
             loNext = hiNext;
             held = cell;
@@ -437,20 +454,14 @@ vec3 integrateCurtains(vec3 o, vec3 d, real t0, real t1, vec4 candidates)
             real tMid = ta + 0.5 * part;
             real u = cc.u + uRate * (tMid - tm);
             real s = cc.s + sRate * (tMid - tm);
-            // Beyond its reach (across, or around the curtain's ends) a curtain does not emit.
-            real beyondEnds = max(max(-s, s - lengthKm), 0.0);
-            if (length(vec2(u, beyondEnds)) <= reach) {
+            if (withinReach(s, u, lengthKm, reach)) {
                 // (∫ profile, ∫ offset from the sub-step's start × profile, mean profile at its ends) over
                 // the integrated coordinate.
                 real q0 = (alongMode ? s : u) - 0.5 * change;
                 vec3 column = curtainIntegral(c, alongMode, alongMode ? u : clamp(s, 0.0, lengthKm), q0, change);
-                bool pointLike = abs(change) < 1e-3;
-                real mass = pointLike ? column.z * part : column.x / rate; // ∫ profile dt over the sub-step, km
-                if (mass > 0.0) {
-                    real tMean = pointLike ? tMid : clamp(ta + column.y / column.x / rate, ta, ta + part);
-                    runMass += mass;
-                    runMoment += mass * tMean;
-                }
+                vec2 share = runShare(column, change, rate, ta, part);
+                runMass += share.x;
+                runMoment += share.y;
             }
             if ((i + 1) % run == 0 || i == parts - 1) {
                 if (runMass > 0.0)
