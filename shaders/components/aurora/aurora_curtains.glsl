@@ -220,6 +220,13 @@ vec2 runShare(vec3 column, real dq, real rate, real ta, real len)
     return vec2(mass, mass * tMean);
 }
 
+// The emission of a run of sub-steps or pieces that share one: its summed runShare (∫ profile dt in km,
+// ∫ t profile dt in km²) times curtain c's emission at the run's flux-weighted mean position.
+vec3 runEnergy(vec3 o, vec3 d, vec2 sums, int c)
+{
+    return sums.x > 0.0 ? sums.x * curtainEmissionAt(o, d, sums.y / sums.x, c) : vec3(0.0);
+}
+
 #ifdef HAS_CURTAIN_DETAIL
 // Where the ray, u(t) = u_m + u' (t − t_m) and s(t) = s_m + s' (t − t_m), meets the circles of radius
 // `reach` around the curtain's ends s = 0 and s = lengthKm: the roots t of u² + (s − end)² = reach², by
@@ -287,8 +294,7 @@ vec3 curtainEnergyExact(vec3 o, vec3 d, int c, CurtainCoordinates cc, real tm, v
     vec3 lo = vec3(0.0);
     vec3 loNext = vec3(0.0);
     vec3 energy = vec3(0.0);
-    real runMass = 0.0;
-    real runMoment = 0.0; // ∫ t profile dt, km²
+    vec2 runSums = vec2(0.0); // the run's summed runShare
     real ta = span.x;
     // At most 64 runs, 65 strides, 2 band edges, 4 reach circles and the strip's periods: the bound never binds.
     for (int piece = 0; piece < 256 && ta < span.y; ++piece) {
@@ -333,9 +339,7 @@ vec3 curtainEnergyExact(vec3 o, vec3 d, int c, CurtainCoordinates cc, real tm, v
             real dq = qb - q;
             vec3 column = bilinearPiece(lo, loNext, hi, hiNext, q, dq, clamp(p - cell, 0.0, 1.0),
                                         clamp(pb - cell, 0.0, 1.0), qCellKm);
-            vec2 share = runShare(column, dq, rate, ta, len);
-            runMass += share.x;
-            runMoment += share.y;
+            runSums += runShare(column, dq, rate, ta, len);
             lo = hi;
             loNext = hiNext;
             held = cell;
@@ -350,10 +354,8 @@ vec3 curtainEnergyExact(vec3 o, vec3 d, int c, CurtainCoordinates cc, real tm, v
             group += pRateNow > 0.0 ? 1.0 : -1.0;
         p = pb;
         if (tRun <= tb) {
-            if (runMass > 0.0)
-                energy += runMass * curtainEmissionAt(o, d, runMoment / runMass, c);
-            runMass = 0.0;
-            runMoment = 0.0;
+            energy += runEnergy(o, d, runSums, c);
+            runSums = vec2(0.0);
             run += 1.0;
         }
         ta = tb;
@@ -447,8 +449,7 @@ vec3 integrateCurtains(vec3 o, vec3 d, real t0, real t1, vec4 candidates)
         real rate = alongMode ? sRate : uRate;
         real change = rate * part;
         vec3 energy = vec3(0.0);
-        real runMass = 0.0;
-        real runMoment = 0.0; // ∫ t profile dt, km²
+        vec2 runSums = vec2(0.0); // the run's summed runShare
         for (int i = 0; i < parts; ++i) {
             real ta = start + real(i) * part;
             real tMid = ta + 0.5 * part;
@@ -459,15 +460,11 @@ vec3 integrateCurtains(vec3 o, vec3 d, real t0, real t1, vec4 candidates)
                 // the integrated coordinate.
                 real q0 = (alongMode ? s : u) - 0.5 * change;
                 vec3 column = curtainIntegral(c, alongMode, alongMode ? u : clamp(s, 0.0, lengthKm), q0, change);
-                vec2 share = runShare(column, change, rate, ta, part);
-                runMass += share.x;
-                runMoment += share.y;
+                runSums += runShare(column, change, rate, ta, part);
             }
             if ((i + 1) % run == 0 || i == parts - 1) {
-                if (runMass > 0.0)
-                    energy += runMass * curtainEmissionAt(o, d, runMoment / runMass, c);
-                runMass = 0.0;
-                runMoment = 0.0;
+                energy += runEnergy(o, d, runSums, c);
+                runSums = vec2(0.0);
             }
         }
         radiance += uCurtainState[c].x * energy;

@@ -33,7 +33,6 @@ namespace {
 #define COUNT_RAY_WORK(n)
 struct SmoothProgram {
     real uPlanetRadiusKm = 0.0;
-    bool uAuroraExactSubSteps = false; // the shader's EXACT_SUB_STEPS, per scene
 #include "components/aurora/curtain_emission.glsl"
 #include "components/aurora/curtain_profile.glsl"
 #include "components/aurora/aurora_curtains.glsl"
@@ -43,7 +42,7 @@ static_assert(MAX_CURTAINS == kMaxCurtains, "the shader's uniform arrays hold kM
 #define HAS_CURTAIN_DETAIL
 struct DetailProgram {
     real uPlanetRadiusKm = 0.0;
-    bool uAuroraExactSubSteps = false; // the shader's EXACT_SUB_STEPS, per scene
+    bool uAuroraExactSubSteps = false; // the shader's EXACT_SUB_STEPS, per scene (only the detail reads it)
 #include "components/aurora/curtain_emission.glsl"
 #include "components/aurora/curtain_profile.glsl"
 #include "components/aurora/aurora_curtains.glsl"
@@ -84,7 +83,6 @@ void setCurtains(Program& p, const Settings& a, double planetRadiusKm, const Cur
     p.uAuroraResolveKm = static_cast<float>(a.resolveKm);
     p.uAuroraResolveCells = static_cast<float>(a.resolveCells);
     p.uSkipEmptySpace = a.skipEmptySpace ? 1 : 0;
-    p.uAuroraExactSubSteps = a.exactSubSteps;
     p.uCurtainCount = static_cast<int>(states.size());
     p.uCurtainReachKm = 0.0;
     const physics::EmissionTables tables = physics::buildEmissionTables(emissionTableSpec(a));
@@ -151,6 +149,7 @@ std::unique_ptr<scene::ReferenceShader> makeAuroraMarch(const Settings& aurora, 
     auto program = std::make_unique<f64::DetailProgram>();
     setCurtains(*program, aurora, planetRadiusKm, model, timeS, editRows);
     setFluxTables(*program, *frames, *shape, stripWidthKm);
+    program->uAuroraExactSubSteps = aurora.exactSubSteps;
     return std::make_unique<AuroraMarch<f64::DetailProgram>>(std::move(program));
 }
 
