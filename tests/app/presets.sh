@@ -12,9 +12,7 @@
 # all with detail when that reach came to follow the detail phase, and those with curtains when the
 # default step became 12 km with sub-steps of 0.75 detail cells, and all when each pixel came to sum
 # the stars of the neighbouring cells, and those with fluid detail when its flux came to be integrated
-# exactly along each ray's path through the detail's cells, and those whose pixels moved (4 to 8
-# channels by 1 to 4 half-float steps) when the footprint map built on the CPU became 256² (the march
-# refines curtain coordinates from other polyline points); their
+# exactly along each ray's path through the detail's cells; their
 # accuracy tests/render/reference_ray_test.cpp checks against the CPU reference). Float
 # reordering inside a component may move a value by one half-float step, so HALF_ULPS (default 2)
 # are allowed.

@@ -71,7 +71,6 @@ TEST_P(Skipping, MapBuiltOnTheGpuGivesTheSameImage)
     scene::Scene s = components::loadScene(kSource + "/config/scenes/" + GetParam());
     const accuracy::SceneView view = accuracy::sceneView(s, kSource + "/config/walls/single.toml", {64, 36});
     auto& aurora = s.settings<components::aurora::Settings>();
-    aurora.footprintMapSize = 512; // the same size from both builders (unset, each picks its own)
     aurora.footprintMapBuild = components::aurora::MapBuilder::Cpu;
     const accuracy::TimedRender cpu = accuracy::renderView(s, view, kSource + "/shaders", 0);
     aurora.footprintMapBuild = components::aurora::MapBuilder::Gpu;

@@ -60,22 +60,13 @@ struct Settings : scene::SettingsOf<Settings> {
                                       // centres (about 3 texture reads a cell); "midpoint": the middle column,
                                       // 2 reads a sub-step (AURORA_EXACT_SUB_STEPS selects the code)
     double polylineSpacingKm = 2.0;   // curtain splines are sampled this finely for the shader
-    int footprintMapSize = 0;         // texels per side of the jump-flooded footprint map; 0, unset: by where it
-                                      // is built (footprintMapTexels)
+    int footprintMapSize = 512;       // texels per side of the jump-flooded footprint map
     MapBuilder footprintMapBuild = MapBuilder::Auto; // where the map is built each frame
     bool skipEmptySpace = true;       // long steps where the footprint map proves no curtain is near
     double tableAltitudeStepKm = 0.5; // deposition table resolution (src/components/aurora/physics/deposition_table.h)
     int tableEnergyCount = 128;
     std::vector<Curtain> curtains;
 };
-
-// The footprint map's texels per side: the scene's, or where it sets none, 512 where the GPU builds the map
-// and 256 where the CPU does, so that the CPU's build and upload each frame (1 MiB, not 4) stay off the draw;
-// the march then reads 1.00-1.07 times the texture fetches (docs/aurora-physics.md, "Finding the curtains").
-inline int footprintMapTexels(const Settings& s, MapBuilder builder)
-{
-    return s.footprintMapSize > 0 ? s.footprintMapSize : builder == MapBuilder::Cpu ? 256 : 512;
-}
 
 const scene::Component& component();
 

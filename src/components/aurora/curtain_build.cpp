@@ -100,8 +100,7 @@ CurtainBuild buildCurtains(const CurtainModel& model, const std::vector<CurtainS
     // uniforms, so the map is exact for those same values).
     const double reachKm = double(static_cast<float>(model.reachKm())) + 0.5 * double(static_cast<float>(aurora.stepKm));
     const double extraKm = reachKm + 2.0 * aurora.polylineSpacingKm + 100.0;
-    physics::FootprintMapSpec spec = capAround(polylines, extraKm, model.planetRadiusKm(),
-                                              footprintMapTexels(aurora, builder));
+    physics::FootprintMapSpec spec = capAround(polylines, extraKm, model.planetRadiusKm(), aurora.footprintMapSize);
     spec.reachKm = reachKm;
     build.map = builder == MapBuilder::Cpu ? physics::buildFootprintMap(polylines, spec, model.planetRadiusKm())
                                            : physics::footprintMapFrame(polylines, spec, model.planetRadiusKm());

@@ -428,14 +428,9 @@ void measureViews(const scene::Scene& scene, const SceneView& start, const std::
 namespace {
 
 // The work counts of one frame of the view (render/work_counts.h, the compute march counting): per
-// quantity the mean per pixel and the mean over 8x4-pixel blocks of the block's largest count. Counted
-// with the footprint map's size a GPU builds, whatever this device is, so that they are the same anywhere.
-void printWorkStats(scene::Scene scene, const SceneView& view, const std::string& shaderDir, std::ostream& out)
+// quantity the mean per pixel and the mean over 8x4-pixel blocks of the block's largest count.
+void printWorkStats(const scene::Scene& scene, const SceneView& view, const std::string& shaderDir, std::ostream& out)
 {
-    if (scene.has(AuroraSettings::kComponent)) {
-        AuroraSettings& aurora = scene.settings<AuroraSettings>();
-        aurora.footprintMapSize = components::aurora::footprintMapTexels(aurora, components::aurora::MapBuilder::Gpu);
-    }
     render::TileRenderer renderer(scene, shaderDir, render::MarchStage::Compute, render::CountWork::Yes);
     const glm::ivec2 size(view.wall.screens.front().widthPx, view.wall.screens.front().heightPx);
     gl::FloatTarget target(size.x, size.y);
