@@ -62,8 +62,10 @@ private:
     };
     // Draws the run of my bands [first, end), all of one screen, in one draw (a draw has a fixed cost,
     // and rasterizers shade whole pixel blocks). Bands of other ranks' screens are read back at once
-    // (the next run may draw into the same scratch target) into `outgoing`.
-    void drawRun(size_t first, size_t end, render::TileRenderer& renderer, gl::Context& context,
+    // (the next run may draw into the same scratch target) into `outgoing`. The frame's first run
+    // (`firstOfFrame`) is flushed and the components' work for the next frame done while it draws
+    // (TileRenderer::whileDrawing), its CPU time left out of the run's.
+    void drawRun(size_t first, size_t end, bool firstOfFrame, render::TileRenderer& renderer, gl::Context& context,
                  std::vector<ScreenTarget>& screens, cluster::RankReport& report,
                  std::vector<cluster::BandCost>& costs, OutgoingBands& outgoing);
     // The run's process CPU time `runMs` shared among its bands in proportion to their rays' work

@@ -78,6 +78,12 @@ void TileRenderer::setFrame(const cluster::FrameState& frame)
     }
 }
 
+void TileRenderer::whileDrawing()
+{
+    for (const auto& c : components_)
+        c->whileDrawing();
+}
+
 std::string TileRenderer::frameLog() const
 {
     std::string log;

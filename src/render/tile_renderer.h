@@ -40,6 +40,9 @@ public:
     // from the wall frame into the planet frame in double precision, the flat wall's with the frame's
     // zoom (cluster::wallToPlanet), the dome master's without.
     void renderTile(const wall::TileRays& rays, gl::FloatTarget& target, const gl::FullScreenTriangle& triangle);
+    // Once a frame, after its first tile is submitted (and flushed) and before the CPU waits for it: the
+    // components' work for the next frame that the draw hides (scene::ComponentRenderer::whileDrawing).
+    void whileDrawing();
 
     MarchStage stage() const { return stage_; }
     PixelWork pixelWork() const { return pixelWork_; }

@@ -58,6 +58,9 @@ public:
     virtual void setFrame(gl::Program& program, const cluster::FrameState& frame) = 0;
     // Before each tile: texture bindings (they belong to the current context).
     virtual void bind(gl::Program&) const {}
+    // Once a frame, after its first draw is submitted and before the CPU waits for it: work for the
+    // next frame that the draw hides (e.g. an upload into textures this frame's draw does not read).
+    virtual void whileDrawing() {}
     // What the last setFrame computed (e.g. a footprint map); empty: nothing.
     virtual std::string frameLog() const { return {}; }
 };

@@ -34,6 +34,7 @@ public:
     {
     }
     std::string precomputationLog() const override { return tables_.summary(); }
+    void whileDrawing() override { field_.uploadAhead(); }
     void setFrame(gl::Program& program, const cluster::FrameState& frame) override
     {
         program.set("uAuroraBottomKm", static_cast<float>(s_.bottomKm));

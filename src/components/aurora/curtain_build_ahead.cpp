@@ -41,4 +41,11 @@ std::optional<CurtainBuild> CurtainBuildAhead::take(const ControlPoints& control
     return pending_.get();
 }
 
+std::optional<CurtainBuild> CurtainBuildAhead::takeStarted()
+{
+    if (!pending_.valid())
+        return std::nullopt;
+    return pending_.get();
+}
+
 } // namespace aurorawall::components::aurora

@@ -23,6 +23,9 @@ public:
     // nothing, at once: a wrong prediction is dropped unread and left to finish on its thread while
     // the caller builds the right curtains (start and the destructor wait for it).
     std::optional<CurtainBuild> take(const ControlPoints& controlPoints);
+    // The started build whatever its control points, waiting for it to finish (nothing if none was
+    // started or it was taken): for an upload ahead of the frame it predicts.
+    std::optional<CurtainBuild> takeStarted();
 
 private:
     const CurtainModel& model_;

@@ -47,15 +47,22 @@ void CurtainField::update(double timeS, double nextTimeS)
     // The polylines and the map are functions of the control points alone: rebuilt only when those
     // differ (exactly) from the last build's, e.g. not while every curtain holds still.
     const ControlPoints controlPoints = controlPointsOf(states);
-    std::optional<CurtainBuild> ahead = ahead_.take(controlPoints);
-    const bool rebuilt = !footprint_ || controlPoints != controlPoints_;
+    const bool uploadedAhead = back_.holdsBuild && back_.controlPoints == controlPoints;
+    back_.holdsBuild = false;
+    std::optional<CurtainBuild> ahead = uploadedAhead ? std::nullopt : ahead_.take(controlPoints);
+    const bool rebuilt = !front_.holdsBuild || controlPoints != front_.controlPoints;
     if (rebuilt) {
         ++rebuilds_;
-        if (ahead) {
+        if (uploadedAhead) {
             ++rebuildsBuiltAhead_;
-            upload(*ahead);
+            ++rebuildsUploadedAhead_;
+            std::swap(front_, back_);
+            back_.holdsBuild = false;
+        } else if (ahead) {
+            ++rebuildsBuiltAhead_;
+            upload(*ahead, front_);
         } else {
-            upload(buildCurtains(model_, states, gpuMap_ ? MapBuilder::Gpu : MapBuilder::Cpu));
+            upload(buildCurtains(model_, states, gpuMap_ ? MapBuilder::Gpu : MapBuilder::Cpu), front_);
         }
     }
     // The march skips by the largest reach of the curtains that emit now (their detail's spread at this
@@ -63,7 +70,7 @@ void CurtainField::update(double timeS, double nextTimeS)
     reachKm_ = 0.0f;
     for (size_t i = 0; i < states.size(); ++i) {
         const CurtainState& s = states[i];
-        state_[i] = curtainStateUniform(model_, i, s, pointCounts_[i]);
+        state_[i] = curtainStateUniform(model_, i, s, front_.pointCounts[i]);
         detailUniform_[i] = curtainDetailUniform(model_, i, s);
         if (state_[i].x > 0.0f)
             reachKm_ = std::max(reachKm_, state_[i].w);
@@ -74,10 +81,10 @@ void CurtainField::update(double timeS, double nextTimeS)
     char text[280];
     std::snprintf(text, sizeof text,
                   "curtains: %zu, %zu points, footprint map %d^2 on the %s (radius %.1f deg, margin %.2f km), %s: "
-                  "%.1f ms, built ahead: %zu of %zu rebuilds",
-                  states.size(), pointTotal_, static_cast<int>(size_), gpuMap_ ? "GPU" : "CPU", angularRadiusDeg_,
-                  marginKm_,
-                  rebuilt ? "rebuilt" : "unchanged", ms, rebuildsBuiltAhead_, rebuilds_);
+                  "%.1f ms, built ahead: %zu of %zu rebuilds, uploaded ahead: %zu",
+                  states.size(), front_.pointTotal, static_cast<int>(front_.size), gpuMap_ ? "GPU" : "CPU",
+                  front_.angularRadiusDeg, front_.marginKm, rebuilt ? "rebuilt" : "unchanged", ms, rebuildsBuiltAhead_,
+                  rebuilds_, rebuildsUploadedAhead_);
     summary_ = text;
 }
 
@@ -94,52 +101,61 @@ void CurtainField::buildAhead(double nextTimeS)
     if (std::isnan(nextTimeS))
         return;
     std::vector<CurtainState> next = model_.statesAt(nextTimeS);
-    if (controlPointsOf(next) != controlPoints_)
+    if (controlPointsOf(next) != front_.controlPoints)
         ahead_.start(std::move(next));
 }
 
-void CurtainField::upload(const CurtainBuild& build)
+void CurtainField::uploadAhead()
 {
-    controlPoints_ = build.controlPoints;
-    pointCounts_ = build.pointCounts;
-    pointTotal_ = build.pointTotal;
-    lengthsKm_ = build.lengthsKm;
-    cornerSlopes_ = build.cornerSlopes;
-    sized(polylines_, build.polylineWidth, build.polylineRows).upload(build.polylineTexels);
+    if (gpuMap_)
+        return;
+    if (std::optional<CurtainBuild> build = ahead_.takeStarted())
+        upload(*build, back_);
+}
+
+void CurtainField::upload(const CurtainBuild& build, Uploaded& into)
+{
+    into.holdsBuild = true;
+    into.controlPoints = build.controlPoints;
+    into.pointCounts = build.pointCounts;
+    into.pointTotal = build.pointTotal;
+    into.lengthsKm = build.lengthsKm;
+    into.cornerSlopes = build.cornerSlopes;
+    sized(into.polylines, build.polylineWidth, build.polylineRows).upload(build.polylineTexels);
     // The GPU's map has its own frame (its margin holds the float allowance); the CPU's is uploaded
     // as built (a reference: its texels are 4 MiB at 512²).
     const physics::FootprintMap gpuFrame = gpuMap_ ? FootprintMapGpu::gpuFrame(build.map) : physics::FootprintMap{};
     const physics::FootprintMap& map = gpuMap_ ? gpuFrame : build.map;
     const int n = map.spec.size;
     if (gpuMap_)
-        gpuMap_->build(map, *polylines_, pointCounts_, sized(footprint_, n, n));
+        gpuMap_->build(map, *into.polylines, into.pointCounts, sized(into.footprint, n, n));
     else
-        sized(footprint_, n, n).upload(map.texels);
-    centre_ = glm::vec3(map.centre);
-    east_ = glm::vec3(map.east);
-    angularRadius_ = static_cast<float>(map.angularRadius);
-    angularRadiusDeg_ = map.spec.angularRadiusDeg;
-    size_ = static_cast<float>(map.spec.size);
-    marginKm_ = static_cast<float>(map.marginKm);
+        sized(into.footprint, n, n).upload(map.texels);
+    into.centre = glm::vec3(map.centre);
+    into.east = glm::vec3(map.east);
+    into.angularRadius = static_cast<float>(map.angularRadius);
+    into.angularRadiusDeg = map.spec.angularRadiusDeg;
+    into.size = static_cast<float>(map.spec.size);
+    into.marginKm = static_cast<float>(map.marginKm);
 }
 
 void CurtainField::bind(gl::Program& program) const
 {
-    program.bindTexture("uCurtainPolylines", 4, polylines_->id());
-    program.bindTexture("uFootprintMap", 5, footprint_->id());
+    program.bindTexture("uCurtainPolylines", 4, front_.polylines->id());
+    program.bindTexture("uFootprintMap", 5, front_.footprint->id());
     program.set("uCurtainCount", static_cast<int>(state_.size()));
     if (!state_.empty()) {
         program.set("uCurtainState", state_);
         program.set("uCurtainDetail", detailUniform_);
-        program.set("uCurtainLengthKm", lengthsKm_);
-        program.set("uCurtainCornerSlope", cornerSlopes_);
+        program.set("uCurtainLengthKm", front_.lengthsKm);
+        program.set("uCurtainCornerSlope", front_.cornerSlopes);
     }
     program.set("uCurtainReachKm", reachKm_);
-    program.set("uFootprintCentre", centre_);
-    program.set("uFootprintEast", east_);
-    program.set("uFootprintAngularRadius", angularRadius_);
-    program.set("uFootprintSize", size_);
-    program.set("uFootprintMarginKm", marginKm_);
+    program.set("uFootprintCentre", front_.centre);
+    program.set("uFootprintEast", front_.east);
+    program.set("uFootprintAngularRadius", front_.angularRadius);
+    program.set("uFootprintSize", front_.size);
+    program.set("uFootprintMarginKm", front_.marginKm);
 }
 
 } // namespace aurorawall::components::aurora

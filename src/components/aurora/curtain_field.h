@@ -8,9 +8,11 @@
 // the same.
 //
 // While a frame draws, the curtains of the next frame's time as the master announced it
-// (cluster::FrameState::nextTimeS) are built on a worker thread; the next update uploads that build
+// (cluster::FrameState::nextTimeS) are built on a worker thread; the next update uses that build
 // when its control points are exactly the frame's (a command such as pause or a new time can make
-// the next frame differ), and otherwise builds them itself.
+// the next frame differ), and otherwise builds them itself. Where the CPU builds the map, uploadAhead
+// puts that build into a second set of textures while the frame draws, so the next update only
+// swaps the two sets instead of uploading 4 MiB.
 #include "gl/shader_program.h"
 #include "gl/texture.h"
 #include "components/aurora/curtain_build_ahead.h"
@@ -40,6 +42,10 @@ public:
     // polylines and the map when the control points differ from the last build's. Then starts
     // building the curtains of nextTimeS ahead, when they differ from this frame's (NaN: not known).
     void update(double timeS, double nextTimeS);
+    // While the frame of the last update draws (the CPU's map only; nothing on the GPU, whose map is
+    // built in compute shaders at the update): waits for the build made ahead and uploads it into the
+    // textures that frame does not read.
+    void uploadAhead();
 
     // Texture units 4 and 5 and the curtain uniforms of shaders/components/aurora/aurora_curtains.glsl.
     void bind(gl::Program& program) const;
@@ -48,38 +54,46 @@ public:
     std::vector<float> energiesKeV() const;
 
     // The uploaded polylines and footprint map (valid after the first update).
-    const gl::Texture& polylines() const { return *polylines_; }
-    const gl::Texture& footprintMap() const { return *footprint_; }
+    const gl::Texture& polylines() const { return *front_.polylines; }
+    const gl::Texture& footprintMap() const { return *front_.footprint; }
 
-    // Updates whose control points changed, and how many of those took the build made ahead.
+    // Updates whose control points changed, how many of those took the build made ahead, and how many
+    // found it uploaded while the frame before drew.
     size_t rebuilds() const { return rebuilds_; }
     size_t rebuildsBuiltAhead() const { return rebuildsBuiltAhead_; }
+    size_t rebuildsUploadedAhead() const { return rebuildsUploadedAhead_; }
 
     // "curtains: 5, 2311 points, footprint map 512^2 on the GPU (radius 21.3 deg, margin 2.9 km), rebuilt:
-    //  0.4 ms, built ahead: 7 of 9 rebuilds"
+    //  0.4 ms, built ahead: 7 of 9 rebuilds, uploaded ahead: 6"
     const std::string& summary() const { return summary_; }
 
 private:
-    void upload(const CurtainBuild& build);
+    // One build as uploaded: its textures and what the shader needs of it.
+    struct Uploaded {
+        bool holdsBuild = false;
+        ControlPoints controlPoints;
+        std::vector<size_t> pointCounts;
+        size_t pointTotal = 0;
+        std::vector<float> lengthsKm;    // per curtain: its polyline's arclength (km), as the last point's texel holds it
+        std::vector<float> cornerSlopes; // per curtain: tan(θ/2) of its polyline's largest turn θ, with room for float
+        std::unique_ptr<gl::Texture> polylines;
+        std::unique_ptr<gl::Texture> footprint;
+        glm::vec3 centre{0.0f}, east{0.0f};
+        float angularRadius = 0.0f, size = 0.0f, marginKm = 0.0f;
+        double angularRadiusDeg = 0.0;
+    };
+    void upload(const CurtainBuild& build, Uploaded& into);
     void buildAhead(double nextTimeS);
 
     const CurtainModel& model_;
     CurtainBuildAhead ahead_;
     std::unique_ptr<FootprintMapGpu> gpuMap_; // null: the CPU builds the map
-    size_t rebuilds_ = 0, rebuildsBuiltAhead_ = 0;
-    ControlPoints controlPoints_; // of the last build
-    std::vector<size_t> pointCounts_;
-    size_t pointTotal_ = 0;
-    double angularRadiusDeg_ = 0.0;
-    std::unique_ptr<gl::Texture> polylines_;
-    std::unique_ptr<gl::Texture> footprint_;
+    size_t rebuilds_ = 0, rebuildsBuiltAhead_ = 0, rebuildsUploadedAhead_ = 0;
+    Uploaded front_; // the frame's, which its draw reads
+    Uploaded back_;  // the next frame's predicted build, uploaded while the frame draws (uploadAhead)
     std::vector<glm::vec4> state_;  // per curtain: peak flux, energy keV, point count, reach km
-    std::vector<float> lengthsKm_;  // per curtain: its polyline's arclength (km), as the last point's texel holds it
-    std::vector<float> cornerSlopes_; // per curtain: tan(θ/2) of its polyline's largest turn θ, with room for float
     std::vector<glm::vec4> detailUniform_; // per curtain: offset km, phase, lateral scale, 0
     float reachKm_ = 0.0f;        // the largest of state_'s reaches among the curtains with flux
-    glm::vec3 centre_{0.0f}, east_{0.0f};
-    float angularRadius_ = 0.0f, size_ = 0.0f, marginKm_ = 0.0f;
     std::string summary_;
 };
 

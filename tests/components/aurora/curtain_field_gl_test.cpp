@@ -1,7 +1,7 @@
 // The curtain field's per-frame rebuild (EGL; Mesa llvmpipe in CI), with the footprint map built on the
 // CPU and on the GPU: the polylines and the map are rebuilt exactly when the keyframed control points
-// change, and the textures kept from earlier frames then hold the same bytes as those of a field that
-// saw only this frame.
+// change, and the textures kept from earlier frames, built ahead or uploaded ahead while a frame drew,
+// then hold the same bytes as those of a field that saw only this frame.
 #include "components/aurora/curtain_field.h"
 #include "gl/context.h"
 #include "gl/functions.h"
@@ -129,6 +129,33 @@ TEST_P(CurtainFieldBuiltOn, BuildAheadHoldsTheBytesOfTheFramesOwnBuild)
     }
 }
 
+// The same with the upload while each frame draws (uploadAhead, as BandFrame calls it after the frame's
+// first draw): the frame's own textures are left as they are; where the CPU builds the map, the next
+// update only swaps in the textures uploaded ahead, which hold the bytes of the frame's own build (the
+// GPU builds its map at the update: nothing is uploaded ahead).
+TEST_P(CurtainFieldBuiltOn, UploadWhileDrawingHoldsTheBytesOfTheFramesOwnBuild)
+{
+    const auto context = gl::createContext(gl::Backend::Egl);
+    const components::aurora::Settings settings = movingArc();
+    const components::aurora::CurtainModel model(settings, 6371.0, nullptr);
+    const std::vector<double> times{12.0, 12.031, 12.5, 13.0, 13.9};
+    CurtainField running(model, GetParam(), kShaders);
+    for (size_t n = 0; n < times.size(); ++n) {
+        const double t = times[n];
+        running.update(t, n + 1 < times.size() ? times[n + 1] : unknownNext);
+        EXPECT_EQ(running.rebuildsBuiltAhead(), n) << "t = " << t;
+        EXPECT_EQ(running.rebuildsUploadedAhead(), GetParam() == MapBuilder::Cpu ? n : 0u) << "t = " << t;
+        CurtainField fresh(model, GetParam(), kShaders);
+        fresh.update(t, unknownNext);
+        const std::vector<float> map = readBack(fresh.footprintMap()), polylines = readBack(fresh.polylines());
+        EXPECT_EQ(readBack(running.footprintMap()), map) << "t = " << t;
+        EXPECT_EQ(readBack(running.polylines()), polylines) << "t = " << t;
+        running.uploadAhead(); // the frame draws
+        EXPECT_EQ(readBack(running.footprintMap()), map) << "t = " << t << ", after the upload ahead";
+        EXPECT_EQ(readBack(running.polylines()), polylines) << "t = " << t << ", after the upload ahead";
+    }
+}
+
 // A command changed the next frame's time (the master announced 16 s, then a new time of 15.7 s was
 // set): the build made ahead is dropped and the frame builds its own curtains, equal to a fresh
 // field's.
@@ -150,6 +177,35 @@ TEST_P(CurtainFieldBuiltOn, WrongPredictionBuildsTheFrameItself)
     running.update(16.1, unknownNext); // the announced time came: built ahead
     EXPECT_EQ(running.rebuildsBuiltAhead(), 2u);
     EXPECT_EQ(running.rebuilds(), 4u);
+}
+
+// The same with the wrong prediction uploaded while the frame before drew: it is not swapped in.
+TEST_P(CurtainFieldBuiltOn, WrongPredictionUploadedAheadIsNotUsed)
+{
+    const auto context = gl::createContext(gl::Backend::Egl);
+    const components::aurora::Settings settings = movingArc();
+    const components::aurora::CurtainModel model(settings, 6371.0, nullptr);
+    CurtainField running(model, GetParam(), kShaders);
+    running.update(15.0, 15.5);
+    running.uploadAhead();
+    running.update(15.5, 16.0);
+    running.uploadAhead(); // 16 s, which the next frame will not show
+    running.update(15.7, 16.1);
+    const size_t ahead = GetParam() == MapBuilder::Cpu ? 1 : 0;
+    EXPECT_EQ(running.rebuildsBuiltAhead(), 1u);
+    EXPECT_EQ(running.rebuildsUploadedAhead(), ahead);
+    CurtainField fresh(model, GetParam(), kShaders);
+    fresh.update(15.7, unknownNext);
+    EXPECT_EQ(readBack(running.footprintMap()), readBack(fresh.footprintMap()));
+    EXPECT_EQ(readBack(running.polylines()), readBack(fresh.polylines()));
+    running.uploadAhead();
+    running.update(16.1, unknownNext); // the announced time came
+    EXPECT_EQ(running.rebuildsBuiltAhead(), 2u);
+    EXPECT_EQ(running.rebuildsUploadedAhead(), 2 * ahead);
+    CurtainField atTheTime(model, GetParam(), kShaders);
+    atTheTime.update(16.1, unknownNext);
+    EXPECT_EQ(readBack(running.footprintMap()), readBack(atTheTime.footprintMap()));
+    EXPECT_EQ(readBack(running.polylines()), readBack(atTheTime.polylines()));
 }
 
 // The GL-free half of the build: buildCurtains made on a worker thread equals the same call on
