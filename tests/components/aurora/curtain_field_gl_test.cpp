@@ -157,55 +157,43 @@ TEST_P(CurtainFieldBuiltOn, UploadWhileDrawingHoldsTheBytesOfTheFramesOwnBuild)
 }
 
 // A command changed the next frame's time (the master announced 16 s, then a new time of 15.7 s was
-// set): the build made ahead is dropped and the frame builds its own curtains, equal to a fresh
-// field's.
+// set): the build made ahead is dropped, or where it was uploaded while the frame before drew
+// (uploadAhead), not swapped in, and the frame builds its own curtains, equal to a fresh field's.
 TEST_P(CurtainFieldBuiltOn, WrongPredictionBuildsTheFrameItself)
 {
     const auto context = gl::createContext(gl::Backend::Egl);
     const components::aurora::Settings settings = movingArc();
     const components::aurora::CurtainModel model(settings, 6371.0, nullptr);
-    CurtainField running(model, GetParam(), kShaders);
-    running.update(15.0, 15.5);
-    running.update(15.5, 16.0);
-    EXPECT_EQ(running.rebuildsBuiltAhead(), 1u);
-    running.update(15.7, 16.1);
-    EXPECT_EQ(running.rebuildsBuiltAhead(), 1u);
-    CurtainField fresh(model, GetParam(), kShaders);
-    fresh.update(15.7, unknownNext);
-    EXPECT_EQ(readBack(running.footprintMap()), readBack(fresh.footprintMap()));
-    EXPECT_EQ(readBack(running.polylines()), readBack(fresh.polylines()));
-    running.update(16.1, unknownNext); // the announced time came: built ahead
-    EXPECT_EQ(running.rebuildsBuiltAhead(), 2u);
-    EXPECT_EQ(running.rebuilds(), 4u);
-}
-
-// The same with the wrong prediction uploaded while the frame before drew: it is not swapped in.
-TEST_P(CurtainFieldBuiltOn, WrongPredictionUploadedAheadIsNotUsed)
-{
-    const auto context = gl::createContext(gl::Backend::Egl);
-    const components::aurora::Settings settings = movingArc();
-    const components::aurora::CurtainModel model(settings, 6371.0, nullptr);
-    CurtainField running(model, GetParam(), kShaders);
-    running.update(15.0, 15.5);
-    running.uploadAhead();
-    running.update(15.5, 16.0);
-    running.uploadAhead(); // 16 s, which the next frame will not show
-    running.update(15.7, 16.1);
-    const size_t ahead = GetParam() == MapBuilder::Cpu ? 1 : 0;
-    EXPECT_EQ(running.rebuildsBuiltAhead(), 1u);
-    EXPECT_EQ(running.rebuildsUploadedAhead(), ahead);
-    CurtainField fresh(model, GetParam(), kShaders);
-    fresh.update(15.7, unknownNext);
-    EXPECT_EQ(readBack(running.footprintMap()), readBack(fresh.footprintMap()));
-    EXPECT_EQ(readBack(running.polylines()), readBack(fresh.polylines()));
-    running.uploadAhead();
-    running.update(16.1, unknownNext); // the announced time came
-    EXPECT_EQ(running.rebuildsBuiltAhead(), 2u);
-    EXPECT_EQ(running.rebuildsUploadedAhead(), 2 * ahead);
-    CurtainField atTheTime(model, GetParam(), kShaders);
-    atTheTime.update(16.1, unknownNext);
-    EXPECT_EQ(readBack(running.footprintMap()), readBack(atTheTime.footprintMap()));
-    EXPECT_EQ(readBack(running.polylines()), readBack(atTheTime.polylines()));
+    for (bool uploadWhileDrawing : {false, true}) {
+        CurtainField running(model, GetParam(), kShaders);
+        const auto frame = [&](double t, double next) {
+            running.update(t, next);
+            if (uploadWhileDrawing)
+                running.uploadAhead();
+        };
+        // Where the CPU builds the map, each build made ahead is also uploaded ahead.
+        const size_t uploaded = uploadWhileDrawing && GetParam() == MapBuilder::Cpu ? 1 : 0;
+        frame(15.0, 15.5);
+        frame(15.5, 16.0); // uploads 16 s ahead, which the next frame will not show
+        EXPECT_EQ(running.rebuildsBuiltAhead(), 1u);
+        running.update(15.7, 16.1);
+        EXPECT_EQ(running.rebuildsBuiltAhead(), 1u);
+        EXPECT_EQ(running.rebuildsUploadedAhead(), uploaded);
+        CurtainField fresh(model, GetParam(), kShaders);
+        fresh.update(15.7, unknownNext);
+        EXPECT_EQ(readBack(running.footprintMap()), readBack(fresh.footprintMap()));
+        EXPECT_EQ(readBack(running.polylines()), readBack(fresh.polylines()));
+        if (uploadWhileDrawing)
+            running.uploadAhead();
+        running.update(16.1, unknownNext); // the announced time came: built ahead
+        EXPECT_EQ(running.rebuildsBuiltAhead(), 2u);
+        EXPECT_EQ(running.rebuildsUploadedAhead(), 2 * uploaded);
+        EXPECT_EQ(running.rebuilds(), 4u);
+        CurtainField atTheTime(model, GetParam(), kShaders);
+        atTheTime.update(16.1, unknownNext);
+        EXPECT_EQ(readBack(running.footprintMap()), readBack(atTheTime.footprintMap()));
+        EXPECT_EQ(readBack(running.polylines()), readBack(atTheTime.polylines()));
+    }
 }
 
 // The GL-free half of the build: buildCurtains made on a worker thread equals the same call on
