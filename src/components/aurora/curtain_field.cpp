@@ -48,7 +48,6 @@ void CurtainField::update(double timeS, double nextTimeS)
     // differ (exactly) from the last build's, e.g. not while every curtain holds still.
     const ControlPoints controlPoints = controlPointsOf(states);
     const bool uploadedAhead = back_.holdsBuild && back_.controlPoints == controlPoints;
-    back_.holdsBuild = false;
     std::optional<CurtainBuild> ahead = uploadedAhead ? std::nullopt : ahead_.take(controlPoints);
     const bool rebuilt = !front_.holdsBuild || controlPoints != front_.controlPoints;
     if (rebuilt) {
@@ -57,7 +56,6 @@ void CurtainField::update(double timeS, double nextTimeS)
             ++rebuildsBuiltAhead_;
             ++rebuildsUploadedAhead_;
             std::swap(front_, back_);
-            back_.holdsBuild = false;
         } else if (ahead) {
             ++rebuildsBuiltAhead_;
             upload(*ahead, front_);
@@ -65,6 +63,7 @@ void CurtainField::update(double timeS, double nextTimeS)
             upload(buildCurtains(model_, states, gpuMap_ ? MapBuilder::Gpu : MapBuilder::Cpu), front_);
         }
     }
+    back_.holdsBuild = false; // swapped in, or a wrong prediction: its textures are rewritten before use
     // The march skips by the largest reach of the curtains that emit now (their detail's spread at this
     // phase), not of all phases: nearer the curtains than the all-time largest reach it skips further.
     reachKm_ = 0.0f;

@@ -10,6 +10,7 @@
 
 #include <limits>
 #include <string>
+#include <utility>
 #include <vector>
 
 using namespace aurorawall;
@@ -154,6 +155,27 @@ TEST_P(CurtainFieldBuiltOn, UploadWhileDrawingHoldsTheBytesOfTheFramesOwnBuild)
         EXPECT_EQ(readBack(running.footprintMap()), map) << "t = " << t << ", after the upload ahead";
         EXPECT_EQ(readBack(running.polylines()), polylines) << "t = " << t << ", after the upload ahead";
     }
+}
+
+// Once the curtains hold still (from 20 s the arc's control points stay), a field whose last build was
+// swapped in from the upload ahead keeps it: no rebuild.
+TEST_P(CurtainFieldBuiltOn, HoldsStillAfterASwappedInBuild)
+{
+    const auto context = gl::createContext(gl::Backend::Egl);
+    const components::aurora::Settings settings = movingArc();
+    const components::aurora::CurtainModel model(settings, 6371.0, nullptr);
+    CurtainField running(model, GetParam(), kShaders);
+    for (const auto& [t, next] : std::vector<std::pair<double, double>>{{19.0, 19.5}, {19.5, 20.5}, {20.5, 21.0}}) {
+        running.update(t, next);
+        running.uploadAhead();
+    }
+    EXPECT_EQ(running.rebuildsUploadedAhead(), GetParam() == MapBuilder::Cpu ? 2u : 0u);
+    running.update(21.0, 22.0);
+    EXPECT_FALSE(rebuilt(running));
+    running.uploadAhead();
+    running.update(22.0, unknownNext);
+    EXPECT_FALSE(rebuilt(running));
+    EXPECT_EQ(running.rebuilds(), 3u);
 }
 
 // A command changed the next frame's time (the master announced 16 s, then a new time of 15.7 s was
