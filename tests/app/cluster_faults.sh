@@ -1,8 +1,9 @@
 #!/bin/bash
 # Host faults on the virtual cluster (launch/virtual-cluster, 2 hosts x 2 ranks, --rank-timeout 3):
 # one host's link taken down mid-run ends the job within 15 s with status 3, naming its silent ranks and
-# the host; a rank on the remote host killed ends it within 5 s with Open MPI's line naming the rank and
-# the host; a remote rank stopped (SIGSTOP) ends it within 15 s with status 3, naming it. No case
+# the host; a rank on the remote host killed ends it within 10 s with Open MPI's line naming the rank and
+# the host (3.5-4 s on an idle 2-core machine: Open MPI sends the other ranks SIGTERM, which ends a
+# render at its next frame, and SIGKILL 1 s later; its daemons then close); a remote rank stopped (SIGSTOP) ends it within 15 s with status 3, naming it. No case
 # leaves a process or a namespace behind. Skipped (77) where namespaces cannot be made.
 source "$(dirname "$0")/lib.sh"
 require_network_namespaces
@@ -51,7 +52,7 @@ grep -Eq "from rank [23] on ${prefix}h1 \(last heard" "$WORK/link.err" || fail "
 note "SIGKILL rank 3 on host 1"
 start kill
 kill -KILL "$(rank_pid kill 3)"
-finish kill 5
+finish kill 10
 [ "$status" -ne 0 ] || fail "kill: exit status 0"
 grep -q "rank 3 .* on node ${prefix}h1" "$WORK/kill.err" || fail "kill: Open MPI's line does not name rank 3 on host 1"
 
