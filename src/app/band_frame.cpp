@@ -6,6 +6,7 @@
 #include "io/half_pixels.h"
 #include "wall/tile_rays.h"
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 
@@ -63,6 +64,7 @@ BandFrame::Scratch& BandFrame::scratchFor(int width, int height)
     if (!s.target) {
         s.target = std::make_unique<gl::FloatTarget>(width, height);
         s.triangle = std::make_unique<gl::FullScreenTriangle>();
+        s.drawTimer = std::make_unique<gl::GpuTimer>();
     }
     return s;
 }
@@ -77,6 +79,7 @@ std::vector<cluster::BandCost> BandFrame::draw(render::TileRenderer& renderer, g
     OutgoingBands outgoing;
     const auto start = common::SteadyClock::now();
     const double cpuStart = common::processCpuMilliseconds();
+    report.renderGpuMs = -1.0;
     bool drewRun = false;
     for (size_t first = 0; first < bands_.size();) {
         if (assignment[first] != rank_) {
@@ -107,13 +110,21 @@ void BandFrame::drawRun(size_t first, size_t end, bool firstOfFrame, render::Til
     const wall::Screen& screen = wall_.screens[top.screen];
     const bool myScreen = top.owner == rank_;
     ScreenTarget* own = myScreen ? &screenTarget(screens, top.screen) : nullptr;
+    context.makeCurrent(myScreen ? own->window : 0); // before a scratch target's vertex array and queries are made
     Scratch* scratch = myScreen ? nullptr : &scratchFor(screen.widthPx, screen.heightPx);
     gl::FloatTarget& target = myScreen ? *own->target : *scratch->target;
-    context.makeCurrent(myScreen ? own->window : 0);
+    gl::GpuTimer& timer = myScreen ? *own->drawTimer : *scratch->drawTimer;
 
+    // The run's cost: the GPU's time where it has timer queries; on Mesa's CPU renderers, whose draw runs on
+    // this process's threads, its CPU time (on a shared machine, its own work).
+    const bool gpuClock = timer.usesQueries();
+    if (gpuClock)
+        timer.start();
     const double runStart = common::processCpuMilliseconds();
     drawRows(renderer, wall::tileRays(wall_, top.screen), target, myScreen ? *own->triangle : *scratch->triangle,
              firstGlRow(bottom, screen.heightPx), bottom.y0 + bottom.height - top.y0);
+    if (gpuClock)
+        timer.stop();
     double aheadMs = 0.0;
     if (firstOfFrame) {
         gl::glFlush(); // the draw starts now (a CPU rasterizer waits for a flush), not at glFinish
@@ -122,7 +133,9 @@ void BandFrame::drawRun(size_t first, size_t end, bool firstOfFrame, render::Til
         aheadMs = common::processCpuMilliseconds() - aheadStart;
     }
     gl::glFinish();
-    const double runMs = common::processCpuMilliseconds() - runStart - aheadMs;
+    const double runMs = gpuClock ? 1e3 * timer.seconds() : common::processCpuMilliseconds() - runStart - aheadMs;
+    if (gpuClock)
+        report.renderGpuMs = std::max(report.renderGpuMs, 0.0) + runMs;
 
     if (measureCosts_)
         shareRunCost(first, end, target, screen.heightPx, runMs, report, costs);

@@ -52,6 +52,7 @@ private:
     struct Scratch {
         std::unique_ptr<gl::FloatTarget> target;
         std::unique_ptr<gl::FullScreenTriangle> triangle;
+        std::unique_ptr<gl::GpuTimer> drawTimer;
     };
     Scratch& scratchFor(int width, int height);
 
@@ -68,8 +69,9 @@ private:
     void drawRun(size_t first, size_t end, bool firstOfFrame, render::TileRenderer& renderer, gl::Context& context,
                  std::vector<ScreenTarget>& screens, cluster::RankReport& report,
                  std::vector<cluster::BandCost>& costs, OutgoingBands& outgoing);
-    // The run's process CPU time `runMs` shared among its bands in proportion to their rays' work
-    // (the target's attachment 1, rows of a screen `screenHeight` tall); the work added to the report.
+    // The run's cost `runMs` (its GPU time, or its process CPU time on Mesa's CPU renderers) shared among
+    // its bands in proportion to their rays' work (the target's attachment 1, rows of a screen
+    // `screenHeight` tall); the work added to the report.
     void shareRunCost(size_t first, size_t end, const gl::FloatTarget& target, int screenHeight, double runMs,
                       cluster::RankReport& report, std::vector<cluster::BandCost>& costs) const;
     // Other screens' bands go out compressed (io/band_compression.h, lossless), my screens' bands

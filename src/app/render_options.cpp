@@ -17,7 +17,7 @@ const cli::Choices<MarchChoice> kMarches = {
 const cli::Choices<io::ToneMap::Curve> kToneMaps = {
     {"aces", io::ToneMap::Curve::AcesFilmic}, {"magnitude-gamma", io::ToneMap::Curve::MagnitudeGamma}};
 const cli::Choices<Balance> kBalance = {{"on", Balance::On}, {"off", Balance::Off}, {"auto", Balance::Auto}};
-const cli::Choices<cluster::BandMeasure> kBandMeasures = {{"time", cluster::BandMeasure::CpuTime},
+const cli::Choices<cluster::BandMeasure> kBandMeasures = {{"time", cluster::BandMeasure::Time},
                                                           {"work", cluster::BandMeasure::Work}};
 
 // The options of the wall, the scene, the clock and the split of the work.
@@ -56,7 +56,8 @@ void describeRenderingOptions(cli::CommandLine& cli, RenderOptions& o)
         ("balance-bands", po::value(&o.balanceBands)->default_value(o.balanceBands),
          "bands per screen for --balance (1 to 256; at most one per 8 rows)");
     cli.addChoice("balance-by", &o.balanceBy, kBandMeasures,
-                  "what --balance equalizes: time (each band's measured CPU time) or work (each band's rays' work, "
+                  "what --balance equalizes: time (each band's measured time: the GPU's from timer queries, CPU time on "
+                  "Mesa's CPU renderers) or work (each band's rays' work, "
                   "1 + march samples per pixel: exact and free of timing noise, but not proportional to time)");
 }
 

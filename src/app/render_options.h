@@ -36,7 +36,7 @@ struct RenderOptions {
     bool singleScreen = false;
     Balance balance = Balance::Auto;
     int balanceBands = 8;
-    cluster::BandMeasure balanceBy = cluster::BandMeasure::CpuTime; // what the balancer equalizes
+    cluster::BandMeasure balanceBy = cluster::BandMeasure::Time; // what the balancer equalizes
     int controlPort = -1;                // --control-port; -1: no remote control, 0: a free port
     std::string controlBind = "127.0.0.1"; // --control-bind
     std::string controlTokenFile;        // --control-token-file: the shared secret clients send first; empty: none

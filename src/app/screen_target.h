@@ -3,6 +3,7 @@
 // (context) that target belongs to. Windows present from the target.
 #include "gl/float_target.h"
 #include "gl/full_screen_triangle.h"
+#include "gl/gpu_timer.h"
 
 #include <memory>
 #include <stdexcept>
@@ -16,6 +17,7 @@ struct ScreenTarget {
     int window = 0; // context/window it belongs to (glfw: one per screen; headless: 0)
     std::unique_ptr<gl::FloatTarget> target;     // the screen's size
     std::unique_ptr<gl::FullScreenTriangle> triangle; // vertex arrays belong to one context
+    std::unique_ptr<gl::GpuTimer> drawTimer;          // so do timer queries
 };
 
 // The target of wall screen `screen` among this rank's; std::logic_error if this rank does not show it.

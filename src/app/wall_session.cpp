@@ -155,6 +155,7 @@ void openGraphics(const cluster::MpiWorld& world, WallSession& s)
         const wall::Screen& physical = s.wall.screens[screen.screen];
         screen.target = std::make_unique<gl::FloatTarget>(physical.widthPx, physical.heightPx);
         screen.triangle = std::make_unique<gl::FullScreenTriangle>();
+        screen.drawTimer = std::make_unique<gl::GpuTimer>();
         s.screens.push_back(std::move(screen));
     }
     if (console) {

@@ -91,8 +91,8 @@ std::string FrameStats::csvHeader(size_t ranks) const
     out << "frame,time_s,frame_ms,fps,mpixel_per_s,render_max_ms,render_mean_ms,imbalance";
     for (size_t r = 0; r < ranks; ++r)
         out << ",frame_rank" << r << ",time_s_rank" << r << ",prepare_ms_rank" << r << ",prepare_cpu_ms_rank" << r
-            << ",render_ms_rank" << r << ",render_cpu_ms_rank" << r << ",exchange_ms_rank" << r << ",exchange_mb_rank"
-            << r << ",wait_ms_rank" << r << ",swap_ms_rank" << r << ",render_work_rank" << r;
+            << ",render_ms_rank" << r << ",render_cpu_ms_rank" << r << ",render_gpu_ms_rank" << r << ",exchange_ms_rank"
+            << r << ",exchange_mb_rank" << r << ",wait_ms_rank" << r << ",swap_ms_rank" << r << ",render_work_rank" << r;
     for (size_t r = 0; r < ranks; ++r)
         for (const std::string& name : componentNames_)
             out << ",setframe_ms_" << name << "_rank" << r;
@@ -109,8 +109,8 @@ std::string FrameStats::csvRow(const FrameRecord& f) const
         << f.imbalance();
     for (const RankReport& r : f.ranks)
         out << "," << r.frame << "," << r.timeS << "," << r.prepareMs << "," << r.prepareCpuMs << "," << r.renderMs
-            << "," << r.renderCpuMs << "," << r.exchangeMs << "," << r.exchangeMB << "," << r.waitMs << "," << r.swapMs
-            << "," << r.renderWork;
+            << "," << r.renderCpuMs << "," << r.renderGpuMs << "," << r.exchangeMs << "," << r.exchangeMB << ","
+            << r.waitMs << "," << r.swapMs << "," << r.renderWork;
     for (const RankReport& r : f.ranks)
         for (size_t c = 0; c < componentNames_.size(); ++c)
             out << "," << r.componentMs[c];
@@ -164,7 +164,8 @@ void FrameStats::write(const std::string& path) const
                 out << (r ? ", " : "") << "{\"frame\": " << f.ranks[r].frame << ", \"time_s\": " << f.ranks[r].timeS
                     << ", \"prepare_ms\": " << f.ranks[r].prepareMs << ", \"prepare_cpu_ms\": " << f.ranks[r].prepareCpuMs
                     << ", \"render_ms\": " << f.ranks[r].renderMs
-                    << ", \"render_cpu_ms\": " << f.ranks[r].renderCpuMs << ", \"exchange_ms\": " << f.ranks[r].exchangeMs << ", \"exchange_mb\": " << f.ranks[r].exchangeMB
+                    << ", \"render_cpu_ms\": " << f.ranks[r].renderCpuMs << ", \"render_gpu_ms\": " << f.ranks[r].renderGpuMs
+                    << ", \"exchange_ms\": " << f.ranks[r].exchangeMs << ", \"exchange_mb\": " << f.ranks[r].exchangeMB
                     << ", \"wait_ms\": " << f.ranks[r].waitMs
                     << ", \"swap_ms\": " << f.ranks[r].swapMs << ", \"render_work\": " << f.ranks[r].renderWork
                     << ", \"component_ms\": {";

@@ -26,6 +26,8 @@ struct RankReport {
                               // screens read back, wall time
     double renderCpuMs = 0.0; // CPU time of the whole process while rendering, all threads
                               // (llvmpipe's included): the rank's own work, even on a shared machine
+    double renderGpuMs = -1.0; // the GPU's time drawing its bands, from GL_TIMESTAMP queries around each
+                               // draw (gl/gpu_timer.h); -1 where they are not used (Mesa's CPU renderers)
     double exchangeMs = 0.0;  // load balancing: sending, receiving and uploading band pixels
     double exchangeMB = 0.0;  // megabytes this rank sent plus received: compressed band pixels
     double renderWork = 0.0;  // load balancing: the work of the rays it drew, the sum over its drawn

@@ -40,8 +40,9 @@ RankMessage unpackRankMessage(const char* bytes, std::size_t bandCount);
 // The master's gather, split into the ranks' messages, in rank order.
 std::vector<RankMessage> unpackRankMessages(const std::vector<char>& bytes, std::size_t bandCount);
 
-// What the load balancer balances: measured CPU time, or the rays' work.
-enum class BandMeasure { CpuTime, Work };
+// What the load balancer balances: each band's measured time (the GPU's from timer queries, or CPU time
+// on Mesa's CPU renderers), or the rays' work.
+enum class BandMeasure { Time, Work };
 
 // Each band's cost by `measure` from the ranks' messages (NaN where no rank reported the band).
 std::vector<double> bandCosts(const std::vector<RankMessage>& messages, std::size_t bandCount, BandMeasure measure);

@@ -36,17 +36,24 @@ void GpuTimer::start()
     }
 }
 
-double GpuTimer::stopSeconds()
+void GpuTimer::stop()
 {
-    if (!usesQueries()) {
+    if (usesQueries()) {
+        glQueryCounter(queries_[1], GL_TIMESTAMP);
+    } else {
         glFinish();
-        return std::chrono::duration<double>(std::chrono::steady_clock::now() - cpuStart_).count();
+        cpuStop_ = std::chrono::steady_clock::now();
     }
-    glQueryCounter(queries_[1], GL_TIMESTAMP);
+}
+
+double GpuTimer::seconds()
+{
+    if (!usesQueries())
+        return std::chrono::duration<double>(cpuStop_ - cpuStart_).count();
     GLuint64 begin = 0, end = 0;
     glGetQueryObjectui64v(queries_[0], GL_QUERY_RESULT, &begin); // GL_QUERY_RESULT waits
     glGetQueryObjectui64v(queries_[1], GL_QUERY_RESULT, &end);
-    return double(end - begin) * 1e-9;
+    return end > begin ? double(end - begin) * 1e-9 : 0.0;
 }
 
 } // namespace aurorawall::gl

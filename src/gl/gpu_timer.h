@@ -24,12 +24,21 @@ public:
     bool usesQueries() const { return queries_[0] != 0; }
 
     void start();
-    // Seconds since start(); waits until the GPU has finished the block.
-    double stopSeconds();
+    // Marks the block's end. With queries the GPU writes the time once it has done the block, and
+    // nothing waits: CPU work after stop() is not counted. Without, it waits (glFinish).
+    void stop();
+    // Seconds from start() to stop(); with queries, waits until the GPU has reached stop().
+    double seconds();
+    double stopSeconds()
+    {
+        stop();
+        return seconds();
+    }
 
 private:
     GLuint queries_[2] = {0, 0};
     std::chrono::steady_clock::time_point cpuStart_;
+    std::chrono::steady_clock::time_point cpuStop_;
 };
 
 } // namespace aurorawall::gl

@@ -146,7 +146,7 @@ TEST(RenderOptions, EnumOptionsAreParsedOnce)
     EXPECT_EQ(defaults.backend, gl::Backend::Egl);
     EXPECT_EQ(defaults.toneMap, io::ToneMap::Curve::AcesFilmic);
     EXPECT_EQ(defaults.balance, Balance::Auto);
-    EXPECT_EQ(defaults.balanceBy, cluster::BandMeasure::CpuTime);
+    EXPECT_EQ(defaults.balanceBy, cluster::BandMeasure::Time);
     const RenderOptions o = parseRender({"--wall", "w.ini", "--scene", "s.toml", "--backend", "osmesa", "--tonemap",
                                          "magnitude-gamma", "--balance", "off", "--balance-by", "work"});
     EXPECT_EQ(o.backend, gl::Backend::Osmesa);

@@ -11,6 +11,12 @@ for check in "benchmark flight" "flight's frame beyond the draw" "benchmark view
              "cost map" "four ranks on this device"; do
     grep -q "^| $check.* | ok |" "$report" || fail "the report has no passed row '$check'"
 done
+# Mesa's CPU renderers have no usable timer queries (src/gl/gpu_timer.h): there the GPU's draw time is skipped.
+if grep -q "^| device | ok | .*\(llvmpipe\|softpipe\)" "$report"; then
+    grep -q "^| flight's GPU draw time (compute) | skip |" "$report" || fail "the GPU's draw time is not skipped on Mesa"
+else
+    grep -q "^| flight's GPU draw time (compute) | ok |" "$report" || fail "no GPU draw time from timer queries"
+fi
 for check in "gl tier plasma_gpu_tests (debug modes)" "gl tier render_gl_tests" "shipped scenes vs CPU reference"; do
     grep -q "^| $check | skip |" "$report" || fail "the report does not mark '$check' skipped"
 done

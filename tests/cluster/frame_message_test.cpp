@@ -120,6 +120,7 @@ TEST(RankMessage, RoundTripOfSeveralRanks)
         report.prepareCpuMs = 7.0 + r;
         report.renderMs = 100.0 * (r + 1);
         report.renderCpuMs = 99.0 * (r + 1);
+        report.renderGpuMs = r == 1 ? -1.0 : 95.5 * (r + 1);
         report.exchangeMs = 0.5 * r;
         report.exchangeMB = 0.125 * r;
         report.renderWork = 1e6 * (r + 1);
@@ -146,6 +147,7 @@ TEST(RankMessage, RoundTripOfSeveralRanks)
         EXPECT_EQ(a.prepareCpuMs, b.prepareCpuMs);
         EXPECT_EQ(a.renderMs, b.renderMs);
         EXPECT_EQ(a.renderCpuMs, b.renderCpuMs);
+        EXPECT_EQ(a.renderGpuMs, b.renderGpuMs);
         EXPECT_EQ(a.exchangeMs, b.exchangeMs);
         EXPECT_EQ(a.exchangeMB, b.exchangeMB);
         EXPECT_EQ(a.renderWork, b.renderWork);
@@ -162,7 +164,7 @@ TEST(RankMessage, RoundTripOfSeveralRanks)
     }
 
     // The balancer's input: one value per band by the chosen measure, NaN where nobody drew it.
-    const std::vector<double> time = bandCosts(got, bands, BandMeasure::CpuTime);
+    const std::vector<double> time = bandCosts(got, bands, BandMeasure::Time);
     EXPECT_EQ(time, (std::vector<double>{10.5, 3.0, 4.0, 5.0, 0.25}));
     const std::vector<double> work = bandCosts(got, bands, BandMeasure::Work);
     EXPECT_EQ(work, (std::vector<double>{1000.0, 300.0, 400.0, 500.0, 20.0}));

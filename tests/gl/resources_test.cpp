@@ -11,6 +11,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <thread>
 
 namespace aurorawall::gl {
 namespace {
@@ -160,6 +161,40 @@ void main()
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
     EXPECT_GT(seconds, 0.5 * wall);
     EXPECT_LE(seconds, wall);
+}
+
+// What the CPU does after stop() is not counted: with queries the GPU wrote the end when it was done, without
+// them stop() waited for the draw.
+TEST(GpuTimer, LeavesOutCpuWorkAfterStop)
+{
+    auto context = createContext(Backend::Egl);
+    Program program = Program::graphics(fullScreenTriangleVertexShader(), {{}, {{"busy.glsl", R"(
+out vec4 color;
+void main()
+{
+    float s = 0.0;
+    for (int i = 0; i < 500; ++i)
+        s += sin(gl_FragCoord.x + float(i));
+    color = vec4(s);
+})"}}});
+    FloatTarget target(64, 64);
+    FullScreenTriangle triangle;
+    GpuTimer timer;
+    target.bind();
+    program.use();
+    triangle.draw(); // compiles the shader
+    glFinish();
+    const auto begin = std::chrono::steady_clock::now();
+    timer.start();
+    triangle.draw();
+    timer.stop();
+    const double idleSeconds = 0.2;
+    std::this_thread::sleep_for(std::chrono::duration<double>(idleSeconds));
+    glFinish();
+    const double seconds = timer.seconds();
+    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+    EXPECT_GT(seconds, 0.0);
+    EXPECT_LT(seconds, wall - 0.9 * idleSeconds) << "the idle time after stop() was counted";
 }
 
 } // namespace
