@@ -11,6 +11,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <string>
 #include <thread>
 
 namespace aurorawall::gl {
@@ -130,19 +131,25 @@ void main()
     EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
 }
 
-// The timer agrees with CPU wall time around glFinish for a draw of many milliseconds.
-TEST(GpuTimer, MeasuresADraw)
+// A fragment shader that sums `iterations` sines per pixel: a draw that keeps the device busy.
+Program busyProgram(int iterations)
 {
-    auto context = createContext(Backend::Egl);
-    Program program = Program::graphics(fullScreenTriangleVertexShader(), {{}, {{"busy.glsl", R"(
+    return Program::graphics(fullScreenTriangleVertexShader(), {{"ITERATIONS " + std::to_string(iterations)}, {{"busy.glsl", R"(
 out vec4 color;
 void main()
 {
     float s = 0.0;
-    for (int i = 0; i < 2000; ++i)
+    for (int i = 0; i < ITERATIONS; ++i)
         s += sin(gl_FragCoord.x + float(i));
     color = vec4(s);
 })"}}});
+}
+
+// The timer agrees with CPU wall time around glFinish for a draw of many milliseconds.
+TEST(GpuTimer, MeasuresADraw)
+{
+    auto context = createContext(Backend::Egl);
+    Program program = busyProgram(2000);
     FloatTarget target(128, 128);
     FullScreenTriangle triangle;
     GpuTimer timer;
@@ -168,15 +175,7 @@ void main()
 TEST(GpuTimer, LeavesOutCpuWorkAfterStop)
 {
     auto context = createContext(Backend::Egl);
-    Program program = Program::graphics(fullScreenTriangleVertexShader(), {{}, {{"busy.glsl", R"(
-out vec4 color;
-void main()
-{
-    float s = 0.0;
-    for (int i = 0; i < 500; ++i)
-        s += sin(gl_FragCoord.x + float(i));
-    color = vec4(s);
-})"}}});
+    Program program = busyProgram(500);
     FloatTarget target(64, 64);
     FullScreenTriangle triangle;
     GpuTimer timer;
