@@ -1,5 +1,5 @@
 #pragma once
-// Elapsed GPU time of the commands submitted between start() and stopSeconds().
+// Elapsed GPU time of the commands submitted between start() and stop().
 //
 // On a GPU with timestamp queries (GL_QUERY_COUNTER_BITS of GL_TIMESTAMP > 0, e.g. NVIDIA) it
 // records GL_TIMESTAMP with glQueryCounter around the block, so nothing is flushed early.
