@@ -6,7 +6,6 @@
 #include "io/half_pixels.h"
 #include "wall/tile_rays.h"
 
-#include <algorithm>
 #include <stdexcept>
 #include <string>
 
@@ -79,7 +78,8 @@ std::vector<cluster::BandCost> BandFrame::draw(render::TileRenderer& renderer, g
     OutgoingBands outgoing;
     const auto start = common::SteadyClock::now();
     const double cpuStart = common::processCpuMilliseconds();
-    report.renderGpuMs = -1.0;
+    // 0 for a rank of a device with timer queries that draws no band this frame.
+    report.renderGpuMs = !screens.empty() && screens.front().drawTimer->usesQueries() ? 0.0 : -1.0;
     bool drewRun = false;
     for (size_t first = 0; first < bands_.size();) {
         if (assignment[first] != rank_) {
@@ -135,7 +135,7 @@ void BandFrame::drawRun(size_t first, size_t end, bool firstOfFrame, render::Til
     gl::glFinish();
     const double runMs = gpuClock ? 1e3 * timer.seconds() : common::processCpuMilliseconds() - runStart - aheadMs;
     if (gpuClock)
-        report.renderGpuMs = std::max(report.renderGpuMs, 0.0) + runMs;
+        report.renderGpuMs += runMs;
 
     if (measureCosts_)
         shareRunCost(first, end, target, screen.heightPx, runMs, report, costs);
