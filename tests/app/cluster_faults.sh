@@ -3,8 +3,8 @@
 # one host's link taken down mid-run ends the job within 15 s with status 3, naming its silent ranks and
 # the host; a rank on the remote host killed ends it within 10 s with Open MPI's line naming the rank and
 # the host (3.5-4 s on an idle 2-core machine: Open MPI sends the other ranks SIGTERM, which ends a
-# render at its next frame, and SIGKILL 1 s later; its daemons then close); a remote rank stopped (SIGSTOP) ends it within 15 s with status 3, naming it. No case
-# leaves a process or a namespace behind. Skipped (77) where namespaces cannot be made.
+# render at its next frame, and SIGKILL 1 s later; its daemons then close); a remote rank stopped
+# (SIGSTOP) ends it within 15 s with status 3, naming it. No case leaves a process or a namespace behind. Skipped (77) where namespaces cannot be made.
 source "$(dirname "$0")/lib.sh"
 require_network_namespaces
 timeout_s=3

@@ -31,14 +31,12 @@ void CurtainBuildAhead::start(std::vector<CurtainState> states)
 
 std::optional<CurtainBuild> CurtainBuildAhead::take(const ControlPoints& controlPoints)
 {
-    if (!pending_.valid())
-        return std::nullopt;
-    if (pendingControlPoints_ != controlPoints) {
+    if (pending_.valid() && pendingControlPoints_ != controlPoints) {
         // A wrong prediction: dropped unread, so that an error of its build is not reported either.
         dropped_ = std::move(pending_);
         return std::nullopt;
     }
-    return pending_.get();
+    return takeStarted();
 }
 
 std::optional<CurtainBuild> CurtainBuildAhead::takeStarted()
