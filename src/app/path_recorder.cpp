@@ -64,15 +64,20 @@ std::string PathRecorder::text() const
         << "base = " << config::tomlBasicString(basePath(file_, baseScene_)) << "\n"
         << "start_time_s = " << number(startTimeS_) << "\n"
         << "time_step_s = " << number(timeStepS_) << "\n";
-    if (cameras_.size() == 1) {
-        const RecordedCamera& c = cameras_.front();
+    std::vector<RecordedCamera> keys = cameras_;
+    if (keys.size() == 1 && keys.front().zoom != 1.0) {
+        keys.push_back(keys.front());
+        keys.back().timeS += timeStepS_ > 0.0 ? timeStepS_ : 1.0;
+    }
+    if (keys.size() == 1) {
+        const RecordedCamera& c = keys.front();
         out << "\n[camera]\n"
             << "position_km = " << vector3(c.positionKm) << "\n"
             << "direction = " << vector3(c.forward) << "\n"
             << "up = " << vector3(c.up) << "\n";
     }
-    if (cameras_.size() > 1) {
-        for (const RecordedCamera& c : cameras_) {
+    if (keys.size() > 1) {
+        for (const RecordedCamera& c : keys) {
             out << "\n[[camera.key]]\n"
                 << "time_s = " << number(c.timeS) << "\n"
                 << "position_km = " << vector3(c.positionKm) << "\n"

@@ -5,7 +5,8 @@
 // back every double exactly, so the recorded file plays the same camera at every recorded time
 // (scene::CameraPath is exact at its keys; between keys it interpolates). A frame zoomed by its
 // path (FrameState::zoom != 1) gets its zoom as a key's `zoom` (a field of view would not read back
-// as the same double); a single recorded camera ([camera], no keys) has no zoom.
+// as the same double). A single recorded camera is a plain [camera], which has no zoom; zoomed, it is
+// two keys one time step apart (1 s without a step) that hold it.
 #include "cluster/frame_state.h"
 
 #include <glm/glm.hpp>

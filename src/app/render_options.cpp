@@ -35,7 +35,7 @@ void describeRenderingOptions(cli::CommandLine& cli, RenderOptions& o)
     cli.add()
         ("frames", po::value(&o.frames)->default_value(o.frames),
          "number of frames to render; 0 = until a window is closed (glfw) or the wall is told to quit "
-         "(--control-port)")
+         "(--control-port, --web-port)")
         ("dt", po::value(&o.timeStepS), "animation time step per frame in seconds (default: the scene's time_step_s)")
         ("start-time", po::value(&o.startTimeS), "animation time of the first frame in seconds (default: the scene's)")
         ("realtime", po::bool_switch(&o.realTime), "animation time follows the master's wall clock instead of --dt (one frame behind it: each frame shows the moment the one before it began)")
@@ -76,7 +76,7 @@ void describeOutputAndControlOptions(cli::CommandLine& cli, RenderOptions& o)
         ("data-dir", po::value(&o.dataDir), "folder holding shaders/ (default: installed share/aurorawall or the source tree)")
         ("control-port", po::value(&o.controlPort),
          "the master takes commands on this TCP port (0: a free one, printed), one per line: status, pause, play, "
-         "speed, step, time, goto, look, screenshot, quit (docs/driving.md)")
+         "speed, step, time, goto, look, preset, orbit, screenshot, record, movie, quit (docs/driving.md)")
         ("web-port", po::value(&o.webPort),
          "the master serves the operator's console to a browser on this TCP port (0: a free one, printed): "
          "preview, play/pause, speed, time, presets, screenshots; the same commands as --control-port")

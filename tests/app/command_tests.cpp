@@ -680,5 +680,32 @@ TEST(PathRecorder, KeepsTheFlightLastFlownThroughEachTime)
     }
 }
 
+// A plain [camera] has no zoom, so one zoomed frame is kept as two keys that hold it.
+TEST(PathRecorder, OneZoomedFrameReplaysItsZoom)
+{
+    for (double step : {0.5, 0.0}) {
+        const std::string file = recordFile("zoomed.toml");
+        PathRecorder recorder(file, AW_SCENES_DIR "/substorm.toml", 5.0, step);
+        cluster::FrameState zoomed = recordedFrame(0, 5.0, 0.7);
+        zoomed.zoom = 2.75;
+        recorder.add(zoomed);
+        recorder.write();
+        const scene::Scene s = components::loadScene(file);
+        ASSERT_EQ(s.camera.path.keys().size(), 2u) << "step " << step;
+        cluster::ClockSettings settings;
+        settings.frames = 1;
+        settings.startTimeS = s.startTimeS;
+        settings.timeStepS = s.timeStepS;
+        cluster::MasterClock clock(settings, s.camera, 1.0);
+        const cluster::FrameState played = clock.next(false);
+        EXPECT_EQ(played.timeS, 5.0);
+        EXPECT_NEAR(played.zoom, 2.75, 1e-12) << "step " << step;
+        for (int i = 0; i < 3; ++i) {
+            EXPECT_NEAR(played.cameraPositionKm[i], zoomed.cameraPositionKm[i], 1e-12);
+            EXPECT_NEAR(played.cameraBack[i], zoomed.cameraBack[i], 1e-12);
+        }
+    }
+}
+
 } // namespace
 } // namespace aurorawall::app
