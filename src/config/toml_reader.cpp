@@ -46,7 +46,8 @@ struct OpenBracket {
 
 // Puts a line break after every comma of an array (outside strings and comments, and not in inline
 // tables, where TOML allows none), keeping the file's line of each resulting line. Refuses an array of
-// more than kMaxTomlArrayElements elements, or more than kMaxTomlFileArrayElements in all.
+// more than kMaxTomlArrayElements elements, or more than kMaxTomlFileArrayElements in all, and nesting
+// deeper than kMaxTomlNesting.
 class ArrayBreaker {
 public:
     ArrayBreaker(const std::string& path, const std::string& text) : path_(path), text_(text)
@@ -112,6 +113,10 @@ private:
             }
         } else if (c == '[' || c == '{') {
             element();
+            if (open_.size() >= kMaxTomlNesting)
+                throw common::inputError(path_, line_, "arrays and inline tables nested more than " +
+                                                           std::to_string(kMaxTomlNesting) +
+                                                           " deep, the most a config file may have");
             open_.push_back({c, line_});
         } else if ((c == ']' || c == '}') && !open_.empty()) {
             if (open_.back().bracket == '[')

@@ -30,6 +30,9 @@ constexpr std::size_t kMaxTomlFileBytes = 16u << 20;
 // at the limits reads in about half a second, and one past them is refused before it is parsed.
 constexpr std::size_t kMaxTomlArrayElements = 16384;
 constexpr std::size_t kMaxTomlFileArrayElements = 131072;
+// The deepest nesting of arrays and inline tables: toml11 parses them recursively, and about 10,000
+// levels overflow the stack, so a file nested deeper is refused before it is parsed.
+constexpr std::size_t kMaxTomlNesting = 64;
 
 // Parses a file; syntax errors become InputError "file:line: problem". Arrays are parsed with a
 // line break after each of their commas (toml11 scans a value's whole line for comments, which made

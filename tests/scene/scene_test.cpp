@@ -137,6 +137,30 @@ TEST(SceneErrors, ArraysPastTheLimitsAreRefusedWithTheirLine)
     EXPECT_EQ(loadError(curtainScene("fewer_arrays.toml", 16000, 2)).find("array elements"), std::string::npos);
 }
 
+// toml11 parses nested values recursively: nesting past kMaxTomlNesting is refused with its line
+// before it can overflow the stack (10,000 levels did), in arrays and inline tables alike.
+TEST(SceneErrors, NestingPastTheLimitIsRefusedWithItsLine)
+{
+    const auto nested = [](const char* name, std::size_t depth, char open, char close, const char* key) {
+        std::string value;
+        for (std::size_t i = 0; i < depth; ++i)
+            value += std::string(1, open) + (open == '{' ? std::string(key) + " = " : "");
+        value += "1" + std::string(depth, close);
+        return aurorawall::test::temporarySceneFile(name, "[scene]\nname = \"n\"\ncomponents = [\"planet\"]\n"
+                                                          "[planet]\nradius_km = " + value + "\n");
+    };
+    const std::size_t most = config::kMaxTomlNesting;
+    for (std::size_t depth : {most + 1, std::size_t(100000)}) {
+        const std::string arrays = nested("deep_arrays.toml", depth, '[', ']', "");
+        EXPECT_EQ(loadError(arrays), arrays + ":5: arrays and inline tables nested more than 64 deep, the most a "
+                                              "config file may have");
+        const std::string tables = nested("deep_tables.toml", depth, '{', '}', "a");
+        EXPECT_NE(loadError(tables).find(":5: arrays and inline tables nested more than 64"), std::string::npos);
+    }
+    // At the limit the file parses, and the value's type is what is wrong.
+    EXPECT_NE(loadError(nested("at_nesting_limit.toml", most, '[', ']', "")).find("radius_km"), std::string::npos);
+}
+
 TEST(SceneErrors, MissingFile)
 {
     EXPECT_EQ(loadError(kData + "/nope.toml"), kData + "/nope.toml: scene file not found");
