@@ -52,6 +52,20 @@ glm::dvec3 readPoint(const TableReader& t, const std::string& prefix, double pla
     return planetPoint(lat, lon, planetRadiusKm + alt);
 }
 
+// A camera's position as readPoint gives it, at least 1 km from the planet's centre (as the lowest
+// altitude_km allows): the viewer's horizon, and so its heading and pitch, need an up direction.
+glm::dvec3 readCameraPosition(const TableReader& t, double planetRadiusKm)
+{
+    const glm::dvec3 position = readPoint(t, "", planetRadiusKm);
+    if (!(glm::length(position) >= 1.0)) {
+        const std::string key = t.has("position_km") ? "position_km" : "position_radii";
+        std::ostringstream got;
+        got << glm::length(position);
+        t.fail(key, "must be at least 1 km from the planet's centre (got " + got.str() + " km)");
+    }
+    return position;
+}
+
 // One [[camera.key]]: its time, a position and one orientation: heading_deg/pitch_deg, a look-at
 // point (look_at_km, or look_at_latitude_deg/look_at_longitude_deg/look_at_altitude_km), or explicit
 // direction/up vectors; roll_deg (clockwise as seen from behind) turns the first two about the view;
@@ -69,7 +83,7 @@ CameraKey readCameraKey(const TableReader& k, double planetRadiusKm)
 {
     CameraKey key;
     key.timeS = k.number("time_s", -1e15, 1e15);
-    key.positionKm = readPoint(k, "", planetRadiusKm);
+    key.positionKm = readCameraPosition(k, planetRadiusKm);
     const LocalFrame horizon = horizonAt(key.positionKm);
 
     const std::vector<std::string> forms = {"heading_deg", "look_at_km", "look_at_latitude_deg", "direction"};
@@ -170,8 +184,7 @@ Camera readCamera(const TableReader& t, double planetRadiusKm)
     }
     if (t.has("position_radii") || t.has("position_km")) {
         // Explicit vectors, e.g. the paper's benchmark view in planet radii.
-        c.positionKm = t.has("position_radii") ? t.vector3("position_radii") * planetRadiusKm
-                                               : t.vector3("position_km");
+        c.positionKm = readCameraPosition(t, planetRadiusKm);
         c.forward = t.vector3("direction");
         c.up = t.vector3("up");
     } else {

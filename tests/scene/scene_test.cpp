@@ -161,6 +161,28 @@ TEST(SceneErrors, NestingPastTheLimitIsRefusedWithItsLine)
     EXPECT_NE(loadError(nested("at_nesting_limit.toml", most, '[', ']', "")).find("radius_km"), std::string::npos);
 }
 
+// A camera needs a horizon: at (or within 1 km of) the planet's centre it has none, in any form.
+TEST(SceneErrors, CameraAtThePlanetsCentreIsRefused)
+{
+    const std::string head = "[scene]\nname = \"c\"\ncomponents = [\"planet\"]\n[camera]\n";
+    const std::string plain = head + "position_km = [0.0, 0.0, 0.0]\ndirection = [0.0, 0.0, 1.0]\nup = [0.0, 1.0, 0.0]\n";
+    EXPECT_NE(aurorawall::test::loadErrorOfText("centre.toml", plain)
+                  .find(":5: camera.position_km: must be at least 1 km from the planet's centre (got 0 km)"),
+              std::string::npos);
+    const std::string radii = head + "position_radii = [1e-5, 0.0, 0.0]\ndirection = [0.0, 0.0, 1.0]\nup = [0.0, 1.0, 0.0]\n";
+    EXPECT_NE(aurorawall::test::loadErrorOfText("centre_radii.toml", radii).find("camera.position_radii: must be at least 1 km"),
+              std::string::npos);
+    std::string keys = head;
+    for (int k = 0; k < 2; ++k)
+        keys += "[[camera.key]]\ntime_s = " + std::to_string(k) + ".0\nposition_km = [0.0, 0.0, " + (k ? "0.5" : "7000.0") +
+                "]\nheading_deg = 0.0\npitch_deg = 0.0\n";
+    EXPECT_NE(aurorawall::test::loadErrorOfText("centre_key.toml", keys).find("position_km: must be at least 1 km"),
+              std::string::npos);
+    EXPECT_EQ(aurorawall::test::loadErrorOfText("one_km.toml", head + "position_km = [0.0, 1.0, 0.0]\ndirection = "
+                                                                       "[0.0, 0.0, 1.0]\nup = [0.0, 1.0, 0.0]\n"),
+              "");
+}
+
 TEST(SceneErrors, MissingFile)
 {
     EXPECT_EQ(loadError(kData + "/nope.toml"), kData + "/nope.toml: scene file not found");
