@@ -89,6 +89,9 @@ int readScreens(WallSession& session, const cluster::MpiWorld& world, bool write
         if (!writeTiles)
             return;
         for (const auto& [screen, image] : images) {
+            const std::string final = tilePath(session, screen);
+            if (std::filesystem::exists(final) && !std::filesystem::is_regular_file(final))
+                throw std::runtime_error("--tiles: " + final + " exists and is not a file");
             errno = 0;
             try {
                 io::writeExr(stagedTilePath(session, screen), image);
@@ -107,14 +110,19 @@ int readScreens(WallSession& session, const cluster::MpiWorld& world, bool write
             staged.push_back(screen);
         }
     });
+    const int renamed = status != cli::kSuccess ? status : agreedStep(world, [&] {
+        for (int screen : staged) {
+            std::error_code error;
+            std::filesystem::rename(stagedTilePath(session, screen), tilePath(session, screen), error);
+            if (error)
+                throw std::runtime_error("--tiles: " + tilePath(session, screen) + ": " + error.message());
+        }
+    });
     for (int screen : staged) {
         std::error_code ignored;
-        if (status == cli::kSuccess)
-            std::filesystem::rename(stagedTilePath(session, screen), tilePath(session, screen), ignored);
-        else
-            std::filesystem::remove(stagedTilePath(session, screen), ignored);
+        std::filesystem::remove(stagedTilePath(session, screen), ignored); // the ones not renamed
     }
-    return status;
+    return renamed;
 }
 
 io::Image gatherScreens(const WallSession& session, const cluster::MpiWorld& world,

@@ -158,6 +158,15 @@ late_output_cases() {
         --scene "$SCENE" --frames 3 --record-path /proc/flight.toml
     expect_error cost-map-no-folder 4 1 "--cost-map $WORK/nowhere/c.png: folder $WORK/nowhere does not exist" \
         --wall "$TINY" --scene "$SCENE" --frames 3 --cost-map "$WORK/nowhere/c.png"
+    # One screen's tile name taken by a folder: no tile written (all or none) and nothing staged left.
+    local tiles="$WORK/tiles-blocked/out"
+    mkdir -p "$tiles/tile-r1c0.exr"
+    expect_error tiles-blocked 4 1 "--tiles: $tiles/tile-r1c0.exr exists and is not a file" --wall "$TINY" \
+        --scene "$SCENE" --frames 1 --tiles --out "$tiles" --stats "$WORK/tiles-blocked/stats.csv"
+    if [ "$(ls -A "$tiles")" != "tile-r1c0.exr" ]; then
+        echo "FAIL tiles-blocked: left in the output folder: $(ls -A "$tiles" | tr '\n' ' ')"
+        failures=$((failures + 1))
+    fi
 }
 
 case "$set_name" in
