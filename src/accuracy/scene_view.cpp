@@ -116,9 +116,14 @@ std::vector<glm::dvec3> referencePixels(const render::ReferenceModel& model, con
     return result;
 }
 
-std::unique_ptr<gl::Context> openAccuracyContext(std::ostream& out)
+std::unique_ptr<gl::Context> openAccuracyContext(std::ostream& out, glm::ivec2 sizePx)
 {
     auto context = gl::createContext(gl::Backend::Egl);
+    const int largest = gl::largestRenderTargetPx();
+    if (sizePx.x > largest || sizePx.y > largest)
+        throw std::runtime_error("--size " + std::to_string(sizePx.x) + "x" + std::to_string(sizePx.y) +
+                                 ": larger than this GL device's largest render target, " + std::to_string(largest) +
+                                 " pixels a side");
     const char* threads = std::getenv("LP_NUM_THREADS");
     out << "renderer: " << context->rendererName() << ", " << context->glVersion() << ", vendor "
         << context->vendorName()

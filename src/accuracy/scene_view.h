@@ -64,8 +64,9 @@ glm::dvec3 pixelRadiance(const io::Image& image, int x, int y);
 std::vector<glm::dvec3> referencePixels(const render::ReferenceModel& model, const SceneView& view,
                                         const std::vector<glm::ivec2>& pixels, int threads);
 
-// Opens the headless EGL context of the accuracy runs and prints "renderer: NAME, GL VERSION".
-std::unique_ptr<gl::Context> openAccuracyContext(std::ostream& out);
+// Opens the headless EGL context of the accuracy runs and prints "renderer: NAME, GL VERSION". With a
+// view size (--size), first throws std::runtime_error naming it where the device cannot draw that large.
+std::unique_ptr<gl::Context> openAccuracyContext(std::ostream& out, glm::ivec2 sizePx = glm::ivec2(0));
 
 struct SceneAccuracySettings {
     std::string sceneFile;

@@ -113,6 +113,12 @@ constexpr double kMinReferenceStepKm = 0.001;
 constexpr double kMaxReferenceStepKm = 0.25;
 // The most views of one --views run (each a few seconds on llvmpipe).
 constexpr int kMaxViews = 10000;
+// Bounds that keep a mistyped count from running for hours or exhausting memory: the CPU reference's
+// threads, the rendered pixels (a 4096x4096 view), and the shader tables' work counts.
+constexpr int kMaxThreads = 1024;
+constexpr long long kMaxSizePixels = 4096LL * 4096LL;
+constexpr int kMaxShaderCount = 65536; // --repeat, --copies
+constexpr int kMaxSkySteps = 4096;     // --view-steps, --light-steps
 
 // "WxH" with positive W and H.
 bool parseSize(const std::string& text, glm::ivec2& size)
@@ -130,6 +136,7 @@ struct AccuracyOptions {
     physics::atmosphere::AccuracyReportSettings shader;  // the atmosphere physics' tables
     accuracy::SceneAccuracySettings scene; // --scene, a component's table
     std::string size = "320x180"; // --size, parsed into scene.sizePx
+    long long seed = 1;           // --seed, checked non-negative into scene.seed
 };
 
 void declareOptions(cli::CommandLine& cli, AccuracyOptions& o)
@@ -169,7 +176,7 @@ void declareOptions(cli::CommandLine& cli, AccuracyOptions& o)
          "--scene: the march's work per pixel and per 8x4-pixel block instead of the knobs (CSV)")
         ("views", po::value(&scene.views),
          "--scene: the defaults' error at this many views drawn at random instead of the knobs (1 to 10000)")
-        ("seed", po::value(&scene.seed)->default_value(scene.seed), "--views: the seed the views are drawn from");
+        ("seed", po::value(&o.seed)->default_value(o.seed), "--views: the seed the views are drawn from (0 to 2^63 - 1)");
 }
 
 // Throws a usage error unless exactly one kind of run is chosen (the atmosphere physics' tables go
@@ -207,16 +214,24 @@ void runSceneKnobs(const cli::CommandLine& cli, AccuracyOptions& o, std::ostream
         throw cli.usageError((table ? "--" + std::string(table->option) : std::string("--scene")) + " needs a file name");
     if (!parseSize(o.size, scene.sizePx))
         throw cli.usageError("--size must be WxH with positive whole W and H (got '" + common::echoedInput(o.size) + "')");
+    if (static_cast<long long>(scene.sizePx.x) * scene.sizePx.y > kMaxSizePixels)
+        throw cli.usageError("--size " + o.size + ": more than " + std::to_string(kMaxSizePixels) + " pixels");
     if (scene.frame < 0 || scene.frame > 100000000)
         throw cli.usageError("--frame must be a whole number in [0, 1e8] (got " + std::to_string(scene.frame) + ")");
     if (cli.given("views") && !(scene.views >= 1 && scene.views <= kMaxViews))
         throw cli.usageError("--views must be a whole number in [1, 10000] (got " + std::to_string(scene.views) + ")");
     if (cli.given("seed") && !cli.given("views"))
         throw cli.usageError("--seed applies to --views only");
+    if (o.seed < 0)
+        throw cli.usageError("--seed must be a whole number >= 0 (got " + std::to_string(o.seed) + ")");
+    scene.seed = std::uint64_t(o.seed);
     if (int(scene.featureCosts) + int(scene.workStats) + int(cli.given("views")) > 1)
         throw cli.usageError("choose at most one of --feature-costs, --work-stats and --views");
     if (scene.pixels < 1 || scene.runs < 1 || scene.threads < 1)
         throw cli.usageError("--pixels, --runs and --threads must be positive");
+    if (scene.threads > kMaxThreads)
+        throw cli.usageError("--threads must be at most " + std::to_string(kMaxThreads) + " (got " +
+                             std::to_string(scene.threads) + ")");
     if (!(scene.referenceStepKm >= kMinReferenceStepKm && scene.referenceStepKm <= kMaxReferenceStepKm)) {
         char got[32];
         std::snprintf(got, sizeof got, "%g", scene.referenceStepKm);
@@ -237,6 +252,10 @@ void runShaderTables(const cli::CommandLine& cli, const AccuracyOptions& o, std:
     if (shader.airmassRepeat < 1 || shader.viewSteps < 1 || shader.lightSteps < 1 ||
         (cli.given("copies") && shader.copies < 1))
         throw cli.usageError("--repeat, --copies, --view-steps and --light-steps must be >= 1");
+    if (shader.airmassRepeat > kMaxShaderCount || shader.copies > kMaxShaderCount)
+        throw cli.usageError("--repeat and --copies must be at most " + std::to_string(kMaxShaderCount));
+    if (shader.viewSteps > kMaxSkySteps || shader.lightSteps > kMaxSkySteps)
+        throw cli.usageError("--view-steps and --light-steps must be at most " + std::to_string(kMaxSkySteps));
     const auto context = accuracy::openAccuracyContext(out);
     for (const physics::atmosphere::ShaderTable& t : physics::atmosphere::shaderTables())
         if (cli.given(t.option))

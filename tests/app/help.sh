@@ -93,6 +93,14 @@ expect 2 "^aurorawall accuracy: unrecognised option '--bogus'" accuracy --bogus
 expect 2 "^aurorawall accuracy: choose --airmass, --sky, --scene FILE or --glory FILE" accuracy
 expect 2 "^aurorawall accuracy: --glory cannot be combined with --scene" accuracy --glory "$SCENE" --scene "$SCENE"
 expect 1 "^aurorawall accuracy: .*does not list glory" accuracy --glory "$SCENE"
+expect 1 "^aurorawall accuracy: .*airglow-limb.toml: the scene does not list aurora" \
+    accuracy --scene "$SRC_DIR/config/scenes/airglow-limb.toml" --size 32x18
+expect 2 "^aurorawall accuracy: --threads must be at most 1024" accuracy --scene "$SCENE" --threads 100000
+expect 2 "^aurorawall accuracy: --size 99999x99999: more than 16777216 pixels" accuracy --scene "$SCENE" --size 99999x99999
+expect 1 "^aurorawall accuracy: --size 100000x1: larger than this GL device's largest render target" \
+    accuracy --scene "$SCENE" --size 100000x1
+expect 2 "^aurorawall accuracy: --view-steps and --light-steps must be at most 4096" accuracy --sky --light-steps 1000000000
+expect 2 "^aurorawall accuracy: --seed must be a whole number >= 0" accuracy --scene "$SCENE" --views 1 --seed -1
 expect 2 "^aurorawall accuracy: --repeat applies to --airmass and --sky only" accuracy --scene "$SCENE" --repeat 4
 expect 1 "^aurorawall accuracy: .*nonexistent-scene\.toml" accuracy --scene "$WORK/nonexistent-scene.toml"
 

@@ -452,10 +452,13 @@ void runSceneAccuracy(const SceneAccuracySettings& settings, std::ostream& out)
     const std::string dataDir = common::dataDirectory();
     const std::string wallFile = settings.wallFile.empty() ? dataDir + "/config/walls/single.toml" : settings.wallFile;
     scene::Scene scene = components::loadScene(settings.sceneFile);
+    // Every table of --scene measures the aurora's march.
+    if (!scene.has("aurora"))
+        throw std::runtime_error(settings.sceneFile + ": the scene does not list aurora");
     if (!settings.featureCosts && !settings.workStats)
         scene = scene::withoutUnmodelled(scene);
     const SceneView view = sceneView(scene, wallFile, settings.sizePx, settings.frame);
-    const auto context = openAccuracyContext(out);
+    const auto context = openAccuracyContext(out, settings.sizePx);
     out << "scene: " << settings.sceneFile << " (components:";
     for (const scene::Component* c : scene.components())
         out << " " << c->name();

@@ -178,7 +178,7 @@ void runGloryAccuracy(const accuracy::SceneAccuracySettings& settings, std::ostr
         << glory.effectiveVariance << "\n";
     printTableKnobs(glory, out);
     const SceneView view = sceneView(scene, wallFile, settings.sizePx, settings.frame);
-    const auto context = openAccuracyContext(out);
+    const auto context = openAccuracyContext(out, settings.sizePx);
     out << settings.sizePx.x << "x" << settings.sizePx.y << " px, field of view of " << wallFile << "; ms per frame: median of "
         << settings.runs << " frames after one warm-up\n";
     printWavelengthSampling(scene, view, dataDir + "/shaders", settings, out);
