@@ -46,6 +46,15 @@ ask '^error preset nowhere: no such preset in .* \(presets: .*low-orbit.*\)$' "p
 ask '^ok preset .*/low-orbit\.toml lat_deg=58\.000000 lon_deg=20\.000000 alt_km=400\.000000$' \
     "preset $SRC_DIR/config/scenes/low-orbit.toml"
 ask ' lat_deg=58\.000000 lon_deg=20\.000000 alt_km=400\.000000 ' status
+# Bytes that are not UTF-8 reach the wall as they are, from the command line and from stdin, and get
+# its one-line error; a preset nested past the config limit is refused and the wall keeps running.
+ask "^error unknown command 'caf.*' \\(commands: " $'caf\xe9'
+answer=$(printf '\xff\xfe\nstatus\n' | "${client[@]}" --port "$port") && { kill $job; fail "stdin bytes: exit 0"; }
+[[ "$answer" =~ ^error\ unknown\ command.*$'\n'ok\ frame= ]] || { kill $job; fail "stdin bytes answered '$answer'"; }
+python3 -c "print('[scene]\nname = \"d\"\ncomponents = [\"planet\"]\n[planet]\nradius_km = ' + '[' * 20000 + '1' + ']' * 20000)" \
+    > "$WORK/deep.toml"
+ask "^error preset .*deep\.toml:5: arrays and inline tables nested more than 64 deep" "preset $WORK/deep.toml"
+ask ' lat_deg=58\.000000 lon_deg=20\.000000 alt_km=400\.000000 ' status
 # A large preset is read off the frame loop: while a chain of base scenes, each with curtains of
 # 16,000, 16,000 and 10,000 points (within the limits of an array and a file), is read (seconds),
 # status answers and the
