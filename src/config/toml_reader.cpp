@@ -171,6 +171,8 @@ private:
 
 TomlFile parseTomlFile(const std::string& path)
 {
+    if (std::filesystem::exists(path) && !std::filesystem::is_regular_file(path))
+        throw common::inputError(path, 0, "not a regular file (a config file is a TOML text file)");
     if (!std::filesystem::is_regular_file(path))
         throw common::inputError(path, 0, "scene file not found");
     std::error_code error;
@@ -180,7 +182,7 @@ TomlFile parseTomlFile(const std::string& path)
                                       std::to_string(kMaxTomlFileBytes >> 20) + " MiB a config file may have");
     std::ifstream in(path, std::ios::binary);
     std::ostringstream text;
-    if (!in || !(text << in.rdbuf()))
+    if (!in || (bytes > 0 && !(text << in.rdbuf())))
         throw common::inputError(path, 0, "cannot read the file");
     auto lines = std::make_shared<std::vector<int>>();
     std::istringstream broken(ArrayBreaker(path, text.str()).run(*lines));
@@ -385,7 +387,7 @@ glm::dvec3 TableReader::vector3(const std::string& key) const
         fail(key, "expected an array of 3 numbers");
     for (int i = 0; i < 3; ++i)
         if (!toNumber(v.as_array()[i], out[i]) || !std::isfinite(out[i]) || std::abs(out[i]) > 1e12)
-            fail(key, "expected an array of 3 finite numbers");
+            fail(key, "expected an array of 3 finite numbers, each at most 1e12 in size");
     return out;
 }
 

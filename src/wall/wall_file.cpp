@@ -396,6 +396,8 @@ void WallFile::placeWindows(Wall& wall) const
 
 Wall loadWall(const std::string& path)
 {
+    if (std::filesystem::exists(path) && !std::filesystem::is_regular_file(path))
+        throw common::inputError(path, 0, "not a regular file (a wall file is a TOML text file)");
     if (!std::filesystem::is_regular_file(path) || !std::ifstream(path))
         throw common::inputError(path, 0, "cannot open the wall file");
     if (std::filesystem::path(path).extension() == ".ini")

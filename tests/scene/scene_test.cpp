@@ -186,6 +186,9 @@ TEST(SceneErrors, CameraAtThePlanetsCentreIsRefused)
 TEST(SceneErrors, MissingFile)
 {
     EXPECT_EQ(loadError(kData + "/nope.toml"), kData + "/nope.toml: scene file not found");
+    EXPECT_EQ(loadError("/dev/zero"), "/dev/zero: not a regular file (a config file is a TOML text file)");
+    // An empty file is read (and lacks its [scene]), not said to be unreadable.
+    EXPECT_NE(aurorawall::test::loadErrorOfText("empty.toml", "").find("missing key 'scene'"), std::string::npos);
 }
 
 TEST(SceneErrors, NameFileAndLine)

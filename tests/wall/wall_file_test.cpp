@@ -321,6 +321,10 @@ TEST(WallFileError, MissingFileNamesTheFile)
 {
     const std::string path = std::string(WALL_TEST_DATA_DIR) + "/no-such-wall.toml";
     EXPECT_EQ(wholeFileError(path), path + ": cannot open the wall file");
+    // A path that exists but is no file (a device that never ends, a folder) is said to be so.
+    EXPECT_EQ(wholeFileError("/dev/zero"), "/dev/zero: not a regular file (a wall file is a TOML text file)");
+    EXPECT_EQ(wholeFileError(WALL_TEST_DATA_DIR), std::string(WALL_TEST_DATA_DIR) +
+                                                      ": not a regular file (a wall file is a TOML text file)");
 }
 
 // A line of a megabyte (the files may have 16 MiB) is an error like any other, not a stack overflow

@@ -45,6 +45,8 @@ std::string readControlToken(const std::string& file)
     struct stat status{};
     if (::stat(file.c_str(), &status) != 0)
         throw common::inputError(file, 0, std::string("--control-token-file: cannot read it: ") + std::strerror(errno));
+    if (!S_ISREG(status.st_mode))
+        throw common::inputError(file, 0, "--control-token-file: not a regular file");
     if (status.st_mode & (S_IRWXG | S_IRWXO))
         throw common::inputError(file, 0, "--control-token-file: others than its owner may read or write it (chmod 600)");
     std::ifstream in(file);

@@ -261,6 +261,12 @@ TEST(ControlServer, TokenFileIsCheckedBeforeUse)
     }
     ::unlink(path);
     EXPECT_THROW(readControlToken(path), common::InputError); // gone
+    try {
+        readControlToken("/tmp");
+        ADD_FAILURE() << "a folder was taken";
+    } catch (const common::InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("--control-token-file: not a regular file"), std::string::npos) << e.what();
+    }
 }
 
 // The operator is never locked out: with every slot taken by idle clients, a 17th connection gets in
