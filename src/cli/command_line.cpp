@@ -42,6 +42,13 @@ bool CommandLine::parse(int argc, char** argv)
     } catch (po::error_with_option_name& e) {
         EchoedErrorValues::cut(e);
         throw usageError(e.what());
+    } catch (const po::too_many_positional_options_error&) {
+        // Name the first argument past those the command takes (its words without options).
+        const std::vector<std::string> words = po::collect_unrecognized(
+            po::command_line_parser(argc, argv).options(all).allow_unregistered().run().options, po::include_positional);
+        const unsigned taken = positional_.max_total_count();
+        throw usageError(words.size() > taken ? "unexpected argument '" + common::echoedInput(words[taken]) + "'"
+                                              : std::string("too many arguments"));
     } catch (const po::error& e) {
         throw usageError(e.what());
     }

@@ -90,6 +90,8 @@ echo "ok   1  aurorawall tables deposition --energy-kev 5 >/dev/full: $(cat "$WO
 # accuracy: one parser for --airmass, --sky and --scene.
 expect 0 "--scene" accuracy --help
 expect 2 "^aurorawall accuracy: unrecognised option '--bogus'" accuracy --bogus
+expect 2 "^aurorawall tables: unexpected argument 'junk'" tables deposition --energy-kev 5 junk
+expect 2 "^aurorawall render: unexpected argument 'extra'" render --scene "$SCENE" extra
 expect 2 "^aurorawall accuracy: choose --airmass, --sky, --scene FILE or --glory FILE" accuracy
 expect 2 "^aurorawall accuracy: --glory cannot be combined with --scene" accuracy --glory "$SCENE" --scene "$SCENE"
 expect 1 "^aurorawall accuracy: .*does not list glory" accuracy --glory "$SCENE"
