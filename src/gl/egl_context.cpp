@@ -134,6 +134,10 @@ std::vector<std::pair<EGLDisplay, std::string>> candidateDisplays(int nodeRank)
 {
     std::vector<std::pair<EGLDisplay, std::string>> displays;
     const char* requested = std::getenv("AURORAWALL_EGL_DEVICE");
+    if (requested && (*requested == '\0' || std::strlen(requested) > 4 ||
+                      std::strspn(requested, "0123456789") != std::strlen(requested)))
+        throw std::runtime_error("EGL: AURORAWALL_EGL_DEVICE=" + std::string(requested) +
+                                 " is not a device number (0, 1, 2, ...)");
     auto queryDevices = reinterpret_cast<PFNEGLQUERYDEVICESEXTPROC>(eglGetProcAddress("eglQueryDevicesEXT"));
     if (hasExtension(EGL_NO_DISPLAY, "EGL_EXT_platform_device") && queryDevices) {
         EGLDeviceEXT devices[16];

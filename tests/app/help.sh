@@ -91,6 +91,8 @@ echo "ok   1  aurorawall tables deposition --energy-kev 5 >/dev/full: $(cat "$WO
 expect 0 "--scene" accuracy --help
 expect 2 "^aurorawall accuracy: unrecognised option '--bogus'" accuracy --bogus
 expect 2 "^aurorawall tables: unexpected argument 'junk'" tables deposition --energy-kev 5 junk
+AURORAWALL_EGL_DEVICE=abc expect 1 "^aurorawall accuracy: EGL: AURORAWALL_EGL_DEVICE=abc is not a device number" \
+    accuracy --sky --light-steps 1
 expect 2 "^aurorawall render: unexpected argument 'extra'" render --scene "$SCENE" extra
 expect 2 "^aurorawall accuracy: choose --airmass, --sky, --scene FILE or --glory FILE" accuracy
 expect 2 "^aurorawall accuracy: --glory cannot be combined with --scene" accuracy --glory "$SCENE" --scene "$SCENE"
