@@ -3,6 +3,7 @@
 #include "cli/command_line.h"
 #include "cli/exit_status.h"
 #include "physics/atmosphere/airmass.h"
+#include "common/decimal_number.h"
 #include "common/input_error.h"
 
 #include <algorithm>
@@ -60,36 +61,6 @@ bool isHeader(const std::vector<std::string>& fields)
     return true;
 }
 
-// A decimal number as written in CSV: [+-]digits[.digits][(e|E)[+-]digits], digits on at least one side
-// of the point (strtod alone would also take hexadecimal, "inf", leading blanks, and stop at a NUL).
-bool isDecimalNumber(const std::string& text)
-{
-    size_t i = 0;
-    const auto digits = [&] {
-        const size_t start = i;
-        while (i < text.size() && std::isdigit(static_cast<unsigned char>(text[i])))
-            ++i;
-        return i - start;
-    };
-    if (i < text.size() && (text[i] == '+' || text[i] == '-'))
-        ++i;
-    size_t mantissa = digits();
-    if (i < text.size() && text[i] == '.') {
-        ++i;
-        mantissa += digits();
-    }
-    if (mantissa == 0)
-        return false;
-    if (i < text.size() && (text[i] == 'e' || text[i] == 'E')) {
-        ++i;
-        if (i < text.size() && (text[i] == '+' || text[i] == '-'))
-            ++i;
-        if (digits() == 0)
-            return false;
-    }
-    return i == text.size();
-}
-
 // One CSV line's fields as a ray, or an error message naming the field. Every field must be a finite
 // number within float's range (the closed forms run in float32, as the shader does): |value| <= 3.4e38;
 // H at least float's smallest positive number, 1.401298e-45 (below, H rounds to 0 in float); R >= 0.
@@ -104,7 +75,7 @@ std::optional<AirmassRay> parseRay(const std::vector<std::string>& fields, std::
     for (int i = 0; i < kFieldCount; ++i) {
         const std::string name = "field " + std::to_string(i + 1) + " (" + kFields[i] + ")";
         const std::string& text = fields[i];
-        if (!isDecimalNumber(text)) {
+        if (!common::isDecimalNumber(text)) {
             problem = name + " is not a number: '" + common::echoedInput(text) + "'";
             return std::nullopt;
         }

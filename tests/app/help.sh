@@ -121,6 +121,7 @@ expect 2 "^aurorawall mie: --k must be in \[0, " mie --n 1.33 --k -1 --x 1
 expect 2 "^aurorawall mie: --n must be in .*got nan" mie --n nan --k 0 --x 1
 expect 2 "^aurorawall mie: .*'--x' is missing" mie --n 1.33 --k 0 --x
 expect 2 "^aurorawall mie: --angles-deg: 'a' is not an angle" mie --n 1.33 --k 0 --x 1 --angles-deg 0,a
+expect 2 "^aurorawall mie: --angles-deg: '0x10' is not an angle" mie --n 1.33 --k 0 --x 1 --angles-deg 0x10
 "$AW" mie --n 1.5 --k 0 --x 10 --angles-deg 0,180 >"$WORK/mie.csv" || fail "aurorawall mie: exit status $?"
 [ "$(sed -n 1p "$WORK/mie.csv" | cut -d, -f5)" = qext ] && [ "$(sed -n 2p "$WORK/mie.csv" | cut -d, -f5)" = 2.881998952 ] ||
     fail "aurorawall mie --n 1.5 --k 0 --x 10: Qext is not Wiscombe's 2.881999: $(cat "$WORK/mie.csv")"

@@ -1,11 +1,12 @@
 #include "app/control/command.h"
 
+#include "common/decimal_number.h"
 #include "common/input_error.h"
 
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <regex>
+#include <optional>
 #include <sstream>
 #include <vector>
 
@@ -46,21 +47,12 @@ std::string knownWords()
     return words;
 }
 
-// A decimal number as the protocol has it: an optional sign, digits with an optional point, an
-// optional exponent (strtod alone would also take hexadecimal, "inf" and "nan").
-bool isDecimal(const std::string& word)
-{
-    static const std::regex decimal(R"([+-]?([0-9]+\.?[0-9]*|\.[0-9]+)([eE][+-]?[0-9]+)?)");
-    return std::regex_match(word, decimal);
-}
-
 double number(const std::string& word, const Grammar& g)
 {
-    char* end = nullptr;
-    const double value = std::strtod(word.c_str(), &end);
-    if (!isDecimal(word) || *end != '\0' || !std::isfinite(value))
+    const std::optional<double> value = common::finiteDecimal(word);
+    if (!value)
         throw CommandError(std::string(g.word) + ": '" + common::echoedInput(word) + "' is not a finite number (usage: " + g.usage + ")");
-    return value;
+    return *value;
 }
 
 void checkRange(bool ok, const std::string& message)

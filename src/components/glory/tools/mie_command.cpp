@@ -2,6 +2,7 @@
 
 #include "cli/command_line.h"
 #include "cli/exit_status.h"
+#include "common/decimal_number.h"
 #include "physics/constants.h"
 #include "components/glory/mie/mie_scattering.h"
 
@@ -41,11 +42,10 @@ std::vector<double> parseAngles(const std::string& list, const cli::CommandLine&
     for (;;) {
         const size_t end = list.find(',', begin);
         const std::string word = list.substr(begin, end == std::string::npos ? std::string::npos : end - begin);
-        // strtod's ERANGE is no error here: an overflow gives inf, out of range, and an underflow
-        // (a subnormal such as 4.9e-324) is an angle in range.
-        char* stop = nullptr;
-        const double value = std::strtod(word.c_str(), &stop);
-        if (word.empty() || *stop != '\0' || !(value >= 0.0 && value <= 180.0))
+        // An underflow (a subnormal such as 4.9e-324) is an angle in range.
+        const std::optional<double> angle = common::finiteDecimal(word);
+        const double value = angle.value_or(-1.0);
+        if (!(value >= 0.0 && value <= 180.0))
             throw cli.usageError("--angles-deg: '" + common::echoedInput(word) + "' is not an angle in [0, 180] degrees (in '" + common::echoedInput(list) + "')");
         degrees.push_back(value);
         if (end == std::string::npos) return degrees;
