@@ -24,8 +24,13 @@ std::string oneLine(const std::string& what)
             hint = line.substr(at + 4);
     if (first.rfind("[error] ", 0) == 0)
         first = first.substr(8);
-    if (auto colon = first.find(": "); first.rfind("toml::", 0) == 0 && colon != std::string::npos)
+    // toml11's own function names ("toml::parse_value: ", "parse_ml_basic_string: ") mean nothing to a user.
+    while (first.rfind("toml::", 0) == 0 || first.rfind("parse_", 0) == 0) {
+        const auto colon = first.find(": ");
+        if (colon == std::string::npos)
+            break;
         first = first.substr(colon + 2);
+    }
     while (!hint.empty() && hint.front() == ' ')
         hint.erase(hint.begin());
     return hint.empty() ? first : first + " (" + hint + ")";

@@ -183,6 +183,15 @@ TEST(SceneErrors, CameraAtThePlanetsCentreIsRefused)
               "");
 }
 
+// Bytes that are not UTF-8 inside a string: the line and the problem, without toml11's function names.
+TEST(SceneErrors, InvalidUtf8IsNamedWithItsLine)
+{
+    const std::string error =
+        aurorawall::test::loadErrorOfText("utf8.toml", "[scene]\nname = \"\xff\"\ncomponents = [\"planet\"]\n");
+    EXPECT_NE(error.find("utf8.toml:2: invalid utf8 sequence found"), std::string::npos) << error;
+    EXPECT_EQ(error.find("parse_"), std::string::npos) << error;
+}
+
 TEST(SceneErrors, MissingFile)
 {
     EXPECT_EQ(loadError(kData + "/nope.toml"), kData + "/nope.toml: scene file not found");
