@@ -70,6 +70,14 @@ std::string stagedTilePath(const WallSession& session, int screen)
     return session.options.outDir + "/.tile-" + session.wall.screens[screen].name + ".exr.staged";
 }
 
+// Throws naming the option unless `path` is a file or nothing yet: something else under an output's
+// name (a folder) would fail only after the outputs before it had been written.
+void requireFileOrNothing(const std::string& path, const std::string& option)
+{
+    if (std::filesystem::exists(path) && !std::filesystem::is_regular_file(path))
+        throw std::runtime_error(option + ": " + path + " exists and is not a file");
+}
+
 // Each screen as its target holds it, rounded to half floats (the bands drawn elsewhere arrived as
 // halves already), whoever drew its bands; with writeTiles also written as tile EXRs: all or none.
 // Every rank stages its tiles; only when all have succeeded do they take their final names, else
@@ -89,9 +97,7 @@ int readScreens(WallSession& session, const cluster::MpiWorld& world, bool write
         if (!writeTiles)
             return;
         for (const auto& [screen, image] : images) {
-            const std::string final = tilePath(session, screen);
-            if (std::filesystem::exists(final) && !std::filesystem::is_regular_file(final))
-                throw std::runtime_error("--tiles: " + final + " exists and is not a file");
+            requireFileOrNothing(tilePath(session, screen), "--tiles");
             errno = 0;
             try {
                 io::writeExr(stagedTilePath(session, screen), image);
@@ -197,6 +203,8 @@ int writeOutputs(WallSession& session, const cluster::MpiWorld& world, const clu
             if (!session.statsError.empty())
                 throw std::runtime_error(session.statsError);
             if (options.gather) {
+                requireFileOrNothing(options.outDir + "/wall.exr", "--gather");
+                requireFileOrNothing(options.outDir + "/wall.png", "--gather");
                 io::writeExr(options.outDir + "/wall.exr", canvas);
                 io::writePng(options.outDir + "/wall.png", canvas, session.toneMap);
             }

@@ -167,6 +167,15 @@ late_output_cases() {
         echo "FAIL tiles-blocked: left in the output folder: $(ls -A "$tiles" | tr '\n' ' ')"
         failures=$((failures + 1))
     fi
+    # The same for the gathered wall's PNG: no wall.exr written before it fails.
+    local gathered="$WORK/png-blocked/out"
+    mkdir -p "$gathered/wall.png"
+    expect_error png-blocked 4 1 "--gather: $gathered/wall.png exists and is not a file" --wall "$TINY" \
+        --scene "$SCENE" --frames 1 --out "$gathered" --stats "$WORK/png-blocked/stats.csv"
+    if [ "$(ls -A "$gathered")" != "wall.png" ]; then
+        echo "FAIL png-blocked: left in the output folder: $(ls -A "$gathered" | tr '\n' ' ')"
+        failures=$((failures + 1))
+    fi
 }
 
 case "$set_name" in
