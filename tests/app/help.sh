@@ -152,6 +152,7 @@ expect 2 "^aurorawall plasma: --solver applies only to --device gpu" plasma veri
 expect 0 "--shape" plasma --help
 expect 2 "^aurorawall plasma: --k-lambda-d must be in \[0.35, 0.7\] \(got 0.2\)" plasma verify --case landau --k-lambda-d 0.2
 expect 2 "^aurorawall plasma: --k-lambda-d applies only to --case landau" plasma verify --case boris --k-lambda-d 0.4
+expect 2 "^aurorawall plasma: --dx-lambda-d applies only to --case heating" plasma verify --case boris --dx-lambda-d 2
 expect 2 "^aurorawall plasma: --shape: unknown value 'ngp' \(allowed: cic, tsc\)" plasma verify --case heating --shape ngp
 expect 2 "^aurorawall plasma: --shape applies only to --case heating" plasma verify --case landau --shape tsc
 # plasma verify --history: a folder that is not there is a runtime failure before any case runs; into

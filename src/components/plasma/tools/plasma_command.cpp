@@ -196,6 +196,8 @@ void checkOptions(const cli::CommandLine& cli, VerifyOptions& o)
         throw cli.usageError("--wc-dt must be in [" + number(pic::kMinVerifyWcDt) + ", " +
                              number(pic::kMaxVerifyWcDt) + "] (got " + number(o.wcDt) + ")");
     if (cli.given("dx-lambda-d")) {
+        if (o.chosen != Case::Heating && o.chosen != Case::All)
+            throw cli.usageError("--dx-lambda-d applies only to --case heating (or all)");
         if (!(o.dxOverDebye >= pic::kMinHeatingDxDebye && o.dxOverDebye <= pic::kMaxHeatingDxDebye))
             throw cli.usageError("--dx-lambda-d must be in [" + number(pic::kMinHeatingDxDebye) + ", " +
                                  number(pic::kMaxHeatingDxDebye) + "] (got " + number(o.dxOverDebye) + ")");
