@@ -171,7 +171,7 @@ echo "ok   0  aurorawall plasma verify --case two-stream --history DIR: two-stre
 expect 0 "--every" plasma soak --help
 expect 2 "^aurorawall plasma soak: the option '--scene' is required but missing" plasma soak
 expect 2 "^aurorawall plasma soak: --steps must be >= 1" plasma soak --scene "$SRC_DIR/config/scenes/plasma-curls.toml" --steps 0
-expect 2 "^aurorawall plasma soak: .*config/scenes/quiet-arc.toml: the scene does not list plasma" \
+expect 1 "^aurorawall plasma soak: .*config/scenes/quiet-arc.toml: the scene does not list plasma" \
     plasma soak --scene "$SRC_DIR/config/scenes/quiet-arc.toml" --steps 1
 expect 1 "^aurorawall plasma soak: .*missing.toml" plasma soak --scene missing.toml
 expect 2 "^aurorawall plasma soak: --device: unknown value 'tpu' \(allowed: cpu, gpu\)" \

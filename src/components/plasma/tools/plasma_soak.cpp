@@ -149,7 +149,7 @@ int runPlasmaSoakCommand(int argc, char** argv, std::ostream& out, std::ostream&
             throw cli.usageError("--every must be >= 1 (got " + std::to_string(every) + ")");
         const scene::Scene scene = components::loadScene(sceneFile);
         if (!scene.has("plasma"))
-            throw cli.usageError(sceneFile + ": the scene does not list plasma");
+            throw std::runtime_error(sceneFile + ": the scene does not list plasma");
         const std::vector<SoakSimulation> runs = soakSimulations(scene.settings<components::plasma::Settings>());
 
         out << "simulation,step,time_s,field_energy_j,kinetic_energy_j,total_energy_j,max_abs_e_v_per_m,"
