@@ -151,23 +151,23 @@ void declareOptions(cli::CommandLine& cli, AccuracyOptions& o)
         cli.add()(t.option, po::value(&scene.sceneFile), t.help);
     cli.add()
         ("repeat", po::value(&shader.airmassRepeat)->default_value(shader.airmassRepeat),
-         "--airmass: airmass evaluations per shader invocation")
+         "--airmass: airmass evaluations per shader invocation (1 to 65536)")
         ("copies", po::value(&shader.copies),
          "--airmass, --sky: work per dispatch in copies of the ray set (default: 1 on llvmpipe, 64 on a GPU)")
-        ("view-steps", po::value(&shader.viewSteps)->default_value(shader.viewSteps), "--sky: outer march steps M")
+        ("view-steps", po::value(&shader.viewSteps)->default_value(shader.viewSteps), "--sky: outer march steps M (1 to 4096)")
         ("light-steps", po::value(&shader.lightSteps)->default_value(shader.lightSteps),
-         "--sky: nested-march steps K per light")
+         "--sky: nested-march steps K per light (1 to 4096)")
         ("wall", po::value(&scene.wallFile),
          "--scene: wall file whose single-screen equivalent sets the field of view (default "
          "config/walls/single.toml)")
-        ("size", po::value(&o.size)->default_value(o.size), "--scene: render size WxH in pixels")
+        ("size", po::value(&o.size)->default_value(o.size), "--scene: render size WxH in pixels (at most 4096x4096 in all, and what the GL device can draw)")
         ("pixels", po::value(&scene.pixels)->default_value(scene.pixels), "--scene: pixels of the CPU reference")
         ("frame", po::value(&scene.frame)->default_value(scene.frame),
          "--scene: the scene's frame K as render draws it (its start time plus K time steps, the camera "
          "moved along its path)")
         ("runs", po::value(&scene.runs)->default_value(scene.runs),
          "--scene: timed frames per setting after one warm-up (the median is reported)")
-        ("threads", po::value(&scene.threads)->default_value(scene.threads), "--scene: CPU reference threads")
+        ("threads", po::value(&scene.threads)->default_value(scene.threads), "--scene: CPU reference threads (1 to 1024)")
         ("reference-step-km", po::value(&scene.referenceStepKm)->default_value(scene.referenceStepKm),
          "--scene: CPU reference step where a curtain is in reach, 0.001 to 0.25 km")
         ("feature-costs", po::bool_switch(&scene.featureCosts),
