@@ -57,8 +57,10 @@ glm::dvec3 readPoint(const TableReader& t, const std::string& prefix, double pla
 glm::dvec3 readCameraPosition(const TableReader& t, double planetRadiusKm)
 {
     const glm::dvec3 position = readPoint(t, "", planetRadiusKm);
-    if (!(glm::length(position) >= 1.0)) {
-        const std::string key = t.has("position_km") ? "position_km" : "position_radii";
+    if (!(glm::length(position) >= 1.0 - 1e-9)) { // the lowest altitude_km gives 1 km to rounding
+        const std::string key = t.has("position_km")      ? "position_km"
+                                : t.has("position_radii") ? "position_radii"
+                                                          : "altitude_km";
         std::ostringstream got;
         got << glm::length(position);
         t.fail(key, "must be at least 1 km from the planet's centre (got " + got.str() + " km)");
