@@ -20,6 +20,11 @@
 
 namespace aurorawall::app {
 
+std::string tilePath(const std::string& outDir, const std::string& screenName)
+{
+    return outDir + "/tile-" + screenName + ".exr";
+}
+
 namespace {
 
 // Screens travel to the master as half-float RGB (io/half_pixels.h): a header (screen, width, height),
@@ -63,19 +68,11 @@ io::Image assembleWall(const wall::Wall& wall, const std::vector<char>& bytes)
 // rank has written its tiles.
 std::string tilePath(const WallSession& session, int screen)
 {
-    return session.options.outDir + "/tile-" + session.wall.screens[screen].name + ".exr";
+    return app::tilePath(session.options.outDir, session.wall.screens[screen].name);
 }
 std::string stagedTilePath(const WallSession& session, int screen)
 {
     return session.options.outDir + "/.tile-" + session.wall.screens[screen].name + ".exr.staged";
-}
-
-// Throws naming the option unless `path` is a file or nothing yet: something else under an output's
-// name (a folder) would fail only after the outputs before it had been written.
-void requireFileOrNothing(const std::string& path, const std::string& option)
-{
-    if (std::filesystem::exists(path) && !std::filesystem::is_regular_file(path))
-        throw std::runtime_error(option + ": " + path + " exists and is not a file");
 }
 
 // Each screen as its target holds it, rounded to half floats (the bands drawn elsewhere arrived as
@@ -97,7 +94,6 @@ int readScreens(WallSession& session, const cluster::MpiWorld& world, bool write
         if (!writeTiles)
             return;
         for (const auto& [screen, image] : images) {
-            requireFileOrNothing(tilePath(session, screen), "--tiles");
             errno = 0;
             try {
                 io::writeExr(stagedTilePath(session, screen), image);
@@ -203,8 +199,6 @@ int writeOutputs(WallSession& session, const cluster::MpiWorld& world, const clu
             if (!session.statsError.empty())
                 throw std::runtime_error(session.statsError);
             if (options.gather) {
-                requireFileOrNothing(options.outDir + "/wall.exr", "--gather");
-                requireFileOrNothing(options.outDir + "/wall.png", "--gather");
                 io::writeExr(options.outDir + "/wall.exr", canvas);
                 io::writePng(options.outDir + "/wall.png", canvas, session.toneMap);
             }

@@ -36,6 +36,9 @@ private:
     std::string csv_ = "frame,time_s\n";
 };
 
+// The tile EXR that --tiles writes for the screen named `screenName` into outDir.
+std::string tilePath(const std::string& outDir, const std::string& screenName);
+
 // Returns the exit status every rank agrees on: 0 if every file was written, else 1 (rank 0 has
 // printed why; a movie frame that could not be written, session.movieError, counts). The master prints the statistics' summary either way.
 int writeOutputs(WallSession& session, const cluster::MpiWorld& world, const cluster::FrameStats& stats);

@@ -1,5 +1,6 @@
 #include "app/wall_session.h"
 
+#include "app/wall_output.h"
 #include "cli/exit_status.h"
 #include "cluster/rank_groups.h"
 #include "components/registry.h"
@@ -79,7 +80,13 @@ void configure(const cluster::MpiWorld& world, int argc, char** argv, WallSessio
         for (const auto& [path, option] : files)
             if (!path.empty())
                 io::ensureWritableFile(path, option);
+        if (options.gather)
+            for (const char* name : {"/wall.exr", "/wall.png"})
+                io::ensureWritableFile(options.outDir + name, "--gather");
     }
+    if (options.tiles) // each rank writes its own screens' tiles
+        for (int screen : s.wall.screensOfRank(world.rank()))
+            io::ensureWritableFile(tilePath(options.outDir, s.wall.screens[screen].name), "--tiles");
     s.exposure = options.exposure > 0 ? options.exposure : s.scene.exposure;
     s.toneMap = toneMapFor(options, s.exposure);
     s.balanced = options.balance == Balance::On || (options.balance == Balance::Auto && world.size() > 1);

@@ -44,6 +44,8 @@ void ensureWritableFile(const std::string& path, const std::string& optionName)
     std::error_code error;
     if (std::filesystem::is_directory(path, error))
         throw common::InputError(where + "is a folder, not a file");
+    if (std::filesystem::exists(path, error) && !std::filesystem::is_regular_file(path, error))
+        throw common::InputError(where + "exists and is not a file");
     const std::filesystem::path parent = std::filesystem::path(path).parent_path();
     const std::string dir = parent.empty() ? "." : parent.string();
     if (!std::filesystem::is_directory(dir, error))

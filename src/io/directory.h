@@ -11,7 +11,7 @@ namespace aurorawall::io {
 void ensureWritableDirectory(const std::string& dir, const std::string& optionName);
 
 // Checks that the file `path` can be written: its folder exists (it is not created) and files can
-// be created in it, and `path` is not a folder. Throws aurorawall::InputError with one line naming
+// be created in it, and `path` is nothing yet or a regular file (not a folder, a device or a pipe). Throws aurorawall::InputError with one line naming
 // the option, the path and the reason, e.g. "--stats /nonexist/s.csv: folder /nonexist does not exist".
 void ensureWritableFile(const std::string& path, const std::string& optionName);
 

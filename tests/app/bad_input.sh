@@ -158,19 +158,19 @@ late_output_cases() {
         --scene "$SCENE" --frames 3 --record-path /proc/flight.toml
     expect_error cost-map-no-folder 4 1 "--cost-map $WORK/nowhere/c.png: folder $WORK/nowhere does not exist" \
         --wall "$TINY" --scene "$SCENE" --frames 3 --cost-map "$WORK/nowhere/c.png"
-    # One screen's tile name taken by a folder: no tile written (all or none) and nothing staged left.
+    # One screen's tile name taken by a folder: refused before the first frame, nothing written.
     local tiles="$WORK/tiles-blocked/out"
     mkdir -p "$tiles/tile-r1c0.exr"
-    expect_error tiles-blocked 4 1 "--tiles: $tiles/tile-r1c0.exr exists and is not a file" --wall "$TINY" \
+    expect_error tiles-blocked 4 1 "--tiles $tiles/tile-r1c0.exr: is a folder, not a file" --wall "$TINY" \
         --scene "$SCENE" --frames 1 --tiles --out "$tiles" --stats "$WORK/tiles-blocked/stats.csv"
     if [ "$(ls -A "$tiles")" != "tile-r1c0.exr" ]; then
         echo "FAIL tiles-blocked: left in the output folder: $(ls -A "$tiles" | tr '\n' ' ')"
         failures=$((failures + 1))
     fi
-    # The same for the gathered wall's PNG: no wall.exr written before it fails.
+    # The same for the gathered wall's PNG: no wall.exr written either.
     local gathered="$WORK/png-blocked/out"
     mkdir -p "$gathered/wall.png"
-    expect_error png-blocked 4 1 "--gather: $gathered/wall.png exists and is not a file" --wall "$TINY" \
+    expect_error png-blocked 4 1 "--gather $gathered/wall.png: is a folder, not a file" --wall "$TINY" \
         --scene "$SCENE" --frames 1 --out "$gathered" --stats "$WORK/png-blocked/stats.csv"
     if [ "$(ls -A "$gathered")" != "wall.png" ]; then
         echo "FAIL png-blocked: left in the output folder: $(ls -A "$gathered" | tr '\n' ' ')"

@@ -7,6 +7,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <sys/stat.h>
 #include <unistd.h>
 
 using namespace aurorawall::io;
@@ -77,4 +78,26 @@ TEST(EnsureWritableDirectory, ReadOnlyFolderIsRejected)
         GTEST_SKIP() << "this user may write into read-only folders (root)";
     const std::string message = errorFor(dir.path().string());
     EXPECT_EQ(message, "--out " + dir.path().string() + ": directory is not writable (Permission denied)");
+}
+
+// An output file's path may be nothing yet or a regular file; a folder, a device or a pipe is refused
+// before anything is written, naming the option and the path.
+TEST(EnsureWritableFile, OnlyNothingOrARegularFileIsWritable)
+{
+    TempDir dir;
+    EXPECT_NO_THROW(ensureWritableFile(dir.file("new.png"), "--gather"));
+    std::ofstream(dir.file("old.png")) << "an older image";
+    EXPECT_NO_THROW(ensureWritableFile(dir.file("old.png"), "--gather"));
+    const auto message = [](const std::string& path) {
+        try {
+            ensureWritableFile(path, "--gather");
+        } catch (const InputError& e) {
+            return std::string(e.what());
+        }
+        return std::string();
+    };
+    fs::create_directory(dir.file("folder.png"));
+    EXPECT_EQ(message(dir.file("folder.png")), "--gather " + dir.file("folder.png") + ": is a folder, not a file");
+    ASSERT_EQ(::mkfifo(dir.file("pipe.png").c_str(), 0600), 0);
+    EXPECT_EQ(message(dir.file("pipe.png")), "--gather " + dir.file("pipe.png") + ": exists and is not a file");
 }
