@@ -1,8 +1,8 @@
 #include "app/render_options.h"
 
+#include "app/control/control_server.h"
 #include "cli/command_line.h"
 
-#include <arpa/inet.h>
 #include <cmath>
 
 namespace aurorawall::app {
@@ -133,9 +133,11 @@ void checkRenderOptions(const cli::CommandLine& cli, RenderOptions& o)
     if (cli.given("web-port"))
         check(o.webPort >= 0 && o.webPort <= 65535, "--web-port must be in [0, 65535]");
     if (cli.given("control-port") || cli.given("web-port")) {
-        in_addr address{};
-        check(::inet_pton(AF_INET, o.controlBind.c_str(), &address) == 1,
-              "--control-bind " + o.controlBind + ": not an IPv4 address (e.g. 127.0.0.1 or 0.0.0.0)");
+        try { // an address at all, before whether it needs a token
+            control::bindAddressOf(o.controlBind);
+        } catch (const common::UsageError& e) {
+            check(false, e.what());
+        }
         check(o.controlBind.rfind("127.", 0) == 0 || cli.given("control-token-file"),
               "--control-bind " + o.controlBind + " opens the control " +
                   (cli.given("control-port") ? "port" : "console") +

@@ -112,6 +112,7 @@ expect 1 "^aurorawall accuracy: .*nonexistent-scene\.toml" accuracy --scene "$WO
 grep -Eq "^ +mie " <<<"$top" || fail "aurorawall --help does not list the command 'mie'"
 expect 0 "--angles-deg" mie --help
 expect 2 "^aurorawall render: --control-bind 0.0.0.0 opens the control port beyond this machine: it needs --control-token-file" render --wall "$WALLS/single.toml" --scene "$SCENE" --control-port 0 --control-bind 0.0.0.0
+expect 2 "^aurorawall render: --control-bind notanip: not an IPv4 address" render --wall "$WALLS/single.toml" --scene "$SCENE" --control-port 0 --control-bind notanip
 expect 2 "^aurorawall render: --control-token-file needs --control-port" render --wall "$WALLS/single.toml" --scene "$SCENE" --control-token-file /nonexistent
 expect 2 "^aurorawall mie: unrecognised option '--bogus'" mie --n 1.33 --k 0 --x 1 --bogus
 expect 2 "^aurorawall mie: --x must be in \[0.0001, " mie --n 1.33 --k 0 --x 0

@@ -60,6 +60,14 @@ std::string readControlToken(const std::string& file)
     return token;
 }
 
+in_addr bindAddressOf(const std::string& bindAddress)
+{
+    in_addr address{};
+    if (::inet_pton(AF_INET, bindAddress.c_str(), &address) != 1)
+        throw common::UsageError("--control-bind " + bindAddress + ": not an IPv4 address (e.g. 127.0.0.1 or 0.0.0.0)");
+    return address;
+}
+
 ControlServer::ControlServer(const std::string& bindAddress, int port, std::string token, double idleTimeoutS,
                              double linesPerSecond)
     : address_(bindAddress), token_(std::move(token)), idleTimeoutS_(idleTimeoutS), linesPerSecond_(linesPerSecond)
@@ -67,8 +75,7 @@ ControlServer::ControlServer(const std::string& bindAddress, int port, std::stri
     sockaddr_in addr{};
     addr.sin_family = AF_INET;
     addr.sin_port = htons(static_cast<std::uint16_t>(port));
-    if (::inet_pton(AF_INET, bindAddress.c_str(), &addr.sin_addr) != 1)
-        throw common::UsageError("--control-bind " + bindAddress + ": not an IPv4 address (e.g. 127.0.0.1 or 0.0.0.0)");
+    addr.sin_addr = bindAddressOf(bindAddress);
     listenFd_ = ::socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0);
     const int on = 1;
     if (listenFd_ < 0 || ::setsockopt(listenFd_, SOL_SOCKET, SO_REUSEADDR, &on, sizeof on) != 0 ||

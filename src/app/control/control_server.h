@@ -22,6 +22,8 @@
 #include "app/control/command_channel.h"
 
 #include <cstddef>
+#include <netinet/in.h>
+
 #include <cstdint>
 #include <map>
 #include <string>
@@ -33,6 +35,10 @@ namespace aurorawall::app::control {
 // InputError naming the file if it cannot be read, is readable or writable by anyone but its owner,
 // or its first line is empty.
 std::string readControlToken(const std::string& file);
+
+// The IPv4 address --control-bind names (dotted quad), for the control port and the web console alike.
+// Throws UsageError naming the option otherwise.
+in_addr bindAddressOf(const std::string& bindAddress);
 
 class ControlServer : public CommandChannel {
 public:

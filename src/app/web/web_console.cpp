@@ -1,6 +1,7 @@
 #include "app/web/web_console.h"
 
 #include "app/console_view.h"
+#include "app/control/control_server.h"
 #include "app/web/command_mailbox.h"
 #include "app/web/downloads.h"
 #include "app/web/movie_archive.h"
@@ -10,7 +11,6 @@
 
 #include <httplib.h>
 
-#include <arpa/inet.h>
 
 #include <algorithm>
 #include <atomic>
@@ -282,9 +282,7 @@ WebConsole::WebConsole(WebSettings settings) : impl_(std::make_unique<Impl>())
 {
     Impl& w = *impl_;
     w.settings = std::move(settings);
-    in_addr probe{};
-    if (::inet_pton(AF_INET, w.settings.bindAddress.c_str(), &probe) != 1)
-        throw common::UsageError("--control-bind " + w.settings.bindAddress + ": not an IPv4 address (e.g. 127.0.0.1 or 0.0.0.0)");
+    control::bindAddressOf(w.settings.bindAddress);
     httplib::Server& s = w.server;
     // Bounded work per client: 8 threads, short timeouts, small bodies (413 beyond).
     s.new_task_queue = [] { return new httplib::ThreadPool(8); };
