@@ -75,15 +75,13 @@ std::optional<AirmassRay> parseRay(const std::vector<std::string>& fields, std::
     for (int i = 0; i < kFieldCount; ++i) {
         const std::string name = "field " + std::to_string(i + 1) + " (" + kFields[i] + ")";
         const std::string& text = fields[i];
-        if (!common::isDecimalNumber(text)) {
-            problem = name + " is not a number: '" + common::echoedInput(text) + "'";
+        const std::optional<double> value = common::finiteDecimal(text);
+        if (!value) {
+            problem = name + (common::isDecimalNumber(text) ? " is not finite: '" : " is not a number: '") +
+                      common::echoedInput(text) + "'";
             return std::nullopt;
         }
-        values[i] = std::strtod(text.c_str(), nullptr);
-        if (!std::isfinite(values[i])) {
-            problem = name + " is not finite: '" + common::echoedInput(text) + "'";
-            return std::nullopt;
-        }
+        values[i] = *value;
         if (!(std::abs(values[i]) <= std::numeric_limits<float>::max())) {
             problem = name + " must be within float's range, |value| <= 3.40282347e+38 (got '" + common::echoedInput(text) + "')";
             return std::nullopt;
