@@ -289,6 +289,7 @@ vec3 curtainEnergyExact(vec3 o, vec3 d, int c, CurtainCoordinates cc, real tm, v
     real run = 0.0;
     real q = alongMode ? mod(cc.s + sRate * (span.x - tm) + uCurtainDetail[c].x, stripKm) : cc.u + uRate * (span.x - tm);
     vec4 endCuts = endReachCuts(cc, tm, uRate, sRate, reach, lengthKm);
+    FluxColumns columns = fluxColumns(c, alongMode);
     // The two columns' values at the piece's start, of the pair from column `held` (none: −1e30).
     real held = -1.0e30;
     vec3 lo = vec3(0.0);
@@ -329,13 +330,13 @@ vec3 curtainEnergyExact(vec3 o, vec3 d, int c, CurtainCoordinates cc, real tm, v
                 bool down = held == cell + 1.0;
                 vec3 kept = down ? lo : loNext;
                 if (!down && held != cell - 1.0)
-                    kept = fluxColumnPoint(c, alongMode, cell, q);
-                vec3 read = fluxColumnPoint(c, alongMode, down ? cell : cell + 1.0, q);
+                    kept = fluxColumnPoint(columns, cell, q);
+                vec3 read = fluxColumnPoint(columns, down ? cell : cell + 1.0, q);
                 lo = down ? read : kept;
                 loNext = down ? kept : read;
             }
-            vec3 hi = fluxColumnPoint(c, alongMode, cell, qb);
-            vec3 hiNext = fluxColumnPoint(c, alongMode, cell + 1.0, qb);
+            vec3 hi = fluxColumnPoint(columns, cell, qb);
+            vec3 hiNext = fluxColumnPoint(columns, cell + 1.0, qb);
             real dq = qb - q;
             vec3 column = bilinearPiece(lo, loNext, hi, hiNext, q, dq, clamp(p - cell, 0.0, 1.0),
                                         clamp(pb - cell, 0.0, 1.0), qCellKm);

@@ -31,6 +31,7 @@ struct FluxTable {
     real cells;    // cells along p (each entry's strip holds them and two ghosts)
     real tiles;    // entries per layer
     real firstLayer;
+    real width;    // texels in a row of the texture
 };
 
 FluxTable fluxTable(bool along)
@@ -43,6 +44,7 @@ FluxTable fluxTable(bool along)
     t.cells = along ? ny : nx;
     t.tiles = along ? uFluxLayout.w : uFluxLayout.z;
     t.firstLayer = along ? ceil((ny + 1.0) / uFluxLayout.z) : 0.0; // the rows follow the columns' layers
+    t.width = max(nx, ny) + 2.0;
     return t;
 }
 
@@ -56,8 +58,7 @@ vec3 fluxTableAt(FluxTable t, real p, real frameY, real q)
     real entry = below + 1.0;
     real tile = floor(entry / t.tiles);
     real x = (entry - tile * t.tiles) * (t.cells + 2.0) + p + 1.5; // the ghost texel, then cell p
-    real width = max(uFluxLayout.x, uFluxLayout.y) + 2.0;
-    vec4 texel = textureLod(uFluxTables, vec3(x / width, frameY, t.firstLayer + tile), 0.0);
+    vec4 texel = textureLod(uFluxTables, vec3(x / t.width, frameY, t.firstLayer + tile), 0.0);
     COUNT_WORK(w, 1);
     real centre = t.originKm + (below + 0.5) * t.cellKm;
     return vec3(fluxColumnValue(texel, centre, q - centre, t.cellKm), texel.z + texel.w * (q - centre) / t.cellKm);
@@ -136,19 +137,39 @@ real fluxCellAlongKm()
     return uFluxStrip.x / uFluxLayout.x;
 }
 
+// What fluxColumnPoint reads of curtain c's detail, fixed over a step: the table along q (along: the rows,
+// else the columns), the frames' blend, and the simulation km per curtain km along q. Built once, outside
+// the loop over pieces (llvmpipe's compiler does not hoist what does not change in a loop).
+struct FluxColumns {
+    FluxTable table;
+    real frameY;
+    real scale;
+    real halfWidth; // the strip's half width across, simulation km
+    bool along;
+};
+
+FluxColumns fluxColumns(int c, bool along)
+{
+    FluxColumns f;
+    f.table = fluxTable(along);
+    f.frameY = fluxFrameY(c);
+    f.scale = along ? 1.0 : uCurtainDetail[c].z;
+    f.halfWidth = 0.5 * uFluxStrip.y;
+    f.along = along;
+    return f;
+}
+
 // The running integrals and the flux (A, B, F) of the detail's column `cell` (an integer, counted
 // periodically as the frames are) at q (curtain km: along, s reduced into the strip's period; across, u),
 // in curtainIntegralAt's units times its peak scale: across, outside the strip, the integrals at its edge
 // and no flux. One fetch.
-vec3 fluxColumnPoint(int c, bool along, real cell, real q)
+vec3 fluxColumnPoint(FluxColumns f, real cell, real q)
 {
-    FluxTable t = fluxTable(along);
-    real halfWidth = 0.5 * uFluxStrip.y;
-    real scale = along ? 1.0 : uCurtainDetail[c].z; // simulation km per curtain km along q
-    real qSim = q * scale;
-    vec3 v = fluxTableAt(t, mod(cell, t.cells), fluxFrameY(c), along ? qSim : clamp(qSim, -halfWidth, halfWidth));
-    v.z = along || abs(qSim) < halfWidth ? v.z : 0.0;
-    return uFluxStrip.w * vec3(v.x / scale, v.y / (scale * scale), v.z);
+    real qSim = q * f.scale;
+    vec3 v = fluxTableAt(f.table, mod(cell, f.table.cells), f.frameY,
+                         f.along ? qSim : clamp(qSim, -f.halfWidth, f.halfWidth));
+    v.z = f.along || abs(qSim) < f.halfWidth ? v.z : 0.0;
+    return uFluxStrip.w * vec3(v.x / f.scale, v.y / (f.scale * f.scale), v.z);
 }
 
 // A piece of a step's path between the centres of two neighbouring columns i and j = i + 1, over which q runs
