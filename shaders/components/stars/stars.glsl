@@ -30,13 +30,17 @@ float starHash(vec2 cell, float salt)
 // sky), kStarCells/2 in latitude over π (2π/kStarCells radians each).
 const float kStarCells = 1024.0;
 
-// The light of the star of cell `cell` (wrapped in longitude; none beyond the poles) at the point
-// `grid` of the cell grid, at latitude angle `latitude` (radians), Gaussian width sigma (radians).
+// Whether cell `cell` (wrapped in longitude; none beyond the poles) holds a star.
+bool holdsStar(vec2 cell)
+{
+    return cell.y >= 0.0 && cell.y < 0.5 * kStarCells && starHash(vec2(mod(cell.x, 2.0 * kStarCells), cell.y), 0.0) <= uStarDensity;
+}
+
+// The light of the star of cell `cell` (one that holdsStar) at the point `grid` of the cell grid,
+// at latitude angle `latitude` (radians), Gaussian width sigma (radians).
 vec3 starOfCell(vec2 cell, vec2 grid, float latitude, float sigma)
 {
     vec2 wrapped = vec2(mod(cell.x, 2.0 * kStarCells), cell.y);
-    if (cell.y < 0.0 || cell.y >= 0.5 * kStarCells || starHash(wrapped, 0.0) > uStarDensity)
-        return vec3(0.0);
     vec2 centre = cell + 0.25 + 0.5 * vec2(starHash(wrapped, 1.0), starHash(wrapped, 2.0));
     vec2 offsetRad = (grid - centre) * vec2(kPi / kStarCells * cos(latitude), 2.0 * kPi / kStarCells);
     float magnitude = pow(starHash(wrapped, 3.0), 4.0); // few bright stars, many faint ones
@@ -52,13 +56,28 @@ vec3 starRadiance(vec3 d)
     float latitude = angles.y * kPi - 0.5 * kPi;
     float sigma = max(uPixelAngle, 2e-4);
     // The cells within 3σ, at most 4 each way (beyond, near the poles, where longitude cells narrow,
-    // or at pixels wider than a cell, a star's light is cut at 4 cells).
+    // or at pixels wider than a cell, a star's light is cut at 4 cells), row by row.
     int reachLat = min(4, 1 + int(3.0 * sigma / (2.0 * kPi / kStarCells)));
     int reachLon = min(4, 1 + int(3.0 * sigma / (kPi / kStarCells * max(cos(latitude), 1e-3))));
     vec3 radiance = vec3(0.0);
-    for (int j = -reachLat; j <= reachLat; ++j)
-        for (int i = -reachLon; i <= reachLon; ++i)
-            radiance += starOfCell(cell + vec2(i, j), grid, latitude, sigma);
+    // Few cells hold a star, and a SIMD group pays for a branch's body whenever any of its lanes takes it
+    // (llvmpipe even when none does), so the inner loop only finds the next cell that holds one; its light
+    // is added outside that loop, which a lane leaves once a star. The same cells in the same order as
+    // one loop over all of them: the same sum.
+    int i = -reachLon;
+    int j = -reachLat;
+    while (j <= reachLat) {
+        for (; j <= reachLat; j = i == -reachLon ? j + 1 : j) {
+            if (holdsStar(cell + vec2(i, j)))
+                break;
+            i = i < reachLon ? i + 1 : -reachLon;
+        }
+        if (j > reachLat)
+            break;
+        radiance += starOfCell(cell + vec2(i, j), grid, latitude, sigma);
+        i = i < reachLon ? i + 1 : -reachLon;
+        j = i == -reachLon ? j + 1 : j;
+    }
     return radiance;
 }
 
