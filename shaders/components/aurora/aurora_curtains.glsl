@@ -68,21 +68,28 @@ CurtainCoordinates curtainCoordinates(int c, int i, vec3 n)
     vec4 b = polylinePoint(c, j + 1);
     vec3 normal = segmentNormal(vec3(a), vec3(b));
     vec4 p = projectOnSegmentWithNormal(vec3(a), normal, b.w - a.w, n, uPlanetRadiusKm);
+    // At most 6 jumps. The test ends the loop's body: a SIMD group runs a body as long as any lane does, and
+    // llvmpipe runs it once more where the test opens it.
     int direction = 0;
-    for (int jump = 0; jump < 6; ++jump) {
-        int step = int(floor(p.x / max(p.y, 1e-6)));
-        int next = clamp(j + step, 0, last);
-        if (next == j || step * direction < 0)
-            break;
-        direction = step;
-        // A jump to the next or previous segment keeps the point it shares with this one.
-        vec4 start = next == j + 1 ? b : polylinePoint(c, next);
-        b = next == j - 1 ? a : polylinePoint(c, next + 1);
-        a = start;
-        j = next;
-        normal = segmentNormal(vec3(a), vec3(b));
-        p = projectOnSegmentWithNormal(vec3(a), normal, b.w - a.w, n, uPlanetRadiusKm);
-    }
+    int step = int(floor(p.x / max(p.y, 1e-6)));
+    int next = clamp(j + step, 0, last);
+    bool jumping = next != j;
+    int jump = 0;
+    do {
+        if (jumping) {
+            direction = step;
+            // A jump to the next or previous segment keeps the point it shares with this one.
+            vec4 start = next == j + 1 ? b : polylinePoint(c, next);
+            b = next == j - 1 ? a : polylinePoint(c, next + 1);
+            a = start;
+            j = next;
+            normal = segmentNormal(vec3(a), vec3(b));
+            p = projectOnSegmentWithNormal(vec3(a), normal, b.w - a.w, n, uPlanetRadiusKm);
+            step = int(floor(p.x / max(p.y, 1e-6)));
+            next = clamp(j + step, 0, last);
+            jumping = ++jump < 6 && next != j && step * direction >= 0;
+        }
+    } while (jumping);
     CurtainCoordinates best;
     best.distance = length(vec2(p.z, p.w));
     best.u = p.z;
@@ -264,7 +271,8 @@ vec4 endReachCuts(CurtainCoordinates cc, real tm, real uRate, real sRate, real r
 //  - the path meets the circle of the curtain's reach around either end (endReachCuts), so that each
 //    piece lies wholly within or beyond the reach there.
 // A piece reads the two columns at its end (2 fetches), and the next one starts from those, reading a third
-// where it has crossed into the next cell: about 3 fetches a cell crossed. Where p would cross more than 64
+// where it has crossed into the next cell: about 3 fetches a cell crossed. Where it holds no columns at its
+// start, it reads them first, as the end of a piece of no length. Where p would cross more than 64
 // centres, the pieces take `stride` cells at a time, each with the two columns around its middle (λ kept
 // in [0, 1]): no worse than a column at its middle.
 vec3 curtainEnergyExact(vec3 o, vec3 d, int c, CurtainCoordinates cc, real tm, vec2 span, real uRate, real sRate,
@@ -297,69 +305,84 @@ vec3 curtainEnergyExact(vec3 o, vec3 d, int c, CurtainCoordinates cc, real tm, v
     vec3 energy = vec3(0.0);
     vec2 runSums = vec2(0.0); // the run's summed runShare
     real ta = span.x;
-    // At most 64 runs, 65 strides, 2 band edges, 4 reach circles and the strip's periods: the bound never binds.
-    for (int piece = 0; piece < 256 && ta < span.y; ++piece) {
-        bool inBand = ta >= band.x && ta < band.y;
-        real pRateNow = inBand ? pRate : 0.0;
-        real tCentre = pRateNow > 0.0 ? ta + ((group + 1.0) * stride - p) / pRateNow
-                     : pRateNow < 0.0 ? ta + (group * stride - p) / pRateNow : 1.0e30;
-        real tBand = ta < band.x ? band.x : ta < band.y ? band.y : 1.0e30;
-        real tRun = run + 1.0 >= runs ? span.y : span.x + (run + 1.0) * runKm;
-        real tWrap = !alongMode || sRate == 0.0 ? 1.0e30 : ta + ((sRate > 0.0 ? stripKm : 0.0) - q) / sRate;
-        real tEnd = 1.0e30;
-        for (int k = 0; k < 4; ++k)
-            tEnd = endCuts[k] > ta ? min(tEnd, endCuts[k]) : tEnd;
-        real tb = max(min(min(min(tCentre, tBand), min(tRun, tWrap)), min(tEnd, span.y)), ta);
-        real len = tb - ta;
-        bool centre = tCentre <= tb;
-        bool wrap = tWrap <= tb;
-        real pb = centre ? (pRateNow > 0.0 ? group + 1.0 : group) * stride : p + pRateNow * len;
-        real qb = wrap ? (sRate > 0.0 ? stripKm : 0.0) : q + rate * len;
-        real tMid = ta + 0.5 * len;
-        real u = cc.u + uRate * (tMid - tm);
-        real s = cc.s + sRate * (tMid - tm);
-        // Along, nor beyond the strip.
-        bool emits = withinReach(s, u, lengthKm, reach) && (inBand || !alongMode);
-        if (!emits) {
-            held = -1.0e30;
-        } else if (len > 0.0) {
-            COUNT_WORK(z, 1);
+    // At most 64 runs, 65 strides, 2 band edges, 4 reach circles, the strip's periods and a first read after
+    // each of these but the runs and strides: the bound never binds.
+    for (int piece = 0; piece < 256 && ta < span.y;) {
+        // The pieces of one run, then its emission: evaluated once a run, not in every piece's branch.
+        for (; piece < 256 && ta < span.y; ++piece) {
+            bool inBand = ta >= band.x && ta < band.y;
+            real pRateNow = inBand ? pRate : 0.0;
+            real tCentre = pRateNow > 0.0 ? ta + ((group + 1.0) * stride - p) / pRateNow
+                         : pRateNow < 0.0 ? ta + (group * stride - p) / pRateNow : 1.0e30;
+            real tBand = ta < band.x ? band.x : ta < band.y ? band.y : 1.0e30;
+            real tRun = run + 1.0 >= runs ? span.y : span.x + (run + 1.0) * runKm;
+            real tWrap = !alongMode || sRate == 0.0 ? 1.0e30 : ta + ((sRate > 0.0 ? stripKm : 0.0) - q) / sRate;
+            real tEnd = 1.0e30;
+            for (int k = 0; k < 4; ++k)
+                tEnd = endCuts[k] > ta ? min(tEnd, endCuts[k]) : tEnd;
+            real tb = max(min(min(min(tCentre, tBand), min(tRun, tWrap)), min(tEnd, span.y)), ta);
+            real len = tb - ta;
+            bool centre = tCentre <= tb;
+            bool wrap = tWrap <= tb;
+            real pb = centre ? (pRateNow > 0.0 ? group + 1.0 : group) * stride : p + pRateNow * len;
+            real qb = wrap ? (sRate > 0.0 ? stripKm : 0.0) : q + rate * len;
+            real tMid = ta + 0.5 * len;
+            real u = cc.u + uRate * (tMid - tm);
+            real s = cc.s + sRate * (tMid - tm);
+            // Along, nor beyond the strip.
+            bool emits = withinReach(s, u, lengthKm, reach) && (inBand || !alongMode);
             real cell = clamp(floor(0.5 * (p + pb)), group * stride, (group + 1.0) * stride - 1.0);
-            if (held != cell) {
-                // Into the next cell up or down, one of the held columns is the new pair's; else both are read.
-                bool down = held == cell + 1.0;
-                vec3 kept = down ? lo : loNext;
-                if (!down && held != cell - 1.0)
-                    kept = fluxColumnPoint(columns, cell, q);
-                vec3 read = fluxColumnPoint(columns, down ? cell : cell + 1.0, q);
-                lo = down ? read : kept;
-                loNext = down ? kept : read;
+            // Where the columns at its start are not held (the first piece, or the first that emits after one
+            // that did not or after a wrap), the piece first reads them as the end of a piece of no length, and
+            // then runs again: every piece then reads its two columns at its end and, where it has crossed into
+            // the next cell, one at its start. (A SIMD group pays for a branch's fetch whenever any lane takes
+            // it, llvmpipe even when none does; this way a piece has one such fetch, not two.)
+            bool prime = emits && len > 0.0 && abs(held - cell) > 1.0;
+            if (!emits) {
+                held = -1.0e30;
+            } else if (len > 0.0) {
+                if (held != cell && !prime) {
+                    // Into the next cell up or down: one of the held columns is the new pair's.
+                    bool down = held == cell + 1.0;
+                    vec3 read = fluxColumnPoint(columns, down ? cell : cell + 1.0, q);
+                    vec3 kept = down ? lo : loNext;
+                    lo = down ? read : kept;
+                    loNext = down ? kept : read;
+                }
+                real qEnd = prime ? q : qb;
+                vec3 hi = fluxColumnPoint(columns, cell, qEnd);
+                vec3 hiNext = fluxColumnPoint(columns, cell + 1.0, qEnd);
+                if (!prime) {
+                    COUNT_WORK(z, 1);
+                    real dq = qb - q;
+                    vec3 column = bilinearPiece(lo, loNext, hi, hiNext, q, dq, clamp(p - cell, 0.0, 1.0),
+                                                clamp(pb - cell, 0.0, 1.0), qCellKm);
+                    runSums += runShare(column, dq, rate, ta, len);
+                }
+                lo = hi;
+                loNext = hiNext;
+                held = cell;
             }
-            vec3 hi = fluxColumnPoint(columns, cell, qb);
-            vec3 hiNext = fluxColumnPoint(columns, cell + 1.0, qb);
-            real dq = qb - q;
-            vec3 column = bilinearPiece(lo, loNext, hi, hiNext, q, dq, clamp(p - cell, 0.0, 1.0),
-                                        clamp(pb - cell, 0.0, 1.0), qCellKm);
-            runSums += runShare(column, dq, rate, ta, len);
-            lo = hi;
-            loNext = hiNext;
-            held = cell;
+            if (prime)
+                continue;
+            if (wrap) {
+                q = sRate > 0.0 ? 0.0 : stripKm; // the same point of the periodic strip, its integrals from 0 again
+                held = -1.0e30;
+            } else {
+                q = qb;
+            }
+            if (centre)
+                group += pRateNow > 0.0 ? 1.0 : -1.0;
+            p = pb;
+            ta = tb;
+            if (tRun <= tb) {
+                run += 1.0;
+                ++piece;
+                break;
+            }
         }
-        if (wrap) {
-            q = sRate > 0.0 ? 0.0 : stripKm; // the same point of the periodic strip, its integrals from 0 again
-            held = -1.0e30;
-        } else {
-            q = qb;
-        }
-        if (centre)
-            group += pRateNow > 0.0 ? 1.0 : -1.0;
-        p = pb;
-        if (tRun <= tb) {
-            energy += runEnergy(o, d, runSums, c);
-            runSums = vec2(0.0);
-            run += 1.0;
-        }
-        ta = tb;
+        energy += runEnergy(o, d, runSums, c);
+        runSums = vec2(0.0);
     }
     return energy;
 }
@@ -473,58 +496,103 @@ vec3 integrateCurtains(vec3 o, vec3 d, real t0, real t1, vec4 candidates)
     return radiance;
 }
 
-// Emission integrated along the ray segment [seg.x, seg.y] in steps [t_k, t_k+1] on the grid
-// t_k = seg.x + k·uAuroraStepKm (the last step ends at seg.y), each integrated across the curtains that
-// can reach it by integrateCurtains. With skipping, long jumps where the footprint map proves no curtain
-// is near (the footprint moves at most footprintSpeedBound km on the ground per km of ray) go over whole
-// steps only, landing on the same grid: the skipping march evaluates a subset of the naive march's
-// steps, and every step it leaves out has its midpoint farther than the largest reach + step/2 from every
-// curtain, where integrateCurtains adds nothing, so both give the same sum
-// (tests/render/skipping_test.cpp).
-// Neighbouring pixels run in lockstep (the SIMD lanes of a CPU rasterizer, a GPU's warps): a step that
-// integrates curtains costs every lane of the group its time, whatever the others do. So each ray first
-// reads the map step by step until it reaches a step that some curtain can reach (or its end), and only
-// then integrates that step: the lanes integrate their near steps together, while their cheap steps in
-// between run in the inner loop (the same steps in the same order as one loop over both, so the same
-// image, in 0.56-0.77x the time on llvmpipe: docs/aurora-physics.md).
-vec3 auroraSegment(vec3 o, vec3 d, vec2 seg)
+// The steps of a ray through the aurora shell's two segments (km; empty where x >= y): on each segment's
+// grid t_k = seg.x + k·uAuroraStepKm (its last step ends at seg.y), numbered through both, the first
+// segment's steps and then the second's.
+struct ShellSteps {
+    vec2 first;
+    vec2 second;
+    int firstCount;
+    int count;
+};
+
+int segmentSteps(vec2 seg)
 {
-    vec3 sum = vec3(0.0);
-    // The bound only guards against a NaN or absurd segment (4e6 steps is beyond any ray through the shell).
-    int steps = int(min(ceil((seg.y - seg.x) / uAuroraStepKm), 4.0e6));
-    int k = 0;
-    while (k < steps) {
-        real t0 = 0.0, t1 = 0.0;
-        StepCandidates step;
-        // A step j steps on can emit only where j·step ≥ skipKm: the next one to read is ceil(skipKm / step) on.
-        for (; k < steps; k += uSkipEmptySpace != 0 ? int(clamp(ceil(step.skipKm / uAuroraStepKm), 1.0, 4.0e6)) : 1) {
-            t0 = seg.x + real(k) * uAuroraStepKm;
-            t1 = min(t0 + uAuroraStepKm, seg.y);
-            step = stepCandidates(o, d, t0, t1);
-            COUNT_RAY_WORK(1);
-            COUNT_WORK(x, 1);
-            if (step.candidates.x >= 0.0 || step.candidates.z >= 0.0)
-                break;
-        }
-        if (k >= steps)
-            break;
-        sum += integrateCurtains(o, d, t0, t1, step.candidates);
-        ++k;
-    }
-    return sum;
+    // The bound only guards against an absurd segment (4e6 steps is beyond any ray through the shell).
+    return seg.x < seg.y ? int(min(ceil((seg.y - seg.x) / uAuroraStepKm), 4.0e6)) : 0;
 }
 
-// The aurora shell between uAuroraBottomKm and uAuroraTopKm: a ray may cross it twice (in front
-// of the planet's limb and behind it); each part is seen through the lower atmosphere if it lies
-// behind it.
+// Where a march through ShellSteps stands: at step k and, where that is a step some curtain can reach, its
+// ends t0, t1 (km) and candidates.
+struct MarchPosition {
+    int k;
+    real t0;
+    real t1;
+    StepCandidates step;
+};
+
+// From step k on, the first step that some curtain can reach, or k = count where none is: the map read step
+// by step. With skipping, long jumps where the footprint map proves no curtain is near (the footprint moves
+// at most footprintSpeedBound km on the ground per km of ray) go over whole steps only, landing on the same
+// grid, and at most onto the second segment's first step: the skipping march evaluates a subset of the
+// naive march's steps, and every step it leaves out has its midpoint farther than the largest reach +
+// step/2 from every curtain, where integrateCurtains adds nothing, so both give the same sum
+// (tests/render/skipping_test.cpp).
+MarchPosition nextReachableStep(vec3 o, vec3 d, ShellSteps steps, MarchPosition m)
+{
+    for (; m.k < steps.count;) {
+        bool inFirst = m.k < steps.firstCount;
+        vec2 seg = inFirst ? steps.first : steps.second;
+        m.t0 = seg.x + real(inFirst ? m.k : m.k - steps.firstCount) * uAuroraStepKm;
+        m.t1 = min(m.t0 + uAuroraStepKm, seg.y);
+        m.step = stepCandidates(o, d, m.t0, m.t1);
+        COUNT_RAY_WORK(1);
+        COUNT_WORK(x, 1);
+        if (m.step.candidates.x >= 0.0 || m.step.candidates.z >= 0.0)
+            break;
+        // A step j steps on can emit only where j·step >= skipKm: the next one to read is ceil(skipKm / step) on.
+        int jump = uSkipEmptySpace != 0 ? int(clamp(ceil(m.step.skipKm / uAuroraStepKm), 1.0, 4.0e6)) : 1;
+        m.k = inFirst ? min(m.k + jump, steps.firstCount) : m.k + jump;
+    }
+    return m;
+}
+
+// The aurora shell between uAuroraBottomKm and uAuroraTopKm: a ray may cross it twice (in front of the
+// planet's limb and behind it); each part is seen through the lower atmosphere if it lies behind it. Each
+// step [t_k, t_k+1] of both parts (ShellSteps) that some curtain can reach is integrated across those
+// curtains by integrateCurtains.
+// Neighbouring pixels run in lockstep (the SIMD lanes of a CPU rasterizer, a GPU's warps): a step that
+// integrates curtains costs every lane of the group its time, whatever the others do, and llvmpipe runs
+// every branch's body and every loop's body at least once, whatever the lanes decide. So each ray first
+// reads the map step by step until it reaches a step that some curtain can reach (nextReachableStep), and
+// only then integrates that step: the lanes integrate their near steps together, while their cheap steps in
+// between run in the inner loop. One loop marches both parts, and its test ends its body, which integrates
+// a step and finds the next: a group passes through integrateCurtains once for each step that one of its
+// lanes integrates (at least once on llvmpipe). The same steps in the same order as one loop over all of
+// them, so the same image (docs/aurora-physics.md).
 Ray shadeAurora(Ray ray)
 {
     ShellSegments shell = rayShell(ray.origin, ray.direction, uPlanetRadiusKm + uAuroraBottomKm,
                                    ray.altitude - uAuroraBottomKm, uPlanetRadiusKm + uAuroraTopKm,
                                    ray.altitude - uAuroraTopKm, ray.end);
+    ShellSteps steps;
+    steps.first = shell.first;
+    steps.second = shell.second;
+    steps.firstCount = segmentSteps(shell.first);
+    steps.count = steps.firstCount + segmentSteps(shell.second);
+    MarchPosition m;
+    m.k = 0;
+    m.t0 = 0.0;
+    m.t1 = 0.0;
+    m.step.skipKm = 0.0;
+    m.step.candidates = vec4(-1.0);
+    m = nextReachableStep(ray.origin, ray.direction, steps, m);
+    vec3 first = vec3(0.0);
+    vec3 second = vec3(0.0);
+    do {
+        if (m.k < steps.count) {
+            vec3 emission = integrateCurtains(ray.origin, ray.direction, m.t0, m.t1, m.step.candidates);
+            if (m.k < steps.firstCount)
+                first += emission;
+            else
+                second += emission;
+            ++m.k;
+            m = nextReachableStep(ray.origin, ray.direction, steps, m);
+        }
+    } while (m.k < steps.count);
     if (shell.first.x < shell.first.y)
-        ray.radiance += auroraSegment(ray.origin, ray.direction, shell.first) * transmittanceTo(ray, shell.first);
+        ray.radiance += first * transmittanceTo(ray, shell.first);
     if (shell.second.x < shell.second.y)
-        ray.radiance += auroraSegment(ray.origin, ray.direction, shell.second) * transmittanceTo(ray, shell.second);
+        ray.radiance += second * transmittanceTo(ray, shell.second);
     return ray;
 }
