@@ -417,8 +417,14 @@ vec3 integrateCurtains(vec3 o, vec3 d, real t0, real t1, vec4 candidates)
     // uAuroraResolveKm or, finer, to uAuroraResolveCells of the detail's cells along. The fluxes of
     // overlapping curtains add.
     real alongResolveKm = min(uAuroraResolveKm, uAuroraResolveCells * fluxCellAlongKm());
-    for (int k = 0; k < 2; ++k) {
-        vec2 candidate = k == 0 ? vec2(candidates.x, candidates.y) : vec2(candidates.z, candidates.w);
+    // The candidates that can reach the step (one or two), the first first. The loop's test ends its body: a
+    // SIMD group then evaluates a second curtain only where one of its lanes has one (llvmpipe runs a loop's
+    // body once more where the test opens it).
+    vec4 pair = candidates.x >= 0.0 ? candidates : vec4(candidates.z, candidates.w, candidates.x, candidates.y);
+    int count = (candidates.x >= 0.0 ? 1 : 0) + (candidates.z >= 0.0 ? 1 : 0);
+    int k = 0;
+    do {
+        vec2 candidate = k == 0 ? vec2(pair.x, pair.y) : vec2(pair.z, pair.w);
         if (candidate.x < 0.0)
             continue;
         int c = int(candidate.x);
@@ -492,7 +498,7 @@ vec3 integrateCurtains(vec3 o, vec3 d, real t0, real t1, vec4 candidates)
             }
         }
         radiance += uCurtainState[c].x * energy;
-    }
+    } while (++k < count);
     return radiance;
 }
 
