@@ -100,21 +100,29 @@ CurtainCoordinates curtainCoordinates(int c, int i, vec3 n)
     // the corner's inner side; on its outer side the shared end is the neighbour's nearest point, no nearer
     // than |u|), so it is read only there; 50 m more covers the float distances' ties.
     real endZoneKm = abs(p.z) * uCurtainCornerSlope[c] + 0.05;
-    for (int side = 0; side < 2; ++side) {
-        if (side == 0 ? j == 0 || p.x > endZoneKm : j == last || p.x < p.y - endZoneKm)
-            continue;
-        vec4 start = side == 0 ? polylinePoint(c, j - 1) : b;
-        vec4 end = side == 0 ? a : polylinePoint(c, j + 2);
-        vec3 sideNormal = segmentNormal(vec3(start), vec3(end));
-        vec4 q = projectOnSegmentWithNormal(vec3(start), sideNormal, end.w - start.w, n, uPlanetRadiusKm);
-        real distance = length(vec2(q.z, q.w));
-        if (distance < best.distance) {
-            best.s = start.w + q.x;
-            best.u = q.z;
-            best.distance = distance;
-            best.normal = sideNormal;
+    // The sides to read, the one before first; as for the jumps, the test ends the loop's body.
+    bool before = !(j == 0 || p.x > endZoneKm);
+    bool after = !(j == last || p.x < p.y - endZoneKm);
+    int sides = (before ? 1 : 0) + (after ? 1 : 0);
+    int side = before ? 0 : 1;
+    int read = 0;
+    do {
+        if (sides > 0) {
+            vec4 other = polylinePoint(c, side == 0 ? j - 1 : j + 2);
+            vec4 start = side == 0 ? other : b;
+            vec4 end = side == 0 ? a : other;
+            vec3 sideNormal = segmentNormal(vec3(start), vec3(end));
+            vec4 q = projectOnSegmentWithNormal(vec3(start), sideNormal, end.w - start.w, n, uPlanetRadiusKm);
+            real distance = length(vec2(q.z, q.w));
+            if (distance < best.distance) {
+                best.s = start.w + q.x;
+                best.u = q.z;
+                best.distance = distance;
+                best.normal = sideNormal;
+            }
         }
-    }
+        side = 1;
+    } while (++read < sides);
     return best;
 }
 
@@ -305,11 +313,13 @@ vec3 curtainEnergyExact(vec3 o, vec3 d, int c, CurtainCoordinates cc, real tm, v
     vec3 energy = vec3(0.0);
     vec2 runSums = vec2(0.0); // the run's summed runShare
     real ta = span.x;
-    // At most 64 runs, 65 strides, 2 band edges, 4 reach circles, the strip's periods and a first read after
-    // each of these but the runs and strides: the bound never binds.
-    for (int piece = 0; piece < 256 && ta < span.y;) {
-        // The pieces of one run, then its emission: evaluated once a run, not in every piece's branch.
-        for (; piece < 256 && ta < span.y; ++piece) {
+    // The pieces of one run, then its emission: evaluated once a run, not in every piece's branch. Both loops
+    // test at the end of their bodies (span is not empty). At most 64 runs, 65 strides, 2 band edges, 4 reach
+    // circles, the strip's periods and a first read after each of these but the runs and strides: the bound
+    // of 256 pieces never binds.
+    int piece = 0;
+    do {
+        do {
             bool inBand = ta >= band.x && ta < band.y;
             real pRateNow = inBand ? pRate : 0.0;
             real tCentre = pRateNow > 0.0 ? ta + ((group + 1.0) * stride - p) / pRateNow
@@ -380,10 +390,10 @@ vec3 curtainEnergyExact(vec3 o, vec3 d, int c, CurtainCoordinates cc, real tm, v
                 ++piece;
                 break;
             }
-        }
+        } while (++piece < 256 && ta < span.y);
         energy += runEnergy(o, d, runSums, c);
         runSums = vec2(0.0);
-    }
+    } while (piece < 256 && ta < span.y);
     return energy;
 }
 #endif
@@ -536,7 +546,10 @@ struct MarchPosition {
 // (tests/render/skipping_test.cpp).
 MarchPosition nextReachableStep(vec3 o, vec3 d, ShellSteps steps, MarchPosition m)
 {
-    for (; m.k < steps.count;) {
+    // The test ends the loop's body, which a lane that starts past the last step leaves at once.
+    do {
+        if (m.k >= steps.count)
+            break;
         bool inFirst = m.k < steps.firstCount;
         vec2 seg = inFirst ? steps.first : steps.second;
         m.t0 = seg.x + real(inFirst ? m.k : m.k - steps.firstCount) * uAuroraStepKm;
@@ -549,7 +562,7 @@ MarchPosition nextReachableStep(vec3 o, vec3 d, ShellSteps steps, MarchPosition 
         // A step j steps on can emit only where j·step >= skipKm: the next one to read is ceil(skipKm / step) on.
         int jump = uSkipEmptySpace != 0 ? int(clamp(ceil(m.step.skipKm / uAuroraStepKm), 1.0, 4.0e6)) : 1;
         m.k = inFirst ? min(m.k + jump, steps.firstCount) : m.k + jump;
-    }
+    } while (m.k < steps.count);
     return m;
 }
 
