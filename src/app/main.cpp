@@ -61,6 +61,8 @@ std::string usage()
            "  2  usage error: the command line itself is wrong: an unknown command, an unknown, missing or\n"
            "     repeated option, a malformed value, a value out of range or not among the allowed words,\n"
            "     options that contradict each other, or a number of MPI ranks other than the wall file's\n"
+           "  3  render only: a rank sent no heartbeat for --rank-timeout seconds; the master ends the job\n"
+           "  130, 143  render only: stopped by SIGINT or SIGTERM at a frame boundary, the frames drawn written\n"
            "Errors are one line on stderr: \"aurorawall COMMAND: ...\", naming the option or FILE:LINE.\n";
 }
 

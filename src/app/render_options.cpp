@@ -186,7 +186,8 @@ RenderOptions parseRenderOptions(int argc, char** argv)
         "Usage: mpirun -n RANKS aurorawall render --wall FILE --scene FILE [options]\n"
         "Renders the scene on the wall: rank r draws the screens the wall file gives it; rank 0\n"
         "owns the camera and the clock and broadcasts them every frame.\n"
-        "Exit status: 0 success, 1 runtime failure (files included), 2 usage error, the same on every rank.\n");
+        "Exit status, the same on every rank: 0 success, 1 runtime failure (files included), 2 usage error,\n"
+        "3 a rank fell silent (--rank-timeout), 130 or 143 stopped by SIGINT or SIGTERM.\n");
     describeRenderingOptions(cli, o);
     describeOutputAndControlOptions(cli, o);
     o.helpText = cli.help();

@@ -7,6 +7,7 @@
 //   3  (render) a rank fell silent for longer than --rank-timeout, or its main thread hung (no
 //      progress for longer than the timeout and 4 frames): the master ends the job
 //      (cluster::kRankSilentExitStatus, cluster/watchdog.h)
+//   128 + signal  (render) stopped by SIGINT or SIGTERM at a frame boundary: 130 or 143
 #include <exception>
 #include <functional>
 #include <iosfwd>
