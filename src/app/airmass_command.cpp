@@ -12,7 +12,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
-#include <istream>
+#include <iostream>
 #include <limits>
 #include <optional>
 #include <ostream>
@@ -159,6 +159,10 @@ int runAirmassCommand(int argc, char** argv, std::istream& in, std::ostream& out
                                          "); " + kDefaultAirmassMethod + " and exact give one for every accepted line");
             airmasses.push_back(airmass);
         }
+        // getline stops at the end or at a read error (standard input a folder, say), which the
+        // standard input's stream sees only through stdio's error flag: only the end is accepted.
+        if (in.bad() || !in.eof() || (&in == &std::cin && std::ferror(stdin)))
+            throw std::runtime_error("cannot read standard input");
         for (const double airmass : airmasses) {
             char number[64];
             std::snprintf(number, sizeof number, "%.12g\n", airmass);

@@ -172,6 +172,8 @@ void checkRenderOptions(const cli::CommandLine& cli, RenderOptions& o)
     }
     check(!o.console || o.backend == gl::Backend::Glfw,
           "--console needs --backend glfw (the console is a window next to the wall's windows)");
+    check(!o.wallFile.empty(), "--wall must not be empty");
+    check(!o.sceneFile.empty(), "--scene must not be empty");
     check(!o.outDir.empty(), "--out must not be empty");
     check(o.balanceBands >= 1 && o.balanceBands <= 256, "--balance-bands must be in [1, 256]");
 }

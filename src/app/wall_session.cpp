@@ -47,6 +47,72 @@ io::ToneMap toneMapFor(const RenderOptions& options, double exposure)
     return t;
 }
 
+// A path made absolute, with its links and dots resolved as far as it exists.
+std::filesystem::path resolvedPath(const std::string& path)
+{
+    std::error_code error;
+    const std::filesystem::path absolute = std::filesystem::absolute(path, error);
+    const std::filesystem::path resolved = std::filesystem::weakly_canonical(absolute, error);
+    return error ? absolute.lexically_normal() : resolved;
+}
+
+// Two outputs at one path, an output at the path of an input, or an output among the files of the
+// --movie folder would write one over the other: a usage error naming both, before anything is written.
+void refuseClashingPaths(const RenderOptions& options, const wall::Wall& wall, const scene::Scene& scene)
+{
+    struct NamedPath {
+        std::string path;
+        std::string what;
+        std::filesystem::path resolved;
+    };
+    std::vector<NamedPath> outputs;
+    for (const auto& [path, what] : {std::pair{options.statsFile, "--stats"}, std::pair{options.recordPath, "--record-path"},
+                                     std::pair{options.costMapFile, "--cost-map"}})
+        if (!path.empty())
+            outputs.push_back({path, what, resolvedPath(path)});
+    if (options.gather)
+        for (const char* name : {"/wall.exr", "/wall.png"})
+            outputs.push_back({options.outDir + name, "--gather", resolvedPath(options.outDir + name)});
+    if (options.tiles)
+        for (const wall::Screen& screen : wall.screens) {
+            const std::string path = tilePath(options.outDir, screen.name);
+            outputs.push_back({path, "--tiles", resolvedPath(path)});
+        }
+    std::vector<NamedPath> inputs = {{options.wallFile, "the --wall file", resolvedPath(options.wallFile)}};
+    for (const std::string& file : scene.files)
+        inputs.push_back({file, file == scene.files.front() ? "the --scene file" : "a base scene of --scene",
+                          resolvedPath(file)});
+    if (!options.controlTokenFile.empty())
+        inputs.push_back({options.controlTokenFile, "the --control-token-file", resolvedPath(options.controlTokenFile)});
+    const std::filesystem::path movie = options.movieDir.empty() ? std::filesystem::path() : resolvedPath(options.movieDir);
+    for (std::size_t i = 0; i < outputs.size(); ++i) {
+        const NamedPath& out = outputs[i];
+        for (std::size_t j = 0; j < i; ++j)
+            if (outputs[j].resolved == out.resolved)
+                throw common::UsageError(out.what + " " + out.path + " is the file of " + outputs[j].what + " " +
+                                         outputs[j].path + ": give them different paths");
+        for (const NamedPath& in : inputs)
+            if (in.resolved == out.resolved)
+                throw common::UsageError(out.what + " " + out.path + " would overwrite " + in.what + " (" + in.path +
+                                         "): give another path");
+        if (!movie.empty() && out.resolved.parent_path() == movie &&
+            MovieWriter::writes(out.resolved.filename().string()))
+            throw common::UsageError(out.what + " " + out.path + " is a file the --movie folder's frames write: "
+                                                                 "give another path");
+    }
+}
+
+// A movie starts in a folder that holds none of a movie's files (MovieWriter::writes), so that it
+// overwrites no earlier movie.
+void refuseEarlierMovie(const std::string& dir)
+{
+    std::error_code error;
+    for (const std::filesystem::directory_entry& entry : std::filesystem::directory_iterator(dir, error))
+        if (MovieWriter::writes(entry.path().filename().string()))
+            throw common::InputError("--movie " + dir + ": already holds " + entry.path().filename().string() +
+                                     " of a movie; give another folder");
+}
+
 // Options, wall, scene, shaders and output folders, identical on every rank.
 void configure(const cluster::MpiWorld& world, int argc, char** argv, WallSession& s)
 {
@@ -65,13 +131,16 @@ void configure(const cluster::MpiWorld& world, int argc, char** argv, WallSessio
                          (s.wall.rankCount == 1 ? " rank" : " ranks") + ", but mpirun started " +
                          std::to_string(world.size()) + " (use mpirun -n " + std::to_string(s.wall.rankCount) + ")");
     s.scene = components::loadScene(options.sceneFile);
+    refuseClashingPaths(options, s.wall, s.scene);
     s.dataDir = options.dataDir.empty() ? common::dataDirectory() : options.dataDir;
     s.shaderDir = s.dataDir + "/shaders";
     render::marchShaderSource(s.scene, s.shaderDir); // every module readable before any window opens
     if (options.gather || options.tiles || options.controlPort >= 0 || options.webPort >= 0) // screenshot commands write there
         io::ensureWritableDirectory(options.outDir, "--out");
-    if (!options.movieDir.empty())
+    if (!options.movieDir.empty()) {
         io::ensureWritableDirectory(options.movieDir, "--movie");
+        refuseEarlierMovie(options.movieDir);
+    }
     // The master's files go into existing folders (README.md, "Outputs"); checked before any
     // frame, so that no run's data is lost to a path that cannot be written.
     if (world.isMaster()) {
@@ -218,15 +287,18 @@ int setUpWallSession(const cluster::MpiWorld& world, int argc, char** argv, Wall
     int status = agreedStep(world, [&] { configure(world, argc, argv, session); });
     if (status != cli::kSuccess)
         return status;
-    if (session.options.help) {
-        if (world.isMaster())
+    if (session.options.help || session.options.printRanks) {
+        if (!world.isMaster())
+            return cli::kSuccess;
+        if (session.options.help)
             std::cout << session.options.helpText;
-        return cli::kSuccess;
-    }
-    if (session.options.printRanks) {
-        if (world.isMaster())
+        else
             std::cout << session.wall.rankCount << "\n";
-        return cli::kSuccess;
+        std::cout.flush();
+        if (std::cout)
+            return cli::kSuccess;
+        std::fprintf(stderr, "%s\n", cli::errorLine("render", "cannot write the output").c_str());
+        return cli::kRuntimeFailure;
     }
     world.startWatchdog(session.options.rankTimeoutS);
     world.setPhase(cluster::RankPhase::SetUp);

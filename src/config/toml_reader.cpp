@@ -3,6 +3,7 @@
 #include "common/input_error.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -235,10 +236,38 @@ void TableReader::fail(const std::string& key, const std::string& problem) const
 
 bool TableReader::has(const std::string& key) const { return table_.as_table().count(key) != 0; }
 
+// Whether a and b differ by at most one edit (a letter changed, added or left out) once case is ignored:
+// the misspellings a missing key most likely came from.
+static bool nearlyEqual(const std::string& a, const std::string& b)
+{
+    auto lower = [](std::string s) {
+        std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });
+        return s;
+    };
+    const std::string x = lower(a), y = lower(b);
+    const std::string& shorter = x.size() <= y.size() ? x : y;
+    const std::string& longer = x.size() <= y.size() ? y : x;
+    if (longer.size() - shorter.size() > 1)
+        return false;
+    std::size_t front = 0;
+    while (front < shorter.size() && shorter[front] == longer[front])
+        ++front;
+    std::size_t back = 0;
+    while (back < shorter.size() - front && shorter[shorter.size() - 1 - back] == longer[longer.size() - 1 - back])
+        ++back;
+    return front + back + 1 >= longer.size();
+}
+
 const TomlValue& TableReader::at(const std::string& key) const
 {
-    if (!has(key))
+    if (!has(key)) {
+        for (const auto& [given, value] : table_.as_table())
+            if (nearlyEqual(given, key))
+                throw common::inputError(file_, fileLine(value),
+                                         "missing key '" + qualified(key) + "' (misspelt as '" +
+                                             common::echoedInput(given) + "'?)");
         throw common::inputError(file_, line(), "missing key '" + qualified(key) + "'");
+    }
     read_.insert(key);
     return table_.as_table().at(key);
 }
@@ -284,15 +313,16 @@ double TableReader::numberAbove(const std::string& key, double lo, double hi, do
 }
 
 // Integers are TOML integers: a float, even 2.0, is not a count of screens or pixels.
-static bool toInteger(const TomlValue& v, int lo, int hi, int& out)
+template <class Int>
+static bool toInteger(const TomlValue& v, long long lo, long long hi, Int& out)
 {
     if (!v.is_integer() || v.as_integer() < lo || v.as_integer() > hi)
         return false;
-    out = static_cast<int>(v.as_integer());
+    out = static_cast<Int>(v.as_integer());
     return true;
 }
 
-static std::string integerProblem(const TomlValue& v, int lo, int hi)
+static std::string integerProblem(const TomlValue& v, long long lo, long long hi)
 {
     if (!v.is_integer())
         return "expected an integer";
@@ -312,6 +342,17 @@ int TableReader::integer(const std::string& key, int lo, int hi) const
 int TableReader::integer(const std::string& key, int lo, int hi, int fallback) const
 {
     return has(key) ? integer(key, lo, hi) : fallback;
+}
+
+long long TableReader::integer64(const std::string& key, long long lo, long long hi, long long fallback) const
+{
+    if (!has(key))
+        return fallback;
+    const TomlValue& v = at(key);
+    long long x = 0;
+    if (!toInteger(v, lo, hi, x))
+        fail(key, integerProblem(v, lo, hi));
+    return x;
 }
 
 std::vector<int> TableReader::integers(const std::string& key, int lo, int hi) const

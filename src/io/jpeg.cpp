@@ -25,6 +25,14 @@ void onError(j_common_ptr info)
     std::longjmp(errors->jump, 1);
 }
 
+// A warning (level −1: corrupt or truncated data, which libjpeg would decode partly) is an error too;
+// trace messages (levels ≥ 0) are dropped, so libjpeg prints nothing of its own.
+void onMessage(j_common_ptr info, int level)
+{
+    if (level < 0)
+        onError(info);
+}
+
 } // namespace
 
 Image readJpeg(const std::string& path)
@@ -36,6 +44,7 @@ Image readJpeg(const std::string& path)
     ErrorManager errors;
     info.err = jpeg_std_error(&errors.base);
     errors.base.error_exit = onError;
+    errors.base.emit_message = onMessage;
     // No C++ object may be constructed between a setjmp and a longjmp to it, so the image and
     // the row buffer are made between two setjmp calls.
     Image image;
@@ -48,6 +57,12 @@ Image readJpeg(const std::string& path)
     jpeg_stdio_src(&info, file.get());
     jpeg_read_header(&info, TRUE);
     info.out_color_space = JCS_RGB;
+    if (info.image_width > kMaxJpegSide || info.image_height > kMaxJpegSide) {
+        jpeg_destroy_decompress(&info);
+        throw std::runtime_error(path + ": " + std::to_string(info.image_width) + " x " +
+                                 std::to_string(info.image_height) + " pixels, more than " +
+                                 std::to_string(kMaxJpegSide) + " on a side");
+    }
     jpeg_start_decompress(&info);
     image = Image(static_cast<int>(info.output_width), static_cast<int>(info.output_height));
     row.resize(3 * static_cast<size_t>(info.output_width));

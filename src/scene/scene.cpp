@@ -245,7 +245,7 @@ glm::dvec3 directionInSky(double latitudeDeg, double longitudeDeg, double elevat
 }
 
 Scene::Scene(const Scene& other)
-    : sourceFile(other.sourceFile), name(other.name), planetRadiusKm(other.planetRadiusKm), camera(other.camera),
+    : sourceFile(other.sourceFile), files(other.files), name(other.name), planetRadiusKm(other.planetRadiusKm), camera(other.camera),
       startTimeS(other.startTimeS), timeStepS(other.timeStepS), exposure(other.exposure),
       components_(other.components_)
 {
@@ -365,10 +365,14 @@ Scene SceneLoader::load(const std::string& path, const Registry& registry, int d
         if (depth >= kMaxBaseScenes)
             meta.fail("base", "scenes derive from each other more than " + std::to_string(kMaxBaseScenes) +
                                   " deep (a cycle?)");
-        const std::string base = (std::filesystem::path(path).parent_path() / meta.string("base")).string();
+        const std::string name = meta.string("base");
+        const std::string base = (std::filesystem::path(path).parent_path() / name).string();
+        if (name.empty() || !std::filesystem::is_regular_file(base))
+            meta.fail("base", "'" + name + "' is not a scene file (" + base + ", relative to this file)");
         s = load(base, registry, depth + 1);
     }
     s.sourceFile = path;
+    s.files.insert(s.files.begin(), path);
     s.name = derived ? meta.string("name", s.name) : meta.string("name");
     if (!derived || meta.has("components"))
         listComponents(s, meta, registry);

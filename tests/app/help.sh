@@ -67,12 +67,51 @@ expect 2 "^aurorawall render: --backend: unknown value 'vulkan' \(allowed: egl, 
     render --wall "$DATA/tiny-2x2.toml" --scene "$SCENE" --backend vulkan
 expect 1 "^aurorawall render: .*nonexistent-wall\.toml" render --wall "$WORK/nonexistent-wall.toml" --scene "$SCENE"
 
+# render: an output at the path of an input (the scene, a base scene, the wall) or of another output
+# is a usage error, before anything is read or written; a --movie folder that holds a movie's files,
+# an over-long control secret and an unwritable standard output are runtime failures.
+single="$WALLS/single.toml"
+cp "$SCENE" "$WORK/flight.toml"
+printf '[scene]\nbase = "flight.toml"\n' > "$WORK/derived.toml"
+cp "$single" "$WORK/wall.toml"
+expect 2 "^aurorawall render: --record-path .*/flight.toml would overwrite the --scene file" \
+    render --wall "$single" --scene "$WORK/flight.toml" --record-path "$WORK/flight.toml"
+expect 2 "^aurorawall render: --record-path .*/flight.toml would overwrite a base scene of --scene" \
+    render --wall "$single" --scene "$WORK/derived.toml" --record-path "$WORK/./flight.toml"
+expect 2 "^aurorawall render: --record-path .*/wall.toml would overwrite the --wall file" \
+    render --wall "$WORK/wall.toml" --scene "$SCENE" --record-path "$WORK/wall.toml"
+cmp -s "$SCENE" "$WORK/flight.toml" && cmp -s "$single" "$WORK/wall.toml" ||
+    fail "render --record-path onto an input changed it"
+expect 2 "^aurorawall render: --gather .*/clash/wall.png is the file of --cost-map .*/clash/wall.png: give them different paths" \
+    render --wall "$single" --scene "$SCENE" --gather --out "$WORK/clash" --cost-map "$WORK/clash/wall.png"
+expect 2 "^aurorawall render: --cost-map .*/film/frame-000000.png is a file the --movie folder's frames write" \
+    render --wall "$single" --scene "$SCENE" --movie "$WORK/film" --cost-map "$WORK/film/frame-000000.png"
+[ ! -e "$WORK/clash" ] && [ ! -e "$WORK/film" ] || fail "render with clashing outputs created a folder"
+mkdir -p "$WORK/movie"
+touch "$WORK/movie/frames.csv"
+expect 1 "^aurorawall render: --movie .*/movie: already holds frames.csv of a movie; give another folder" \
+    render --wall "$single" --scene "$SCENE" --frames 1 --movie "$WORK/movie"
+[ "$(ls -A "$WORK/movie")" = frames.csv ] || fail "render --movie into an earlier movie wrote: $(ls -A "$WORK/movie")"
+head -c 600 /dev/zero | tr '\0' a > "$WORK/long-token"
+chmod 600 "$WORK/long-token"
+expect 1 "^aurorawall render: .*long-token:1: --control-token-file: the secret is 600 bytes long, more than 512" \
+    render --wall "$single" --scene "$SCENE" --frames 1 --control-port 0 --control-token-file "$WORK/long-token"
+for args in "--help" "--wall $single --scene $SCENE --print-ranks"; do
+    rc=0
+    # shellcheck disable=SC2086 # the words of $args are the options
+    "$AW" render $args >/dev/full 2>"$WORK/err" || rc=$?
+    [ $rc = 1 ] && [ "$(grep -c '' "$WORK/err")" = 1 ] && grep -q "^aurorawall render: cannot write the output" "$WORK/err" ||
+        fail "aurorawall render $args >/dev/full: exit status $rc, expected 1 with one error line: $(cat "$WORK/err")"
+    echo "ok   1  aurorawall render $args >/dev/full: $(cat "$WORK/err")"
+done
+
 # airmass
 expect 0 "--method" airmass --help
 expect 2 "^aurorawall airmass: unrecognised option '--bogus'" airmass --bogus
 expect 2 "^aurorawall airmass: --method: unknown value 'nope' \(allowed: list, exact, .*\)" airmass --method nope
 printf '0,6371,0,0,1,0,0,100,8,6371\n1,2,3\n' >"$WORK/bad-rays.csv"
 STDIN="$WORK/bad-rays.csv" expect 1 "^aurorawall airmass: line 2: " airmass
+STDIN="$WORK" expect 1 "^aurorawall airmass: cannot read standard input" airmass
 
 # tables
 expect 0 "--energy-kev" tables --help

@@ -229,3 +229,56 @@ TEST(SceneErrors, NameFileAndLine)
         EXPECT_EQ(message.find('\n'), std::string::npos) << "one line";
     }
 }
+
+// A count in a scene (cells, frames, steps, map texels, a seed) is a TOML integer: 64.5 is refused
+// with its line, not truncated to 64.
+TEST(SceneErrors, CountsMustBeIntegers)
+{
+    const std::string base = "[scene]\nbase = \"" + kScenes + "/twilight.toml\"\n";
+    const std::pair<const char*, const char*> counts[] = {
+        {"aurora", "footprint_map_size"}, {"aurora", "table_energy_count"}, {"sky", "view_steps"},
+        {"sky", "light_steps"},           {"fluid_detail", "cells_along"},  {"fluid_detail", "cells_across"},
+        {"fluid_detail", "frames"},       {"fluid_detail", "seed"}};
+    for (const auto& [table, key] : counts) {
+        const std::string error = aurorawall::test::loadErrorOfText(
+            std::string("fraction_") + key + ".toml", base + "[" + table + "]\n" + key + " = 64.5\n");
+        EXPECT_NE(error.find(std::string(":4: ") + table + "." + key + ": expected an integer"), std::string::npos)
+            << error;
+    }
+    // The seed takes the whole 32-bit range.
+    EXPECT_EQ(aurorawall::test::loadErrorOfText("seed_max.toml", base + "[fluid_detail]\nseed = 4294967295\n"), "");
+    EXPECT_NE(aurorawall::test::loadErrorOfText("seed_over.toml", base + "[fluid_detail]\nseed = 4294967296\n")
+                  .find("fluid_detail.seed: must be an integer in [0, 4294967295] (got 4294967296)"),
+              std::string::npos);
+}
+
+// [scene] base names a scene file; one that is empty or names no file is refused at its own line.
+TEST(SceneErrors, BaseMustNameASceneFile)
+{
+    for (const char* name : {"", "no-such-base.toml", "."}) {
+        const std::string error = aurorawall::test::loadErrorOfText(
+            "bad_base.toml", std::string("[scene]\nname = \"b\"\nbase = \"") + name + "\"\n");
+        EXPECT_NE(error.find("bad_base.toml:3: scene.base: '" + std::string(name) + "' is not a scene file"),
+                  std::string::npos)
+            << error;
+    }
+}
+
+// A required key that is missing, but given with a letter changed, added, left out or in another
+// case, is named at the misspelt key's line.
+TEST(SceneErrors, AMissingKeyPointsAtItsMisspelling)
+{
+    const std::string head = "[scene]\nname = \"m\"\ncomponents = [\"planet\"]\n[camera]\n";
+    const std::string tail = "longitude_deg = 15.0\naltitude_km = 1.0\nheading_deg = 0.0\npitch_deg = 10.0\n";
+    for (const char* typo : {"Latitude_deg", "latitude_dg", "latitudee_deg", "latitude_deb"}) {
+        const std::string error =
+            aurorawall::test::loadErrorOfText("typo.toml", head + tail + typo + " = 65.0\n");
+        EXPECT_NE(error.find("typo.toml:9: missing key 'camera.latitude_deg' (misspelt as '" + std::string(typo) + "'?)"),
+                  std::string::npos)
+            << error;
+    }
+    // A key too different is not taken for the missing one.
+    EXPECT_NE(aurorawall::test::loadErrorOfText("typo.toml", head + tail + "lat = 65.0\n")
+                  .find("typo.toml:4: missing key 'camera.latitude_deg'"),
+              std::string::npos);
+}

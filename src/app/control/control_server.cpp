@@ -57,6 +57,9 @@ std::string readControlToken(const std::string& file)
         token.pop_back();
     if (token.empty())
         throw common::inputError(file, 1, "--control-token-file: the first line (the secret) is empty");
+    if (token.size() > kMaxTokenBytes)
+        throw common::inputError(file, 1, "--control-token-file: the secret is " + std::to_string(token.size()) +
+                                              " bytes long, more than " + std::to_string(kMaxTokenBytes));
     return token;
 }
 

@@ -33,8 +33,11 @@ namespace aurorawall::app::control {
 
 // The shared secret in the first line of `file` (empty for an empty file name: no token). Throws
 // InputError naming the file if it cannot be read, is readable or writable by anyone but its owner,
-// or its first line is empty.
+// or its first line is empty or longer than kMaxTokenBytes.
 std::string readControlToken(const std::string& file);
+
+// The longest secret: "auth SECRET" must fit a control line (ControlServer::kMaxLineBytes).
+constexpr std::size_t kMaxTokenBytes = 512;
 
 // The IPv4 address --control-bind names (dotted quad), for the control port and the web console alike.
 // Throws UsageError naming the option otherwise.

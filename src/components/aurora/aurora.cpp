@@ -146,7 +146,7 @@ public:
         a.resolveKm = t.number("resolve_km", 0.01, 100.0, a.resolveKm);
         a.resolveCells = t.number("resolve_cells", 0.05, 100.0, a.resolveCells);
         a.polylineSpacingKm = t.number("polyline_spacing_km", 0.1, 100.0, a.polylineSpacingKm);
-        a.footprintMapSize = static_cast<int>(t.number("footprint_map_size", 16, 8192, a.footprintMapSize));
+        a.footprintMapSize = t.integer("footprint_map_size", 16, 8192, a.footprintMapSize);
         if (a.footprintMapSize & (a.footprintMapSize - 1))
             t.fail("footprint_map_size", "must be a power of two");
         a.footprintMapBuild = static_cast<MapBuilder>(
@@ -154,7 +154,7 @@ public:
         a.skipEmptySpace = t.choice("skip_empty_space", {"no", "yes"}, a.skipEmptySpace) == 1;
         a.exactSubSteps = t.choice("sub_step_flux", {"midpoint", "exact"}, a.exactSubSteps) == 1;
         a.tableAltitudeStepKm = t.number("table_altitude_step_km", 0.05, 10.0, a.tableAltitudeStepKm);
-        a.tableEnergyCount = static_cast<int>(t.number("table_energy_count", 2, 4096, a.tableEnergyCount));
+        a.tableEnergyCount = t.integer("table_energy_count", 2, 4096, a.tableEnergyCount);
         if (t.has("curtain")) {
             a.curtains.clear(); // a derived scene's curtains replace its base's
             for (const config::TableReader& c : t.arrayOfTables("curtain"))

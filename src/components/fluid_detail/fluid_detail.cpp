@@ -22,15 +22,15 @@ public:
     void read(const config::TableReader& t, scene::Scene&, scene::ComponentSettings& settings) const override
     {
         auto& f = dynamic_cast<Settings&>(settings);
-        f.cellsAlong = static_cast<int>(t.number("cells_along", 16, 4096, f.cellsAlong));
-        f.cellsAcross = static_cast<int>(t.number("cells_across", 4, 4096, f.cellsAcross));
+        f.cellsAlong = t.integer("cells_along", 16, 4096, f.cellsAlong);
+        f.cellsAcross = t.integer("cells_across", 4, 4096, f.cellsAcross);
         for (int n : {f.cellsAlong, f.cellsAcross})
             if (n & (n - 1))
                 t.fail(n == f.cellsAlong ? "cells_along" : "cells_across", "must be a power of two");
         f.stripLengthKm = t.number("strip_length_km", 1.0, 1e5, f.stripLengthKm);
         f.stripWidthKm = t.number("strip_width_km", 1.0, 1e4, f.stripWidthKm);
-        f.frames = static_cast<int>(t.number("frames", 2, 256, f.frames));
-        f.seed = static_cast<unsigned>(t.number("seed", 0, 4294967295.0, f.seed));
+        f.frames = t.integer("frames", 2, 256, f.frames);
+        f.seed = static_cast<unsigned>(t.integer64("seed", 0, 4294967295LL, f.seed));
         f.pressureSolver = t.choice("pressure_solver", {"fft", "multigrid"},
                                     f.pressureSolver == simulation::PressureSolver::Fft ? 0 : 1) == 0
                                ? simulation::PressureSolver::Fft

@@ -31,7 +31,8 @@ public:
         if (t.has("night_image")) {
             s.nightImage = t.string("night_image", s.nightImage);
             if (!std::filesystem::is_regular_file(s.nightImage))
-                t.fail("night_image", "no such image file: " + s.nightImage);
+                t.fail("night_image", s.nightImage + ": " +
+                                          (std::filesystem::exists(s.nightImage) ? "not a file" : "no such image file"));
         }
         s.nightLightsRadiance = t.number("night_lights_cd_m2", 0.0, 1e6, s.nightLightsRadiance);
     }

@@ -51,9 +51,9 @@ public:
     void read(const config::TableReader& t, scene::Scene&, scene::ComponentSettings& settings) const override
     {
         auto& s = dynamic_cast<Settings&>(settings);
-        s.viewSteps = static_cast<int>(t.number("view_steps", 1, 1024, s.viewSteps));
+        s.viewSteps = t.integer("view_steps", 1, 1024, s.viewSteps);
         s.nestedMarch = t.choice("light_method", {"closed-form", "nested-march"}, s.nestedMarch) == 1;
-        s.lightSteps = static_cast<int>(t.number("light_steps", 1, 1024, s.lightSteps));
+        s.lightSteps = t.integer("light_steps", 1, 1024, s.lightSteps);
         if (t.has("light")) {
             s.lights.clear();
             for (const config::TableReader& l : t.arrayOfTables("light"))

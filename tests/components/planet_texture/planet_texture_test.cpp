@@ -32,7 +32,10 @@ TEST(PlanetTexture, NamedImageMustExist)
 {
     const std::string missing = ::testing::TempDir() + "no-such-night.jpg";
     const std::string file = temporarySceneFile("missing.toml", kHead + "[planet_texture]\nnight_image = \"" + missing + "\"\n");
-    EXPECT_EQ(test::loadError(file), file + ":11: planet_texture.night_image: no such image file: " + missing);
+    EXPECT_EQ(test::loadError(file), file + ":11: planet_texture.night_image: " + missing + ": no such image file");
+    const std::string folder = ::testing::TempDir();
+    const std::string named = temporarySceneFile("folder.toml", kHead + "[planet_texture]\nnight_image = \"" + folder + "\"\n");
+    EXPECT_EQ(test::loadError(named), named + ":11: planet_texture.night_image: " + folder + ": not a file");
 
     const std::string present = ::testing::TempDir() + "night.jpg";
     std::ofstream(present) << "stand-in: the scene loader checks only that the file is there";
