@@ -7,7 +7,7 @@
 #     that never ends (timeout) is a failure,
 #   - with exactly one line on the ranks' stderr together: "aurorawall render: ..." naming the file:line
 #     (for files whose offending line carries a '# <- error' comment) or the option,
-#   - within 15 s (a hang is caught by timeout 30),
+#   - without hanging (timeout 30),
 #   - without leaving anything in the --out folder (no wall.exr, wall.png, stats, temporaries).
 # Usage: bad_input.sh [main|late-output]   (late-output: mistakes that are only noticed after the
 # frames are rendered; see CMakeLists.txt)
@@ -15,7 +15,6 @@ source "$(dirname "$0")/lib.sh"
 set_name="${1:-main}"
 WALL_DATA="$SRC_DIR/tests/wall/data"
 TINY="$DATA/tiny-2x2.toml"
-MAX_SECONDS=15
 failures=0 cases=0
 
 # The line of FILE marked "# <- error".
@@ -52,7 +51,6 @@ expect_error() {
 
     [ $rc -ne 124 ] || problems+=("hung: killed by timeout 30")
     [ $rc -eq 0 ] || [ $rc -eq 124 ] || problems+=("mpirun exited $rc although every rank's wrapper exits 0")
-    awk -v s="$seconds" -v m="$MAX_SECONDS" 'BEGIN { exit !(s < m) }' || problems+=("took $seconds s (limit $MAX_SECONDS s)")
     local r rank_rc
     for ((r = 0; r < ranks; ++r)); do
         if [ ! -f "$rankdir/rc.$r" ]; then

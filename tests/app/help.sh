@@ -163,7 +163,9 @@ expect 2 "^aurorawall mie: .*'--x' is missing" mie --n 1.33 --k 0 --x
 expect 2 "^aurorawall mie: --angles-deg: 'a' is not an angle" mie --n 1.33 --k 0 --x 1 --angles-deg 0,a
 expect 2 "^aurorawall mie: --angles-deg: '0x10' is not an angle" mie --n 1.33 --k 0 --x 1 --angles-deg 0x10
 "$AW" mie --n 1.5 --k 0 --x 10 --angles-deg 0,180 >"$WORK/mie.csv" || fail "aurorawall mie: exit status $?"
-[ "$(sed -n 1p "$WORK/mie.csv" | cut -d, -f5)" = qext ] && [ "$(sed -n 2p "$WORK/mie.csv" | cut -d, -f5)" = 2.881998952 ] ||
+# Wiscombe (1979) tabulates Qext = 2.881999 to 7 digits: the printed value within half its last digit.
+[ "$(sed -n 1p "$WORK/mie.csv" | cut -d, -f5)" = qext ] &&
+    awk -v q="$(sed -n 2p "$WORK/mie.csv" | cut -d, -f5)" 'BEGIN { d = q - 2.881999; exit !(q != "" && d <= 0.5e-6 && d >= -0.5e-6) }' ||
     fail "aurorawall mie --n 1.5 --k 0 --x 10: Qext is not Wiscombe's 2.881999: $(cat "$WORK/mie.csv")"
 echo "ok   0  aurorawall mie --n 1.5 --k 0 --x 10: Qext $(sed -n 2p "$WORK/mie.csv" | cut -d, -f5)"
 

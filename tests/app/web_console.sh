@@ -148,19 +148,16 @@ note "the wall still draws (frame $frame3 and on)"
 # The page in a real browser (headless Chromium), its script run for 3 s of virtual time with the
 # secret in the address: the status line filled from /status, a button for each preset from
 # /presets, the preview shown from /preview.png, and no alarm.
-if command -v chromium >/dev/null; then
-    chromium --headless --no-sandbox --disable-gpu --virtual-time-budget=3000 --dump-dom "$url/#token=$secret" \
-        2>/dev/null > "$WORK/dom.html" || true
-    check grep -Eq '<p id="status" class="status">frame [0-9]+  t=120\.0 s .* paused ' "$WORK/dom.html"
-    check grep -q '<button type="button">ground-65n</button>' "$WORK/dom.html"
-    check grep -Eq '<img id="preview" [^>]*src="blob:' "$WORK/dom.html"
-    check grep -q '<p id="alarm" class="alarm" hidden' "$WORK/dom.html"
-    check [ "$(grep -o 'rank [0-9]: [0-9.]* ms, waited' "$WORK/dom.html" | wc -l)" -eq 2 ]
-    check grep -Eq 'rank 1: [0-9.]+ ms, waited [0-9.]+ ms, heard [0-9.]+ s ago' "$WORK/dom.html"
-    note "the page's script ran in Chromium: $(grep -o '<p id="status" class="status">[^<]*' "$WORK/dom.html" | sed 's/.*>//')"
-else
-    note "SKIP the browser part: chromium is not installed"
-fi
+check command -v chromium # launch/install-deps installs it
+chromium --headless --no-sandbox --disable-gpu --virtual-time-budget=3000 --dump-dom "$url/#token=$secret" \
+    2>/dev/null > "$WORK/dom.html" || true
+check grep -Eq '<p id="status" class="status">frame [0-9]+  t=120\.0 s .* paused ' "$WORK/dom.html"
+check grep -q '<button type="button">ground-65n</button>' "$WORK/dom.html"
+check grep -Eq '<img id="preview" [^>]*src="blob:' "$WORK/dom.html"
+check grep -q '<p id="alarm" class="alarm" hidden' "$WORK/dom.html"
+check [ "$(grep -o 'rank [0-9]: [0-9.]* ms, waited' "$WORK/dom.html" | wc -l)" -eq 2 ]
+check grep -Eq 'rank 1: [0-9.]+ ms, waited [0-9.]+ ms, heard [0-9.]+ s ago' "$WORK/dom.html"
+note "the page's script ran in Chromium: $(grep -o '<p id="status" class="status">[^<]*' "$WORK/dom.html" | sed 's/.*>//')"
 
 check grep -qx 'ok quit' <(post quit)
 for _ in $(seq 300); do kill -0 $job 2>/dev/null || break; sleep 0.1; done

@@ -160,13 +160,13 @@ TEST_F(ReferenceRay, RejectsWhatItDoesNotModel)
 }
 
 // The default march (12 km steps, each cut into sub-steps of at most 1 km in altitude and 0.75 of the
-// detail's 0.25 km cells in the coordinate not integrated over, each integrated in closed form across
-// or along the curtain at the middle of the other coordinate) and the same steps with 0.25 km sub-steps
-// in altitude, against the CPU reference at views along the paper's benchmark path: at the start (70 km
-// up), inside the aurora layer (frame 28, 144 km up) and above it (frame 60, 251 km up). Point samples
-// every 2 km were 4-8% RMS off at these views. Measured here: RMS 0.046%, 2.3%, 0.29% with the defaults
-// and 0.039%, 2.3%, 0.29% with 0.25 km sub-steps: at frame 28 one pixel of 16 stays 9.1% off, the middle
-// column's error at a tilted sheet (ExactSubStepsRemoveTheMiddleColumnsErrorAtATiltedSheet). Held to 2.5%.
+// detail's 0.25 km cells in the coordinate not integrated over, the flux integrated exactly along the
+// slanted path) and the same steps with 0.25 km sub-steps in altitude, against the CPU reference at views
+// along the paper's benchmark path: at the start (70 km up), inside the aurora layer (frame 28, 144 km
+// up) and above it (frame 60, 251 km up). Point samples every 2 km were 4-8% RMS off at these views.
+// Measured here: RMS 0.010%, 0.019%, 0.25% with the defaults and 0.004%, 0.019%, 0.26% with 0.25 km
+// sub-steps (finer sub-steps do not move frame 60: what is left there is not theirs). Held to the 1% RMS
+// the defaults are chosen for (docs/ACCURACY.md).
 TEST_F(ReferenceRay, CoarseStepsIntegratedAcrossTheCurtainStayNearTheReference)
 {
     for (long long frame : {0LL, 28LL, 60LL}) {
@@ -181,7 +181,7 @@ TEST_F(ReferenceRay, CoarseStepsIntegratedAcrossTheCurtainStayNearTheReference)
             const accuracy::RelativeError e = againstReference(s, view, model, pixels, reference);
             std::printf("frame %lld, %g km steps, %.2f km sub-steps vs CPU reference at %zu pixels: rms %.3g, max %.3g\n",
                         frame, aurora.stepKm, resolveKm, e.pixels, e.rms, e.max);
-            EXPECT_LT(e.rms, 0.025) << "frame " << frame;
+            EXPECT_LT(e.rms, 1e-2) << "frame " << frame;
         }
     }
 }
