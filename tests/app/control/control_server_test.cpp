@@ -295,18 +295,20 @@ TEST(ControlServer, ANewClientClosesTheLongestIdleOneWhenFull)
 }
 
 // A client that sends nothing for the idle timeout is told so and closed; one that keeps talking is not.
+// The talking client speaks every 20 ms against a 1 s timeout, so that only a stall of the whole test
+// of 50 times that closes it.
 TEST(ControlServer, IdleClientsTimeOut)
 {
-    ControlServer server("127.0.0.1", 0, "", 0.3);
+    ControlServer server("127.0.0.1", 0, "", 1.0);
     Client quiet(server.port()), talking(server.port());
-    const auto end = std::chrono::steady_clock::now() + std::chrono::milliseconds(800);
+    const auto end = std::chrono::steady_clock::now() + std::chrono::milliseconds(2200);
     while (std::chrono::steady_clock::now() < end) {
         talking.send("status\n");
         for (const ControlLine& l : server.poll(16))
             server.answer(l.client, "ok");
-        std::this_thread::sleep_for(std::chrono::milliseconds(50));
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
     }
-    EXPECT_EQ(quiet.readLine(), "error closing this connection: idle for more than 0.3 s");
+    EXPECT_EQ(quiet.readLine(), "error closing this connection: idle for more than 1 s");
     EXPECT_EQ(quiet.readLine(), ""); // closed
     EXPECT_EQ(server.clientCount(), 1u);
 }
