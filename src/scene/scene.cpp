@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <filesystem>
 #include <sstream>
 
@@ -222,6 +223,12 @@ Camera readCamera(const TableReader& t, double planetRadiusKm)
 glm::dvec3 planetPoint(double latitudeDeg, double longitudeDeg, double radius)
 {
     return radius * common::unitFromLatLon(latitudeDeg, longitudeDeg);
+}
+
+double altitudeKm(glm::dvec3 positionKm, double radiusKm)
+{
+    const double altitude = glm::length(positionKm) - radiusKm;
+    return std::abs(altitude) <= 8.0 * std::numeric_limits<double>::epsilon() * radiusKm ? 0.0 : altitude;
 }
 
 LocalFrame localFrame(double latitudeDeg, double longitudeDeg)

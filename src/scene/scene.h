@@ -83,6 +83,12 @@ public:
 // A point at geographic latitude/longitude (degrees) and distance `radius` from the centre.
 glm::dvec3 planetPoint(double latitudeDeg, double longitudeDeg, double radius);
 
+// The altitude (km) of `positionKm` above the sphere of radius `radiusKm`: |position| − R. A point placed
+// on the sphere (planetPoint at radius R) comes back within a few ulps of R of it, on either side
+// (1e-12 km below R at half of all latitudes); within 8 ulps of R it is on the sphere, altitude 0, so
+// that a camera on the ground is not taken to be under it.
+double altitudeKm(glm::dvec3 positionKm, double radiusKm);
+
 // The local horizon frame at a site: up (the zenith), north and east, all unit vectors.
 struct LocalFrame {
     glm::dvec3 up, north, east;

@@ -104,6 +104,20 @@ TEST_F(ExtremeCameras, OnTheGroundLookingUpSeesTheAurora)
     EXPECT_GT(maxRadiance(image), kAuroraSeen);
 }
 
+// A camera exactly on the ground (altitude 0, entered as a latitude and longitude) sees the sky at every
+// latitude: its |position| lands a few ulps of R below the sphere at half of them, which must not put it
+// underground (a black image).
+TEST_F(ExtremeCameras, OnTheGroundAtAnyLatitudeSeesTheSky)
+{
+    for (double lat : {60.0, 61.0, 63.0, 64.0, 67.52, 68.0, 70.0}) {
+        const glm::dvec3 up = scene::planetPoint(lat, 20.0, 1.0);
+        const glm::dvec3 view = glm::normalize(north(up) + 0.58 * up); // 30 degrees up
+        const io::Image image = render(scene::planetPoint(lat, 20.0, 6371.0), view, up, 0.0);
+        EXPECT_EQ(io::countNonFinite(image), 0u) << lat;
+        EXPECT_GT(maxRadiance(image), 0.0) << "latitude " << lat << ": the camera was taken to be underground";
+    }
+}
+
 TEST_F(ExtremeCameras, OneMetreAboveGroundAlongTheHorizon)
 {
     const glm::dvec3 up = site();

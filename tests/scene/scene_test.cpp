@@ -282,3 +282,20 @@ TEST(SceneErrors, AMissingKeyPointsAtItsMisspelling)
                   .find("typo.toml:4: missing key 'camera.latitude_deg'"),
               std::string::npos);
 }
+
+// A camera entered on the ground is on the ground at every latitude: |planetPoint(R)| lands a few ulps of
+// R either side of it, and altitudeKm takes that for 0; a millimetre above or below is kept.
+TEST(Scene, PointsOnTheGroundHaveAltitudeZero)
+{
+    const double radius = 6371.0; // the planet of every shipped scene
+    int below = 0;
+    for (double lat = -90.0; lat <= 90.0; lat += 0.37)
+        for (double lon : {-170.0, 0.0, 20.0, 133.3}) {
+            const glm::dvec3 p = scene::planetPoint(lat, lon, radius);
+            below += glm::length(p) < radius;
+            EXPECT_EQ(scene::altitudeKm(p, radius), 0.0) << lat << ", " << lon;
+            EXPECT_NEAR(scene::altitudeKm(scene::planetPoint(lat, lon, radius + 1e-6), radius), 1e-6, 1e-11);
+            EXPECT_NEAR(scene::altitudeKm(scene::planetPoint(lat, lon, radius - 1e-6), radius), -1e-6, 1e-11);
+        }
+    EXPECT_GT(below, 0) << "no point fell below the sphere: the sweep does not test the rounding";
+}

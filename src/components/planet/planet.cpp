@@ -16,7 +16,7 @@ public:
     {
         program.set("uPlanetRadiusKm", static_cast<float>(radiusKm_));
         // From double: in float the altitude of a camera near the ground would move in 0.5 m steps.
-        program.set("uCameraAltitudeKm", static_cast<float>(glm::length(frame.cameraPositionKm) - radiusKm_));
+        program.set("uCameraAltitudeKm", static_cast<float>(scene::altitudeKm(frame.cameraPositionKm, radiusKm_)));
         program.set("uPlanetRadiance", glm::vec3(s_.surfaceRadiance));
     }
 
@@ -30,7 +30,7 @@ public:
     Reference(const Settings& s, double radiusKm) : s_(s), radiusKm_(radiusKm) {}
     scene::f64::Ray bound(scene::f64::Ray ray) const override
     {
-        return scene::f64::boundByGround(ray, radiusKm_, glm::length(ray.origin) - radiusKm_);
+        return scene::f64::boundByGround(ray, radiusKm_, scene::altitudeKm(ray.origin, radiusKm_));
     }
     scene::f64::Ray shade(scene::f64::Ray ray) const override
     {

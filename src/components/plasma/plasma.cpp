@@ -55,6 +55,12 @@ void readBox(const config::TableReader& t, Settings& p)
         t.fail("box_seed_mode", "the beams' speed " + number(beamSpeed) +
                                     " m/s exceeds 0.3 c, beyond this non-relativistic model (raise box_seed_mode "
                                     "or lower box_side_km)");
+    // The explicit push's Courant condition: a beam electron crosses less than one cell a step, or its
+    // charge skips cells and the box heats without bound (Birdsall & Langdon 1991, ch. 4).
+    const double cellsPerStep = beamSpeed * p.boxTimeStepS / (1e3 * p.boxSideKm / p.boxCells);
+    if (!(cellsPerStep < 1.0))
+        t.fail("box_time_step_s", "the beams cross " + number(cellsPerStep) +
+                                      " cells a step; at most 1 (lower box_time_step_s)");
     p.boxFrames = t.integer("box_frames", 2, 256, p.boxFrames);
     p.boxTimeBetweenFramesS = t.number("box_time_between_frames_s", p.boxTimeStepS, 1e3, p.boxTimeBetweenFramesS);
     const double steps = (p.boxFrames - 1) * std::round(p.boxTimeBetweenFramesS / p.boxTimeStepS);
@@ -115,8 +121,12 @@ public:
                                  p.particlesPerCellAxis;
         if (particles > 4e6)
             t.fail("particles_per_cell_axis", number(particles) + " electrons; at most 4e6");
-        p.device = t.choice("device", {"cpu", "gpu"}, 0) == 0 ? Settings::Device::Cpu : Settings::Device::Gpu;
-        p.kind = t.choice("kind", {"curls", "box"}, 0) == 0 ? Settings::Kind::Curls : Settings::Kind::Box;
+        // A derived scene keeps its base's device and kind unless it gives them.
+        p.device = t.choice("device", {"cpu", "gpu"}, p.device == Settings::Device::Cpu ? 0 : 1) == 0
+                       ? Settings::Device::Cpu
+                       : Settings::Device::Gpu;
+        p.kind = t.choice("kind", {"curls", "box"}, p.kind == Settings::Kind::Curls ? 0 : 1) == 0 ? Settings::Kind::Curls
+                                                                                                 : Settings::Kind::Box;
         if (p.kind == Settings::Kind::Box)
             readBox(t, p);
         else

@@ -256,6 +256,23 @@ TEST(PlasmaBoxSettings, DefaultIsCurlsAndBoxReadsItsKeys)
     EXPECT_EQ(components::plasma::Settings().kind, components::plasma::Settings::Kind::Curls);
 }
 
+// A scene deriving from a box scene changes only what it gives: its [plasma] keys leave the base's kind
+// and device as they were.
+TEST(PlasmaBoxSettings, ADerivedSceneKeepsItsBasesKindAndDevice)
+{
+    const std::string base = testing::TempDir() + "plasma_box_base.toml";
+    std::ofstream(base) << kHead + "kind = \"box\"\ndevice = \"gpu\"\nbox_cells = 16\n";
+    const std::string derived = testing::TempDir() + "plasma_box_derived.toml";
+    std::ofstream(derived) << "[scene]\nbase = \"plasma_box_base.toml\"\n[plasma]\nseed_mode = 2\nbox_rayleigh_per_km = 70.0\n";
+    const scene::Scene scene = components::loadScene(derived);
+    const auto& p = scene.settings<components::plasma::Settings>();
+    EXPECT_EQ(p.kind, components::plasma::Settings::Kind::Box);
+    EXPECT_EQ(p.device, components::plasma::Settings::Device::Gpu);
+    EXPECT_EQ(p.boxCells, 16);
+    EXPECT_EQ(p.seedMode, 2);
+    EXPECT_EQ(p.boxRayleighPerKm, 70.0);
+}
+
 // Each error names the file, the line and the key.
 TEST(PlasmaBoxSettings, ErrorsNameFileLineAndKey)
 {

@@ -292,6 +292,14 @@ void printKnobTable(const scene::Scene& base, const SceneView& view, const std::
     applyFinestSettings(common.scene);
     common.gpu = renderView(common.scene, view, shaderDir, 0);
     const std::vector<glm::ivec2> sampled = samplePixels(common.gpu.image, floor, settings.pixels);
+    if (sampled.empty()) {
+        char message[160];
+        std::snprintf(message, sizeof message,
+                      "no pixel of this view is above the noise floor (%.3g cd/m^2): nothing to compare with the CPU "
+                      "reference",
+                      floor);
+        throw std::runtime_error(message);
+    }
     computeReferences(common, view, sampled, settings);
     std::vector<References> own;
     for (const SweepKnob& knob : knobs)
@@ -351,7 +359,7 @@ void printViewError(const scene::Scene& scene, int index, const ViewError& e, st
 {
     char line[512];
     std::snprintf(line, sizeof line, "%d,%s,%.3f,%.3f,%s,%s,%s,%zu,", index, accuracy::viewKindName(e.kind),
-                  glm::length(e.frame.cameraPositionKm) - scene.planetRadiusKm, e.frame.timeS,
+                  scene::altitudeKm(e.frame.cameraPositionKm, scene.planetRadiusKm), e.frame.timeS,
                   vectorText(e.frame.cameraPositionKm).c_str(), vectorText(-e.frame.cameraBack).c_str(),
                   vectorText(e.frame.cameraUp).c_str(), e.auroraPixels);
     out << line;

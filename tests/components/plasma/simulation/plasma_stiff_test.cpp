@@ -116,7 +116,8 @@ TEST(PlasmaStiff, SelfConsistentEnergyKeptAtLargeOmegaCDt)
 }
 
 // ω_pΔt just below 2 is accepted and just above refused, naming the key, for the strip and the box
-// (ω_p = 1.784e5 rad/s at the default 1e7 m⁻³: Δt = 1.115e-5 s is 1.99, 1.127e-5 s is 2.01).
+// (ω_p = 1.784e5 rad/s at the default 1e7 m⁻³: Δt = 1.115e-5 s is 1.99, 1.127e-5 s is 2.01); the box
+// also refuses a step its beams cross a cell in.
 TEST(PlasmaStiff, ScenesRefuseOmegaPDtFromTwo)
 {
     const auto error = [](const std::string& plasma) { return test::loadErrorOfText("stiff.toml", kSceneHead + plasma); };
@@ -129,8 +130,15 @@ TEST(PlasmaStiff, ScenesRefuseOmegaPDtFromTwo)
     EXPECT_EQ(error("[plasma]\ntime_step_s = " + dt(1.99) + "\ntime_between_frames_s = 1e-4\n"), "");
     const std::string strip = error("[plasma]\ntime_step_s = " + dt(2.01) + "\ntime_between_frames_s = 1e-4\n");
     EXPECT_NE(strip.find("plasma.time_step_s: omega_p dt = 2.01 must be below 2"), std::string::npos) << strip;
-    EXPECT_EQ(error("[plasma]\nkind = \"box\"\nbox_time_step_s = " + dt(1.99) + "\nbox_time_between_frames_s = 1e-4\n"),
+    // The box's beams must also cross less than a cell a step: at 1.99 the default seed mode's beams
+    // cross about 1.5, the shortest mode's (half the speed) fewer than 1.
+    EXPECT_EQ(error("[plasma]\nkind = \"box\"\nbox_seed_mode = 8\nbox_time_step_s = " + dt(1.99) +
+                    "\nbox_time_between_frames_s = 1e-4\n"),
               "");
+    const std::string courant =
+        error("[plasma]\nkind = \"box\"\nbox_time_step_s = " + dt(1.99) + "\nbox_time_between_frames_s = 1e-4\n");
+    EXPECT_NE(courant.find("plasma.box_time_step_s: the beams cross 1."), std::string::npos) << courant;
+    EXPECT_NE(courant.find(" cells a step; at most 1 (lower box_time_step_s)"), std::string::npos) << courant;
     const std::string box =
         error("[plasma]\nkind = \"box\"\nbox_time_step_s = " + dt(2.01) + "\nbox_time_between_frames_s = 1e-4\n");
     EXPECT_NE(box.find("plasma.box_time_step_s: omega_p dt = 2.01 must be below 2"), std::string::npos) << box;
