@@ -3,14 +3,15 @@
 // (src/common/glsl.h); needs render/ray_sphere.glsl.
 
 // Where the ray from a camera `altitude` km above the ground first meets the deck: the top seen from
-// above, the base seen from below, 0 from inside; negative when it never does.
+// above, the base seen from below, 0 from inside; negative when it never does. A camera on the top (or
+// the base) is outside: looking away from the deck it sees none, looking into it meets it at 0.
 real cloudDeckHit(vec3 o, vec3 d, real R, real altitude, real baseKm, real topKm)
 {
-    if (altitude > topKm) {
+    if (altitude >= topKm) {
         vec2 top = raySphere(o, d, R + topKm, altitude - topKm);
         return top.x <= top.y ? top.x : real(-1.0);
     }
-    if (altitude < baseKm) {
+    if (altitude <= baseKm) {
         vec2 base = raySphere(o, d, R + baseKm, altitude - baseKm);
         return base.x <= base.y ? base.y : real(-1.0);
     }

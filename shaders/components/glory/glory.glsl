@@ -79,7 +79,7 @@ Ray shadeGlory(Ray ray)
     float mu0 = dot(up, uGloryLightDirection);
     if (mu0 <= 0.0)
         return ray;
-    bool above = ray.altitude > uDeckTopKm, below = ray.altitude < uDeckBaseKm;
+    bool above = ray.altitude >= uDeckTopKm, below = ray.altitude <= uDeckBaseKm;
     float altitude = above ? uDeckTopKm : (below ? uDeckBaseKm : ray.altitude);
     vec3 deck = uGloryLightRgb * cloudDeckDiffuse(mu0, uDeckOpticalThickness, uDeckAsymmetry, above, below);
     if (above) {

@@ -208,7 +208,7 @@ public:
         if (mu0 <= 0.0)
             return ray;
         const double base = s_.deckTopKm - s_.deckThicknessKm;
-        const bool above = ray.altitude > s_.deckTopKm, below = ray.altitude < base;
+        const bool above = ray.altitude >= s_.deckTopKm, below = ray.altitude <= base;
         const double altitude = above ? s_.deckTopKm : (below ? base : ray.altitude);
         glm::dvec3 deck = lightRgb_ * f64::cloudDeckDiffuse(mu0, s_.opticalThickness, asymmetry_, above, below);
         if (above) {

@@ -11,6 +11,7 @@
 #include "components/glory/optics/water.h"
 #include "components/registry.h"
 #include "scene/load_error.h"
+#include "scene/ray_steps.h"
 #include "scene/scene.h"
 
 #include <boost/math/quadrature/gauss_kronrod.hpp>
@@ -21,6 +22,15 @@
 
 using namespace aurorawall;
 using namespace aurorawall::components::glory::optics;
+namespace aurorawall::components::glory::deck {
+using namespace aurorawall::scene::f64;
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wunused-function"
+#include "physics/constants.glsl"
+#include "components/glory/cloud_deck.glsl"
+#pragma GCC diagnostic pop
+} // namespace aurorawall::components::glory::deck
+
 namespace mie = aurorawall::components::glory::mie;
 
 namespace {
@@ -313,4 +323,25 @@ TEST(GlorySettings, BadInputNamesFileLineAndKey)
         const std::string message = test::loadErrorOfText(c.name, c.text);
         EXPECT_NE(message.find(c.expected), std::string::npos) << c.name << ": " << message;
     }
+}
+
+// A camera on the deck's top (or base) is outside it: looking away it sees no deck, looking into it
+// meets the deck at once; inside, the deck is at 0 in every direction (km; the deck 1 to 2 km up).
+TEST(CloudDeck, ACameraOnItsSurfaceIsOutside)
+{
+    using components::glory::deck::cloudDeckHit;
+    const double R = 6371.0, base = 1.0, top = 2.0;
+    const glm::dvec3 up(0.0, 0.0, 1.0), along(1.0, 0.0, 0.0);
+    for (double altitude : {top, base}) {
+        const glm::dvec3 o = (R + altitude) * up;
+        const double away = cloudDeckHit(o, altitude == top ? up : -up, R, altitude, base, top);
+        const double into = cloudDeckHit(o, altitude == top ? -up : up, R, altitude, base, top);
+        EXPECT_TRUE(away < 0.0 || away > 2.0 * R) << "camera at " << altitude << " km, looking away: " << away;
+        EXPECT_EQ(into, 0.0) << "camera at " << altitude << " km, looking into the deck";
+    }
+    const glm::dvec3 inside = (R + 1.5) * up;
+    for (const glm::dvec3& d : {up, -up, along})
+        EXPECT_EQ(cloudDeckHit(inside, d, R, 1.5, base, top), 0.0);
+    // Above the top, looking down: the top at the height difference.
+    EXPECT_NEAR(cloudDeckHit((R + 5.0) * up, -up, R, 5.0, base, top), 3.0, 1e-9);
 }
