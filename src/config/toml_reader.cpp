@@ -7,6 +7,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <memory>
 #include <sstream>
 
@@ -272,6 +273,16 @@ const TomlValue& TableReader::at(const std::string& key) const
     return table_.as_table().at(key);
 }
 
+// toml11 reads an integer literal beyond 64 bits as the nearest limit, which no key allows: say so rather
+// than echo a number the file does not hold.
+static std::string givenInteger(const TomlValue& v)
+{
+    const auto x = v.as_integer();
+    if (x == std::numeric_limits<decltype(x)>::max() || x == std::numeric_limits<decltype(x)>::min())
+        return "an integer beyond 64 bits";
+    return std::to_string(x);
+}
+
 static bool toNumber(const TomlValue& v, double& out)
 {
     if (v.is_floating()) { out = v.as_floating(); return true; }
@@ -282,11 +293,16 @@ static bool toNumber(const TomlValue& v, double& out)
 double TableReader::boundedNumber(const std::string& key, double lo, double hi, bool loIncluded) const
 {
     double x = 0;
-    if (!toNumber(at(key), x))
+    const TomlValue& v = at(key);
+    if (!toNumber(v, x))
         fail(key, "expected a number");
     if (!std::isfinite(x) || (loIncluded ? x < lo : x <= lo) || x > hi) {
         std::ostringstream s;
-        s << "must be a finite number in " << (loIncluded ? "[" : "(") << lo << ", " << hi << "] (got " << x << ")";
+        s << "must be a finite number in " << (loIncluded ? "[" : "(") << lo << ", " << hi << "] (got ";
+        if (v.is_integer())
+            s << givenInteger(v) << ")";
+        else
+            s << x << ")";
         fail(key, s.str());
     }
     return x;
@@ -326,8 +342,8 @@ static std::string integerProblem(const TomlValue& v, long long lo, long long hi
 {
     if (!v.is_integer())
         return "expected an integer";
-    return "must be an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "] (got " +
-           std::to_string(v.as_integer()) + ")";
+    return "must be an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "] (got " + givenInteger(v) +
+           ")";
 }
 
 int TableReader::integer(const std::string& key, int lo, int hi) const

@@ -299,3 +299,20 @@ TEST(Scene, PointsOnTheGroundHaveAltitudeZero)
         }
     EXPECT_GT(below, 0) << "no point fell below the sphere: the sweep does not test the rounding";
 }
+
+// An integer literal beyond 64 bits (which the TOML parser reads as the nearest limit) is named as such,
+// not echoed as a number the file does not hold.
+TEST(SceneErrors, IntegersBeyondSixtyFourBitsAreNamedSo)
+{
+    const std::string base = "[scene]\nbase = \"" + kScenes + "/quiet-arc.toml\"\n[aurora]\n";
+    const std::string number =
+        aurorawall::test::loadErrorOfText("huge_number.toml", base + "step_km = 99999999999999999999\n");
+    EXPECT_NE(number.find(":4: aurora.step_km: must be a finite number in [0.05, 100] (got an integer beyond 64 bits)"),
+              std::string::npos)
+        << number;
+    const std::string count =
+        aurorawall::test::loadErrorOfText("huge_count.toml", base + "footprint_map_size = -99999999999999999999\n");
+    EXPECT_NE(count.find(":4: aurora.footprint_map_size: must be an integer in [16, 8192] (got an integer beyond 64 bits)"),
+              std::string::npos)
+        << count;
+}
