@@ -56,49 +56,61 @@ std::filesystem::path resolvedPath(const std::string& path)
     return error ? absolute.lexically_normal() : resolved;
 }
 
+// A file the run writes (README.md, "Outputs"): its path, the option that asks for it and the rank that
+// writes it.
+struct OutputFile {
+    std::string path;
+    const char* option;
+    int rank;
+};
+
+std::vector<OutputFile> outputFiles(const RenderOptions& options, const wall::Wall& wall)
+{
+    std::vector<OutputFile> files;
+    for (const auto& [path, option] : {std::pair{options.statsFile, "--stats"}, std::pair{options.recordPath, "--record-path"},
+                                       std::pair{options.costMapFile, "--cost-map"}})
+        if (!path.empty())
+            files.push_back({path, option, 0});
+    if (options.gather)
+        for (const char* name : {"/wall.exr", "/wall.png"})
+            files.push_back({options.outDir + name, "--gather", 0});
+    if (options.tiles) // each rank writes its own screens' tiles
+        for (const wall::Screen& screen : wall.screens)
+            files.push_back({tilePath(options.outDir, screen.name), "--tiles", screen.rank});
+    return files;
+}
+
 // Two outputs at one path, an output at the path of an input, or an output among the files of the
 // --movie folder would write one over the other: a usage error naming both, before anything is written.
-void refuseClashingPaths(const RenderOptions& options, const wall::Wall& wall, const scene::Scene& scene)
+void refuseClashingPaths(const std::vector<OutputFile>& outputs, const RenderOptions& options,
+                         const scene::Scene& scene)
 {
-    struct NamedPath {
+    struct Input {
         std::string path;
         std::string what;
         std::filesystem::path resolved;
     };
-    std::vector<NamedPath> outputs;
-    for (const auto& [path, what] : {std::pair{options.statsFile, "--stats"}, std::pair{options.recordPath, "--record-path"},
-                                     std::pair{options.costMapFile, "--cost-map"}})
-        if (!path.empty())
-            outputs.push_back({path, what, resolvedPath(path)});
-    if (options.gather)
-        for (const char* name : {"/wall.exr", "/wall.png"})
-            outputs.push_back({options.outDir + name, "--gather", resolvedPath(options.outDir + name)});
-    if (options.tiles)
-        for (const wall::Screen& screen : wall.screens) {
-            const std::string path = tilePath(options.outDir, screen.name);
-            outputs.push_back({path, "--tiles", resolvedPath(path)});
-        }
-    std::vector<NamedPath> inputs = {{options.wallFile, "the --wall file", resolvedPath(options.wallFile)}};
-    for (const std::string& file : scene.files)
-        inputs.push_back({file, file == scene.files.front() ? "the --scene file" : "a base scene of --scene",
-                          resolvedPath(file)});
+    std::vector<Input> inputs = {{options.wallFile, "the --wall file", resolvedPath(options.wallFile)},
+                                 {options.sceneFile, "the --scene file", resolvedPath(options.sceneFile)}};
+    for (const std::string& file : scene.baseFiles)
+        inputs.push_back({file, "a base scene of --scene", resolvedPath(file)});
     if (!options.controlTokenFile.empty())
         inputs.push_back({options.controlTokenFile, "the --control-token-file", resolvedPath(options.controlTokenFile)});
     const std::filesystem::path movie = options.movieDir.empty() ? std::filesystem::path() : resolvedPath(options.movieDir);
-    for (std::size_t i = 0; i < outputs.size(); ++i) {
-        const NamedPath& out = outputs[i];
-        for (std::size_t j = 0; j < i; ++j)
-            if (outputs[j].resolved == out.resolved)
-                throw common::UsageError(out.what + " " + out.path + " is the file of " + outputs[j].what + " " +
-                                         outputs[j].path + ": give them different paths");
-        for (const NamedPath& in : inputs)
-            if (in.resolved == out.resolved)
-                throw common::UsageError(out.what + " " + out.path + " would overwrite " + in.what + " (" + in.path +
-                                         "): give another path");
-        if (!movie.empty() && out.resolved.parent_path() == movie &&
-            MovieWriter::writes(out.resolved.filename().string()))
-            throw common::UsageError(out.what + " " + out.path + " is a file the --movie folder's frames write: "
-                                                                 "give another path");
+    std::vector<std::filesystem::path> resolved;
+    for (const OutputFile& out : outputs) {
+        resolved.push_back(resolvedPath(out.path));
+        const std::string named = std::string(out.option) + " " + out.path;
+        for (std::size_t j = 0; j + 1 < resolved.size(); ++j)
+            if (resolved[j] == resolved.back())
+                throw common::UsageError(named + " is the file of " + outputs[j].option + " " + outputs[j].path +
+                                         ": give them different paths");
+        for (const Input& in : inputs)
+            if (in.resolved == resolved.back())
+                throw common::UsageError(named + " would overwrite " + in.what + " (" + in.path + "): give another path");
+        if (!movie.empty() && resolved.back().parent_path() == movie &&
+            MovieWriter::writes(resolved.back().filename().string()))
+            throw common::UsageError(named + " is a file the --movie folder's frames write: give another path");
     }
 }
 
@@ -131,7 +143,8 @@ void configure(const cluster::MpiWorld& world, int argc, char** argv, WallSessio
                          (s.wall.rankCount == 1 ? " rank" : " ranks") + ", but mpirun started " +
                          std::to_string(world.size()) + " (use mpirun -n " + std::to_string(s.wall.rankCount) + ")");
     s.scene = components::loadScene(options.sceneFile);
-    refuseClashingPaths(options, s.wall, s.scene);
+    const std::vector<OutputFile> outputs = outputFiles(options, s.wall);
+    refuseClashingPaths(outputs, options, s.scene);
     s.dataDir = options.dataDir.empty() ? common::dataDirectory() : options.dataDir;
     s.shaderDir = s.dataDir + "/shaders";
     render::marchShaderSource(s.scene, s.shaderDir); // every module readable before any window opens
@@ -141,21 +154,11 @@ void configure(const cluster::MpiWorld& world, int argc, char** argv, WallSessio
         io::ensureWritableDirectory(options.movieDir, "--movie");
         refuseEarlierMovie(options.movieDir);
     }
-    // The master's files go into existing folders (README.md, "Outputs"); checked before any
-    // frame, so that no run's data is lost to a path that cannot be written.
-    if (world.isMaster()) {
-        const std::pair<const std::string&, const char*> files[] = {
-            {options.statsFile, "--stats"}, {options.recordPath, "--record-path"}, {options.costMapFile, "--cost-map"}};
-        for (const auto& [path, option] : files)
-            if (!path.empty())
-                io::ensureWritableFile(path, option);
-        if (options.gather)
-            for (const char* name : {"/wall.exr", "/wall.png"})
-                io::ensureWritableFile(options.outDir + name, "--gather");
-    }
-    if (options.tiles) // each rank writes its own screens' tiles
-        for (int screen : s.wall.screensOfRank(world.rank()))
-            io::ensureWritableFile(tilePath(options.outDir, s.wall.screens[screen].name), "--tiles");
+    // The files go into existing folders (README.md, "Outputs"); each rank checks those it writes before
+    // any frame, so that no run's data is lost to a path that cannot be written.
+    for (const OutputFile& file : outputs)
+        if (file.rank == world.rank())
+            io::ensureWritableFile(file.path, file.option);
     s.exposure = options.exposure > 0 ? options.exposure : s.scene.exposure;
     s.toneMap = toneMapFor(options, s.exposure);
     s.balanced = options.balance == Balance::On || (options.balance == Balance::Auto && world.size() > 1);

@@ -329,12 +329,11 @@ double TableReader::numberAbove(const std::string& key, double lo, double hi, do
 }
 
 // Integers are TOML integers: a float, even 2.0, is not a count of screens or pixels.
-template <class Int>
-static bool toInteger(const TomlValue& v, long long lo, long long hi, Int& out)
+static bool toInteger(const TomlValue& v, long long lo, long long hi, long long& out)
 {
     if (!v.is_integer() || v.as_integer() < lo || v.as_integer() > hi)
         return false;
-    out = static_cast<Int>(v.as_integer());
+    out = v.as_integer();
     return true;
 }
 
@@ -348,11 +347,7 @@ static std::string integerProblem(const TomlValue& v, long long lo, long long hi
 
 int TableReader::integer(const std::string& key, int lo, int hi) const
 {
-    const TomlValue& v = at(key);
-    int x = 0;
-    if (!toInteger(v, lo, hi, x))
-        fail(key, integerProblem(v, lo, hi));
-    return x;
+    return static_cast<int>(integer64(key, lo, hi));
 }
 
 int TableReader::integer(const std::string& key, int lo, int hi, int fallback) const
@@ -360,15 +355,18 @@ int TableReader::integer(const std::string& key, int lo, int hi, int fallback) c
     return has(key) ? integer(key, lo, hi) : fallback;
 }
 
-long long TableReader::integer64(const std::string& key, long long lo, long long hi, long long fallback) const
+long long TableReader::integer64(const std::string& key, long long lo, long long hi) const
 {
-    if (!has(key))
-        return fallback;
     const TomlValue& v = at(key);
     long long x = 0;
     if (!toInteger(v, lo, hi, x))
         fail(key, integerProblem(v, lo, hi));
     return x;
+}
+
+long long TableReader::integer64(const std::string& key, long long lo, long long hi, long long fallback) const
+{
+    return has(key) ? integer64(key, lo, hi) : fallback;
 }
 
 std::vector<int> TableReader::integers(const std::string& key, int lo, int hi) const
@@ -378,10 +376,10 @@ std::vector<int> TableReader::integers(const std::string& key, int lo, int hi) c
         fail(key, "expected an array of integers");
     std::vector<int> out;
     for (const auto& item : v.as_array()) {
-        int x = 0;
+        long long x = 0;
         if (!toInteger(item, lo, hi, x))
             fail(key, "item " + std::to_string(out.size()) + ": " + integerProblem(item, lo, hi));
-        out.push_back(x);
+        out.push_back(static_cast<int>(x));
     }
     return out;
 }

@@ -55,6 +55,7 @@ public:
     int integer(const std::string& key, int lo, int hi) const;
     int integer(const std::string& key, int lo, int hi, int fallback) const;
     // The same for values beyond int's range (a 32-bit seed).
+    long long integer64(const std::string& key, long long lo, long long hi) const;
     long long integer64(const std::string& key, long long lo, long long hi, long long fallback) const;
     // An array of TOML integers, each within [lo, hi].
     std::vector<int> integers(const std::string& key, int lo, int hi) const;

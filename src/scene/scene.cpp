@@ -252,7 +252,7 @@ glm::dvec3 directionInSky(double latitudeDeg, double longitudeDeg, double elevat
 }
 
 Scene::Scene(const Scene& other)
-    : sourceFile(other.sourceFile), files(other.files), name(other.name), planetRadiusKm(other.planetRadiusKm), camera(other.camera),
+    : sourceFile(other.sourceFile), baseFiles(other.baseFiles), name(other.name), planetRadiusKm(other.planetRadiusKm), camera(other.camera),
       startTimeS(other.startTimeS), timeStepS(other.timeStepS), exposure(other.exposure),
       components_(other.components_)
 {
@@ -377,9 +377,9 @@ Scene SceneLoader::load(const std::string& path, const Registry& registry, int d
         if (name.empty() || !std::filesystem::is_regular_file(base))
             meta.fail("base", "'" + name + "' is not a scene file (" + base + ", relative to this file)");
         s = load(base, registry, depth + 1);
+        s.baseFiles.insert(s.baseFiles.begin(), base);
     }
     s.sourceFile = path;
-    s.files.insert(s.files.begin(), path);
     s.name = derived ? meta.string("name", s.name) : meta.string("name");
     if (!derived || meta.has("components"))
         listComponents(s, meta, registry);

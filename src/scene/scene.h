@@ -30,8 +30,8 @@ struct Camera {
 
 struct Scene {
     std::string sourceFile;
-    // The files it was read from: its own, then the base scenes it derives from ([scene] base).
-    std::vector<std::string> files;
+    // The base scenes it derives from ([scene] base), nearest first.
+    std::vector<std::string> baseFiles;
     std::string name;
     // Radius of the planet every layer is measured from (the planet component's radius_km).
     double planetRadiusKm = 6371.0;

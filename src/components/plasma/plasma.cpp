@@ -121,12 +121,9 @@ public:
                                  p.particlesPerCellAxis;
         if (particles > 4e6)
             t.fail("particles_per_cell_axis", number(particles) + " electrons; at most 4e6");
-        // A derived scene keeps its base's device and kind unless it gives them.
-        p.device = t.choice("device", {"cpu", "gpu"}, p.device == Settings::Device::Cpu ? 0 : 1) == 0
-                       ? Settings::Device::Cpu
-                       : Settings::Device::Gpu;
-        p.kind = t.choice("kind", {"curls", "box"}, p.kind == Settings::Kind::Curls ? 0 : 1) == 0 ? Settings::Kind::Curls
-                                                                                                 : Settings::Kind::Box;
+        // A derived scene keeps its base's device and kind unless it gives them (the words in enum order).
+        p.device = static_cast<Settings::Device>(t.choice("device", {"cpu", "gpu"}, static_cast<int>(p.device)));
+        p.kind = static_cast<Settings::Kind>(t.choice("kind", {"curls", "box"}, static_cast<int>(p.kind)));
         if (p.kind == Settings::Kind::Box)
             readBox(t, p);
         else
