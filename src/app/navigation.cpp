@@ -157,7 +157,7 @@ scene::Camera Navigation::apply(const scene::Camera& camera, const GamepadMotion
 
 glm::dvec3 Navigation::moved(const glm::dvec3& position, const glm::dquat& orientation, const glm::dvec3& ownMoveS) const
 {
-    const double altitudeKm = glm::length(position) - planetRadiusKm_;
+    const double altitudeKm = scene::altitudeKm(position, planetRadiusKm_);
     glm::dvec3 to = position + orientation * ownMoveS * speedKmPerS(altitudeKm);
     // Never below the ground: back up along the vertical to kMinAltitudeKm.
     const double r = glm::length(to);

@@ -26,7 +26,7 @@ std::string format(const char* pattern, double a, double b = 0.0, double c = 0.0
 // goto may put it.
 std::string setTime(double timeS, cluster::MasterClock& clock, double planetRadiusKm)
 {
-    const double altitudeKm = glm::length(clock.cameraAt(timeS).positionKm) - planetRadiusKm;
+    const double altitudeKm = scene::altitudeKm(clock.cameraAt(timeS).positionKm, planetRadiusKm);
     if (!(altitudeKm <= kMaxAltitudeKm))
         throw CommandError(format("time: the camera, flying at %.6g km/s, would be %.3g km above the ground "
                                   "(at most 1e6 km, as for goto)",
