@@ -3,6 +3,8 @@
 # on as SIGTERM, the master stops at the next frame, and the run's outputs are those of the frames
 # drawn: the statistics written as they went (one row per frame), every movie frame complete and
 # listed, no temporary file left, and one line saying so. SIGTERM to one rank alone does the same.
+# A rank that prints a line a frame, which mpirun stops reading at SIGINT, still stops and writes
+# the wall image.
 source "$(dirname "$0")/lib.sh"
 
 # A second wall, one of whose ranks gets SIGTERM: the whole wall stops, and says so.
@@ -18,6 +20,22 @@ kill -0 $one 2>/dev/null && { kill -KILL $one; fail "still running 30 s after SI
 wait $one || true
 grep -q 'stopped by SIGTERM after [0-9]* frames' "$WORK/one.log" || { cat "$WORK/one.log"; fail "SIGTERM to one rank: no clean stop"; }
 note "SIGTERM to one rank (pid $rank) stopped the wall: $(grep -o 'stopped by .*' "$WORK/one.log")"
+
+# One rank of a one-screen wall, fast frames, a line a frame on standard output: mpirun stops reading it
+# at SIGINT and sends SIGTERM a second later; the rank must not sit blocked on the full pipe.
+sed 's/^columns = 2/columns = 1/; s/^rows = 2/rows = 1/' "$DATA/tiny-2x2.toml" >"$WORK/tiny-1x1.toml"
+"$MPIEXEC" -n 1 "${MPI_FLAGS[@]}" -x LP_NUM_THREADS=1 "$AW" render --wall "$WORK/tiny-1x1.toml" --scene "$SCENE" \
+    --frames 100000 --stats "$WORK/loud.csv" --gather --out "$WORK/loud" >"$WORK/loud.log" 2>&1 &
+loud=$!
+for _ in $(seq 600); do [ "$(wc -l <"$WORK/loud.csv" 2>/dev/null || echo 0)" -ge 6 ] && break; sleep 0.1; done
+sleep 1
+kill -INT $loud
+for _ in $(seq 300); do kill -0 $loud 2>/dev/null || break; sleep 0.1; done
+kill -0 $loud 2>/dev/null && { kill -KILL $loud; fail "a rank printing every frame: still running 30 s after SIGINT"; }
+wait $loud || true
+[ -s "$WORK/loud/wall.exr" ] && [ -s "$WORK/loud/wall.png" ] ||
+    { tail -n 5 "$WORK/loud.log"; fail "a rank printing every frame: no wall image after SIGINT ($(ls "$WORK/loud"))"; }
+note "a rank printing every frame stopped at SIGINT with its wall image written"
 
 "$MPIEXEC" -n 4 "${MPI_FLAGS[@]}" -x LP_NUM_THREADS=1 "$AW" render --wall "$DATA/tiny-2x2.toml" --scene "$SCENE" \
     --frames 100000 --quiet --stats "$WORK/s.csv" --movie "$WORK/movie" --out "$WORK/out" \
