@@ -35,8 +35,11 @@ void printGloryTable(const std::string& sceneFile, std::ostream& out)
             std::snprintf(cell, sizeof cell, ",%.8g", table.at(int(w), a));
             out << cell;
         }
-        std::snprintf(cell, sizeof cell, ",%.8g,%.8g,%.8g\n", rgb[size_t(a)].r, rgb[size_t(a)].g, rgb[size_t(a)].b);
-        out << cell;
+        for (int channel = 0; channel < 3; ++channel) {
+            std::snprintf(cell, sizeof cell, ",%.8g", rgb[size_t(a)][channel]);
+            out << cell;
+        }
+        out << '\n';
     }
 }
 
