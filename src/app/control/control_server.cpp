@@ -158,7 +158,8 @@ void ControlServer::read(Client& c)
             c.partial.clear();
             if (c.failed || c.overRate)
                 return; // the rest of the bytes are dropped: nothing more is read from it
-        } else if (c.partial.size() >= kMaxLineBytes) {
+        } else if (c.partial.size() >= kMaxLineBytes &&
+                   !(buffer[i] == '\r' && c.partial.size() == kMaxLineBytes)) { // a CR before the LF ends the line too
             c.outgoing += "error line longer than " + std::to_string(kMaxLineBytes) + " bytes; closing\n";
             flush(c);
             c.failed = true;

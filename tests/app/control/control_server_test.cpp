@@ -178,6 +178,23 @@ TEST(ControlServer, AnOverlongLineIsRefusedAndTheClientClosed)
     EXPECT_EQ(server.clientCount(), 0u);
 }
 
+// The limit is of the line itself: a CR before its LF (a "\r\n" client) does not count.
+TEST(ControlServer, ALineOfTheLongestLengthIsTakenWithEitherEnd)
+{
+    ControlServer server("127.0.0.1", 0);
+    const std::string longest(ControlServer::kMaxLineBytes, 'x');
+    Client c(server.port());
+    c.send(longest + "\n" + longest + "\r\n");
+    const std::vector<ControlLine> lines = pollFor(server, 2);
+    ASSERT_EQ(lines.size(), 2u);
+    EXPECT_EQ(lines[0].text, longest);
+    EXPECT_EQ(lines[1].text, longest + "\r"); // the line as sent; the parser drops the '\r'
+    EXPECT_EQ(server.clientCount(), 1u);
+    c.send(longest + "x\r\n");
+    EXPECT_TRUE(pollFor(server, 1, 16, std::chrono::milliseconds(300)).empty());
+    EXPECT_EQ(c.readLine(), "error line longer than 1024 bytes; closing");
+}
+
 TEST(ControlServer, RefusesAddressesItCannotListenOn)
 {
     EXPECT_THROW(ControlServer("localhost", 0), common::UsageError); // a name, not an IPv4 address
