@@ -24,7 +24,9 @@ std::string format(const char* pattern, Args... args)
 std::vector<std::string> hudLines(const HudFacts& f)
 {
     std::vector<std::string> lines;
-    lines.push_back(format("FPS %.1f  T %.2f S%s", f.framesPerS, f.timeS, f.paused ? "  PAUSED" : ""));
+    // Times up to 1e15 s are accepted: beyond 1e9 s in exponent form, so that the line keeps "PAUSED".
+    const char* first = std::abs(f.timeS) < 1e9 ? "FPS %.1f  T %.2f S%s" : "FPS %.1f  T %.4E S%s";
+    lines.push_back(format(first, f.framesPerS, f.timeS, f.paused ? "  PAUSED" : ""));
     lines.push_back(format("ALT %.3f KM", f.altitudeKm));
     lines.push_back(format("LAT %.3f LON %.3f", f.latitudeDeg, f.longitudeDeg));
     const std::vector<double>& ms = f.rankRenderMs;

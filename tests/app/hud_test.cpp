@@ -77,6 +77,15 @@ TEST(Hud, LinesFitTheMessageAndTheFont)
         EXPECT_LE(line.size(), cluster::kHudColumns) << line;
         EXPECT_TRUE(std::all_of(line.begin(), line.end(), render::hasGlyph)) << line;
     }
+    // The largest times a scene or the control accepts (1e15 s) keep the whole first line.
+    f.framesPerS = 9999.9;
+    for (const double t : {1e15, -1e15}) {
+        f.timeS = t;
+        const std::string first = hudLines(f).front();
+        EXPECT_LE(first.size(), cluster::kHudColumns) << first;
+        EXPECT_TRUE(std::all_of(first.begin(), first.end(), render::hasGlyph)) << first;
+        EXPECT_EQ(first.substr(first.size() - 6), "PAUSED") << first;
+    }
 }
 
 TEST(HudFont, MaskOfKnownGlyphs)

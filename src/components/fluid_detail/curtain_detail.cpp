@@ -1,8 +1,9 @@
 #include "components/fluid_detail/curtain_detail.h"
 
-#include "physics/constants.h"
+#include "common/formatted.h"
 #include "components/fluid_detail/cached_flux_frames.h"
 #include "io/table_cache.h"
+#include "physics/constants.h"
 
 #include <algorithm>
 #include <chrono>
@@ -43,10 +44,8 @@ CurtainDetail::CurtainDetail(const Settings& detail)
     columns_.upload(f);
     shape_ = detailShape(spec_, f);
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    char text[400];
-    std::snprintf(text, sizeof text, "fluid_detail: %d x %d cells, %d frames, reach %.1f km, %s: %.0f ms", f.nx, f.ny,
-                  f.frames, shape_.reachKm, cached.outcome.c_str(), ms);
-    summary_ = text;
+    summary_ = common::formatted("fluid_detail: %d x %d cells, %d frames, reach %.1f km, %s: %.0f ms", f.nx, f.ny,
+                                 f.frames, shape_.reachKm, cached.outcome.c_str(), ms);
 }
 
 void CurtainDetail::bind(gl::Program& program) const

@@ -1,16 +1,17 @@
 #include "physics/constants.h"
 #include "components/glory/glory.h"
 
-#include "physics/atmosphere/airmass_exact.h"
+#include "common/formatted.h"
 #include "components/glory/mie/mie_coefficients.h"
 #include "components/glory/mie/mie_scattering.h"
-#include "physics/colour_matching.h"
 #include "components/glory/optics/water.h"
 #include "components/roles/lower_atmosphere.h"
 #include "components/roles/names.h"
 #include "gl/shader_program.h"
 #include "gl/texture.h"
 #include "io/table_cache.h"
+#include "physics/atmosphere/airmass_exact.h"
+#include "physics/colour_matching.h"
 #include "scene/ray_steps.h"
 #include "scene/scene.h"
 
@@ -136,10 +137,9 @@ public:
         }
         lightRgb_ = lightRgb(s.light);
         asymmetry_ = deckAsymmetry(s);
-        char text[256];
-        std::snprintf(text, sizeof text, "glory table %d angles x %zu wavelengths (%lld Mie series): %.0f ms, %s", angles,
-                      table.wavelengthsNm.size(), table.mieSeries, tables.seconds * 1e3, tables.outcome.c_str());
-        log_ = text;
+        log_ = common::formatted("glory table %d angles x %zu wavelengths (%lld Mie series): %.0f ms, %s", angles,
+                                 table.wavelengthsNm.size(), table.mieSeries, tables.seconds * 1e3,
+                                 tables.outcome.c_str());
     }
     std::string precomputationLog() const override { return log_; }
     void setFrame(gl::Program& program, const cluster::FrameState&) override

@@ -1,11 +1,12 @@
 #include "components/plasma/box_renderer.h"
 
 #include "common/data_dir.h"
-#include "physics/colour.h"
-#include "physics/emission_lines.h"
+#include "common/formatted.h"
 #include "gl/functions.h"
 #include "gl/shader_program.h"
 #include "io/table_cache.h"
+#include "physics/colour.h"
+#include "physics/emission_lines.h"
 #include "scene/scene.h"
 
 #include <algorithm>
@@ -60,12 +61,10 @@ BoxRenderer::BoxRenderer(const Settings& plasma, const scene::Scene& scene, doub
     float peak = 0.0f;
     for (float n : f.density)
         peak = std::max(peak, n);
-    char text[300];
-    std::snprintf(text, sizeof text,
+    boxSummary_ += common::formatted(
                   "; plasma box: %d^3 cells, %d frames of %d steps, beams %.3g m/s, peak n/n0 %.2f, "
                   "%s: %.0f ms",
                   f.cells, spec.frames, spec.stepsPerFrame, boxBeamSpeed(spec), peak, outcome.c_str(), ms);
-    boxSummary_ += text;
 }
 
 void BoxRenderer::setFrame(gl::Program& program, const cluster::FrameState& frame)

@@ -1,6 +1,7 @@
 #include "components/plasma/plasma_detail.h"
 
 #include "common/data_dir.h"
+#include "common/formatted.h"
 #include "components/plasma/simulation/plasma_parameters.h"
 #include "gl/functions.h"
 #include "gl/shader_program.h"
@@ -53,12 +54,10 @@ PlasmaDetail::PlasmaDetail(const Settings& plasma, const scene::Scene& scene)
     const double wc = pic::cyclotronFrequency(spec_.sheet.magneticFieldT);
     const double wp = pic::plasmaFrequency(spec_.sheet.electronDensity);
     const double dt = pic::sheetTimeStep(spec_.sheet);
-    char text[400];
-    std::snprintf(text, sizeof text,
+    summary_ = common::formatted(
                   "plasma: %d x %d cells, %d frames of %d steps, wc_dt %.3g, wp_dt %.3g, reach %.1f km, %s: %.0f ms",
                   f.nx, f.ny, spec_.frames, spec_.stepsPerFrame, wc * dt, wp * dt, shape_.reachKm, outcome.c_str(),
                   ms);
-    summary_ = text;
 }
 
 void PlasmaDetail::setFrame(gl::Program&, const cluster::FrameState& frame)

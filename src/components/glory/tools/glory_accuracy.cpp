@@ -1,8 +1,9 @@
 #include "components/glory/tools/glory_accuracy.h"
 
+#include "common/data_dir.h"
+#include "common/formatted.h"
 #include "components/glory/glory.h"
 #include "components/registry.h"
-#include "common/data_dir.h"
 
 #include <algorithm>
 #include <chrono>
@@ -99,14 +100,13 @@ void printTableKnobs(const GlorySettings& base, std::ostream& out)
     const glory::GloryTables tables = glory::gloryTables(fine);
     const ColourTable reference{tables.phase.angles, optics::gloryLinearSrgb(optics::gloryXyz(tables.phase, fine.light)),
                                 tables.seconds, tables.phase.mieSeries};
-    char line[256];
-    std::snprintf(line, sizeof line,
+    out << common::formatted(
                   "table resolution (reference: %d + %d + %d angles, %d wavelengths, size-parameter step %g; %.1f s, %s, "
                   "%lld Mie series)\n",
                   fine.table.angles.gloryCount, fine.table.angles.middleCount, fine.table.angles.forwardCount,
                   fine.table.wavelengthCount,
                   fine.table.sizeParameterStep, reference.seconds, tables.outcome.c_str(), reference.mieSeries);
-    out << line;
+    char line[256];
     out << "knob                 value   rms_rel_glory max_rel_glory max_rel_all build_s mie_series\n";
     for (const TableVariant& variant : tableVariants(base.table)) {
         GlorySettings s = base;
