@@ -2,7 +2,6 @@
 
 #include "cluster/silence_watch.h"
 
-#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -169,7 +168,14 @@ void Watchdog::sendHeartbeats()
             std::fflush(stderr);
             MPI_Abort(MPI_COMM_WORLD, kRankSilentExitStatus);
         }
+        // A sleep that overran its tick by more than a heartbeat period (this process stopped, or starved of
+        // CPU) is no silence of the master's: a rank resumed after a SIGSTOP would otherwise blame the master
+        // for its own stop. Overruns shorter than that are the scheduler's, and count.
+        const double sleepStartS = secondsNow();
         std::this_thread::sleep_for(tick);
+        const double overrunS = secondsNow() - sleepStartS - std::chrono::duration<double>(tick).count();
+        if (overrunS > period.count())
+            masterHeardS += overrunS;
     }
     if (!masterFinished) {
         MPI_Cancel(&fromMaster);
