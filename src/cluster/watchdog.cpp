@@ -2,6 +2,7 @@
 
 #include "cluster/silence_watch.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>

@@ -3,6 +3,7 @@
 // only share a star's light differently between neighbouring pixels, never switch it on or off.
 #include "accuracy/scene_view.h"
 #include "components/registry.h"
+#include "physics/constants.h"
 #include "gl/context.h"
 #include "scene/scene.h"
 
@@ -99,7 +100,7 @@ TEST(Stars, FluxOverANeighbourhoodDoesNotDependOnTheSubPixelPosition)
     const double pixelAngle = glm::length(zoomed * view.rays.stepRight) / glm::length(centre);
     const double tanCorner = glm::length(corner - centre) / glm::length(centre);
     const double sigmaPixels = glm::length(centre) / glm::length(corner); // cos θ_c
-    const double aliasing = 2.0 * 4.0 * std::exp(-M_PI * M_PI * sigmaPixels * sigmaPixels);
+    const double aliasing = 2.0 * 4.0 * std::exp(-physics::kPi * physics::kPi * sigmaPixels * sigmaPixels);
     for (const double fraction : {0.25, 0.5, 0.75}) {
         accuracy::SceneView turned = view;
         const double angle = fraction * pixelAngle;
