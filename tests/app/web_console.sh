@@ -99,6 +99,25 @@ check [ "$(curl -s -o /dev/null -w '%{http_code}' -H 'Authorization: Bearer wron
 check [ "$(get /command --data-binary @<(head -c 100000 /dev/zero | tr '\0' a))" = 413 ]
 check grep -q '^error 413 request too large' "$WORK/body"
 check [ "$(get /command --data-binary $'status\nquit')" = 400 ]
+# The limit is of the line: 1024 bytes with its newline are taken (an unknown word, answered), 1025 are not.
+long=$(head -c 1024 /dev/zero | tr '\0' a)
+check [ "$(get /command --data-binary "$long"$'\r\n')" = 200 ]
+check grep -q "^error unknown command" "$WORK/body"
+check [ "$(get /command --data-binary "${long}a")" = 413 ]
+# A chunked body (which would be read whole, past the limit) and a route asked with the wrong method.
+check [ "$(get /command -H 'Transfer-Encoding: chunked' --data-binary @<(head -c 100000 /dev/zero | tr '\0' a))" = 411 ]
+check grep -q '^error 411 length required' "$WORK/body"
+check [ "$(get /command -D "$WORK/headers")" = 405 ]
+check grep -qi '^allow: POST' "$WORK/headers"
+check [ "$(get /status -d x)" = 405 ]
+check grep -q '^error 405 method not allowed (/status takes GET)' "$WORK/body"
+# A second wall on this wall's port: refused, naming the option (it would have shared the port).
+sed 's/^columns = 2/columns = 1/; s/^rows = 2/rows = 1/' "$DATA/tiny-2x2.toml" >"$WORK/tiny-1x1.toml"
+code=0
+timeout 60 "$AW" render --wall "$WORK/tiny-1x1.toml" --scene "$SCENE" --frames 0 --web-port "$port" \
+    >"$WORK/second.log" 2>&1 || code=$?
+check [ "$code" = 1 ]
+check grep -q -- "--web-port $port: cannot listen" "$WORK/second.log"
 for path in /../../etc/passwd /%2e%2e/%2e%2e/etc/passwd /..%2f..%2fetc/passwd /nothing.html; do
     code=$(get "$path" --path-as-is)
     [ "$code" = 404 ] || [ "$code" = 400 ] || { stop_wall; fail "GET $path -> $code $(head -c 200 "$WORK/body")"; }

@@ -8,7 +8,7 @@
 # write PNG frames and none after the stop, `movie start exr` OpenEXR frames as well; GET /movies/clip
 # is refused (409) while it records and is then the folder's files as a zip, byte for byte; a movie
 # whose folder is moved away while it records shows its error in GET /status (movie_error) until its
-# stop, and its download then answers 410. Bad paths, a second start, a stop with nothing running are
+# stop, and its download then answers 410, as does one whose frames were deleted. Bad paths, a second start, a stop with nothing running are
 # refused; on a full disk (a small tmpfs, skipped where it cannot be mounted) the commands answer
 # errors. The wall keeps drawing throughout, and exits 0 on quit.
 source "$(dirname "$0")/lib.sh"
@@ -161,6 +161,11 @@ n=$(sed -n "s|^ok movie stop $out/clip-exr frames=\([0-9]*\)\$|\1|p" <<< "$answe
 check [ "$(ls "$out/clip-exr"/frame-*.exr | wc -l)" = "$n" ]
 check [ "$(ls "$out/clip-exr"/frame-*.png | wc -l)" = "$n" ]
 note "movie start exr: $n frames as PNG and OpenEXR"
+# Its frames deleted, frames.csv left: no movie to download.
+rm "$out/clip-exr"/frame-*
+code=$(curl -s -o "$WORK/body" -w '%{http_code}' "$url/movies/clip-exr")
+echo "GET /movies/clip-exr, frames deleted -> $code $(cat "$WORK/body")"
+check [ "$code" = 410 ]
 
 note "a movie whose folder is moved away: its error in GET /status until the stop, which answers it too"
 check grep -qx "ok movie start $out/gone" <(post "movie start gone")

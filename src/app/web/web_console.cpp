@@ -47,10 +47,43 @@ std::string refusal(int status)
     case 400: return " malformed request";
     case 404: return " no such page";
     case 405: return " method not allowed";
+    case 411: return " length required (send the command with a Content-Length, not chunked)";
     case 413: return " request too large (a command is one line of at most 1024 bytes)";
     case 414: return " request line too long";
     default: return "";
     }
+}
+
+// The method of each route (a path, or a folder's prefix ending in '/'), for 405 on another method.
+struct Route {
+    const char* path;
+    const char* method;
+};
+constexpr Route kRoutes[] = {{"/command", "POST"},    {"/status", "GET"},       {"/presets", "GET"},
+                             {"/ranks", "GET"},       {"/preview.png", "GET"},  {"/recordings/", "GET"},
+                             {"/screenshots/", "GET"}, {"/movies/", "GET"}};
+
+// Before a request's body is read: a route asked with another method is refused (405, naming the one it
+// takes), and so is a chunked body (411), which httplib would read whole, past the 1024-byte limit.
+httplib::Server::HandlerResponse refuseBeforeTheBody(const httplib::Request& req, httplib::Response& res)
+{
+    if (req.has_header("Transfer-Encoding")) {
+        res.set_header("Connection", "close");
+        reply(res, 411, "error 411" + refusal(411));
+        return httplib::Server::HandlerResponse::Handled;
+    }
+    for (const Route& route : kRoutes) {
+        const std::string path = route.path;
+        const bool matches = path.back() == '/' ? req.path.rfind(path, 0) == 0 : req.path == path;
+        const bool allowed = req.method == route.method || (req.method == "HEAD" && path != "/command");
+        if (matches && !allowed) {
+            res.set_header("Allow", route.method);
+            res.set_header("Connection", "close");
+            reply(res, 405, "error 405" + refusal(405) + " (" + route.path + " takes " + route.method + ")");
+            return httplib::Server::HandlerResponse::Handled;
+        }
+    }
+    return httplib::Server::HandlerResponse::Unhandled;
 }
 
 } // namespace
@@ -95,6 +128,8 @@ struct WebConsole::Impl {
             line.pop_back();
         if (line.find('\n') != std::string::npos)
             return reply(res, 400, "error one command per request");
+        if (line.size() > kMaxLineBytes)
+            return reply(res, 413, "error 413" + refusal(413));
         const std::optional<std::string> answer = mailbox.ask(line, kAnswerTimeoutS);
         if (!answer)
             return reply(res, 503, "error the wall did not answer");
@@ -229,7 +264,9 @@ struct WebConsole::Impl {
         } catch (const std::exception& e) {
             return reply(res, 410, "error 410 movie " + name + ": " + e.what());
         }
-        if (files.empty())
+        const bool holdsFrames =
+            std::any_of(files.begin(), files.end(), [](const MovieFile& f) { return f.name != "frames.csv"; });
+        if (!holdsFrames)
             return reply(res, 410, "error 410 movie " + name + ": its folder holds no frames any more");
         const std::string base = savedName(name);
         attachmentHeaders(res, base + ".zip");
@@ -290,6 +327,13 @@ WebConsole::WebConsole(WebSettings settings) : impl_(std::make_unique<Impl>())
     s.set_write_timeout(2, 0);
     s.set_keep_alive_timeout(2);
     s.set_payload_max_length(kMaxBodyBytes);
+    s.set_pre_routing_handler(refuseBeforeTheBody);
+    // SO_REUSEADDR only: httplib's default adds SO_REUSEPORT, with which a second wall listened on a port in
+    // use and the two shared its requests.
+    s.set_socket_options([](socket_t sock) {
+        int yes = 1;
+        setsockopt(sock, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes);
+    });
     // The page, its script and style; httplib refuses paths leaving the folder (404).
     if (!s.set_mount_point("/", w.settings.pageDir))
         throw common::InputError("--web-port: the page's folder " + w.settings.pageDir + " cannot be read");

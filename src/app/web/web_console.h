@@ -37,7 +37,8 @@ struct WebSettings {
 
 class WebConsole {
 public:
-    static constexpr std::size_t kMaxBodyBytes = 1024;   // a command line, as the control port's; longer: 413
+    static constexpr std::size_t kMaxLineBytes = 1024;   // a command line, as the control port's; longer: 413
+    static constexpr std::size_t kMaxBodyBytes = kMaxLineBytes + 2; // the line and its CRLF or LF
     static constexpr double kAnswerTimeoutS = 10.0;      // a command the wall has not answered by then: 503
     static constexpr double kPreviewIntervalS = 0.2;     // the wall is gathered for the preview at most 5 times a second
     static constexpr double kPreviewInterestS = 2.0;     // ... and only while a browser asked for it this recently
