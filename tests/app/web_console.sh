@@ -93,7 +93,8 @@ check [ "$(curl -s -o /dev/null -w '%{http_code}' "$url/screenshots/web.png")" =
 check [ "$(get /screenshots/other.png)" = 404 ]
 
 # Bad requests: one clear refusal each, and the wall goes on.
-check [ "$(curl -s -o /dev/null -w '%{http_code}' "$url/status")" = 401 ]
+check [ "$(curl -s -o /dev/null -D "$WORK/headers" -w '%{http_code}' "$url/status")" = 401 ]
+check grep -qi '^www-authenticate: Bearer' "$WORK/headers"
 check [ "$(curl -s -o /dev/null -w '%{http_code}' -H 'Authorization: Bearer wrong' -d quit "$url/command")" = 401 ]
 check [ "$(curl -s -o /dev/null -w '%{http_code}' -H 'Authorization: Bearer wrong' "$url/preview.png")" = 401 ]
 check [ "$(get /command --data-binary @<(head -c 100000 /dev/zero | tr '\0' a))" = 413 ]

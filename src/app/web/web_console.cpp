@@ -117,6 +117,7 @@ struct WebConsole::Impl {
     {
         if (settings.token.empty() || req.get_header_value("Authorization") == "Bearer " + settings.token)
             return true;
+        res.set_header("WWW-Authenticate", "Bearer realm=\"aurorawall\""); // RFC 6750
         reply(res, 401, "error authentication required: send the header 'Authorization: Bearer SECRET'");
         return false;
     }
