@@ -139,6 +139,13 @@ def raw(data):
 line = raw(b"GARBAGE\r\n\r\n")
 print("malformed request line ->", line)
 assert line.startswith("HTTP/1.1 400"), line
+auth = b"Authorization: Bearer %s\r\n" % secret.encode()
+for request in (b"GET /console.js%00.html HTTP/1.1\r\nHost: x\r\n\r\n",
+                b"POST /command HTTP/1.1\r\nHost: x\r\n" + auth + b"Content-Length: abc\r\n\r\nstatus",
+                b"POST /command HTTP/1.1\r\nHost: x\r\n" + auth + b"Content-Length: 6\r\nContent-Length: 4\r\n\r\nstatus"):
+    line = raw(request)
+    print(request.split(b"\r\n")[0], "... ->", line)
+    assert line.startswith("HTTP/1.1 400"), line
 
 # A client that sends requests and never reads the answers: the server gives up on it (write timeout).
 stuck = socket.create_connection(("127.0.0.1", port))

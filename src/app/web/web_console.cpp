@@ -63,10 +63,22 @@ constexpr Route kRoutes[] = {{"/command", "POST"},    {"/status", "GET"},       
                              {"/ranks", "GET"},       {"/preview.png", "GET"},  {"/recordings/", "GET"},
                              {"/screenshots/", "GET"}, {"/movies/", "GET"}};
 
-// Before a request's body is read: a route asked with another method is refused (405, naming the one it
-// takes), and so is a chunked body (411), which httplib would read whole, past the 1024-byte limit.
+// Before a request's body is read: a path holding a NUL (%00, which would cut the file name short of the
+// extension that names its type) or a Content-Length that is not one whole number (httplib reads
+// "abc" as 0 and the first of two) is malformed (400); a route asked with another method is refused
+// (405, naming the one it takes), and so is a chunked body (411), which httplib would read whole, past
+// the 1024-byte limit.
 httplib::Server::HandlerResponse refuseBeforeTheBody(const httplib::Request& req, httplib::Response& res)
 {
+    const std::string length = req.get_header_value("Content-Length");
+    const bool lengthMalformed = req.get_header_value_count("Content-Length") > 1 ||
+                                 (req.has_header("Content-Length") &&
+                                  (length.empty() || length.find_first_not_of("0123456789") != std::string::npos));
+    if (req.path.find('\0') != std::string::npos || lengthMalformed) {
+        res.set_header("Connection", "close");
+        reply(res, 400, "error 400" + refusal(400));
+        return httplib::Server::HandlerResponse::Handled;
+    }
     if (req.has_header("Transfer-Encoding")) {
         res.set_header("Connection", "close");
         reply(res, 411, "error 411" + refusal(411));
