@@ -2,6 +2,7 @@
 
 #include "app/console_view.h"
 #include "app/control/control_server.h"
+#include "app/wall_output.h"
 #include "app/web/command_mailbox.h"
 #include "app/web/downloads.h"
 #include "app/web/movie_archive.h"
@@ -19,6 +20,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iterator>
 #include <map>
 #include <mutex>
@@ -54,21 +56,19 @@ std::string refusal(int status)
     }
 }
 
-// The method of each route (a path, or a folder's prefix ending in '/'), for 405 on another method.
+// A route the console serves: its method and its path (a folder's prefix ending in '/', for the names in it).
 struct Route {
-    const char* path;
-    const char* method;
+    std::string method;
+    std::string path;
 };
-constexpr Route kRoutes[] = {{"/command", "POST"},    {"/status", "GET"},       {"/presets", "GET"},
-                             {"/ranks", "GET"},       {"/preview.png", "GET"},  {"/recordings/", "GET"},
-                             {"/screenshots/", "GET"}, {"/movies/", "GET"}};
 
 // Before a request's body is read: a path holding a NUL (%00, which would cut the file name short of the
 // extension that names its type) or a Content-Length that is not one whole number (httplib reads
 // "abc" as 0 and the first of two) is malformed (400); a route asked with another method is refused
 // (405, naming the one it takes), and so is a chunked body (411), which httplib would read whole, past
 // the 1024-byte limit.
-httplib::Server::HandlerResponse refuseBeforeTheBody(const httplib::Request& req, httplib::Response& res)
+httplib::Server::HandlerResponse refuseBeforeTheBody(const std::vector<Route>& routes, const httplib::Request& req,
+                                                     httplib::Response& res)
 {
     const std::string length = req.get_header_value("Content-Length");
     const bool lengthMalformed = req.get_header_value_count("Content-Length") > 1 ||
@@ -84,10 +84,9 @@ httplib::Server::HandlerResponse refuseBeforeTheBody(const httplib::Request& req
         reply(res, 411, "error 411" + refusal(411));
         return httplib::Server::HandlerResponse::Handled;
     }
-    for (const Route& route : kRoutes) {
-        const std::string path = route.path;
-        const bool matches = path.back() == '/' ? req.path.rfind(path, 0) == 0 : req.path == path;
-        const bool allowed = req.method == route.method || (req.method == "HEAD" && path != "/command");
+    for (const Route& route : routes) {
+        const bool matches = route.path.back() == '/' ? req.path.rfind(route.path, 0) == 0 : req.path == route.path;
+        const bool allowed = req.method == route.method || (req.method == "HEAD" && route.method == "GET");
         if (matches && !allowed) {
             res.set_header("Allow", route.method);
             res.set_header("Connection", "close");
@@ -107,6 +106,7 @@ struct WebConsole::Impl {
     std::thread thread;
     int port = 0;
     std::atomic<bool> stopping{false}; // the wall quits: a movie still being sent is cut short
+    std::vector<Route> routes;         // every route served, for 405 (set before the server starts)
 
     // The preview: handed over by the frame loop, encoded by the first request that finds it new.
     std::atomic<double> previewAskedS{-1e9}; // when a browser last asked for it (steady clock)
@@ -278,7 +278,7 @@ struct WebConsole::Impl {
             return reply(res, 410, "error 410 movie " + name + ": " + e.what());
         }
         const bool holdsFrames =
-            std::any_of(files.begin(), files.end(), [](const MovieFile& f) { return f.name != "frames.csv"; });
+            std::any_of(files.begin(), files.end(), [](const MovieFile& f) { return f.name != MovieWriter::kFramesList; });
         if (!holdsFrames)
             return reply(res, 410, "error 410 movie " + name + ": its folder holds no frames any more");
         const std::string base = savedName(name);
@@ -340,7 +340,9 @@ WebConsole::WebConsole(WebSettings settings) : impl_(std::make_unique<Impl>())
     s.set_write_timeout(2, 0);
     s.set_keep_alive_timeout(2);
     s.set_payload_max_length(kMaxBodyBytes);
-    s.set_pre_routing_handler(refuseBeforeTheBody);
+    s.set_pre_routing_handler([&w](const httplib::Request& req, httplib::Response& res) {
+        return refuseBeforeTheBody(w.routes, req, res);
+    });
     // SO_REUSEADDR only: httplib's default adds SO_REUSEPORT, with which a second wall listened on a port in
     // use and the two shared its requests.
     s.set_socket_options([](socket_t sock) {
@@ -350,38 +352,27 @@ WebConsole::WebConsole(WebSettings settings) : impl_(std::make_unique<Impl>())
     // The page, its script and style; httplib refuses paths leaving the folder (404).
     if (!s.set_mount_point("/", w.settings.pageDir))
         throw common::InputError("--web-port: the page's folder " + w.settings.pageDir + " cannot be read");
-    s.Post("/command", [&w](const httplib::Request& req, httplib::Response& res) {
-        if (w.authorized(req, res))
-            w.command(req, res);
-    });
-    s.Get("/status", [&w](const httplib::Request& req, httplib::Response& res) {
-        if (w.authorized(req, res))
-            w.status(res);
-    });
-    s.Get("/presets", [&w](const httplib::Request& req, httplib::Response& res) {
-        if (w.authorized(req, res))
-            w.presets(res);
-    });
-    s.Get("/ranks", [&w](const httplib::Request& req, httplib::Response& res) {
-        if (w.authorized(req, res))
-            w.ranks(res);
-    });
-    s.Get(R"(/recordings/(.+))", [&w](const httplib::Request& req, httplib::Response& res) {
-        if (w.authorized(req, res))
-            w.recording(req.matches[1], res);
-    });
-    s.Get(R"(/screenshots/(.+))", [&w](const httplib::Request& req, httplib::Response& res) {
-        if (w.authorized(req, res))
-            w.screenshot(req.matches[1], res);
-    });
-    s.Get(R"(/movies/(.+))", [&w](const httplib::Request& req, httplib::Response& res) {
-        if (w.authorized(req, res))
-            w.movie(req.matches[1], res);
-    });
-    s.Get("/preview.png", [&w](const httplib::Request& req, httplib::Response& res) {
-        if (w.authorized(req, res))
-            w.preview(res);
-    });
+    // Each route, served to an authorized request only; a folder's route takes the name after it.
+    using Serve = std::function<void(const httplib::Request&, httplib::Response&)>;
+    const auto route = [&w, &s](const std::string& method, const std::string& path, Serve serve) {
+        w.routes.push_back({method, path});
+        const auto handler = [&w, serve](const httplib::Request& req, httplib::Response& res) {
+            if (w.authorized(req, res))
+                serve(req, res);
+        };
+        const std::string pattern = path.back() == '/' ? path + "(.+)" : path;
+        method == "POST" ? s.Post(pattern, handler) : s.Get(pattern, handler);
+    };
+    route("POST", "/command", [&w](const httplib::Request& req, httplib::Response& res) { w.command(req, res); });
+    route("GET", "/status", [&w](const httplib::Request&, httplib::Response& res) { w.status(res); });
+    route("GET", "/presets", [&w](const httplib::Request&, httplib::Response& res) { w.presets(res); });
+    route("GET", "/ranks", [&w](const httplib::Request&, httplib::Response& res) { w.ranks(res); });
+    route("GET", "/recordings/",
+          [&w](const httplib::Request& req, httplib::Response& res) { w.recording(req.matches[1], res); });
+    route("GET", "/screenshots/",
+          [&w](const httplib::Request& req, httplib::Response& res) { w.screenshot(req.matches[1], res); });
+    route("GET", "/movies/", [&w](const httplib::Request& req, httplib::Response& res) { w.movie(req.matches[1], res); });
+    route("GET", "/preview.png", [&w](const httplib::Request&, httplib::Response& res) { w.preview(res); });
     // httplib's own refusals (400 malformed, 404, 413 too large) get one line saying so.
     s.set_error_handler([](const httplib::Request&, httplib::Response& res) {
         if (res.body.empty())
