@@ -154,7 +154,7 @@ MovieWriter::MovieWriter(std::string dir, bool exr, io::ToneMap toneMap)
 bool MovieWriter::writes(const std::string& name)
 {
     static const std::regex frame(R"(frame-[0-9]{6,20}\.(png|exr))");
-    return name == "frames.csv" || std::regex_match(name, frame);
+    return name == kFramesList || std::regex_match(name, frame);
 }
 
 void MovieWriter::write(const io::Image& canvas, const cluster::FrameState& state)
@@ -168,12 +168,12 @@ void MovieWriter::write(const io::Image& canvas, const cluster::FrameState& stat
     char row[64];
     std::snprintf(row, sizeof row, "%llu,%.17g\n", static_cast<unsigned long long>(state.frame), state.timeS);
     csv_ += row;
-    io::writeFileAtomically(dir_ + "/frames.csv", [&](const std::string& temporary) {
+    io::writeFileAtomically(dir_ + "/" + kFramesList, [&](const std::string& temporary) {
         std::ofstream out(temporary, std::ios::binary);
         out << csv_;
         out.close();
         if (!out)
-            throw std::runtime_error(dir_ + "/frames.csv: write failed (" + std::strerror(errno) + ")");
+            throw std::runtime_error(dir_ + "/" + kFramesList + ": write failed (" + std::strerror(errno) + ")");
     });
 }
 

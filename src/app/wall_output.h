@@ -26,7 +26,9 @@ class MovieWriter {
 public:
     MovieWriter(std::string dir, bool exr, io::ToneMap toneMap);
     void write(const io::Image& canvas, const cluster::FrameState& state);
-    // Whether `name` is the name of a file a movie writer writes (frame-NNNNNN.png or .exr, frames.csv).
+    // The list of the frames written, in the movie's folder.
+    static constexpr const char* kFramesList = "frames.csv";
+    // Whether `name` is the name of a file a movie writer writes (frame-NNNNNN.png or .exr, kFramesList).
     static bool writes(const std::string& name);
 
 private:

@@ -4,23 +4,18 @@
 #include "app/control/geographic_camera.h"
 #include "app/control/orbit.h"
 #include "app/control/output_path.h"
+#include "common/formatted.h"
 #include "components/registry.h"
 
 #include <algorithm>
-#include <cstdio>
 #include <filesystem>
 #include <set>
 
 namespace aurorawall::app::control {
 
-namespace {
+using common::formatted;
 
-std::string format(const char* pattern, double a, double b = 0.0, double c = 0.0)
-{
-    char text[160];
-    std::snprintf(text, sizeof text, pattern, a, b, c);
-    return text;
-}
+namespace {
 
 // time T: the clock set to T. A flying camera moves with the time: no farther from the planet than
 // goto may put it.
@@ -28,11 +23,11 @@ std::string setTime(double timeS, cluster::MasterClock& clock, double planetRadi
 {
     const double altitudeKm = scene::altitudeKm(clock.cameraAt(timeS).positionKm, planetRadiusKm);
     if (!(altitudeKm <= kMaxAltitudeKm))
-        throw CommandError(format("time: the camera, flying at %.6g km/s, would be %.3g km above the ground "
+        throw CommandError(formatted("time: the camera, flying at %.6g km/s, would be %.3g km above the ground "
                                   "(at most 1e6 km, as for goto)",
                                   clock.camera().speedKmPerS, altitudeKm));
     clock.setTime(timeS);
-    return format("ok time_s=%.12g", timeS);
+    return formatted("ok time_s=%.12g", timeS);
 }
 
 // goto LAT LON ALT (degrees, degrees, km): the camera moved there, its heading and pitch kept.
@@ -45,7 +40,7 @@ std::string moveTo(const double* v, cluster::MasterClock& clock, double planetRa
     pose.altitudeKm = v[2];
     clock.setCamera(cameraAt(pose, planetRadiusKm, now.speedKmPerS));
     requests.orbit = OrbitRequest::Stop;
-    return format("ok goto lat_deg=%.9g lon_deg=%.9g alt_km=%.9g", v[0], v[1], v[2]);
+    return formatted("ok goto lat_deg=%.9g lon_deg=%.9g alt_km=%.9g", v[0], v[1], v[2]);
 }
 
 // look HEADING PITCH (degrees): the camera turned where it stands.
@@ -57,7 +52,7 @@ std::string turnTo(const double* v, cluster::MasterClock& clock, double planetRa
     pose.pitchDeg = v[1];
     clock.setCamera(cameraAt(pose, planetRadiusKm, now.speedKmPerS));
     requests.orbit = OrbitRequest::Stop;
-    return format("ok look heading_deg=%.9g pitch_deg=%.9g", v[0], v[1]);
+    return formatted("ok look heading_deg=%.9g pitch_deg=%.9g", v[0], v[1]);
 }
 
 // orbit LAT LON ALT (degrees, degrees, km): the camera aimed at that point and circling it.
@@ -71,8 +66,8 @@ std::string startOrbit(const double* v, cluster::MasterClock& clock, double plan
     clock.setCamera(aimedAt(now, pivot));
     requests.orbit = OrbitRequest::Start;
     requests.pivotKm = pivot;
-    return format("ok orbit lat_deg=%.9g lon_deg=%.9g alt_km=%.9g", v[0], v[1], v[2]) +
-           format(" distance_km=%.6f", distanceKm);
+    return formatted("ok orbit lat_deg=%.9g lon_deg=%.9g alt_km=%.9g", v[0], v[1], v[2]) +
+           formatted(" distance_km=%.6f", distanceKm);
 }
 
 // screenshot PATH: the request queued for this frame, answered once written (inside the output
@@ -140,13 +135,13 @@ std::string carryOut(const Command& command, std::uint64_t client, cluster::Mast
         return statusLine(clock, status, planetRadiusKm);
     case CommandKind::Pause:
         clock.pause();
-        return format("ok paused at time_s=%.12g", clock.timeS());
+        return formatted("ok paused at time_s=%.12g", clock.timeS());
     case CommandKind::Play:
         clock.play();
-        return format("ok playing from time_s=%.12g", clock.timeS());
+        return formatted("ok playing from time_s=%.12g", clock.timeS());
     case CommandKind::Speed:
         clock.setSpeed(v[0]);
-        return format("ok speed %.12g", v[0]);
+        return formatted("ok speed %.12g", v[0]);
     case CommandKind::Step:
         if (!clock.paused())
             throw CommandError("step: the clock is playing (pause first)");
@@ -187,10 +182,10 @@ std::string carryOut(const Command& command, std::uint64_t client, cluster::Mast
 std::string statusLine(const cluster::MasterClock& clock, const WallStatus& status, double planetRadiusKm)
 {
     const GeographicPose p = poseOf(clock.camera(), planetRadiusKm);
-    return "ok frame=" + std::to_string(status.frame) + format(" time_s=%.12g fps=%.3g", clock.timeS(), status.fps) +
-           (clock.paused() ? " paused" : " playing") + format(" speed=%.12g", clock.speed()) +
-           format(" lat_deg=%.6f lon_deg=%.6f alt_km=%.6f", p.latitudeDeg, p.longitudeDeg, p.altitudeKm) +
-           format(" heading_deg=%.6f pitch_deg=%.6f", p.headingDeg, p.pitchDeg);
+    return "ok frame=" + std::to_string(status.frame) + formatted(" time_s=%.12g fps=%.3g", clock.timeS(), status.fps) +
+           (clock.paused() ? " paused" : " playing") + formatted(" speed=%.12g", clock.speed()) +
+           formatted(" lat_deg=%.6f lon_deg=%.6f alt_km=%.6f", p.latitudeDeg, p.longitudeDeg, p.altitudeKm) +
+           formatted(" heading_deg=%.6f pitch_deg=%.6f", p.headingDeg, p.pitchDeg);
 }
 
 // A preset whose load has finished: its camera applied and the command answered.
@@ -208,7 +203,7 @@ void applyLoadedPreset(CommandChannel& channel, cluster::MasterClock& clock, Pre
     requests.orbit = OrbitRequest::Stop;
     const GeographicPose p = poseOf(clock.camera(), planetRadiusKm);
     channel.answer(loaded->client, "ok preset " + loaded->name +
-                                      format(" lat_deg=%.6f lon_deg=%.6f alt_km=%.6f", p.latitudeDeg, p.longitudeDeg,
+                                      formatted(" lat_deg=%.6f lon_deg=%.6f alt_km=%.6f", p.latitudeDeg, p.longitudeDeg,
                                              p.altitudeKm));
 }
 
