@@ -23,7 +23,7 @@ note "SIGTERM to one rank (pid $rank) stopped the wall: $(grep -o 'stopped by .*
 
 # One rank of a one-screen wall, fast frames, a line a frame on standard output: mpirun stops reading it
 # at SIGINT and sends SIGTERM a second later; the rank must not sit blocked on the full pipe.
-sed 's/^columns = 2/columns = 1/; s/^rows = 2/rows = 1/' "$DATA/tiny-2x2.toml" >"$WORK/tiny-1x1.toml"
+"$SRC_DIR/launch/one-screen-wall" 32x18 >"$WORK/tiny-1x1.toml"
 "$MPIEXEC" -n 1 "${MPI_FLAGS[@]}" -x LP_NUM_THREADS=1 "$AW" render --wall "$WORK/tiny-1x1.toml" --scene "$SCENE" \
     --frames 100000 --stats "$WORK/loud.csv" --gather --out "$WORK/loud" >"$WORK/loud.log" 2>&1 &
 loud=$!

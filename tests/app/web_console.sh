@@ -113,7 +113,7 @@ check grep -qi '^allow: POST' "$WORK/headers"
 check [ "$(get /status -d x)" = 405 ]
 check grep -q '^error 405 method not allowed (/status takes GET)' "$WORK/body"
 # A second wall on this wall's port: refused, naming the option (it would have shared the port).
-sed 's/^columns = 2/columns = 1/; s/^rows = 2/rows = 1/' "$DATA/tiny-2x2.toml" >"$WORK/tiny-1x1.toml"
+"$SRC_DIR/launch/one-screen-wall" 32x18 >"$WORK/tiny-1x1.toml"
 code=0
 timeout 60 "$AW" render --wall "$WORK/tiny-1x1.toml" --scene "$SCENE" --frames 0 --web-port "$port" \
     >"$WORK/second.log" 2>&1 || code=$?
