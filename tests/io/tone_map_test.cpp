@@ -47,7 +47,7 @@ TEST(ToneMap, MagnitudeGammaKeepsTheColourDirection)
     const glm::dvec3 display = toneMapPixel(color, magnitude);
     EXPECT_NEAR(glm::length(glm::normalize(display) - glm::normalize(color)), 0.0, 1e-12);
     EXPECT_NEAR(glm::length(display), std::pow(glm::length(color), 1 / 2.2), 1e-12);
-    // A grey g maps to g (sqrt(3) g)^(1/2.2 - 1) per component, so white (1, 1, 1) shows as 0.73,
+    // A grey g maps to g (sqrt(3) g)^(1/2.2 - 1) per component, so white (1, 1, 1) shows as 0.741,
     // and (10, 10, 10) goes beyond 1 and clamps to white.
     EXPECT_DOUBLE_EQ(toneMapPixel(glm::dvec3(1.0), magnitude).g, std::pow(std::sqrt(3.0), 1 / 2.2 - 1));
     EXPECT_EQ(toneMapPixel(glm::dvec3(10.0), magnitude), glm::dvec3(1.0));

@@ -24,8 +24,7 @@
 namespace aurorawall::test {
 
 // How far a float march can lie from the same march in double given the same data (ReferenceSettings::
-// shaderSteps) at one pixel, to first order in u = 2^-24, with the GLSL allowances of float_bounds.h (and
-// atan, asin 4096 ULP, as Vulkan allows):
+// shaderSteps) at one pixel, to first order in u = 2^-24, with the GLSL allowances of float_bounds.h:
 //  - the ray's own rounding (camera position, direction): rayRoundingBound through the march in double;
 //  - each sample o + t d at |x| <= r = R + the aurora's top rounds its product and sum, dx <= 2 u r; its
 //    altitude |x| - R (a dot product, a square root), dh <= dx + 12 u r; its footprint n = x / |x| (19 u)
@@ -135,7 +134,7 @@ inline AuroraFloatBound auroraFloatBound(const scene::Scene& s, const components
     const auto& atmosphere = s.settings<components::atmosphere::Settings>();
     AuroraFloatBound b;
     const double dx = 2.0 * u * r, dz = aurora.tableAltitudeStepKm / components::aurora::physics::kEmissionSubdivisions;
-    b.dq = dx + 32.0 * u * R + 8192.0 * u * model.reachKm();
+    b.dq = dx + 32.0 * u * R + kGlslInverseTrigError * model.reachKm();
     b.dh = dx + 12.0 * u * r + std::ldexp(dz, -9);
     b.scaleHeightKm = atmosphere.scaleHeightKm;
     b.atmosphereTopKm = atmosphere.topKm;

@@ -4,7 +4,8 @@
 //
 // u = 2^-24. GLSL 4.60 (§4.7.1) allows: +, −, × and conversions correctly rounded (u relative); a
 // division 2.5 ULP (5u); exp and exp2 3 + 2|x| ULP ((6 + 4|x|)u); inversesqrt 2 ULP (4u); sqrt as
-// 1/inversesqrt (9u); log and log2 3 ULP (6u) away from 1. One ULP is at most 2u.
+// 1/inversesqrt (9u); log and log2 3 ULP (6u) away from 1. One ULP is at most 2u. GLSL gives the
+// trigonometric built-ins no precision; the bounds take Vulkan's: atan and asin 4096 ULP.
 #include "accuracy/scene_view.h"
 #include "render/reference_ray.h"
 
@@ -17,6 +18,9 @@
 namespace aurorawall::test {
 
 inline const double kUnitRoundoff = std::ldexp(1.0, -24);
+
+// GLSL's atan and asin, relative (Vulkan's 4096 ULP).
+inline const double kGlslInverseTrigError = 8192.0 * kUnitRoundoff;
 
 // GLSL's exp of an argument of magnitude up to |x|, relative.
 inline double glslExpError(double x) { return (6.0 + 4.0 * std::abs(x)) * kUnitRoundoff; }

@@ -64,10 +64,6 @@ using namespace aurorawall::scene::f64;
 
 namespace {
 
-// GLSL gives atan no precision (nor any trigonometric built-in); the bounds below take it as
-// accurate as a division, 2.5 ULP (5u): an assumption, not a derivation.
-const double kAtanError = 5.0 * test::kUnitRoundoff;
-
 // The colour table the GPU reads (settings.table) and the reference's, finer one.
 struct ColourTables {
     components::glory::optics::AngleGrid grid, fineGrid;
@@ -135,7 +131,7 @@ public:
         const int i = std::min(int(index), int(tables_.colours.size()) - 2);
         const double perRadian = (tables_.grid.index(gamma + 1e-6) - tables_.grid.index(std::max(gamma - 1e-6, 0.0))) /
                                  (gamma + 1e-6 - std::max(gamma - 1e-6, 0.0));
-        const double indexError = 16.0 * u * index + perRadian * (gamma * (29.0 * u + kAtanError) + 2.0 * u);
+        const double indexError = 16.0 * u * index + perRadian * (gamma * (29.0 * u + test::kGlslInverseTrigError) + 2.0 * u);
         const glm::dvec3 table = components::glory::optics::colourAtAngle(tables_.grid, tables_.colours, gamma);
         const glm::dvec3 fine = components::glory::optics::colourAtAngle(tables_.fineGrid, tables_.fine, gamma);
         const double f = shared::singleScatteringFactor(mu0, mu, glory_.opticalThickness);

@@ -167,7 +167,7 @@ TEST(Advection, UniformFlowShiftsByWholeCellsExactly)
 
 TEST(Advection, IsMonotoneInARotatingFlow)
 {
-    // Cellular flow ψ = sin(kx) sin(ky) (divergence-free), rough scalar in [−½, ½).
+    // Cellular flow ψ = sin(kx) sin(ky) (divergence-free), rough scalar in [0, 1).
     const int n = 64;
     const double h = 1.0, k = 2 * aurorawall::physics::kPi / (n * h);
     MacVelocity vel{PeriodicField(n, n, h, h), PeriodicField(n, n, h, h)};

@@ -407,13 +407,10 @@ void expectTheGridDispersion(const char* name, double kDx, Verify verify)
 
 } // namespace
 
-// Langmuir in 2D, the wave along the diagonal of 256² cells: the leapfrog relation to 3e-4. The grid's
-// dispersion is the 1D one at |k|Δx = √2·2π/256: −(|k|Δx)²/8 = −1.51e-4, measured −1.51e-4 at
-// ω_pΔt = 0.2; the leapfrog's shift it resolves is 1.7e-3 and 4.7e-2.
-// The diagonal wave on a 64² grid (the command uses 256²): its frequency is the leapfrog relation's
-// times the grid's dispersion 1 − (|k|Δx)²/8, |k|Δx = √2·2π/64 (2.41e-3). Measured: the relative error
-// is that dispersion to 0.25% of it at ω_pΔt = 0.2 and to 10% at 1 (the time step's own share);
-// on 32² and 128² grids alike. Held to 15%.
+// Langmuir in 2D, the wave along the diagonal of a 64² grid (the command uses 256²): its frequency is
+// the leapfrog relation's times the grid's dispersion 1 − (|k|Δx)²/8, |k|Δx = √2·2π/64 (2.41e-3).
+// Measured: the relative error is that dispersion to 0.25% of it at ω_pΔt = 0.2 and to 10% at 1 (the
+// time step's own share); on 32² and 128² grids alike. Held to 15%.
 TEST(PlasmaVerify, Langmuir2DFollowsTheLeapfrogRelationAndTheGridDispersion)
 {
     constexpr int kCells = 64;
