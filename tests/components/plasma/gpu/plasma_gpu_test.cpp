@@ -944,10 +944,11 @@ TEST(PlasmaLive, AgreesWithTheCpuFramesBeforeTheRollUp)
 // view. Not at the arc's ends: there the curtain reaches past its end points by the detail's reach,
 // which the live run takes as the strip's half width (its later steps are not known at start-up)
 // and the CPU frames measure (2.4 km against 4 km here), so the live arc is longer by design. Tolerance:
-// the frames' difference through the roll-up (6.3e-3 of the peak, above) is below the march's own
-// error (its discretization: max 3.0e-3 at the CPU frames' brightest pixels, tests/render/shader_steps_test.cpp),
-// so RMS 6e-3 and max 1.5e-2 hold, measured, not derived: the live frames are not the CPU's, so the float
-// bound of PlasmaOnTheGpu.AgreesWithTheReference does not apply. Measured RMS 8.7e-4, max 2.9e-3 (the CPU
+// the frames' difference through the roll-up (up to 6.3e-3 of the peak, above) plus the march's own
+// error (its discretization: max 3.0e-3 at the CPU frames' brightest pixels, tests/render/shader_steps_test.cpp)
+// is 9.3e-3 where the brightest pixels sit near the peak; held to RMS 6e-3 and max 1.5e-2, measured, not
+// derived: the frames' difference is itself measured (above), and the live frames are not the CPU's, so
+// the float bound of PlasmaOnTheGpu.AgreesWithTheReference does not apply. Measured RMS 8.7e-4, max 2.9e-3 (the CPU
 // frames' render: 1.0e-3 and 3.0e-3). The frames of a strip with one
 // more wave put the reference off by far more (held above 0.1): the comparison sees the curls.
 TEST(PlasmaLive, RenderAgreesWithTheReference)
