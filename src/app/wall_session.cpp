@@ -47,13 +47,14 @@ io::ToneMap toneMapFor(const RenderOptions& options, double exposure)
     return t;
 }
 
-// A path made absolute, with its links and dots resolved as far as it exists.
+// A path made absolute, with its links and dots resolved as far as it exists and no trailing separator.
 std::filesystem::path resolvedPath(const std::string& path)
 {
     std::error_code error;
     const std::filesystem::path absolute = std::filesystem::absolute(path, error);
     const std::filesystem::path resolved = std::filesystem::weakly_canonical(absolute, error);
-    return error ? absolute.lexically_normal() : resolved;
+    const std::filesystem::path result = error ? absolute.lexically_normal() : resolved;
+    return result.has_filename() || !result.has_relative_path() ? result : result.parent_path();
 }
 
 // A file the run writes (README.md, "Outputs"): its path, the option that asks for it and the rank that
@@ -63,6 +64,12 @@ struct OutputFile {
     const char* option;
     int rank;
 };
+
+// Whether the run writes into --out: the wall, the tiles, or the screenshots the control commands take.
+bool writesOutFolder(const RenderOptions& options)
+{
+    return options.gather || options.tiles || options.controlPort >= 0 || options.webPort >= 0;
+}
 
 std::vector<OutputFile> outputFiles(const RenderOptions& options, const wall::Wall& wall)
 {
@@ -80,8 +87,9 @@ std::vector<OutputFile> outputFiles(const RenderOptions& options, const wall::Wa
     return files;
 }
 
-// Two outputs at one path, an output at the path of an input, or an output among the files of the
-// --movie folder would write one over the other: a usage error naming both, before anything is written.
+// Two outputs at one path, an output at the path of an input or of an output folder, or an output among
+// the files of the --movie folder would write one over the other: a usage error naming both, before
+// anything is written.
 void refuseClashingPaths(const std::vector<OutputFile>& outputs, const RenderOptions& options,
                          const scene::Scene& scene)
 {
@@ -97,10 +105,18 @@ void refuseClashingPaths(const std::vector<OutputFile>& outputs, const RenderOpt
     if (!options.controlTokenFile.empty())
         inputs.push_back({options.controlTokenFile, "the --control-token-file", resolvedPath(options.controlTokenFile)});
     const std::filesystem::path movie = options.movieDir.empty() ? std::filesystem::path() : resolvedPath(options.movieDir);
+    std::vector<Input> folders;
+    if (writesOutFolder(options))
+        folders.push_back({options.outDir, "--out", resolvedPath(options.outDir)});
+    if (!movie.empty())
+        folders.push_back({options.movieDir, "--movie", movie});
     std::vector<std::filesystem::path> resolved;
     for (const OutputFile& out : outputs) {
         resolved.push_back(resolvedPath(out.path));
         const std::string named = std::string(out.option) + " " + out.path;
+        for (const Input& folder : folders)
+            if (folder.resolved == resolved.back())
+                throw common::UsageError(named + " is the " + folder.what + " folder: give them different paths");
         for (std::size_t j = 0; j + 1 < resolved.size(); ++j)
             if (resolved[j] == resolved.back())
                 throw common::UsageError(named + " is the file of " + outputs[j].option + " " + outputs[j].path +
@@ -148,7 +164,7 @@ void configure(const cluster::MpiWorld& world, int argc, char** argv, WallSessio
     s.dataDir = options.dataDir.empty() ? common::dataDirectory() : options.dataDir;
     s.shaderDir = s.dataDir + "/shaders";
     render::marchShaderSource(s.scene, s.shaderDir); // every module readable before any window opens
-    if (options.gather || options.tiles || options.controlPort >= 0 || options.webPort >= 0) // screenshot commands write there
+    if (writesOutFolder(options))
         io::ensureWritableDirectory(options.outDir, "--out");
     if (!options.movieDir.empty()) {
         io::ensureWritableDirectory(options.movieDir, "--movie");

@@ -86,7 +86,13 @@ expect 2 "^aurorawall render: --gather .*/clash/wall.png is the file of --cost-m
     render --wall "$single" --scene "$SCENE" --gather --out "$WORK/clash" --cost-map "$WORK/clash/wall.png"
 expect 2 "^aurorawall render: --cost-map .*/film/frame-000000.png is a file the --movie folder's frames write" \
     render --wall "$single" --scene "$SCENE" --movie "$WORK/film" --cost-map "$WORK/film/frame-000000.png"
-[ ! -e "$WORK/clash" ] && [ ! -e "$WORK/film" ] || fail "render with clashing outputs created a folder"
+expect 2 "^aurorawall render: --stats .*/reel.csv is the --movie folder: give them different paths" \
+    render --wall "$single" --scene "$SCENE" --movie "$WORK/reel.csv" --stats "$WORK/reel.csv"
+expect 2 "^aurorawall render: --cost-map .*/shots.png is the --out folder: give them different paths" \
+    render --wall "$single" --scene "$SCENE" --gather --out "$WORK/shots.png/" --cost-map "$WORK/shots.png"
+for folder in clash film reel.csv shots.png; do
+    [ ! -e "$WORK/$folder" ] || fail "render with clashing outputs created $folder"
+done
 mkdir -p "$WORK/movie"
 touch "$WORK/movie/frames.csv"
 expect 1 "^aurorawall render: --movie .*/movie: already holds frames.csv of a movie; give another folder" \
