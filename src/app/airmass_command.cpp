@@ -63,7 +63,8 @@ bool isHeader(const std::vector<std::string>& fields)
 
 // One CSV line's fields as a ray, or an error message naming the field. Every field must be a finite
 // number within float's range (the closed forms run in float32, as the shader does): |value| <= 3.4e38;
-// H at least float's smallest positive number, 1.401298e-45 (below, H rounds to 0 in float); R >= 0.
+// H at least float's smallest positive number, 1.40129846e-45 (printed rounded up, 1.4012985e-45, so that
+// the printed bound is accepted; below, H rounds to 0 in float); R >= 0.
 std::optional<AirmassRay> parseRay(const std::vector<std::string>& fields, std::string& problem)
 {
     if (fields.size() != kFieldCount) {
@@ -90,7 +91,7 @@ std::optional<AirmassRay> parseRay(const std::vector<std::string>& fields, std::
     AirmassRay ray{{values[0], values[1], values[2]}, {values[3], values[4], values[5]},
                    values[6], values[7], values[8], values[9]};
     if (!(ray.scaleHeight >= std::numeric_limits<float>::denorm_min())) {
-        problem = "field 9 (H) must be at least 1.401298e-45 km, float's smallest positive number (got '" + common::echoedInput(fields[8]) + "')";
+        problem = "field 9 (H) must be at least 1.4012985e-45 km, float's smallest positive number (got '" + common::echoedInput(fields[8]) + "')";
         return std::nullopt;
     }
     if (ray.planetRadius < 0.0) {
@@ -111,7 +112,7 @@ int runAirmassCommand(int argc, char** argv, std::istream& in, std::ostream& out
             "Airmass I = integral from t0 to t1 of exp(-(|o + t*d/|d|| - R)/H) dt, in km, for each input line\n"
             "ox,oy,oz,dx,dy,dz,t0,t1,H,R (km; planet centre at the origin; t in km along the unit direction;\n"
             "a first line of these names is a header; blank lines are skipped). Every field is a finite number\n"
-            "within float's range (|value| <= 3.4e38), H >= 1.401298e-45 and R >= 0. Prints one number per line.\n"
+            "within float's range (|value| <= 3.4e38), H >= 1.4012985e-45 and R >= 0. Prints one number per line.\n"
             "I is signed (t1 < t0 gives -I), 0 for a zero direction, and the planet is transparent.\n"
             "Closed forms run in float32, exactly as the shader computes them; 'exact' runs in double.\n"
             "Exit status: 0 success, 1 for a malformed input line or one the method gives no finite value for\n"

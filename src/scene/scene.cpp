@@ -82,6 +82,32 @@ bool orthonormal(const CameraFrame& frame)
            std::abs(glm::dot(frame.forward, frame.up)) <= eps;
 }
 
+// v divided by its largest component's magnitude (0 stays 0), so that a vector of any nonzero length,
+// 1e-300 as well as 1e12, normalizes.
+glm::dvec3 scaledByLargest(glm::dvec3 v)
+{
+    const double largest = std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)});
+    return largest > 0.0 ? v / largest : v;
+}
+
+// The direction and up vectors of a table made orthonormal: up loses its part along the view. Any
+// nonzero lengths are taken; an up within 1e-9 rad of the view is refused, naming the key.
+CameraFrame orthonormalFrame(const TableReader& t, glm::dvec3 forward, glm::dvec3 up)
+{
+    forward = scaledByLargest(forward);
+    up = scaledByLargest(up);
+    if (forward == glm::dvec3(0.0))
+        t.fail("direction", "must not be zero");
+    if (up == glm::dvec3(0.0))
+        t.fail("up", "must not be zero");
+    forward = glm::normalize(forward);
+    up = glm::normalize(up);
+    up -= forward * glm::dot(up, forward);
+    if (glm::length(up) < 1e-9)
+        t.fail("up", "must not be parallel to the view direction");
+    return {forward, glm::normalize(up)};
+}
+
 CameraKey readCameraKey(const TableReader& k, double planetRadiusKm)
 {
     CameraKey key;
@@ -107,15 +133,8 @@ CameraKey readCameraKey(const TableReader& k, double planetRadiusKm)
     if (given == "direction") {
         frame.forward = k.vector3("direction");
         frame.up = k.vector3("up");
-        if (glm::length(frame.forward) < 1e-12)
-            k.fail("direction", "must not be zero");
-        if (!orthonormal(frame)) { // a recorded frame is kept as written, so that it replays bit for bit
-            frame.forward = glm::normalize(frame.forward);
-            frame.up -= frame.forward * glm::dot(frame.up, frame.forward);
-            if (glm::length(frame.up) < 1e-9)
-                k.fail("up", "must not be parallel to the view direction");
-            frame.up = glm::normalize(frame.up);
-        }
+        if (!orthonormal(frame)) // a recorded frame is kept as written, so that it replays bit for bit
+            frame = orthonormalFrame(k, frame.forward, frame.up);
     } else {
         if (given == "heading_deg") {
             const double heading = k.number("heading_deg", -360, 360) * physics::kDegree;
@@ -206,13 +225,9 @@ Camera readCamera(const TableReader& t, double planetRadiusKm)
             c.up = elevation > 0 ? -horizontal : horizontal;
     }
     c.speedKmPerS = t.number("speed_km_per_s", -1e6, 1e6, 0.0);
-    if (glm::length(c.forward) < 1e-12)
-        t.fail("direction", "must not be zero");
-    c.forward = glm::normalize(c.forward);
-    c.up = c.up - c.forward * glm::dot(c.up, c.forward);
-    if (glm::length(c.up) < 1e-9)
-        t.fail("up", "must not be parallel to the view direction");
-    c.up = glm::normalize(c.up);
+    const CameraFrame frame = orthonormalFrame(t, c.forward, c.up);
+    c.forward = frame.forward;
+    c.up = frame.up;
     t.rejectUnknownKeys();
     return c;
 }

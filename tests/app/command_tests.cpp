@@ -322,8 +322,8 @@ TEST(AirmassCommand, FieldsBeyondFloatAndNonFiniteResultsAreErrors)
     const std::vector<std::pair<std::string, std::string>> bad = {
         {"1e308,0,0,1,0,0,0,100,8,6371", "line 1: field 1 (ox) must be within float's range"},
         {"0,6371,0,0,-3.5e38,0,0,100,8,6371", "line 1: field 5 (dy) must be within float's range"},
-        {"0,6371,0,0,1,0,0,100,1e-320,6371", "line 1: field 9 (H) must be at least 1.401298e-45 km"},
-        {"0,6371,0,0,1,0,0,100,1.4e-45,6371", "line 1: field 9 (H) must be at least 1.401298e-45 km"},
+        {"0,6371,0,0,1,0,0,100,1e-320,6371", "line 1: field 9 (H) must be at least 1.4012985e-45 km"},
+        {"0,6371,0,0,1,0,0,100,1.4e-45,6371", "line 1: field 9 (H) must be at least 1.4012985e-45 km"},
         {"0,6371,0,0,1,0,0,100,8,1e39", "line 1: field 10 (R) must be within float's range"},
         // Only decimal numbers: strtod alone would take these, or stop quietly at the NUL.
         {"0x10,6371,0,0,1,0,0,100,8,6371", "line 1: field 1 (ox) is not a number: '0x10'"},
@@ -347,6 +347,8 @@ TEST(AirmassCommand, FieldsBeyondFloatAndNonFiniteResultsAreErrors)
         EXPECT_EQ(lines(out).size(), 2u);
     }
     EXPECT_EQ(runAirmass({"airmass"}, "3.4028234e38,0,0,1,0,0,0,100,1.5e-45,6371\n", out, err), 0) << err;
+    // The bound the messages print (float's smallest positive number rounded up) is itself accepted.
+    EXPECT_EQ(runAirmass({"airmass"}, "0,0,7000,1,0,0,0,100,1.4012985e-45,6371\n", out, err), 0) << err;
     EXPECT_EQ(runAirmass({"airmass"}, "+1.,-.5,0,1E0,0,0,0,1e+2,8.,6371\n", out, err), 0) << err;
 }
 

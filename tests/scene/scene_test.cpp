@@ -183,6 +183,41 @@ TEST(SceneErrors, CameraAtThePlanetsCentreIsRefused)
               "");
 }
 
+// Direction and up are made orthonormal whatever their lengths; a zero vector, or an up along the view,
+// is refused naming its key, in [camera] and in [[camera.key]] alike.
+TEST(SceneErrors, CameraVectorsOfAnyLengthAreMadeOrthonormal)
+{
+    const auto camera = [](const std::string& direction, const std::string& up) {
+        return "[scene]\nname = \"c\"\ncomponents = [\"planet\"]\n[camera]\nposition_km = [7000.0, 0.0, 0.0]\n"
+               "direction = " + direction + "\nup = " + up + "\n";
+    };
+    const std::string tiny = aurorawall::test::temporarySceneFile("tiny.toml", camera("[0.0, 1e-300, 0.0]", "[0.0, 1e-300, 1e-10]"));
+    const scene::Scene s = components::loadScene(tiny);
+    EXPECT_EQ(s.camera.forward, glm::dvec3(0.0, 1.0, 0.0));
+    EXPECT_EQ(s.camera.up, glm::dvec3(0.0, 0.0, 1.0));
+    const scene::Scene huge = components::loadScene(
+        aurorawall::test::temporarySceneFile("huge.toml", camera("[0.0, 1e12, 1e12]", "[0.0, 0.0, 1e12]")));
+    EXPECT_NEAR(glm::length(huge.camera.forward), 1.0, 1e-15);
+    EXPECT_NEAR(glm::dot(huge.camera.forward, huge.camera.up), 0.0, 1e-15);
+    EXPECT_NE(aurorawall::test::loadErrorOfText("zero_up.toml", camera("[0.0, 1.0, 0.0]", "[0.0, 0.0, 0.0]"))
+                  .find(":7: camera.up: must not be zero"),
+              std::string::npos);
+    EXPECT_NE(aurorawall::test::loadErrorOfText("zero_direction.toml", camera("[0.0, 0.0, 0.0]", "[0.0, 0.0, 1.0]"))
+                  .find(":6: camera.direction: must not be zero"),
+              std::string::npos);
+    EXPECT_NE(aurorawall::test::loadErrorOfText("parallel.toml", camera("[0.0, 1.0, 0.0]", "[0.0, -1e-10, 1e-20]"))
+                  .find("camera.up: must not be parallel to the view direction"),
+              std::string::npos);
+    const std::string keyed = "[scene]\nname = \"c\"\ncomponents = [\"planet\"]\n[camera]\n"
+                              "[[camera.key]]\ntime_s = 0.0\nposition_km = [7000.0, 0.0, 0.0]\n"
+                              "direction = [0.0, 1.0, 0.0]\nup = [0.0, 0.0, 1e-10]\n"
+                              "[[camera.key]]\ntime_s = 1.0\nposition_km = [7000.0, 0.0, 0.0]\n"
+                              "direction = [0.0, 1.0, 0.0]\nup = [0.0, 2.0, 0.0]\n";
+    EXPECT_NE(aurorawall::test::loadErrorOfText("keyed.toml", keyed).find(":14: camera.key.up: must not be parallel"),
+              std::string::npos)
+        << aurorawall::test::loadErrorOfText("keyed.toml", keyed);
+}
+
 // Bytes that are not UTF-8 inside a string: the line and the problem, without toml11's function names.
 TEST(SceneErrors, InvalidUtf8IsNamedWithItsLine)
 {
