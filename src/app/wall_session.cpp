@@ -5,6 +5,7 @@
 #include "cluster/rank_groups.h"
 #include "components/registry.h"
 #include "common/data_dir.h"
+#include "common/formatted.h"
 #include "common/input_error.h"
 #include "io/directory.h"
 #include "render/march_shader.h"
@@ -130,6 +131,28 @@ void refuseClashingPaths(const std::vector<OutputFile>& outputs, const RenderOpt
     }
 }
 
+// The options that assemble the whole wall canvas on rank 0 need it in memory there, with its encodings
+// and the gathered tiles: about 32 bytes a pixel (float RGB 12, the tiles as half floats 6, the EXR's
+// 6, the PNG's 3, the cost map's work and owner 12 at most). A canvas beyond the master's memory is
+// refused before the first frame, naming the option, instead of failing to allocate after it.
+void refuseCanvasBeyondMemory(const RenderOptions& options, const wall::Wall& wall)
+{
+    const char* option = options.gather            ? "--gather"
+                         : !options.movieDir.empty() ? "--movie"
+                         : !options.costMapFile.empty() ? "--cost-map"
+                                                        : nullptr;
+    if (!option)
+        return;
+    constexpr double kBytesPerPixel = 32.0, kGiB = 1024.0 * 1024.0 * 1024.0;
+    const double needed = kBytesPerPixel * double(wall.canvasSizePx.x) * double(wall.canvasSizePx.y);
+    const double memory = double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGESIZE));
+    if (memory > 0.0 && needed > memory)
+        throw common::InputError(common::formatted("%s: the wall canvas of %dx%d pixels needs about %.1f GiB on rank 0 "
+                                                   "(32 bytes a pixel), more than its host's %.1f GiB of memory",
+                                                   option, wall.canvasSizePx.x, wall.canvasSizePx.y,
+                                                   needed / kGiB, memory / kGiB));
+}
+
 // A movie starts in a folder that holds none of a movie's files (MovieWriter::writes), so that it
 // overwrites no earlier movie.
 void refuseEarlierMovie(const std::string& dir)
@@ -161,6 +184,8 @@ void configure(const cluster::MpiWorld& world, int argc, char** argv, WallSessio
     s.scene = components::loadScene(options.sceneFile);
     const std::vector<OutputFile> outputs = outputFiles(options, s.wall);
     refuseClashingPaths(outputs, options, s.scene);
+    if (world.isMaster())
+        refuseCanvasBeyondMemory(options, s.wall);
     s.dataDir = options.dataDir.empty() ? common::dataDirectory() : options.dataDir;
     s.shaderDir = s.dataDir + "/shaders";
     render::marchShaderSource(s.scene, s.shaderDir); // every module readable before any window opens

@@ -93,6 +93,36 @@ expect 2 "^aurorawall render: --cost-map .*/shots.png is the --out folder: give 
 for folder in clash film reel.csv shots.png; do
     [ ! -e "$WORK/$folder" ] || fail "render with clashing outputs created $folder"
 done
+# Two 1-pixel screens 1 km apart: a canvas of 1000001x1000001 pixels, 32 TB to assemble on rank 0.
+cat > "$WORK/sparse.toml" <<'EOF'
+[ranks]
+screens_per_rank = 2
+[[screen]]
+name = "a"
+width_px = 1
+height_px = 1
+width_mm = 1
+height_mm = 1
+x_mm = 0
+y_mm = 0
+[[screen]]
+name = "b"
+width_px = 1
+height_px = 1
+width_mm = 1
+height_mm = 1
+x_mm = 1000000
+y_mm = 1000000
+[eye]
+z_mm = 500000
+EOF
+for option in "--gather" "--movie $WORK/sparse-movie" "--cost-map $WORK/sparse.png"; do
+    # shellcheck disable=SC2086 # the words of $option are the option and its value
+    expect 1 "^aurorawall render: ${option%% *}: the wall canvas of 1000001x1000001 pixels needs about 29802.4 GiB on rank 0" \
+        render --wall "$WORK/sparse.toml" --scene "$SCENE" --frames 1 --out "$WORK/sparse-out" $option
+done
+[ ! -e "$WORK/sparse-out" ] && [ ! -e "$WORK/sparse-movie" ] && [ ! -e "$WORK/sparse.png" ] ||
+    fail "render with a canvas beyond memory wrote output"
 mkdir -p "$WORK/movie"
 touch "$WORK/movie/frames.csv"
 expect 1 "^aurorawall render: --movie .*/movie: already holds frames.csv of a movie; give another folder" \
