@@ -53,8 +53,9 @@ struct OpenBracket {
 
 // Puts a line break after every comma of an array (outside strings and comments, and not in inline
 // tables, where TOML allows none), keeping the file's line of each resulting line. Refuses an array of
-// more than kMaxTomlArrayElements elements, or more than kMaxTomlFileArrayElements in all, and nesting
-// deeper than kMaxTomlNesting.
+// more than kMaxTomlArrayElements elements, or more than kMaxTomlFileArrayElements in all, nesting
+// deeper than kMaxTomlNesting, a key of more than kMaxTomlKeyParts parts and an inline table of more
+// than kMaxTomlInlineTableEntries entries.
 class ArrayBreaker {
 public:
     ArrayBreaker(const std::string& path, const std::string& text) : path_(path), text_(text)
@@ -85,6 +86,7 @@ private:
     void newLine()
     {
         lines_.push_back(++line_);
+        startKey(open_.empty()); // a line outside brackets starts with a key or a table header
         if (in_ == In::Comment || in_ == In::Basic || in_ == In::Literal)
             in_ = In::Code;
     }
@@ -106,8 +108,20 @@ private:
         }
     }
 
+    // A key starts (at a line's start, or an inline table's entry) or, with false, a value does.
+    void startKey(bool key)
+    {
+        inKey_ = key;
+        keyDots_ = 0;
+    }
+
     void code(char c)
     {
+        if (inKey_ && c == '.' && ++keyDots_ >= kMaxTomlKeyParts)
+            throw common::inputError(path_, line_, "a key of more than " + std::to_string(kMaxTomlKeyParts) +
+                                                       " dotted parts, the most a config key may have");
+        if (c == '=')
+            startKey(false);
         if (c == '#') {
             in_ = In::Comment;
         } else if (c == '"' || c == '\'') {
@@ -125,10 +139,18 @@ private:
                                                            std::to_string(kMaxTomlNesting) +
                                                            " deep, the most a config file may have");
             open_.push_back({c, line_});
+            if (c == '{')
+                startKey(true);
         } else if ((c == ']' || c == '}') && !open_.empty()) {
             if (open_.back().bracket == '[')
                 closeArray(open_.back());
             open_.pop_back();
+        } else if (c == ',' && !open_.empty() && open_.back().bracket == '{') {
+            if (++open_.back().commas >= kMaxTomlInlineTableEntries)
+                throw common::inputError(path_, open_.back().line, "an inline table of more than " +
+                                                                       std::to_string(kMaxTomlInlineTableEntries) +
+                                                                       " entries, the most a config table may have");
+            startKey(true);
         } else if (c == ',' && !open_.empty() && open_.back().bracket == '[') {
             checkLength(open_.back(), ++open_.back().commas);
             open_.back().pending = false;
@@ -172,6 +194,8 @@ private:
     std::size_t i_ = 0;
     int line_ = 1;
     In in_ = In::Code;
+    bool inKey_ = true; // the file's first line starts with a key or a table header
+    std::size_t keyDots_ = 0;
 };
 
 } // namespace

@@ -33,6 +33,11 @@ constexpr std::size_t kMaxTomlFileArrayElements = 131072;
 // The deepest nesting of arrays and inline tables: toml11 parses them recursively, and about 10,000
 // levels overflow the stack, so a file nested deeper is refused before it is parsed.
 constexpr std::size_t kMaxTomlNesting = 64;
+// The most parts a dotted key or table header may have, and entries an inline table may have: toml11
+// takes time growing as the square of either (52 s for an inline table of 20,000 keys, 20 s for a key
+// of 40,000 parts), so a file past them is refused before it is parsed.
+constexpr std::size_t kMaxTomlKeyParts = 16;
+constexpr std::size_t kMaxTomlInlineTableEntries = 256;
 
 // Parses a file; syntax errors become InputError "file:line: problem". Arrays are parsed with a
 // line break after each of their commas (toml11 scans a value's whole line for comments, which made

@@ -161,6 +161,49 @@ TEST(SceneErrors, NestingPastTheLimitIsRefusedWithItsLine)
     EXPECT_NE(loadError(nested("at_nesting_limit.toml", most, '[', ']', "")).find("radius_km"), std::string::npos);
 }
 
+// toml11's time grows as the square of a dotted key's parts and of an inline table's entries: past
+// kMaxTomlKeyParts and kMaxTomlInlineTableEntries the file is refused with the line, before parsing,
+// in keys, table headers and inline tables alike; at the limits the file parses (and the unknown key
+// is what is wrong).
+TEST(SceneErrors, LongKeysAndInlineTablesAreRefusedWithTheirLine)
+{
+    const std::string head = "[scene]\nname = \"n\"\ncomponents = [\"planet\"]\n";
+    const auto dotted = [](std::size_t parts) {
+        std::string key = "a";
+        for (std::size_t i = 1; i < parts; ++i)
+            key += ".a";
+        return key;
+    };
+    const auto inlineTable = [](std::size_t entries) {
+        std::string table = "{";
+        for (std::size_t i = 0; i < entries; ++i)
+            table += (i ? ", k" : "k") + std::to_string(i) + " = 1.5";
+        return table + "}";
+    };
+    const std::size_t parts = config::kMaxTomlKeyParts, entries = config::kMaxTomlInlineTableEntries;
+    for (std::size_t n : {parts + 1, std::size_t(40000)}) {
+        EXPECT_NE(aurorawall::test::loadErrorOfText("long_key.toml", head + "[planet]\n" + dotted(n) + " = 1\n")
+                      .find(":5: a key of more than 16 dotted parts"),
+                  std::string::npos);
+        EXPECT_NE(aurorawall::test::loadErrorOfText("long_header.toml", head + "[" + dotted(n) + "]\n")
+                      .find(":4: a key of more than 16 dotted parts"),
+                  std::string::npos);
+        EXPECT_NE(aurorawall::test::loadErrorOfText("inline_key.toml", head + "[planet]\nx = {" + dotted(n) + " = 1}\n")
+                      .find(":5: a key of more than 16 dotted parts"),
+                  std::string::npos);
+    }
+    for (std::size_t n : {entries + 1, std::size_t(20000)})
+        EXPECT_NE(aurorawall::test::loadErrorOfText("wide_table.toml", head + "[planet]\nx = " + inlineTable(n) + "\n")
+                      .find(":5: an inline table of more than 256 entries"),
+                  std::string::npos);
+    EXPECT_NE(aurorawall::test::loadErrorOfText("key_at_limit.toml", head + "[planet]\n" + dotted(parts) + " = 1\n")
+                  .find("unknown"),
+              std::string::npos);
+    EXPECT_NE(aurorawall::test::loadErrorOfText("table_at_limit.toml", head + "[planet]\nx = " + inlineTable(entries) + "\n")
+                  .find("unknown"),
+              std::string::npos);
+}
+
 // A camera needs a horizon: at (or within 1 km of) the planet's centre it has none, in any form.
 TEST(SceneErrors, CameraAtThePlanetsCentreIsRefused)
 {
