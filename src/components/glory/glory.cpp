@@ -262,6 +262,24 @@ void readLight(const config::TableReader& t, Settings& s)
     t.rejectUnknownKeys();
 }
 
+// The most work a glory table may take (optics::phaseTableWork): 70 times the default's 7.1e9, which
+// builds in 8 s on the 2-core machine, so about 10 minutes there; wide distributions of large drops
+// reach far beyond (effective_radius_um 50 with effective_variance 0.3: 6.6e12, hours).
+constexpr double kMaxTableWork = 5e11;
+
+void refuseTableBeyondBudget(const config::TableReader& t, const Settings& s)
+{
+    const mie::DropSizeDistribution drops = s.drops();
+    const double work = optics::phaseTableWork(drops, s.table);
+    if (work > kMaxTableWork)
+        t.fail("effective_variance",
+               common::formatted("the glory table would sum %.2g Mie terms times angles (drops up to %.0f um), more "
+                                 "than the %.0e (about 10 minutes on 2 cores) a table may take: lower "
+                                 "effective_radius_um or effective_variance, raise size_parameter_step, or lower "
+                                 "table_wavelengths or the angle counts",
+                                 work, drops.radiusRangeUm().second, kMaxTableWork));
+}
+
 class Glory : public scene::ComponentWithRenderer<Settings, Renderer> {
 public:
     std::vector<std::string> needs() const override { return {roles::kGround}; }
@@ -288,6 +306,7 @@ public:
             t.fail("forward_span_deg", "glory_span_deg + forward_span_deg must leave at least 18 degrees between them");
         table.wavelengthCount = t.integer("table_wavelengths", 2, 401, table.wavelengthCount);
         table.sizeParameterStep = t.number("size_parameter_step", 0.005, 2.0, table.sizeParameterStep);
+        refuseTableBeyondBudget(t, s);
         s.sampling = static_cast<WavelengthSampling>(
             t.choice("wavelength_sampling", {"colour-table", "uniform", "importance"}, int(s.sampling)));
         s.wavelengthsPerPixel = t.integer("wavelengths_per_pixel", 1, 256, s.wavelengthsPerPixel);

@@ -2,6 +2,7 @@
 // of its rings: where the first red ring lies, what a spread of drop sizes and the Sun's disc do.
 #include "physics/constants.h"
 #include "components/glory/glory.h"
+#include "components/glory/mie/mie_coefficients.h"
 #include "components/glory/mie/mie_scattering.h"
 #include "components/glory/mie/phase_function.h"
 #include "physics/colour_matching.h"
@@ -318,11 +319,29 @@ TEST(GlorySettings, BadInputNamesFileLineAndKey)
         {"moon-key-on-sun.toml", kDeck + "[glory]\n" + kLight + "albedo = 0.1\n", "unknown key 'glory.light.albedo'"},
         {"bad-sampling.toml", kDeck + "[glory]\nwavelength_sampling = \"random\"\n" + kLight,
          "bad-sampling.toml:11: glory.wavelength_sampling: must be one of"},
+        {"hours-of-table.toml", kDeck + "[glory]\neffective_radius_um = 50.0\neffective_variance = 0.3\n" + kLight,
+         "hours-of-table.toml:12: glory.effective_variance: the glory table would sum 6.6e+12 Mie terms times angles"},
     };
     for (const Case& c : cases) {
         const std::string message = test::loadErrorOfText(c.name, c.text);
         EXPECT_NE(message.find(c.expected), std::string::npos) << c.name << ": " << message;
     }
+}
+
+// The table's work (phaseTableWork) counts what phaseTable does: a single size is one series a
+// wavelength, wiscombeTermCount(x) terms long, each reaching every angle. The default drops' table is
+// far within the budget a scene may ask for, and single sizes up to the largest radius too.
+TEST(GlorySettings, TableWorkCountsTheSeriesTermsAndAngles)
+{
+    GloryTableSpec spec;
+    spec.wavelengthCount = 2;
+    double terms = 0.0;
+    for (const double nm : {spec.firstNm, spec.lastNm})
+        terms += mie::wiscombeTermCount(2.0 * physics::kPi * 20.0 / (nm * 1e-3));
+    EXPECT_EQ(phaseTableWork(mie::DropSizeDistribution::singleSize(20.0), spec), terms * spec.angles.size());
+    const std::string single = kDeck + "[glory]\neffective_radius_um = 50.0\neffective_variance = 0.0\n" + kLight;
+    EXPECT_EQ(test::loadErrorOfText("one-size.toml", single), "");
+    EXPECT_EQ(test::loadErrorOfText("default-drops.toml", kDeck + "[glory]\n" + kLight), "");
 }
 
 // A camera on the deck's top (or base) is outside it: looking away it sees no deck, looking into it

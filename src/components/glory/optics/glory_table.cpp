@@ -79,6 +79,13 @@ double addDrop(double x, double n, const AngularFunctions& f, double weight, std
     return mie::efficiencies(c).scattering;
 }
 
+// The trapezoid rule's intervals over the radii [lo, hi] µm at wavenumber k (µm⁻¹): steps of at most
+// sizeParameterStep in x = kr.
+int radiusIntervals(double k, double lo, double hi, double sizeParameterStep)
+{
+    return std::max(2, static_cast<int>(std::ceil(k * (hi - lo) / sizeParameterStep)));
+}
+
 // One wavelength's row of the phase table; returns the number of Mie series summed.
 long long phaseRow(const mie::DropSizeDistribution& drops, double wavelengthNm, const AngularFunctions& f,
                    double sizeParameterStep, double* row)
@@ -94,7 +101,7 @@ long long phaseRow(const mie::DropSizeDistribution& drops, double wavelengthNm, 
         return 1;
     }
     const auto [lo, hi] = drops.radiusRangeUm();
-    const int intervals = std::max(2, static_cast<int>(std::ceil(k * (hi - lo) / sizeParameterStep)));
+    const int intervals = radiusIntervals(k, lo, hi, sizeParameterStep);
     const double dr = (hi - lo) / intervals;
     const double logMode = drops.logDensity(drops.effectiveRadiusUm());
     double crossSection = 0.0; // ∫ n C_sca dr, C_sca = π r² Qsca
@@ -142,6 +149,19 @@ glm::dvec3 colourAtAngle(const AngleGrid& grid, const std::vector<glm::dvec3>& c
     const double position = grid.index(gammaRad);
     const size_t i = std::min(static_cast<size_t>(position), colours.size() - 2);
     return glm::mix(colours[i], colours[i + 1], position - double(i));
+}
+
+double phaseTableWork(const mie::DropSizeDistribution& drops, const GloryTableSpec& spec)
+{
+    const PhaseTable table = emptyPhaseTable(spec);
+    const auto [lo, hi] = drops.radiusRangeUm();
+    double terms = 0.0;
+    for (const double wavelengthNm : table.wavelengthsNm) {
+        const double k = 2.0 * physics::kPi / (wavelengthNm * 1e-3);
+        const double nodes = drops.isSingleSize() ? 1.0 : radiusIntervals(k, lo, hi, spec.sizeParameterStep) + 1.0;
+        terms += nodes * mie::wiscombeTermCount(k * 0.5 * (lo + hi)); // the series' length grows as x
+    }
+    return terms * spec.angles.size();
 }
 
 PhaseTable emptyPhaseTable(const GloryTableSpec& spec)

@@ -65,6 +65,10 @@ PhaseTable emptyPhaseTable(const GloryTableSpec& spec);
 // every grid angle computed once (Bohren & Huffman 1983, eq. 4.47).
 PhaseTable phaseTable(const mie::DropSizeDistribution& drops, const GloryTableSpec& spec);
 
+// phaseTable's work: the Mie series' terms summed (each radius node's, about x + 4x^(1/3) of them)
+// times the angles each term reaches, over every wavelength; its time is proportional to it.
+double phaseTableWork(const mie::DropSizeDistribution& drops, const GloryTableSpec& spec);
+
 // The table seen by the light of a uniform disc of angular radius ρ: at each angle the average of P
 // over the disc, P̄(γ) = (1/πρ²) ∫∫ P(γ') s ds dφ with cos γ' = cos γ cos s + sin γ sin s cos φ (the
 // spherical law of cosines: exact at every γ), by 8-point Gauss–Legendre in s and 24 midpoints in φ
