@@ -162,7 +162,7 @@ void declareOptions(cli::CommandLine& cli, VerifyOptions& o)
               "the leapfrog is unstable from 2 on, and the runs' steps grow as 1/(omega_p dt)")(
               "wc-dt", po::value<double>(&o.wcDt)->default_value(1.0),
               "omega_c dt of boris and exb, in [1e-6, 1e6] (the Boris push is stable for any; beyond, rounding "
-              "hides the E x B circle)");
+              "hides the E x B circle, in float on the GPU from about 1e4)");
     cli.add()("dx-lambda-d", po::value<double>(&o.dxOverDebye),
               "the heating case's grid spacing in Debye lengths, in [0.01, 100] (default: 0.5, 2 and 8 in turn)");
     cli.addChoice("shape", &o.shape, kShapes,
