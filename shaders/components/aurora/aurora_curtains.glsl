@@ -224,10 +224,11 @@ bool withinReach(real s, real u, real lengthKm, real reach)
 // (∫ profile dq, ∫ (q − q0) profile dq, mean profile at its ends: curtainIntegral, bilinearPiece) over
 // the change dq = rate · len of the integrated coordinate: (∫ profile dt in km, ∫ t profile dt in km²),
 // at the flux-weighted mean position from the first moment; the midpoint rule where q changes by less
-// than 1 m; nothing where the mass is not positive.
-vec2 runShare(vec3 column, real dq, real rate, real ta, real len)
+// than 1 m or where the caller finds the closed form rounder than it (`rounded`); nothing where the mass
+// is not positive.
+vec2 runShare(vec3 column, real dq, real rate, real ta, real len, bool rounded)
 {
-    bool pointLike = abs(dq) < 1e-3;
+    bool pointLike = rounded || abs(dq) < 1e-3;
     real mass = pointLike ? column.z * len : column.x / rate;
     if (mass <= 0.0)
         return vec2(0.0);
@@ -365,9 +366,16 @@ vec3 curtainEnergyExact(vec3 o, vec3 d, int c, CurtainCoordinates cc, real tm, v
                 if (!prime) {
                     COUNT_WORK(z, 1);
                     real dq = qb - q;
-                    vec3 column = bilinearPiece(lo, loNext, hi, hiNext, q, dq, clamp(p - cell, 0.0, 1.0),
-                                                clamp(pb - cell, 0.0, 1.0), qCellKm);
-                    runSums += runShare(column, dq, rate, ta, len);
+                    real la = clamp(p - cell, 0.0, 1.0);
+                    real lb = clamp(pb - cell, 0.0, 1.0);
+                    vec3 column = bilinearPiece(lo, loNext, hi, hiNext, q, dq, la, lb, qCellKm);
+                    // The closed form is a difference of running integrals held in float texels, so it errs by
+                    // about 2u of their sizes (u = 2^-24); the end-point rule by at most half the profile's
+                    // change over the piece times dq. A ray that barely moves across the detail (looking along
+                    // a curtain, straight up inside it) takes the smaller.
+                    real rounding = 1.2e-7 * (abs(lo.x) + abs(loNext.x) + abs(hi.x) + abs(hiNext.x));
+                    real endPoint = 0.5 * abs(dq) * abs(mix(hi.z, hiNext.z, lb) - mix(lo.z, loNext.z, la));
+                    runSums += runShare(column, dq, rate, ta, len, rounding > endPoint);
                 }
                 lo = hi;
                 loNext = hiNext;
@@ -500,7 +508,7 @@ vec3 integrateCurtains(vec3 o, vec3 d, real t0, real t1, vec4 candidates)
                 // the integrated coordinate.
                 real q0 = (alongMode ? s : u) - 0.5 * change;
                 vec3 column = curtainIntegral(c, alongMode, alongMode ? u : clamp(s, 0.0, lengthKm), q0, change);
-                runSums += runShare(column, change, rate, ta, part);
+                runSums += runShare(column, change, rate, ta, part, false);
             }
             if ((i + 1) % run == 0 || i == parts - 1) {
                 energy += runEnergy(o, d, runSums, c);
