@@ -180,28 +180,20 @@ TEST(SceneErrors, LongKeysAndInlineTablesAreRefusedWithTheirLine)
             table += (i ? ", k" : "k") + std::to_string(i) + " = 1.5";
         return table + "}";
     };
+    const auto expectError = [&](const char* name, const std::string& body, const std::string& message) {
+        const std::string error = aurorawall::test::loadErrorOfText(name, head + body);
+        EXPECT_NE(error.find(message), std::string::npos) << name << ": " << error;
+    };
     const std::size_t parts = config::kMaxTomlKeyParts, entries = config::kMaxTomlInlineTableEntries;
     for (std::size_t n : {parts + 1, std::size_t(40000)}) {
-        EXPECT_NE(aurorawall::test::loadErrorOfText("long_key.toml", head + "[planet]\n" + dotted(n) + " = 1\n")
-                      .find(":5: a key of more than 16 dotted parts"),
-                  std::string::npos);
-        EXPECT_NE(aurorawall::test::loadErrorOfText("long_header.toml", head + "[" + dotted(n) + "]\n")
-                      .find(":4: a key of more than 16 dotted parts"),
-                  std::string::npos);
-        EXPECT_NE(aurorawall::test::loadErrorOfText("inline_key.toml", head + "[planet]\nx = {" + dotted(n) + " = 1}\n")
-                      .find(":5: a key of more than 16 dotted parts"),
-                  std::string::npos);
+        expectError("long_key.toml", "[planet]\n" + dotted(n) + " = 1\n", ":5: a key of more than 16 dotted parts");
+        expectError("long_header.toml", "[" + dotted(n) + "]\n", ":4: a key of more than 16 dotted parts");
+        expectError("inline_key.toml", "[planet]\nx = {" + dotted(n) + " = 1}\n", ":5: a key of more than 16 dotted parts");
     }
     for (std::size_t n : {entries + 1, std::size_t(20000)})
-        EXPECT_NE(aurorawall::test::loadErrorOfText("wide_table.toml", head + "[planet]\nx = " + inlineTable(n) + "\n")
-                      .find(":5: an inline table of more than 256 entries"),
-                  std::string::npos);
-    EXPECT_NE(aurorawall::test::loadErrorOfText("key_at_limit.toml", head + "[planet]\n" + dotted(parts) + " = 1\n")
-                  .find("unknown"),
-              std::string::npos);
-    EXPECT_NE(aurorawall::test::loadErrorOfText("table_at_limit.toml", head + "[planet]\nx = " + inlineTable(entries) + "\n")
-                  .find("unknown"),
-              std::string::npos);
+        expectError("wide_table.toml", "[planet]\nx = " + inlineTable(n) + "\n", ":5: an inline table of more than 256 entries");
+    expectError("key_at_limit.toml", "[planet]\n" + dotted(parts) + " = 1\n", "unknown");
+    expectError("table_at_limit.toml", "[planet]\nx = " + inlineTable(entries) + "\n", "unknown");
 }
 
 // A camera needs a horizon: at (or within 1 km of) the planet's centre it has none, in any form.
