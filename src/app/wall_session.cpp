@@ -148,9 +148,9 @@ void refuseCanvasBeyondMemory(const RenderOptions& options, const wall::Wall& wa
     const double memory = double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGESIZE));
     if (memory > 0.0 && needed > memory)
         throw common::InputError(common::formatted("%s: the wall canvas of %dx%d pixels needs about %.1f GiB on rank 0 "
-                                                   "(32 bytes a pixel), more than its host's %.1f GiB of memory",
+                                                   "(%.0f bytes a pixel), more than its host's %.1f GiB of memory",
                                                    option, wall.canvasSizePx.x, wall.canvasSizePx.y,
-                                                   needed / kGiB, memory / kGiB));
+                                                   needed / kGiB, kBytesPerPixel, memory / kGiB));
 }
 
 // A movie starts in a folder that holds none of a movie's files (MovieWriter::writes), so that it
