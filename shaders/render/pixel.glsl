@@ -4,8 +4,6 @@
 // steps its marching components took (gRayWork), with which the load balancer shares the measured time of a draw among the bands
 // it covered (src/gl/float_target.h); with AURORAWALL_WORK_CLOCK the GPU clock cycles it took; with
 // AURORAWALL_WORK_FETCHES 1 + its texture fetches.
-uniform vec3 uCameraPositionKm; // camera relative to the planet centre, planet frame
-
 void shadePixel(out vec4 radiance, out float work)
 {
 #ifdef AURORAWALL_WORK_CLOCK
@@ -14,7 +12,8 @@ void shadePixel(out vec4 radiance, out float work)
     work = 1.0;
     radiance = vec4(0.0, 0.0, 0.0, 1.0);
     if (fragmentInImage()) {
-        radiance = vec4(shadeRay(uCameraPositionKm, fragmentRayDirection()), 1.0);
+        vec3 direction = fragmentRayDirection();
+        radiance = vec4(shadeRay(fragmentRayStart(direction), direction), 1.0);
         work = 1.0 + float(gRayWork);
     }
 #if defined(AURORAWALL_WORK_CLOCK)

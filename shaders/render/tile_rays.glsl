@@ -24,6 +24,18 @@ uniform vec3 uDomeAxis;    // planet frame, orthonormal
 uniform vec3 uDomeRight;
 uniform vec3 uDomeDown;
 
+// Where the rays start (src/cluster/frame_state.h, rayStart): uRayStartKm from double; a far
+// camera's rays each moved uRayStartDistanceKm along themselves. The flat wall's three vectors again,
+// split into their part across the view's forward direction uViewForward (xyz) and along it (w), so
+// that a narrow view's d - forward is formed without cancellation.
+uniform vec3 uRayStartKm;
+uniform float uRayStartDistanceKm; // 0: the rays start at the camera, uRayStartKm
+uniform vec3 uViewForward;
+uniform vec4 uRayOriginSplit;
+uniform vec4 uRayStepRightSplit;
+uniform vec4 uRayStepDownSplit;
+uniform vec4 uRayOriginRightSplit;
+
 // The centre of this invocation's pixel in the tile, bottom-up with centres at +0.5 (gl_FragCoord.xy
 // of the fragment march), set by the entry point; canvas rows run top-down.
 vec2 gPixelCentre;
@@ -46,4 +58,30 @@ vec3 fragmentRayDirection()
         return fisheyeDirection(canvas - uDomeCentre, uDomeRadiansPerPixel, uDomeAxis, uDomeRight, uDomeDown);
     vec3 origin = canvas.x >= uSplitX ? uRayOriginRight : uRayOrigin;
     return normalize(origin + canvas.x * uRayStepRight + canvas.y * uRayStepDown);
+}
+
+// direction - uViewForward for this fragment's unit ray direction. A flat wall's ray within 45
+// degrees of forward is u across it at unit distance along it: d = (forward + u) / s with
+// s = sqrt(1 + |u|^2), so d - forward = (u - forward |u|^2 / (1 + s)) / s, to float's relative
+// precision however narrow the view. Other rays (a dome's, a wide view's) subtract, to float's
+// absolute precision, which their own width far exceeds.
+vec3 fragmentRayOffsetFromForward(vec3 direction)
+{
+    vec2 canvas = fragmentCanvasPosition();
+    vec4 v = (canvas.x >= uSplitX ? uRayOriginRightSplit : uRayOriginSplit) + canvas.x * uRayStepRightSplit +
+             canvas.y * uRayStepDownSplit;
+    if (uDome != 0 || v.w < length(v.xyz))
+        return direction - uViewForward;
+    vec3 u = v.xyz / v.w;
+    float uu = dot(u, u);
+    float s = sqrt(1.0 + uu);
+    return (u - uViewForward * (uu / (1.0 + s))) / s;
+}
+
+// Where the ray of unit direction `direction` starts: planet frame, km.
+vec3 fragmentRayStart(vec3 direction)
+{
+    if (uRayStartDistanceKm == 0.0)
+        return uRayStartKm;
+    return uRayStartKm + uRayStartDistanceKm * fragmentRayOffsetFromForward(direction);
 }

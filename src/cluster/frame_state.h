@@ -3,6 +3,7 @@
 // broadcasts it; the other ranks never read input or clocks of their own.
 #include <glm/glm.hpp>
 
+#include <algorithm>
 #include <cstdint>
 #include <limits>
 #include <type_traits>
@@ -33,6 +34,27 @@ static_assert(std::is_trivially_copyable_v<FrameState>, "FrameState is broadcast
 inline glm::dmat3 wallToPlanet(const FrameState& s)
 {
     return glm::dmat3(s.cameraRight / s.zoom, s.cameraUp / s.zoom, s.cameraBack);
+}
+
+// Where this frame's rays start. The GPU holds positions in float, to 2^-24 of their size: 6 km at
+// 1e8 km, far coarser than what a narrow view of the planet resolves from there. So a camera farther
+// than twice `reachRadiusKm` (scene::Scene::reachRadiusKm) from the planet's centre moves every ray
+// forward by distanceKm, to a point at least that radius from the centre: the ray of unit
+// direction d starts at camera + distanceKm d = pointKm + distanceKm (d - forward), where pointKm
+// comes from double here and d - forward, small across a narrow view, keeps its precision on the
+// GPU (render/tile_rays.glsl). Nothing is skipped: the whole scene lies beyond distanceKm.
+// A nearer camera's rays start at the camera (distanceKm 0, pointKm the camera).
+struct RayStart {
+    glm::dvec3 pointKm;
+    double distanceKm;
+    glm::dvec3 forward; // unit, the camera's view direction
+};
+
+inline RayStart rayStart(const FrameState& s, double reachRadiusKm)
+{
+    const glm::dvec3 forward = -s.cameraBack;
+    const double distance = std::max(0.0, glm::length(s.cameraPositionKm) - 2.0 * reachRadiusKm);
+    return {s.cameraPositionKm + distance * forward, distance, forward};
 }
 
 } // namespace aurorawall::cluster

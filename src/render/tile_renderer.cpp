@@ -33,6 +33,13 @@ gl::Program marchProgram(const scene::Scene& scene, const std::string& shaderDir
     return gl::Program::graphics(gl::fullScreenTriangleVertexShader(), source);
 }
 
+// v (planet frame) split in double into its part across the unit `forward` (xyz) and along it (w).
+glm::vec4 splitAlong(glm::dvec3 v, glm::dvec3 forward)
+{
+    const double along = glm::dot(v, forward);
+    return glm::vec4(glm::vec3(v - along * forward), static_cast<float>(along));
+}
+
 } // namespace
 
 TileRenderer::TileRenderer(const scene::Scene& scene, const std::string& shaderDir)
@@ -68,7 +75,11 @@ void TileRenderer::setFrame(const cluster::FrameState& frame)
     wallToPlanet_ = cluster::wallToPlanet(frame);
     domeToPlanet_ = glm::dmat3(frame.cameraRight, frame.cameraUp, frame.cameraBack);
     zoom_ = frame.zoom;
-    program_.set("uCameraPositionKm", glm::vec3(frame.cameraPositionKm));
+    const cluster::RayStart start = cluster::rayStart(frame, scene_.reachRadiusKm());
+    viewForward_ = start.forward;
+    program_.set("uRayStartKm", glm::vec3(start.pointKm));
+    program_.set("uRayStartDistanceKm", static_cast<float>(start.distanceKm));
+    program_.set("uViewForward", glm::vec3(start.forward));
     componentFrameMs_.clear();
     for (const auto& c : components_) {
         const auto start = std::chrono::steady_clock::now();
@@ -102,6 +113,10 @@ void TileRenderer::renderTile(const wall::TileRays& rays, gl::FloatTarget& targe
     program_.set("uRayStepRight", glm::vec3(wallToPlanet_ * rays.stepRight));
     program_.set("uRayStepDown", glm::vec3(wallToPlanet_ * rays.stepDown));
     program_.set("uRayOriginRight", glm::vec3(wallToPlanet_ * rays.originDirRight));
+    program_.set("uRayOriginSplit", splitAlong(wallToPlanet_ * rays.originDir, viewForward_));
+    program_.set("uRayStepRightSplit", splitAlong(wallToPlanet_ * rays.stepRight, viewForward_));
+    program_.set("uRayStepDownSplit", splitAlong(wallToPlanet_ * rays.stepDown, viewForward_));
+    program_.set("uRayOriginRightSplit", splitAlong(wallToPlanet_ * rays.originDirRight, viewForward_));
     program_.set("uSplitX", static_cast<float>(rays.splitPx));
     program_.set("uPixelOffset", glm::vec2(rays.pixelOffset)); // integers: exact in float below 2^24
     program_.set("uTileHeight", target.height());

@@ -70,6 +70,7 @@ private:
     glm::dmat3 wallToPlanet_{1.0}; // with the frame's zoom (cluster::wallToPlanet)
     glm::dmat3 domeToPlanet_{1.0}; // the camera's axes alone
     double zoom_ = 1.0;
+    glm::dvec3 viewForward_{0.0, 0.0, -1.0}; // the camera's view direction, planet frame
     std::vector<std::unique_ptr<scene::ComponentRenderer>> components_;
     std::vector<double> componentFrameMs_;
     std::vector<std::string> precomputationLog_;

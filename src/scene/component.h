@@ -130,6 +130,10 @@ public:
     // registry order (scene/compositing_order.h). Every component declares one, also one without
     // a shading step of its own (the shell of what it gives its detail to).
     virtual Shell shell() const = 0;
+    // How high above the ground (km) it draws anything at a finite distance, from its settings in
+    // `scene`; 0 for what draws nothing of its own, lies on the ground or at infinity (the stars).
+    // Rays from a far camera start just beyond the highest of these (cluster::rayStart).
+    virtual double reachKm(const Scene&) const = 0;
 
     // The GPU part (needs a current GL context): precomputes its tables.
     virtual std::unique_ptr<ComponentRenderer> makeRenderer(const Scene& scene, const FindRenderer& find) const = 0;

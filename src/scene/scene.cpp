@@ -289,6 +289,14 @@ bool Scene::has(const std::string& componentName) const
     return settings_.count(componentName) != 0;
 }
 
+double Scene::reachRadiusKm() const
+{
+    double reach = 0.0;
+    for (const Component* c : components_)
+        reach = std::max(reach, c->reachKm(*this));
+    return planetRadiusKm + reach;
+}
+
 const Component* Scene::provider(const std::string& role) const
 {
     for (const Component* c : components_) {

@@ -52,6 +52,9 @@ struct Scene {
     bool has(const std::string& componentName) const;
     // The listed component that provides `role` (Component::provides), null when none does.
     const Component* provider(const std::string& role) const;
+    // The radius about the planet's centre within which the listed components draw everything at a
+    // finite distance (km): the planet's radius plus the highest Component::reachKm.
+    double reachRadiusKm() const;
 
     // Lists `c` with its default settings (scene files do this; tests may too, in registry order).
     void add(const Component& c);

@@ -25,6 +25,7 @@ public:
     std::vector<std::string> needs() const override { return needs_; }
     std::vector<std::string> provides() const override { return provides_; }
     scene::Shell shell() const override { return shell_; }
+    double reachKm(const scene::Scene&) const override { return 0.0; }
     std::unique_ptr<scene::ComponentSettings> defaultSettings() const override { return nullptr; }
     void read(const config::TableReader&, scene::Scene&, scene::ComponentSettings&) const override {}
     std::vector<std::string> shaderModules() const override { return {}; }

@@ -35,6 +35,20 @@ TEST(Scene, SubstormListsItsComponentsAndCurtains)
     EXPECT_DOUBLE_EQ(s.planetRadiusKm, 6371.0);
 }
 
+// The scene's reach is its highest listed component's top: the substorm's aurora, without it the
+// lower atmosphere's (the planet, the detail and the stars reach no higher than the ground).
+TEST(Scene, ReachIsTheHighestListedComponentsTop)
+{
+    scene::Scene s = components::loadScene(kScenes + "/substorm.toml");
+    const double auroraTop = s.settings<components::aurora::Settings>().topKm;
+    EXPECT_DOUBLE_EQ(s.reachRadiusKm(), s.planetRadiusKm + auroraTop);
+    s.remove("fluid_detail");
+    s.remove("aurora");
+    EXPECT_DOUBLE_EQ(s.reachRadiusKm(), s.planetRadiusKm + 75.0); // the atmosphere's top_km
+    s.remove("atmosphere");
+    EXPECT_DOUBLE_EQ(s.reachRadiusKm(), s.planetRadiusKm);
+}
+
 TEST(Scene, BenchmarkCameraIsThePapersView)
 {
     // The published benchmark camera: |C| = 1.011017 radii, about 70 km above southern Finland (59.2 N, 25.6 E),

@@ -1,7 +1,9 @@
 // The plasma box: a cube of plasma along the field lines whose electron density glows in the green
 // 557.7 nm line (volume emission proportional to n/n0), seen through the lower atmosphere like the
-// aurora. Positions relative to the camera come from double on the CPU.
-uniform vec3 uPlasmaBoxCentreFromCamera; // km, planet frame
+// aurora. The box's place relative to where the rays start (render/tile_rays.glsl) comes from
+// double on the CPU, so that a camera close to a small box sees it without float's rounding at
+// the planet's size.
+uniform vec3 uPlasmaBoxCentreFromRayStart; // km, planet frame
 uniform mat3 uPlasmaBoxAxes;             // columns: the box's x (east), y (north), z (up, along the field)
 uniform vec3 uPlasmaBoxRgb;              // linear sRGB cd/m^2 per km of path at n = n0
 
@@ -10,7 +12,8 @@ Ray shadePlasmaBox(Ray ray)
     int steps = int(uPlasmaBox.y);
     if (steps == 0)
         return ray;
-    vec3 o = -uPlasmaBoxCentreFromCamera * uPlasmaBoxAxes; // the camera in the box frame (transpose)
+    // The ray's start in the box frame (transpose); exactly -centre at a camera's start.
+    vec3 o = ((ray.origin - uRayStartKm) - uPlasmaBoxCentreFromRayStart) * uPlasmaBoxAxes;
     vec3 d = ray.direction * uPlasmaBoxAxes;
     vec2 segment = plasmaBoxSegment(o, d, 0.5 * uPlasmaBox.x);
     segment.x = max(segment.x, 0.0);

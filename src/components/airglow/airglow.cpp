@@ -9,6 +9,7 @@
 #include "components/roles/lower_atmosphere.h"
 #include "components/roles/names.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace aurorawall::components::airglow {
@@ -120,6 +121,16 @@ public:
     }
     std::string shaderShadeCall() const override { return "shadeAirglow(ray)"; }
     scene::Shell shell() const override { return scene::Shell::EmittingLayers; }
+    // The top of the highest layer: its base plus the upper exponential's kTopScaleHeights.
+    double reachKm(const scene::Scene& scene) const override
+    {
+        double top = 0.0;
+        for (const Layer& l : scene.settings<Settings>().layers) {
+            const LayerProfile p = layerProfile(l);
+            top = std::max(top, p.baseKm + kTopScaleHeights * p.upperScaleHeightKm);
+        }
+        return top;
+    }
     std::unique_ptr<scene::ReferenceShader> makeReference(const scene::Scene& scene,
                                                           const scene::ReferenceContext&) const override
     {

@@ -77,6 +77,7 @@ public:
     }
     std::string shaderShadeCall() const override { return "shadeAtmosphere(ray)"; }
     scene::Shell shell() const override { return scene::Shell::LowerAtmosphere; }
+    double reachKm(const scene::Scene& scene) const override { return scene.settings<Settings>().topKm; }
     std::unique_ptr<scene::ReferenceShader> makeReference(const scene::Scene& scene,
                                                           const scene::ReferenceContext& context) const override
     {

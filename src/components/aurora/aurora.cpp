@@ -180,6 +180,7 @@ public:
     }
     std::string shaderShadeCall() const override { return "shadeAurora(ray)"; }
     scene::Shell shell() const override { return scene::Shell::EmittingStructures; }
+    double reachKm(const scene::Scene& scene) const override { return scene.settings<Settings>().topKm; }
     std::unique_ptr<scene::ComponentRenderer> makeRenderer(const scene::Scene& scene,
                                                            const scene::FindRenderer& find) const override
     {

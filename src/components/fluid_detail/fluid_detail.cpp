@@ -19,6 +19,7 @@ public:
     std::vector<std::string> provides() const override { return {roles::kCurtainDetail}; }
     // No shading step: the shell of the curtains it gives their detail to.
     scene::Shell shell() const override { return scene::Shell::EmittingStructures; }
+    double reachKm(const scene::Scene&) const override { return 0.0; } // detail of the curtains' provider
     void read(const config::TableReader& t, scene::Scene&, scene::ComponentSettings& settings) const override
     {
         auto& f = dynamic_cast<Settings&>(settings);

@@ -324,6 +324,7 @@ public:
     std::string shaderGeometryCall() const override { return "boundByCloudDeck(ray)"; }
     std::string shaderShadeCall() const override { return "shadeGlory(ray)"; }
     scene::Shell shell() const override { return scene::Shell::CloudDeck; }
+    double reachKm(const scene::Scene& scene) const override { return scene.settings<Settings>().deckTopKm; }
     std::unique_ptr<scene::ReferenceShader> makeReference(const scene::Scene& scene,
                                                           const scene::ReferenceContext&) const override
     {

@@ -54,9 +54,10 @@ public:
         s.surfaceRadiance = t.vector3("surface_radiance_cd_m2", 0.0, 1e6, s.surfaceRadiance);
     }
     std::vector<std::string> shaderModules() const override { return {"components/planet/planet.glsl"}; }
-    std::string shaderGeometryCall() const override { return "boundByGround(ray, uPlanetRadiusKm, uCameraAltitudeKm)"; }
+    std::string shaderGeometryCall() const override { return "boundByGround(ray, uPlanetRadiusKm, rayStartAltitude(ray))"; }
     std::string shaderShadeCall() const override { return "shadeGround(ray)"; }
     scene::Shell shell() const override { return scene::Shell::Ground; }
+    double reachKm(const scene::Scene&) const override { return 0.0; } // the ground itself
     std::unique_ptr<scene::ComponentRenderer> makeRenderer(const scene::Scene& scene,
                                                            const scene::FindRenderer&) const override
     {

@@ -43,6 +43,7 @@ public:
     std::string shaderShadeCall() const override { return "shadeNightLights(ray)"; }
     // Lights on the ground: after the ground surface (it needs the planet).
     scene::Shell shell() const override { return scene::Shell::Ground; }
+    double reachKm(const scene::Scene&) const override { return 0.0; } // on the ground
     std::string notInReferenceBecause() const override
     {
         return "planet_texture is an image lookup, not a model the reference evaluates";

@@ -18,6 +18,7 @@ namespace aurorawall::components::plasma {
 
 BoxRenderer::BoxRenderer(const Settings& plasma, const scene::Scene& scene, double planetRadiusKm)
     : PlasmaDetail(plasma, scene), box_(plasma.kind == Settings::Kind::Box), settings_(plasma),
+      reachRadiusKm_(scene.reachRadiusKm()),
       boxFrames_(gl::Texture::create3D(1, 1, 1, gl::TexelFormat::R32F, gl::Filter::Linear, gl::Wrap::Repeat))
 {
     boxSummary_ = PlasmaDetail::precomputationLog();
@@ -77,7 +78,7 @@ void BoxRenderer::setFrame(gl::Program& program, const cluster::FrameState& fram
     } else if (box_) {
         position = boxFramePosition(settings_, frame.timeS);
     }
-    program.set("uPlasmaBoxCentreFromCamera", glm::vec3(centreKm_ - frame.cameraPositionKm));
+    program.set("uPlasmaBoxCentreFromRayStart", glm::vec3(centreKm_ - cluster::rayStart(frame, reachRadiusKm_).pointKm));
     program.set("uPlasmaBoxAxes", glm::mat3(axes_));
     const float steps = box_ ? static_cast<float>(settings_.boxStepsPerCell * settings_.boxCells) : 0.0f;
     const float frames = box_ && !liveBox_ ? static_cast<float>(settings_.boxFrames) : 1.0f;

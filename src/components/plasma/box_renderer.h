@@ -28,6 +28,7 @@ private:
     bool box_;
     Settings settings_;
     glm::dvec3 centreKm_{0.0};  // planet frame
+    double reachRadiusKm_;      // the scene's (scene::Scene::reachRadiusKm), for where rays start
     glm::dmat3 axes_{1.0};      // columns: east, north, up at the centre (z along the field)
     glm::vec3 rgbPerDensityKm_{0.0f};
     std::unique_ptr<LivePic> liveBox_;

@@ -143,6 +143,13 @@ public:
     std::string shaderShadeCall() const override { return "shadePlasmaBox(ray)"; }
     // The box's emission: after the curtains in the same shell (it needs the aurora).
     scene::Shell shell() const override { return scene::Shell::EmittingStructures; }
+    // The box's highest corner (half a diagonal of the cube above its centre); the curls are the
+    // curtains' detail, drawn within the curtains' provider.
+    double reachKm(const scene::Scene& scene) const override
+    {
+        const Settings& p = scene.settings<Settings>();
+        return p.kind == Settings::Kind::Box ? p.boxAltitudeKm + 0.5 * std::sqrt(3.0) * p.boxSideKm : 0.0;
+    }
     std::unique_ptr<scene::ComponentRenderer> makeRenderer(const scene::Scene& scene,
                                                            const scene::FindRenderer&) const override
     {

@@ -69,6 +69,12 @@ public:
     std::string shaderShadeCall() const override { return "shadeSky(ray)"; }
     // The light the lower atmosphere scatters: after its extinction (it needs the atmosphere).
     scene::Shell shell() const override { return scene::Shell::LowerAtmosphere; }
+    // It scatters within the lower atmosphere's air.
+    double reachKm(const scene::Scene& scene) const override
+    {
+        const auto air = roles::lowerAir(scene);
+        return air ? air->topKm : 0.0;
+    }
     std::string notInReferenceBecause() const override
     {
         return "the sky has its own reference (aurorawall accuracy --sky), not this one";

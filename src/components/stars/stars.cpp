@@ -31,6 +31,7 @@ public:
     std::vector<std::string> shaderModules() const override { return {"components/stars/stars.glsl"}; }
     std::string shaderShadeCall() const override { return "shadeStars(ray)"; }
     scene::Shell shell() const override { return scene::Shell::Space; }
+    double reachKm(const scene::Scene&) const override { return 0.0; } // at infinity
     std::string notInReferenceBecause() const override
     {
         return "stars are a hash of float direction bits, not a model the reference converges to";
