@@ -189,17 +189,6 @@ void configure(const cluster::MpiWorld& world, int argc, char** argv, WallSessio
     s.dataDir = options.dataDir.empty() ? common::dataDirectory() : options.dataDir;
     s.shaderDir = s.dataDir + "/shaders";
     render::marchShaderSource(s.scene, s.shaderDir); // every module readable before any window opens
-    if (writesOutFolder(options))
-        io::ensureWritableDirectory(options.outDir, "--out");
-    if (!options.movieDir.empty()) {
-        io::ensureWritableDirectory(options.movieDir, "--movie");
-        refuseEarlierMovie(options.movieDir);
-    }
-    // The files go into existing folders (README.md, "Outputs"); each rank checks those it writes before
-    // any frame, so that no run's data is lost to a path that cannot be written.
-    for (const OutputFile& file : outputs)
-        if (file.rank == world.rank())
-            io::ensureWritableFile(file.path, file.option);
     s.exposure = options.exposure > 0 ? options.exposure : s.scene.exposure;
     s.toneMap = toneMapFor(options, s.exposure);
     s.balanced = options.balance == Balance::On || (options.balance == Balance::Auto && world.size() > 1);
@@ -221,6 +210,23 @@ void configure(const cluster::MpiWorld& world, int argc, char** argv, WallSessio
         settings.heartbeatPeriodS = cluster::heartbeatPeriodS(options.rankTimeoutS);
         s.web = std::make_unique<web::WebConsole>(std::move(settings));
     }
+}
+
+// The output folders, made once every rank has accepted the run (configure), so that a run one rank
+// refuses leaves no folder behind; then each rank checks the files it writes before any frame, so
+// that no run's data is lost to a path that cannot be written (README.md, "Outputs").
+void prepareOutputs(const cluster::MpiWorld& world, const WallSession& s)
+{
+    const RenderOptions& options = s.options;
+    if (writesOutFolder(options))
+        io::ensureWritableDirectory(options.outDir, "--out");
+    if (!options.movieDir.empty()) {
+        io::ensureWritableDirectory(options.movieDir, "--movie");
+        refuseEarlierMovie(options.movieDir);
+    }
+    for (const OutputFile& file : outputFiles(options, s.wall))
+        if (file.rank == world.rank())
+            io::ensureWritableFile(file.path, file.option);
 }
 
 // A context per rank (a window per screen with glfw), the raymarcher, the screens' targets.
@@ -344,6 +350,9 @@ int setUpWallSession(const cluster::MpiWorld& world, int argc, char** argv, Wall
         std::fprintf(stderr, "%s\n", cli::errorLine("render", "cannot write the output").c_str());
         return cli::kRuntimeFailure;
     }
+    status = agreedStep(world, [&] { prepareOutputs(world, session); });
+    if (status != cli::kSuccess)
+        return status;
     world.startWatchdog(session.options.rankTimeoutS);
     world.setPhase(cluster::RankPhase::SetUp);
     if (session.options.verbose) { // lets an operator (or a test) find a rank's process

@@ -123,6 +123,15 @@ for option in "--gather" "--movie $WORK/sparse-movie" "--cost-map $WORK/sparse.p
 done
 [ ! -e "$WORK/sparse-out" ] && [ ! -e "$WORK/sparse-movie" ] && [ ! -e "$WORK/sparse.png" ] ||
     fail "render with a canvas beyond memory wrote output"
+# With a rank per screen the worker accepts what the master refuses: still no rank makes the folder.
+sed 's/screens_per_rank = 2/screens_per_rank = 1/' "$WORK/sparse.toml" > "$WORK/sparse-2-ranks.toml"
+status=0
+aw_mpirun 2 render --wall "$WORK/sparse-2-ranks.toml" --scene "$SCENE" --frames 1 --out "$WORK/sparse-out-2" \
+    --gather > "$WORK/sparse-2.out" 2> "$WORK/sparse-2.err" || status=$?
+[ "$status" = 1 ] || fail "2 ranks, a canvas beyond memory: exit $status, not 1"
+grep -q "^aurorawall render: rank 0: --gather: the wall canvas of 1000001x1000001 pixels" "$WORK/sparse-2.err" ||
+    fail "2 ranks, a canvas beyond memory: no message naming --gather: $(cat "$WORK/sparse-2.err")"
+[ ! -e "$WORK/sparse-out-2" ] || fail "a worker made the --out folder of a run the master refused"
 mkdir -p "$WORK/movie"
 touch "$WORK/movie/frames.csv"
 expect 1 "^aurorawall render: --movie .*/movie: already holds frames.csv of a movie; give another folder" \
