@@ -2,7 +2,7 @@
 // components compose. Shared by the shader and the C++ reference (src/common/glsl.h); needs
 // render/ray_sphere.glsl and render/ray.glsl.
 
-// A ray from the camera that has met nothing yet.
+// A ray that has met nothing yet.
 Ray beginRay(vec3 o, vec3 d, real altitude)
 {
     Ray ray;
@@ -18,8 +18,8 @@ Ray beginRay(vec3 o, vec3 d, real altitude)
     return ray;
 }
 
-// The ground (a sphere of radius R) ends the ray; a camera `altitude` km above it (from double
-// precision), and below it sees nothing.
+// The ground (a sphere of radius R) ends the ray; a ray that starts `altitude` km above it (a
+// camera's from double precision), and below it sees nothing.
 Ray boundByGround(Ray ray, real R, real altitude)
 {
     ray.altitude = altitude;

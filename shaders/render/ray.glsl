@@ -3,8 +3,8 @@
 // generated shadeRay (src/render/march_shader.cpp) passes it through each listed component's
 // geometry step, then through each shading step shell by shell, front to back (src/scene/shell.h).
 //
-// The ray x(t) = origin + t direction, t >= 0 in km, |direction| = 1, starts at the camera,
-// `altitude` km above the ground (from double precision). The layers are concentric shells that
+// The ray x(t) = origin + t direction, t >= 0 in km, |direction| = 1, starts at the camera, or for a
+// far camera beyond the scene (src/cluster/frame_state.h, rayStart), `altitude` km above the ground. The layers are concentric shells that
 // never overlap (ground, lower atmosphere, the emitting upper atmosphere above it), so along any ray each
 // emitting part lies wholly in front of or wholly behind the lower atmosphere.
 //
@@ -17,8 +17,8 @@
 struct Ray {
     vec3 origin;
     vec3 direction;
-    real altitude;        // ground: camera above the ground, km (0 without a planet)
-    bool blocked;         // ground: nothing is seen (the camera is below the ground)
+    real altitude;        // ground: the ray's start above the ground, km (0 without a planet)
+    bool blocked;         // ground: nothing is seen (the start is below the ground)
     real groundT;         // ground: where the ray meets it; negative if it never does or something hides it
     real end;             // where the ray stops: the ground or an opaque layer (a cloud deck), else 1e30
     vec2 lowerAtmosphere; // lower atmosphere: the part of the ray inside it (empty when x >= y)

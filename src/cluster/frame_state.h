@@ -39,7 +39,8 @@ inline glm::dmat3 wallToPlanet(const FrameState& s)
 // Where this frame's rays start. The GPU holds positions in float, to 2^-24 of their size: 6 km at
 // 1e8 km, far coarser than what a narrow view of the planet resolves from there. So a camera farther
 // than twice `reachRadiusKm` (scene::Scene::reachRadiusKm) from the planet's centre moves every ray
-// forward by distanceKm, to a point at least that radius from the centre: the ray of unit
+// forward by distanceKm = |camera| - 2 reachRadiusKm, to a point at least 2 reachRadiusKm from the
+// centre, while everything the scene draws lies at least |camera| - reachRadiusKm away: the ray of unit
 // direction d starts at camera + distanceKm d = pointKm + distanceKm (d - forward), where pointKm
 // comes from double here and d - forward, small across a narrow view, keeps its precision on the
 // GPU (render/tile_rays.glsl). Nothing is skipped: the whole scene lies beyond distanceKm.

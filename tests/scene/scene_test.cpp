@@ -1,5 +1,6 @@
 #include "physics/constants.h"
 #include "common/input_error.h"
+#include "components/airglow/airglow.h"
 #include "components/aurora/aurora.h"
 #include "components/fluid_detail/fluid_detail.h"
 #include "components/registry.h"
@@ -9,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <regex>
@@ -36,7 +38,9 @@ TEST(Scene, SubstormListsItsComponentsAndCurtains)
 }
 
 // The scene's reach is its highest listed component's top: the substorm's aurora, without it the
-// lower atmosphere's (the planet, the detail and the stars reach no higher than the ground).
+// lower atmosphere's (the planet, the detail and the stars reach no higher than the ground); the
+// glory's deck top, the plasma box's highest corner, the red airglow layer's top (40 upper scale
+// heights above its base, where the shader's shell ends).
 TEST(Scene, ReachIsTheHighestListedComponentsTop)
 {
     scene::Scene s = components::loadScene(kScenes + "/substorm.toml");
@@ -47,6 +51,26 @@ TEST(Scene, ReachIsTheHighestListedComponentsTop)
     EXPECT_DOUBLE_EQ(s.reachRadiusKm(), s.planetRadiusKm + 75.0); // the atmosphere's top_km
     s.remove("atmosphere");
     EXPECT_DOUBLE_EQ(s.reachRadiusKm(), s.planetRadiusKm);
+
+    scene::Scene glory = components::loadScene(kScenes + "/glory-flight.toml");
+    glory.remove("atmosphere");
+    glory.remove("sky");
+    EXPECT_DOUBLE_EQ(glory.reachRadiusKm(), glory.planetRadiusKm + 2.0); // deck_top_km
+
+    scene::Scene box = components::loadScene(kScenes + "/plasma-box.toml");
+    for (const char* other : {"aurora", "atmosphere", "airglow", "sky"})
+        box.remove(other);
+    EXPECT_DOUBLE_EQ(box.reachRadiusKm(), box.planetRadiusKm + 110.0 + 0.5 * std::sqrt(3.0) * 12.0); // box_altitude_km, box_side_km
+
+    scene::Scene airglow = components::loadScene(kScenes + "/airglow-limb.toml");
+    airglow.remove("atmosphere");
+    double top = 0.0;
+    for (const components::airglow::Layer& l : airglow.settings<components::airglow::Settings>().layers) {
+        const components::airglow::LayerProfile p = components::airglow::layerProfile(l);
+        top = std::max(top, p.baseKm + 40.0 * p.upperScaleHeightKm);
+    }
+    EXPECT_GT(top, 1000.0); // the red line's, far above its 250 km peak
+    EXPECT_DOUBLE_EQ(airglow.reachRadiusKm(), airglow.planetRadiusKm + top);
 }
 
 TEST(Scene, BenchmarkCameraIsThePapersView)

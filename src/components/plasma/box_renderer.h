@@ -18,7 +18,7 @@ public:
     BoxRenderer(const Settings& plasma, const scene::Scene& scene, double planetRadiusKm);
 
     std::string precomputationLog() const override { return boxSummary_; }
-    // The box's centre from the camera (double, then float), its frame position at this time
+    // The box's centre from where the rays start (double, then float), its frame position at this time
     // (device = "gpu": the live run stepped to this time's step, its frame uploaded, waited for).
     void setFrame(gl::Program& program, const cluster::FrameState& frame) override;
     // Texture unit 9: uPlasmaBoxFrames; and the curtain detail's.
