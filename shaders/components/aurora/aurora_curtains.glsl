@@ -220,6 +220,46 @@ bool withinReach(real s, real u, real lengthKm, real reach)
     return length(vec2(u, beyondEnds)) <= reach;
 }
 
+// Where the ray, u(t) = u_m + u' (t − t_m) and s(t) = s_m + s' (t − t_m), meets the circles of radius
+// `reach` around the curtain's ends s = 0 and s = lengthKm: the roots t of u² + (s − end)² = reach², by
+// the stable quadratic formula (1e30 where there is none).
+vec4 endReachCuts(CurtainCoordinates cc, real tm, real uRate, real sRate, real reach, real lengthKm)
+{
+    vec4 cuts = vec4(1.0e30);
+    real a = uRate * uRate + sRate * sRate;
+    for (int e = 0; e < 2; ++e) {
+        real offset = cc.s - (e == 0 ? 0.0 : lengthKm);
+        real halfB = cc.u * uRate + offset * sRate;
+        real c = cc.u * cc.u + offset * offset - reach * reach;
+        real discriminant = halfB * halfB - a * c;
+        if (a > 0.0 && discriminant > 0.0) {
+            real q = -(halfB + (halfB >= 0.0 ? 1.0 : -1.0) * sqrt(discriminant));
+            cuts[2 * e] = tm + q / a;
+            cuts[2 * e + 1] = q != 0.0 ? tm + c / q : cuts[2 * e];
+        }
+    }
+    return cuts;
+}
+
+// The part of `range` (t, km) within curtain c's reach, the stadium |u| <= reach over 0 <= s <= lengthKm
+// with a disc of radius reach around either end (u and s linear in t as in endReachCuts): a convex
+// region, so a single interval, from the first entry to the last exit of its three parts.
+vec2 withinStadium(vec2 range, CurtainCoordinates cc, real tm, real uRate, real sRate, real reach, real lengthKm)
+{
+    vec2 band = intersectLinearBand(range, cc.u, uRate, tm, -reach, reach);
+    if (abs(uRate) < 1e-9 && abs(sRate) < 1e-9) // a footprint that stays put (as intersectLinearBand)
+        return withinReach(cc.s, cc.u, lengthKm, reach) ? range : vec2(range.y, range.y);
+    vec2 body = intersectLinearBand(band, cc.s, sRate, tm, 0.0, lengthKm);
+    vec2 hull = body.x < body.y ? body : vec2(1.0e30, -1.0e30);
+    vec4 cuts = endReachCuts(cc, tm, uRate, sRate, reach, lengthKm);
+    for (int e = 0; e < 2; ++e) {
+        vec2 disc = vec2(max(min(cuts[2 * e], cuts[2 * e + 1]), band.x), min(max(cuts[2 * e], cuts[2 * e + 1]), band.y));
+        if (cuts[2 * e] < 1.0e30 && disc.x < disc.y)
+            hull = vec2(min(hull.x, disc.x), max(hull.y, disc.y));
+    }
+    return hull.x < hull.y ? hull : vec2(range.y, range.y);
+}
+
 // What a sub-step or piece [ta, ta + len] of the ray (km) adds to its run, from its closed-form column
 // (∫ profile dq, ∫ (q − q0) profile dq, mean profile at its ends: curtainIntegral, bilinearPiece) over
 // the change dq = rate · len of the integrated coordinate: (∫ profile dt in km, ∫ t profile dt in km²),
@@ -244,27 +284,6 @@ vec3 runEnergy(vec3 o, vec3 d, vec2 sums, int c)
 }
 
 #ifdef HAS_CURTAIN_DETAIL
-// Where the ray, u(t) = u_m + u' (t − t_m) and s(t) = s_m + s' (t − t_m), meets the circles of radius
-// `reach` around the curtain's ends s = 0 and s = lengthKm: the roots t of u² + (s − end)² = reach², by
-// the stable quadratic formula (1e30 where there is none).
-vec4 endReachCuts(CurtainCoordinates cc, real tm, real uRate, real sRate, real reach, real lengthKm)
-{
-    vec4 cuts = vec4(1.0e30);
-    real a = uRate * uRate + sRate * sRate;
-    for (int e = 0; e < 2; ++e) {
-        real offset = cc.s - (e == 0 ? 0.0 : lengthKm);
-        real halfB = cc.u * uRate + offset * sRate;
-        real c = cc.u * cc.u + offset * offset - reach * reach;
-        real discriminant = halfB * halfB - a * c;
-        if (a > 0.0 && discriminant > 0.0) {
-            real q = -(halfB + (halfB >= 0.0 ? 1.0 : -1.0) * sqrt(discriminant));
-            cuts[2 * e] = tm + q / a;
-            cuts[2 * e + 1] = q != 0.0 ? tm + c / q : cuts[2 * e];
-        }
-    }
-    return cuts;
-}
-
 // The energy (per unit of peak flux) of curtain c over the part `span` of a step of the ray o + t d (km),
 // its flux integrated exactly along the ray's slanted path through the detail's bilinear flux
 // (sub_step_flux = "exact"). As in integrateCurtains, q (u across, s along: `alongMode`) and the other,
@@ -457,11 +476,9 @@ vec3 integrateCurtains(vec3 o, vec3 d, real t0, real t1, vec4 candidates)
         real scale = uPlanetRadiusKm * inversesqrt(max(1.0 - across * across, 1e-12));
         real uRate = scale * dot(cc.normal, footprintRate);
         real sRate = scale * dot(cross(cc.normal, n), footprintRate);
-        // Only the part of the step within the curtain's reach, |u| ≤ reach and −reach ≤ s ≤ length + reach
-        // (u and s linear over the step), can emit: the sub-steps cover that part alone.
-        vec2 within = vec2(t0, t1);
-        within = intersectLinearBand(within, cc.u, uRate, tm, -reach, reach);
-        within = intersectLinearBand(within, cc.s, sRate, tm, -reach, lengthKm + reach);
+        // Only the part of the step within the curtain's reach (u and s linear over the step) can emit: the
+        // sub-steps cover that part alone, so that none straddles the reach's edge around an end.
+        vec2 within = withinStadium(vec2(t0, t1), cc, tm, uRate, sRate, reach, lengthKm);
         if (within.x >= within.y)
             continue;
         real start = within.x;
