@@ -9,7 +9,7 @@
 source "$(dirname "$0")/lib.sh"
 HALF_ULPS="${HALF_ULPS:-2}"
 wall="$DATA/presets/wall-192x108.toml"
-for name in benchmark-view ground-65n low-orbit far-space quiet-arc twilight; do
+for name in benchmark-view ground-65n low-orbit far-space from-the-moon quiet-arc twilight; do
     out=$(aw_mpirun 1 render --wall "$wall" --scene "$SRC_DIR/config/scenes/$name.toml" --gather --out "$WORK/$name")
     if ! grep -q "backend egl on llvmpipe" <<<"$out"; then
         echo "SKIP: the images are llvmpipe's; EGL runs on $(grep -o 'backend egl on [^(]*' <<<"$out") here"
