@@ -151,5 +151,5 @@ TEST(FragmentShader, ShippedScenesKeepTheOrderOfTheirShadingSteps)
             last = index;
         }
     }
-    EXPECT_EQ(scenes, 15);
+    EXPECT_EQ(scenes, 16);
 }
