@@ -43,7 +43,7 @@ inline glm::dmat3 wallToPlanet(const FrameState& s)
 // centre, while everything the scene draws lies at least |camera| - reachRadiusKm away: the ray of unit
 // direction d starts at camera + distanceKm d = pointKm + distanceKm (d - forward), where pointKm
 // comes from double here and d - forward, small across a narrow view, keeps its precision on the
-// GPU (render/tile_rays.glsl). Nothing is skipped: the whole scene lies beyond distanceKm.
+// GPU (render/tile_rays.glsl).
 // A nearer camera's rays start at the camera (distanceKm 0, pointKm the camera).
 struct RayStart {
     glm::dvec3 pointKm;

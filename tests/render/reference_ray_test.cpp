@@ -87,6 +87,15 @@ scene::Scene* ReferenceRay::scene_ = nullptr;
 accuracy::SceneView* ReferenceRay::view_ = nullptr;
 components::roles::FluxFrames* ReferenceRay::frames_ = nullptr;
 
+// Puts the frame's camera at positionKm, looking along the unit `forward` with the unit `up` (perpendicular).
+void placeCamera(cluster::FrameState& f, glm::dvec3 positionKm, glm::dvec3 forward, glm::dvec3 up)
+{
+    f.cameraPositionKm = positionKm;
+    f.cameraUp = up;
+    f.cameraRight = glm::cross(forward, up);
+    f.cameraBack = -forward;
+}
+
 } // namespace
 
 // The GPU against the same march in double (ReferenceSettings::shaderSteps) at 16 lit pixels of the march's
@@ -190,10 +199,7 @@ TEST_F(ReferenceRay, GpuSeesANarrowViewFromFarInSpaceAsTheReferenceDoes)
     const glm::dvec3 forward = glm::normalize(glm::dvec3(-0.0698, 0.99756, 0.0));
     const glm::dvec3 north(0.0, 0.0, 1.0);
     cluster::FrameState& f = view.frame;
-    f.cameraPositionKm = lookAt - 1e8 * forward;
-    f.cameraUp = glm::normalize(north - forward * glm::dot(north, forward));
-    f.cameraRight = glm::cross(forward, f.cameraUp);
-    f.cameraBack = -forward;
+    placeCamera(f, lookAt - 1e8 * forward, forward, glm::normalize(north - forward * glm::dot(north, forward)));
     const double pixelRad = 1.5e-7;
     f.zoom = wall::tanHalfVerticalFieldOfView(view.wall) / std::tan(0.5 * 36 * pixelRad);
     const render::ReferenceModel model(*scene_, f.timeS, curtainDetailData(frames_));
@@ -325,11 +331,9 @@ TEST_F(ReferenceRay, RaysGrazingACurtainsEndStayNearTheReference)
     s.startTimeS = 427.386;
     accuracy::SceneView view = accuracy::sceneView(s, kSource + "/config/walls/single.toml", {160, 90});
     cluster::FrameState& f = view.frame;
-    const glm::dvec3 forward = glm::normalize(glm::dvec3(-0.461224, 0.623983, -0.630807));
-    f.cameraPositionKm = glm::dvec3(-2118.127541, -1715.742898, 6505.780996);
-    f.cameraUp = glm::normalize(glm::dvec3(0.808966, 0.587768, -0.010078));
-    f.cameraRight = glm::cross(forward, f.cameraUp);
-    f.cameraBack = -forward;
+    placeCamera(f, glm::dvec3(-2118.127541, -1715.742898, 6505.780996),
+                glm::normalize(glm::dvec3(-0.461224, 0.623983, -0.630807)),
+                glm::normalize(glm::dvec3(0.808966, 0.587768, -0.010078)));
     const io::Image gpu = accuracy::renderView(s, view, kSource + "/shaders", 0).image;
     const double floor = 1.0 / (255.0 * s.exposure);
     std::vector<glm::ivec2> pixels;

@@ -246,9 +246,9 @@ vec4 endReachCuts(CurtainCoordinates cc, real tm, real uRate, real sRate, real r
 // region, so a single interval, from the first entry to the last exit of its three parts.
 vec2 withinStadium(vec2 range, CurtainCoordinates cc, real tm, real uRate, real sRate, real reach, real lengthKm)
 {
-    vec2 band = intersectLinearBand(range, cc.u, uRate, tm, -reach, reach);
     if (abs(uRate) < 1e-9 && abs(sRate) < 1e-9) // a footprint that stays put (as intersectLinearBand)
         return withinReach(cc.s, cc.u, lengthKm, reach) ? range : vec2(range.y, range.y);
+    vec2 band = intersectLinearBand(range, cc.u, uRate, tm, -reach, reach);
     vec2 body = intersectLinearBand(band, cc.s, sRate, tm, 0.0, lengthKm);
     vec2 hull = body.x < body.y ? body : vec2(1.0e30, -1.0e30);
     vec4 cuts = endReachCuts(cc, tm, uRate, sRate, reach, lengthKm);
