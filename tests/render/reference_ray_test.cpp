@@ -145,7 +145,7 @@ TEST_F(ReferenceRay, GpuAtItsFinestSettingsAgreesWithTheReference)
 // the rays run along the sheet and barely move across its detail. The exact pieces' closed form is a
 // difference of running integrals held in float texels; where the ray's share of a piece is far
 // smaller than those integrals, rounding left up to 20% of a pixel here (0.25 km runs) until such
-// pieces took the end-point rule. The GPU against the march in double over the 8x8 pixels around the
+// pieces took the end-point rule (aurora_curtains.glsl, curtainEnergyExact). The GPU against the march in double over the 8x8 pixels around the
 // zenith, within the float bound as above; that bound admits the closed form's whole rounding, so the
 // GPU is also held to the renderer's accuracy goal, 1% RMS of the CPU reference over them (ACCURACY.md;
 // with the closed form everywhere it was 5.3%, max 41%).
