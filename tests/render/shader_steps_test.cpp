@@ -5,6 +5,7 @@
 // tables), and it shrinks as they are refined. No GL context.
 #include "common/glsl.h"
 #include "components/aurora/aurora.h"
+#include "components/aurora/curtain_model.h"
 #include "components/aurora/tools/aurora_accuracy.h"
 #include "components/fluid_detail/curtain_detail.h"
 #include "components/fluid_detail/simulation/curtain_detail.h"
@@ -176,6 +177,55 @@ TEST(ShaderStepsOnPlasmaBox, PiecesThroughWholeSheetsKeepTheirEmission)
     EXPECT_GE(e.pixels, 60u) << "the view shows the arc";
     EXPECT_LT(e.rms, 1e-3);
     EXPECT_LT(e.max, 1e-2);
+}
+
+// A smooth curtain ends in a round cap: beyond its end the column fades as the profile does across it, so the
+// flux at a distance ρ beyond the end, in any direction there, is the flux ρ across from its centre line,
+// exp(−ρ² / 2σ²). Vertical rays from 400 km down the quiet arc (σ = 3 km), at 0.5σ to 2σ beyond its east end
+// (straight out along its last segment and 45° to either side) and across its middle: in the CPU reference
+// the same radiance, but for the sphere's curvature over ρ, (ρ / R)² ~ 1e-6 (its 0.05 km column steps are the
+// same on each ray); held to 1e-4. The march in double reads the polyline and its normals in float, as the GPU
+// does, which places u within 32 u R of the double one (aurora_float_bound.h) and moves the flux by ρ du / σ²:
+// measured 2e-4 to 4e-4, held to that bound.
+TEST(CurtainEnds, FadeBeyondTheEndAsTheProfileDoesAcross)
+{
+    scene::Scene s = scene::withoutUnmodelled(components::loadScene(kSource + "/config/scenes/quiet-arc.toml"));
+    const double R = s.planetRadiusKm;
+    const auto& aurora = s.settings<components::aurora::Settings>();
+    const components::aurora::CurtainModel curtains(aurora, R, nullptr);
+    const components::aurora::physics::CurtainPolyline line = curtains.at(s.startTimeS).front().polyline;
+    const double sigmaKm = 0.5 * aurora.curtains.front().thicknessKm;
+    // A point `km` from unit vector p along the unit tangent direction `towards`, on the sphere.
+    auto moved = [R](glm::dvec3 p, glm::dvec3 towards, double km) {
+        return std::cos(km / R) * p + std::sin(km / R) * towards;
+    };
+    const size_t last = line.points.size() - 1;
+    const glm::dvec3 end = line.points[last];
+    const glm::dvec3 outward = glm::normalize(line.points[last] - line.points[last - 1] -
+                                              end * glm::dot(line.points[last] - line.points[last - 1], end));
+    const glm::dvec3 side = glm::cross(end, outward);
+    const size_t middle = last / 2;
+    const glm::dvec3 across = glm::normalize(glm::cross(line.points[middle], line.points[middle + 1] - line.points[middle]));
+    render::ReferenceSettings steps;
+    steps.shaderSteps = true;
+    const render::ReferenceModel reference(s, s.startTimeS, {});
+    const render::ReferenceModel march(s, s.startTimeS, {}, steps);
+    for (const render::ReferenceModel* model : {&reference, &march}) {
+        auto downFrom = [&](glm::dvec3 footprint) {
+            return glm::length(model->radiance((R + 400.0) * footprint, -footprint));
+        };
+        for (double rho : {0.5 * sigmaKm, sigmaKm, 2.0 * sigmaKm}) {
+            const double inside = downFrom(moved(line.points[middle], across, rho));
+            ASSERT_GT(inside, 0.0);
+            for (double angleDeg : {-45.0, 0.0, 45.0}) {
+                const double a = glm::radians(angleDeg);
+                const double beyond = downFrom(moved(end, std::cos(a) * outward + std::sin(a) * side, rho));
+                const double floatKm = model == &march ? 32.0 * std::ldexp(1.0, -24) * R : 0.0;
+                EXPECT_NEAR(beyond / inside, 1.0, 1e-4 + rho * floatKm / (sigmaKm * sigmaKm))
+                    << (model == &reference ? "reference" : "march") << ", rho " << rho << " km, " << angleDeg << " deg";
+            }
+        }
+    }
 }
 
 // common/glsl.h reads a texture as GL does: texelFetch the texel; textureLod at level 0 of a linear,

@@ -277,10 +277,28 @@ vec2 runShare(vec3 column, real dq, real rate, real ta, real len, bool rounded)
 }
 
 // The emission of a run of sub-steps or pieces that share one: its summed runShare (∫ profile dt in km,
-// ∫ t profile dt in km²) times curtain c's emission at the run's flux-weighted mean position.
-vec3 runEnergy(vec3 o, vec3 d, vec2 sums, int c)
+// ∫ t profile dt in km²) times curtain c's emission at the run's flux-weighted mean position t̄, faded
+// there by its distance beyond the curtain's ends (curtainEndFade; s = s_m + s' (t̄ − t_m), as in
+// integrateCurtains).
+vec3 runEnergy(vec3 o, vec3 d, vec2 sums, int c, real sm, real sRate, real tm)
 {
-    return sums.x > 0.0 ? sums.x * curtainEmissionAt(o, d, sums.y / sums.x, c) : vec3(0.0);
+    if (sums.x <= 0.0)
+        return vec3(0.0);
+    real t = sums.y / sums.x;
+    real s = sm + sRate * (t - tm);
+    real beyondEnd = max(max(-s, s - uCurtainLengthKm[c]), 0.0);
+    return sums.x * curtainEndFade(beyondEnd, uCurtainState[c].w) * curtainEmissionAt(o, d, t, c);
+}
+
+// The distance along the ray (km) from where a point x km beyond a curtain's end (negative: short of it)
+// that changes by `rate` per km of ray next crosses a multiple k fadeKm out to the reach (1 <= k <=
+// curtainEndFadeCuts), the cuts that keep the end's fade (curtainEndFade) nearly linear over a run; 1e30
+// where it crosses none. A point within a thousandth of fadeKm below a multiple counts as on it, so that a
+// run cut there does not cut again.
+real nextFadeCut(real x, real rate, real fadeKm)
+{
+    real k = rate > 0.0 ? max(floor(x / fadeKm + 1.0e-3) + 1.0, 1.0) : min(ceil(x / fadeKm - 1.0e-3) - 1.0, curtainEndFadeCuts());
+    return rate != 0.0 && k >= 1.0 && k <= curtainEndFadeCuts() ? (k * fadeKm - x) / rate : 1.0e30;
 }
 
 #ifdef HAS_CURTAIN_DETAIL
@@ -297,7 +315,9 @@ vec3 runEnergy(vec3 o, vec3 d, vec2 sums, int c)
 //    these cuts, a run, share one emission at their flux-weighted mean position;
 //  - along, s leaves the strip's period;
 //  - the path meets the circle of the curtain's reach around either end (endReachCuts), so that each
-//    piece lies wholly within or beyond the reach there.
+//    piece lies wholly within or beyond the reach there;
+//  - across, beyond an end, the distance beyond it crosses a multiple of curtainEndFadeStepKm: these cuts
+//    also end a run, whose emission is faded at its mean position (runEnergy).
 // A piece reads the two columns at its end (2 fetches), and the next one starts from those, reading a third
 // where it has crossed into the next cell: about 3 fetches a cell crossed. Where it holds no columns at its
 // start, it reads them first, as the end of a piece of no length. Where p would cross more than 64
@@ -323,6 +343,7 @@ vec3 curtainEnergyExact(vec3 o, vec3 d, int c, CurtainCoordinates cc, real tm, v
     real runs = clamp(ceil(abs(hRate) * (span.y - span.x) / uAuroraResolveKm), 1.0, 64.0);
     real runKm = (span.y - span.x) / runs;
     real run = 0.0;
+    real fadeKm = curtainEndFadeStepKm(reach);
     real q = alongMode ? mod(cc.s + sRate * (span.x - tm) + uCurtainDetail[c].x, stripKm) : cc.u + uRate * (span.x - tm);
     vec4 endCuts = endReachCuts(cc, tm, uRate, sRate, reach, lengthKm);
     FluxColumns columns = fluxColumns(c, alongMode);
@@ -335,8 +356,8 @@ vec3 curtainEnergyExact(vec3 o, vec3 d, int c, CurtainCoordinates cc, real tm, v
     real ta = span.x;
     // The pieces of one run, then its emission: evaluated once a run, not in every piece's branch. Both loops
     // test at the end of their bodies (span is not empty). At most 64 runs, 65 strides, 2 band edges, 4 reach
-    // circles, the strip's periods and a first read after each of these but the runs and strides: the bound
-    // of 256 pieces never binds.
+    // circles, 32 fade cuts (16 out to the reach and back), the strip's periods and a first read after each of
+    // the band edges, reach circles and periods: the bound of 256 pieces never binds.
     int piece = 0;
     do {
         do {
@@ -350,10 +371,14 @@ vec3 curtainEnergyExact(vec3 o, vec3 d, int c, CurtainCoordinates cc, real tm, v
             real tEnd = 1.0e30;
             for (int k = 0; k < 4; ++k)
                 tEnd = endCuts[k] > ta ? min(tEnd, endCuts[k]) : tEnd;
-            real tb = max(min(min(min(tCentre, tBand), min(tRun, tWrap)), min(tEnd, span.y)), ta);
+            real sNow = cc.s + sRate * (ta - tm);
+            real tFade = alongMode ? 1.0e30
+                                   : ta + min(nextFadeCut(sNow - lengthKm, sRate, fadeKm), nextFadeCut(-sNow, -sRate, fadeKm));
+            real tb = max(min(min(min(tCentre, tBand), min(tRun, tWrap)), min(min(tEnd, tFade), span.y)), ta);
             real len = tb - ta;
             bool centre = tCentre <= tb;
             bool wrap = tWrap <= tb;
+            bool runEnds = tRun <= tb || tFade <= tb; // a fade cut ends the run, not the altitude's count
             real pb = centre ? (pRateNow > 0.0 ? group + 1.0 : group) * stride : p + pRateNow * len;
             real qb = wrap ? (sRate > 0.0 ? stripKm : 0.0) : q + rate * len;
             real tMid = ta + 0.5 * len;
@@ -420,13 +445,13 @@ vec3 curtainEnergyExact(vec3 o, vec3 d, int c, CurtainCoordinates cc, real tm, v
                 group += pRateNow > 0.0 ? 1.0 : -1.0;
             p = pb;
             ta = tb;
-            if (tRun <= tb) {
-                run += 1.0;
+            if (runEnds) {
+                run += tRun <= tb ? 1.0 : 0.0;
                 ++piece;
                 break;
             }
         } while (++piece < 256 && ta < span.y);
-        energy += runEnergy(o, d, runSums, c);
+        energy += runEnergy(o, d, runSums, c, cc.s, sRate, tm);
         runSums = vec2(0.0);
     } while (piece < 256 && ta < span.y);
     return energy;
@@ -511,13 +536,18 @@ vec3 integrateCurtains(vec3 o, vec3 d, real t0, real t1, vec4 candidates)
         }
 #endif
         real resolveParts = alongMode ? acrossParts : alongParts;
-        int parts = int(clamp(ceil(max(abs(hRate) / uAuroraResolveKm, resolveParts) * span), 1.0, 64.0));
+        // Beyond an end, the sub-steps also move s by at most curtainEndFadeStepKm.
+        real fadeKm = curtainEndFadeStepKm(reach);
+        real fadeParts = betweenEnds ? 0.0 : abs(sRate) / fadeKm;
+        int parts = int(clamp(ceil(max(max(abs(hRate) / uAuroraResolveKm, resolveParts), fadeParts) * span), 1.0, 64.0));
         real part = span / real(parts);
         COUNT_WORK(z, parts);
-        // Runs of sub-steps over which the altitude changes by at most uAuroraResolveKm share one emission,
-        // at their flux-weighted mean position (where it changes less than that over the whole step, all
-        // the step's sub-steps do).
-        int run = int(clamp(floor(uAuroraResolveKm / max(abs(hRate) * part, 1e-6)), 1.0, 64.0));
+        // Runs of sub-steps over which the altitude changes by at most uAuroraResolveKm (and, beyond an end, s
+        // by at most fadeKm) share one emission, at their flux-weighted mean position (where it changes less
+        // than that over the whole step, all the step's sub-steps do).
+        real runParts = min(floor(uAuroraResolveKm / max(abs(hRate) * part, 1e-6)),
+                            betweenEnds ? 64.0 : floor(fadeKm / max(abs(sRate) * part, 1e-6)));
+        int run = int(clamp(runParts, 1.0, 64.0));
         // The sub-step's change in the coordinate integrated in closed form, and its rate per km of ray.
         real rate = alongMode ? sRate : uRate;
         real change = rate * part;
@@ -536,7 +566,7 @@ vec3 integrateCurtains(vec3 o, vec3 d, real t0, real t1, vec4 candidates)
                 runSums += runShare(column, change, rate, ta, part, false);
             }
             if ((i + 1) % run == 0 || i == parts - 1) {
-                energy += runEnergy(o, d, runSums, c);
+                energy += runEnergy(o, d, runSums, c, cc.s, sRate, tm);
                 runSums = vec2(0.0);
             }
         }

@@ -175,7 +175,7 @@ public:
                 "components/aurora/footprint_map.glsl", "components/aurora/gaussian_column.glsl",
                 "components/aurora/flux_column.glsl",
                 "components/aurora/curtain_profile.glsl",
-                "components/aurora/segment_projection.glsl",
+                "components/aurora/segment_projection.glsl", "components/aurora/curtain_end.glsl",
                 "components/aurora/aurora_curtains.glsl"};
     }
     std::string shaderShadeCall() const override { return "shadeAurora(ray)"; }

@@ -20,6 +20,7 @@ namespace {
 #include "components/aurora/gaussian_column.glsl"
 #include "components/aurora/flux_column.glsl"
 #include "components/aurora/segment_projection.glsl"
+#include "components/aurora/curtain_end.glsl"
 #pragma GCC diagnostic pop
 
 // The shader's aurora modules as classes: the uniforms and samplers become members (set by the caller),

@@ -11,6 +11,7 @@ using namespace aurorawall::scene::f64; // the ray and its steps
 namespace {
 #include "render/angle.glsl"
 #include "components/aurora/segment_projection.glsl"
+#include "components/aurora/curtain_end.glsl"
 } // namespace
 } // namespace aurorawall::components::aurora::f64
 
@@ -69,6 +70,8 @@ AuroraReference::Nearest AuroraReference::nearestOn(const Curtain& c, glm::dvec3
             best.distanceKm = distance;
             best.sKm = c.arclengthKm[j] + std::clamp(p.x, 0.0, p.y);
             best.uKm = p.z;
+            const double s = c.arclengthKm[j] + p.x;
+            best.beyondEndKm = std::max({-s, s - c.arclengthKm.back(), 0.0});
         }
     }
     return best;
@@ -129,7 +132,8 @@ glm::dvec3 AuroraReference::segment(glm::dvec3 o, glm::dvec3 d, double t0, doubl
             const Nearest n = nearestOn(c, glm::normalize(p));
             if (n.distanceKm > c.reachKm)
                 continue;
-            const double flux = c.state.energyFluxErgPerCm2S * profile(c, n.sKm, n.uKm);
+            const double flux = c.state.energyFluxErgPerCm2S * profile(c, n.sKm, n.uKm) *
+                                f64::curtainEndFade(n.beyondEndKm, c.reachKm);
             if (flux > 0.0)
                 sum += flux * h * emissionRgbPerKm(glm::length(p) - planetRadiusKm_, c.state.energyKeV);
         }

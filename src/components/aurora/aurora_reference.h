@@ -44,6 +44,7 @@ private:
         double distanceKm = 1e300; // to the polyline, great-circle km on the planet
         double sKm = 0.0;          // along the curtain
         double uKm = 0.0;          // signed, across it
+        double beyondEndKm = 0.0;  // along it beyond its nearer end (0 between its ends)
     };
     Nearest nearestOn(const Curtain& c, glm::dvec3 unit) const;
     double nearestCurtainKm(glm::dvec3 unit) const;
