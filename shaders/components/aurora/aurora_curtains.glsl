@@ -290,17 +290,6 @@ vec3 runEnergy(vec3 o, vec3 d, vec2 sums, int c, real sm, real sRate, real tm)
     return sums.x * curtainEndFade(beyondEnd, uCurtainState[c].w) * curtainEmissionAt(o, d, t, c);
 }
 
-// The distance along the ray (km) from where a point x km beyond a curtain's end (negative: short of it)
-// that changes by `rate` per km of ray next crosses a multiple k fadeKm out to the reach (1 <= k <=
-// curtainEndFadeCuts), the cuts that keep the end's fade (curtainEndFade) nearly linear over a run; 1e30
-// where it crosses none. A point within a thousandth of fadeKm below a multiple counts as on it, so that a
-// run cut there does not cut again.
-real nextFadeCut(real x, real rate, real fadeKm)
-{
-    real k = rate > 0.0 ? max(floor(x / fadeKm + 1.0e-3) + 1.0, 1.0) : min(ceil(x / fadeKm - 1.0e-3) - 1.0, curtainEndFadeCuts());
-    return rate != 0.0 && k >= 1.0 && k <= curtainEndFadeCuts() ? (k * fadeKm - x) / rate : 1.0e30;
-}
-
 #ifdef HAS_CURTAIN_DETAIL
 // The energy (per unit of peak flux) of curtain c over the part `span` of a step of the ray o + t d (km),
 // its flux integrated exactly along the ray's slanted path through the detail's bilinear flux
@@ -311,13 +300,12 @@ real nextFadeCut(real x, real rate, real fadeKm)
 //    bilinearPiece integrates exactly;
 //  - f meets its band's edge: across, a curtain end, beyond which p stays at the end's; along, the strip's
 //    edge, beyond which there is no flux;
-//  - the altitude has changed by uAuroraResolveKm since the last such cut: the pieces between two of
-//    these cuts, a run, share one emission at their flux-weighted mean position;
+//  - the altitude has changed by uAuroraResolveKm since the last such cut (and, where the part reaches beyond
+//    an end, s by curtainEndFadeStepKm): the pieces between two of these cuts, a run, share one emission,
+//    faded beyond the ends, at their flux-weighted mean position (runEnergy);
 //  - along, s leaves the strip's period;
 //  - the path meets the circle of the curtain's reach around either end (endReachCuts), so that each
-//    piece lies wholly within or beyond the reach there;
-//  - across, beyond an end, the distance beyond it crosses a multiple of curtainEndFadeStepKm: these cuts
-//    also end a run, whose emission is faded at its mean position (runEnergy).
+//    piece lies wholly within or beyond the reach there.
 // A piece reads the two columns at its end (2 fetches), and the next one starts from those, reading a third
 // where it has crossed into the next cell: about 3 fetches a cell crossed. Where it holds no columns at its
 // start, it reads them first, as the end of a piece of no length. Where p would cross more than 64
@@ -340,10 +328,13 @@ vec3 curtainEnergyExact(vec3 o, vec3 d, int c, CurtainCoordinates cc, real tm, v
     real qCellKm = alongMode ? fluxCellAlongKm() : fluxCellAcrossKm(c);
     real stride = max(1.0, ceil(abs(pRate) * (span.y - span.x) / 64.0));
     real group = pRate < 0.0 ? ceil(p / stride) - 1.0 : floor(p / stride); // p lies in [group, group + 1] strides
-    real runs = clamp(ceil(abs(hRate) * (span.y - span.x) / uAuroraResolveKm), 1.0, 64.0);
+    real sStart = cc.s + sRate * (span.x - tm);
+    real sEnd = cc.s + sRate * (span.y - tm);
+    bool beyondEnds = min(sStart, sEnd) < 0.0 || max(sStart, sEnd) > lengthKm;
+    real fadeRuns = beyondEnds ? abs(sRate) * (span.y - span.x) / curtainEndFadeStepKm(reach) : 0.0;
+    real runs = clamp(ceil(max(abs(hRate) * (span.y - span.x) / uAuroraResolveKm, fadeRuns)), 1.0, 64.0);
     real runKm = (span.y - span.x) / runs;
     real run = 0.0;
-    real fadeKm = curtainEndFadeStepKm(reach);
     real q = alongMode ? mod(cc.s + sRate * (span.x - tm) + uCurtainDetail[c].x, stripKm) : cc.u + uRate * (span.x - tm);
     vec4 endCuts = endReachCuts(cc, tm, uRate, sRate, reach, lengthKm);
     FluxColumns columns = fluxColumns(c, alongMode);
@@ -356,8 +347,8 @@ vec3 curtainEnergyExact(vec3 o, vec3 d, int c, CurtainCoordinates cc, real tm, v
     real ta = span.x;
     // The pieces of one run, then its emission: evaluated once a run, not in every piece's branch. Both loops
     // test at the end of their bodies (span is not empty). At most 64 runs, 65 strides, 2 band edges, 4 reach
-    // circles, 32 fade cuts (16 out to the reach and back), the strip's periods and a first read after each of
-    // the band edges, reach circles and periods: the bound of 256 pieces never binds.
+    // circles, the strip's periods and a first read after each of these but the runs and strides: the bound
+    // of 256 pieces never binds.
     int piece = 0;
     do {
         do {
@@ -371,14 +362,10 @@ vec3 curtainEnergyExact(vec3 o, vec3 d, int c, CurtainCoordinates cc, real tm, v
             real tEnd = 1.0e30;
             for (int k = 0; k < 4; ++k)
                 tEnd = endCuts[k] > ta ? min(tEnd, endCuts[k]) : tEnd;
-            real sNow = cc.s + sRate * (ta - tm);
-            real tFade = alongMode ? 1.0e30
-                                   : ta + min(nextFadeCut(sNow - lengthKm, sRate, fadeKm), nextFadeCut(-sNow, -sRate, fadeKm));
-            real tb = max(min(min(min(tCentre, tBand), min(tRun, tWrap)), min(min(tEnd, tFade), span.y)), ta);
+            real tb = max(min(min(min(tCentre, tBand), min(tRun, tWrap)), min(tEnd, span.y)), ta);
             real len = tb - ta;
             bool centre = tCentre <= tb;
             bool wrap = tWrap <= tb;
-            bool runEnds = tRun <= tb || tFade <= tb; // a fade cut ends the run, not the altitude's count
             real pb = centre ? (pRateNow > 0.0 ? group + 1.0 : group) * stride : p + pRateNow * len;
             real qb = wrap ? (sRate > 0.0 ? stripKm : 0.0) : q + rate * len;
             real tMid = ta + 0.5 * len;
@@ -445,8 +432,8 @@ vec3 curtainEnergyExact(vec3 o, vec3 d, int c, CurtainCoordinates cc, real tm, v
                 group += pRateNow > 0.0 ? 1.0 : -1.0;
             p = pb;
             ta = tb;
-            if (runEnds) {
-                run += tRun <= tb ? 1.0 : 0.0;
+            if (tRun <= tb) {
+                run += 1.0;
                 ++piece;
                 break;
             }
