@@ -99,10 +99,10 @@ void expectTheDiscretization(const std::string& name, const render::ReferenceMod
 } // namespace
 
 // At the pixels of tests/render/reference_ray_test.cpp (16 lit pixels of the march's image, most lit by the
-// sky's glow) and at 16 of the brightest 64 (the aurora). Measured: RMS 3.7e-5, max 1.2e-4 and RMS 3.0e-4,
-// max 8.4e-4: the march's discretization, held to 1e-3. It is discretization because it converges: the
+// sky's glow) and at 16 of the brightest 64 (the aurora). Measured: RMS 3.5e-5, max 1.1e-4 and RMS 2.7e-4,
+// max 6.1e-4: the march's discretization, held to 1e-3. It is discretization because it converges: the
 // march with half the step, sub-steps and altitude step of the emission rows and 4x their energies lies
-// 4.2e-5 and 1.3e-4 (max) from the reference; held to half the finest settings' difference.
+// 3.6e-5 and 1.2e-4 (max) from the reference; held to half the finest settings' difference.
 TEST_F(ShaderSteps, DiffersFromTheReferenceByItsDiscretization)
 {
     const render::ReferenceModel coarse = march(*scene_);
@@ -121,8 +121,8 @@ TEST_F(ShaderSteps, DiffersFromTheReferenceByItsDiscretization)
 }
 
 // The plasma's electron strip (tests/app/data/plasma-seam.toml at the finest settings) at the 16 brightest
-// pixels of the march's image, those of tests/components/plasma/plasma_gl_test.cpp. Measured: RMS 3.9e-4,
-// max 1.0e-3 (the strip's one-texel edges), held to 5e-3; refined as above, max 7.7e-4: held to 3/4 of it.
+// pixels of the march's image, those of tests/components/plasma/plasma_gl_test.cpp. Measured: RMS 3.5e-4,
+// max 6.1e-4 (the strip's one-texel edges), held to 5e-3; refined as above, max 2.7e-4: held to 3/4 of it.
 TEST(ShaderStepsOnPlasma, DifferFromTheReferenceByTheirDiscretization)
 {
     scene::Scene s = scene::withoutUnmodelled(components::loadScene(kSource + "/tests/app/data/plasma-seam.toml"));

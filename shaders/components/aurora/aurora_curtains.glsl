@@ -400,20 +400,21 @@ vec3 curtainEnergyExact(vec3 o, vec3 d, int c, CurtainCoordinates cc, real tm, v
                     real la = clamp(p - cell, 0.0, 1.0);
                     real lb = clamp(pb - cell, 0.0, 1.0);
                     vec3 column = bilinearPiece(lo, loNext, hi, hiNext, q, dq, la, lb, qCellKm);
-                    // The closed form is a difference of running integrals held in float texels: it errs by about
-                    // 2u of their sizes (u = 2^-24) and, where λ changes along the piece, of the moments' over dq
-                    // (bilinearPiece). The end-point rule (the ends' mean profile times dq) errs by about half the
-                    // profile's change over the piece times dq, where the profile runs smoothly between the ends.
-                    // A ray that barely moves across the detail (looking along a curtain, straight up inside it)
-                    // takes the rule where that is below the closed form's rounding, and the two agree within it:
-                    // a piece can run through whole cells of q, and the rule does not see a sheet between two
-                    // ends where the flux is nil.
+                    // The closed form is a difference of running integrals held in float texels: its mass errs by
+                    // about 2u of their sizes (u = 2^-24), and where λ changes along the piece by 2u of the
+                    // moments' over dq too (bilinearPiece). The end-point rule (the ends' mean profile times dq)
+                    // errs by about half the profile's change over the piece times dq, where the profile runs
+                    // smoothly between the ends. A ray that barely moves across the detail (looking along a
+                    // curtain, straight up inside it) takes the rule where that is below the mass's rounding and
+                    // the closed form agrees with the rule within its whole rounding: a piece can run through
+                    // whole cells of q, and the rule does not see a sheet between two ends where the flux is nil.
                     real sizes = abs(lo.x) + abs(loNext.x) + abs(hi.x) + abs(hiNext.x);
                     real momentSizes = abs(lo.y) + abs(loNext.y) + abs(hi.y) + abs(hiNext.y) + abs(q) * sizes;
                     real slope = abs(lb - la) * qCellKm < abs(dq) ? abs(lb - la) / abs(dq) : 0.0;
-                    real rounding = 1.2e-7 * (sizes + slope * momentSizes);
+                    real rounding = 1.2e-7 * sizes;
                     real endPoint = 0.5 * abs(dq) * abs(mix(hi.z, hiNext.z, lb) - mix(lo.z, loNext.z, la));
-                    bool rounded = endPoint < rounding && abs(column.x - column.z * dq) <= 2.0 * rounding;
+                    bool rounded = endPoint < rounding &&
+                                   abs(column.x - column.z * dq) <= 2.0 * (rounding + 1.2e-7 * slope * momentSizes);
                     runSums += runShare(column, dq, rate, ta, len, rounded);
                 }
                 lo = hi;
