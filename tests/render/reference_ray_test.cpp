@@ -24,6 +24,7 @@
 using namespace aurorawall;
 using aurorawall::components::roles::curtainDetailData;
 using aurorawall::test::litPixels;
+using aurorawall::test::placeCamera;
 
 namespace {
 
@@ -86,15 +87,6 @@ std::unique_ptr<gl::Context> ReferenceRay::context_;
 scene::Scene* ReferenceRay::scene_ = nullptr;
 accuracy::SceneView* ReferenceRay::view_ = nullptr;
 components::roles::FluxFrames* ReferenceRay::frames_ = nullptr;
-
-// Puts the frame's camera at positionKm, looking along the unit `forward` with the unit `up` (perpendicular).
-void placeCamera(cluster::FrameState& f, glm::dvec3 positionKm, glm::dvec3 forward, glm::dvec3 up)
-{
-    f.cameraPositionKm = positionKm;
-    f.cameraUp = up;
-    f.cameraRight = glm::cross(forward, up);
-    f.cameraBack = -forward;
-}
 
 } // namespace
 

@@ -55,6 +55,15 @@ inline std::vector<glm::ivec2> brightestPixels(const std::vector<glm::dvec3>& ra
     return chosen;
 }
 
+// Puts the frame's camera at positionKm, looking along the unit `forward` with the unit `up` (perpendicular).
+inline void placeCamera(cluster::FrameState& f, glm::dvec3 positionKm, glm::dvec3 forward, glm::dvec3 up)
+{
+    f.cameraPositionKm = positionKm;
+    f.cameraUp = up;
+    f.cameraRight = glm::cross(forward, up);
+    f.cameraBack = -forward;
+}
+
 // The CPU reference at every pixel of a width × height view, row-major.
 inline std::vector<glm::dvec3> referenceImage(const render::ReferenceModel& model, const accuracy::SceneView& view,
                                               int width, int height)

@@ -151,11 +151,9 @@ TEST(ShaderStepsOnPlasmaBox, PiecesThroughWholeSheetsKeepTheirEmission)
     scene::Scene s = scene::withoutUnmodelled(components::loadScene(kSource + "/config/scenes/plasma-box.toml"));
     s.startTimeS = 567.42;
     accuracy::SceneView view = accuracy::sceneView(s, kSource + "/config/walls/single.toml", {160, 90});
-    const glm::dvec3 forward = glm::normalize(glm::dvec3(-0.566486, 0.629386, 0.531946));
-    view.frame.cameraPositionKm = glm::dvec3(-1928.276597, -1456.786772, 5999.091053);
-    view.frame.cameraUp = glm::normalize(glm::dvec3(0.060628, 0.675591, -0.734779));
-    view.frame.cameraRight = glm::cross(forward, view.frame.cameraUp);
-    view.frame.cameraBack = -forward;
+    test::placeCamera(view.frame, glm::dvec3(-1928.276597, -1456.786772, 5999.091053),
+                      glm::normalize(glm::dvec3(-0.566486, 0.629386, 0.531946)),
+                      glm::normalize(glm::dvec3(0.060628, 0.675591, -0.734779)));
     const components::roles::FluxFrames frames =
         components::plasma::simulateSheetFrames(components::plasma::sheetFramesSpec(s.settings<components::plasma::Settings>()));
     render::ReferenceSettings settings;

@@ -301,7 +301,7 @@ vec3 runEnergy(vec3 o, vec3 d, vec2 sums, int c, real sm, real sRate, real tm)
 //  - f meets its band's edge: across, a curtain end, beyond which p stays at the end's; along, the strip's
 //    edge, beyond which there is no flux;
 //  - the altitude has changed by uAuroraResolveKm since the last such cut (and, where the part reaches beyond
-//    an end, s by curtainEndFadeStepKm): the pieces between two of these cuts, a run, share one emission,
+//    an end, !betweenEnds, s by curtainEndFadeStepKm): the pieces between two of these cuts, a run, share one emission,
 //    faded beyond the ends, at their flux-weighted mean position (runEnergy);
 //  - along, s leaves the strip's period;
 //  - the path meets the circle of the curtain's reach around either end (endReachCuts), so that each
@@ -312,7 +312,7 @@ vec3 runEnergy(vec3 o, vec3 d, vec2 sums, int c, real sm, real sRate, real tm)
 // centres, the pieces take `stride` cells at a time, each with the two columns around its middle (λ kept
 // in [0, 1]): no worse than a column at its middle.
 vec3 curtainEnergyExact(vec3 o, vec3 d, int c, CurtainCoordinates cc, real tm, vec2 span, real uRate, real sRate,
-                        real hRate, bool alongMode)
+                        real hRate, bool alongMode, bool betweenEnds)
 {
     real reach = uCurtainState[c].w;
     real lengthKm = uCurtainLengthKm[c];
@@ -322,20 +322,19 @@ vec3 curtainEnergyExact(vec3 o, vec3 d, int c, CurtainCoordinates cc, real tm, v
     real halfWidthKm = 0.5 * uFluxStrip.y / uCurtainDetail[c].z;
     vec2 band = intersectLinearBand(span, alongMode ? cc.u : cc.s, fixedRate, tm, alongMode ? -halfWidthKm : 0.0,
                                     alongMode ? halfWidthKm : lengthKm);
-    real fixedStart = alongMode ? cc.u + uRate * (span.x - tm) : clamp(cc.s + sRate * (span.x - tm), 0.0, lengthKm);
+    real uStart = cc.u + uRate * (span.x - tm);
+    real sStart = cc.s + sRate * (span.x - tm);
+    real fixedStart = alongMode ? uStart : clamp(sStart, 0.0, lengthKm);
     real p = curtainFixedCell(c, alongMode, fixedStart); // not reduced again as it runs: columns are read periodically
     real pRate = fixedRate / (alongMode ? fluxCellAcrossKm(c) : fluxCellAlongKm());
     real qCellKm = alongMode ? fluxCellAlongKm() : fluxCellAcrossKm(c);
     real stride = max(1.0, ceil(abs(pRate) * (span.y - span.x) / 64.0));
     real group = pRate < 0.0 ? ceil(p / stride) - 1.0 : floor(p / stride); // p lies in [group, group + 1] strides
-    real sStart = cc.s + sRate * (span.x - tm);
-    real sEnd = cc.s + sRate * (span.y - tm);
-    bool beyondEnds = min(sStart, sEnd) < 0.0 || max(sStart, sEnd) > lengthKm;
-    real fadeRuns = beyondEnds ? abs(sRate) * (span.y - span.x) / curtainEndFadeStepKm(reach) : 0.0;
+    real fadeRuns = betweenEnds ? 0.0 : abs(sRate) * (span.y - span.x) / curtainEndFadeStepKm(reach);
     real runs = clamp(ceil(max(abs(hRate) * (span.y - span.x) / uAuroraResolveKm, fadeRuns)), 1.0, 64.0);
     real runKm = (span.y - span.x) / runs;
     real run = 0.0;
-    real q = alongMode ? mod(cc.s + sRate * (span.x - tm) + uCurtainDetail[c].x, stripKm) : cc.u + uRate * (span.x - tm);
+    real q = alongMode ? mod(sStart + uCurtainDetail[c].x, stripKm) : uStart;
     vec4 endCuts = endReachCuts(cc, tm, uRate, sRate, reach, lengthKm);
     FluxColumns columns = fluxColumns(c, alongMode);
     // The two columns' values at the piece's start, of the pair from column `held` (none: −1e30).
@@ -519,7 +518,7 @@ vec3 integrateCurtains(vec3 o, vec3 d, real t0, real t1, vec4 candidates)
             // crosses more of, cut at the other's cell centres.
             bool moreAlong = abs(uRate) / fluxCellAcrossKm(c) < abs(sRate) / fluxCellAlongKm();
             radiance += uCurtainState[c].x *
-                        curtainEnergyExact(o, d, c, cc, tm, within, uRate, sRate, hRate, moreAlong && betweenEnds);
+                        curtainEnergyExact(o, d, c, cc, tm, within, uRate, sRate, hRate, moreAlong && betweenEnds, betweenEnds);
             continue;
         }
 #endif

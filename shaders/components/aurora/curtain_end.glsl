@@ -10,15 +10,10 @@ real curtainEndFade(real beyondEndKm, real reachKm)
     return exp(real(-8.0) * x * x);
 }
 
-// How many runs of a curtain's march the fade takes out to the reach: each moves at most σ/4 (reach / 16)
-// beyond the end, over which the fade is nearly linear, so that evaluating it at the run's flux-weighted
-// mean position errs by at most (1/4)² / 8 of the column (|d²fade/de²| <= 1/σ²), 0.8%.
-real curtainEndFadeCuts()
-{
-    return real(16.0);
-}
-
+// The most a run of a curtain's march moves beyond its end: σ/4 (reach / 16), over which the fade is nearly
+// linear, so that evaluating it at the run's flux-weighted mean position errs by at most (1/4)² / 8 of the
+// column (|d²fade/de²| <= 1/σ²), 0.8%.
 real curtainEndFadeStepKm(real reachKm)
 {
-    return reachKm / curtainEndFadeCuts();
+    return reachKm / real(16.0);
 }
