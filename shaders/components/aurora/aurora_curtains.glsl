@@ -57,6 +57,7 @@ struct CurtainCoordinates {
     real u;         // km across it (signed)
     real distance;  // km from its polyline
     vec3 normal;    // unit normal of the closest segment's great circle: u grows along it
+    real curvature; // 1/km, positive where the curtain bends towards +u
 };
 
 CurtainCoordinates curtainCoordinates(int c, int i, vec3 n)
@@ -91,6 +92,14 @@ CurtainCoordinates curtainCoordinates(int c, int i, vec3 n)
         }
     } while (jumping);
     CurtainCoordinates best;
+    // The curtain's curvature at the segment's nearer end, from the point beyond it (polylineCurvature):
+    // one fetch; 0 where the polyline is one segment.
+    bool atStart = (p.x < 0.5 * p.y && j > 0) || j == last;
+    vec4 beyond = polylinePoint(c, clamp(atStart ? j - 1 : j + 2, 0, last + 1));
+    vec4 corner = atStart ? a : b;
+    best.curvature = last > 0 ? polylineCurvature(vec3(corner), vec3(beyond), normal, p.y, abs(beyond.w - corner.w),
+                                                  uPlanetRadiusKm)
+                              : 0.0;
     best.distance = length(vec2(p.z, p.w));
     best.u = p.z;
     best.s = a.w + p.x;
@@ -445,20 +454,99 @@ vec3 curtainEnergyExact(vec3 o, vec3 d, int c, CurtainCoordinates cc, real tm, v
 }
 #endif
 
-// The emission of the ray o + t d over the step [t0, t1] (km) of the curtains that can reach it
-// (stepCandidates), as linear sRGB radiance. The curtain coordinates are found
-// once, at the step's midpoint t_m, and the footprint's motion is linear over the step:
-// u(t) = u_m + u' (t − t_m), s(t) = s_m + s' (t − t_m). The part of the step within a curtain's reach
-// (of its centre line, and of its ends) is cut into sub-steps over which
+// Curtain c's emission (per unit of its peak flux) over the part `chord` [ta, tb] of a step of the ray
+// o + t d (km), with its coordinates linear about the chord's midpoint tm: u(t) = u_m + u' (t − t_m),
+// s(t) = s_m + s' (t − t_m) (cc.u, cc.s, uRate, sRate). Only the part of the chord within the curtain's
+// reach (of its centre line, and of its ends) can emit. That part is cut into sub-steps over which
 // the altitude changes by at most uAuroraResolveKm; on each the emission is integrated in closed form
 // over the coordinate that changes through more of the detail's cells, across the curtain,
 //   ∫ flux(s, u(t)) E(h(t)) dt ≈ E(h(t̄)) · (1/u') ∫_{u(ta)}^{u(tb)} flux(s_mid, u) du,
 // or along it (s and u exchanged), and the other coordinate changes by at most uAuroraResolveCells of
-// the detail's cells (along, also by at most uAuroraResolveKm); with EXACT_SUB_STEPS the flux is
-// integrated exactly along the slanted path instead, in pieces cut at the detail's cell centres (curtainEnergyExact). t̄ is the flux-weighted mean position of
-// the sub-step, from the first moment (curtain_profile.glsl, curtainIntegral). A sub-step that changes
-// the integrated coordinate by less than 1 m takes the midpoint rule. The step's midpoint decides which
-// curtains are near, as a point sample did.
+// the detail's cells (along, also by at most uAuroraResolveKm, alongResolveKm); with EXACT_SUB_STEPS the
+// flux is integrated exactly along the slanted path instead, in pieces cut at the detail's cell centres
+// (curtainEnergyExact). t̄ is the flux-weighted mean position of the sub-step, from the first moment
+// (curtain_profile.glsl, curtainIntegral). A sub-step that changes the integrated coordinate by less than
+// 1 m takes the midpoint rule.
+vec3 curtainChordEnergy(vec3 o, vec3 d, int c, CurtainCoordinates cc, vec2 chord, real uRate, real sRate, real hRate,
+                        real alongResolveKm)
+{
+    real tm = 0.5 * (chord.x + chord.y);
+    real reach = uCurtainState[c].w;
+    real lengthKm = uCurtainLengthKm[c];
+    // The sub-steps cover the part within reach alone, so that none straddles the reach's edge around an end.
+    vec2 within = withinStadium(chord, cc, tm, uRate, sRate, reach, lengthKm);
+    if (within.x >= within.y)
+        return vec3(0.0);
+    real start = within.x;
+    real span = within.y - within.x;
+    real sStart = cc.s + sRate * (within.x - tm);
+    real sEnd = cc.s + sRate * (within.y - tm);
+    bool betweenEnds = min(sStart, sEnd) >= 0.0 && max(sStart, sEnd) <= lengthKm;
+#ifdef HAS_CURTAIN_DETAIL
+    if (EXACT_SUB_STEPS) {
+        // Exact along the slanted path, integrated in closed form over the coordinate whose cells it
+        // crosses more of, cut at the other's cell centres.
+        bool moreAlong = abs(uRate) / fluxCellAcrossKm(c) < abs(sRate) / fluxCellAlongKm();
+        return curtainEnergyExact(o, d, c, cc, tm, within, uRate, sRate, hRate, moreAlong && betweenEnds, betweenEnds);
+    }
+#endif
+    // A step that moves through more of the detail's cells along than across (and stays between the
+    // curtain's ends) is integrated along in closed form, with sub-steps that bound the change across;
+    // any other, across, with sub-steps that bound the change along.
+    real alongParts = abs(sRate) / alongResolveKm;
+    real acrossParts = abs(uRate) / (uAuroraResolveCells * fluxCellAcrossKm(c));
+    bool alongMode = kProfileVariesAlong && acrossParts < alongParts && betweenEnds;
+    real resolveParts = alongMode ? acrossParts : alongParts;
+    // Beyond an end, the sub-steps also move s by at most curtainEndFadeStepKm.
+    real fadeKm = curtainEndFadeStepKm(reach);
+    real fadeParts = betweenEnds ? 0.0 : abs(sRate) / fadeKm;
+    int parts = int(clamp(ceil(max(max(abs(hRate) / uAuroraResolveKm, resolveParts), fadeParts) * span), 1.0, 64.0));
+    real part = span / real(parts);
+    COUNT_WORK(z, parts);
+    // Runs of sub-steps over which the altitude changes by at most uAuroraResolveKm (and, beyond an end, s
+    // by at most fadeKm) share one emission, at their flux-weighted mean position (where it changes less
+    // than that over the whole chord, all the chord's sub-steps do).
+    real runParts = min(floor(uAuroraResolveKm / max(abs(hRate) * part, 1e-6)),
+                        betweenEnds ? 64.0 : floor(fadeKm / max(abs(sRate) * part, 1e-6)));
+    int run = int(clamp(runParts, 1.0, 64.0));
+    // The sub-step's change in the coordinate integrated in closed form, and its rate per km of ray.
+    real rate = alongMode ? sRate : uRate;
+    real change = rate * part;
+    vec3 energy = vec3(0.0);
+    vec2 runSums = vec2(0.0); // the run's summed runShare
+    for (int i = 0; i < parts; ++i) {
+        real ta = start + real(i) * part;
+        real tMid = ta + 0.5 * part;
+        real u = cc.u + uRate * (tMid - tm);
+        real s = cc.s + sRate * (tMid - tm);
+        if (withinReach(s, u, lengthKm, reach)) {
+            // (∫ profile, ∫ offset from the sub-step's start × profile, mean profile at its ends) over
+            // the integrated coordinate.
+            real q0 = (alongMode ? s : u) - 0.5 * change;
+            vec3 column = curtainIntegral(c, alongMode, alongMode ? u : clamp(s, 0.0, lengthKm), q0, change);
+            runSums += runShare(column, change, rate, ta, part, false);
+        }
+        if ((i + 1) % run == 0 || i == parts - 1) {
+            energy += runEnergy(o, d, runSums, c, cc.s, sRate, tm);
+            runSums = vec2(0.0);
+        }
+    }
+    return energy;
+}
+
+// The emission of the ray o + t d over the step [t0, t1] (km) of the curtains that can reach it
+// (stepCandidates), as linear sRGB radiance. The curtain coordinates are found once, at the step's
+// midpoint t_m (which decides which curtains are near, as a point sample did), and carried over the step
+// to second order in t − t_m. A curtain that bends (curvature κ, towards +u where positive) carries a
+// point u from its centre line as a curve does its Frenet frame: the nearest point runs at
+// s' = v_T / (1 − κu), v_T the footprint's speed along the segment, faster on the inner side, and
+// u'' = −κ (1 − κu) s'², s'' = 2κ u' s' / (1 − κu). The step is cut into chords short enough that these
+// move neither coordinate by more than kChordCells of the detail's cells off its tangent line at the
+// chord's midpoint (ℓ² |x''| / 8 over a chord of ℓ km; at most 8 chords), and each chord is integrated
+// with those tangent lines (curtainChordEnergy): the lines of two neighbouring chords meet at their shared
+// end. (The smooth profile, with no cells, takes one chord.)
+const real kChordCells = 0.05;
+
 vec3 integrateCurtains(vec3 o, vec3 d, real t0, real t1, vec4 candidates)
 {
     vec3 radiance = vec3(0.0);
@@ -485,78 +573,33 @@ vec3 integrateCurtains(vec3 o, vec3 d, real t0, real t1, vec4 candidates)
         if (candidate.x < 0.0)
             continue;
         int c = int(candidate.x);
-        real reach = uCurtainState[c].w;
         CurtainCoordinates cc = curtainCoordinates(c, int(candidate.y), n);
-        if (cc.distance - 0.5 * len > reach)
+        if (cc.distance - 0.5 * len > uCurtainState[c].w)
             continue;
-        real lengthKm = uCurtainLengthKm[c];
         // u = R asin(n·normal), so du/dt = R (normal·dn/dt) / √(1 − (n·normal)²); s runs along
         // cross(normal, n), the direction from the segment's start to its end.
         real across = dot(n, cc.normal);
         real scale = uPlanetRadiusKm * inversesqrt(max(1.0 - across * across, 1e-12));
         real uRate = scale * dot(cc.normal, footprintRate);
-        real sRate = scale * dot(cross(cc.normal, n), footprintRate);
-        // Only the part of the step within the curtain's reach (u and s linear over the step) can emit: the
-        // sub-steps cover that part alone, so that none straddles the reach's edge around an end.
-        vec2 within = withinStadium(vec2(t0, t1), cc, tm, uRate, sRate, reach, lengthKm);
-        if (within.x >= within.y)
-            continue;
-        real start = within.x;
-        real span = within.y - within.x;
-        // A step that moves through more of the detail's cells along than across (and stays between the
-        // curtain's ends) is integrated along in closed form, with sub-steps that bound the change across;
-        // any other, across, with sub-steps that bound the change along.
-        real alongParts = abs(sRate) / alongResolveKm;
-        real acrossParts = abs(uRate) / (uAuroraResolveCells * fluxCellAcrossKm(c));
-        real sStart = cc.s + sRate * (within.x - tm);
-        real sEnd = cc.s + sRate * (within.y - tm);
-        bool betweenEnds = min(sStart, sEnd) >= 0.0 && max(sStart, sEnd) <= lengthKm;
-        bool alongMode = kProfileVariesAlong && acrossParts < alongParts && betweenEnds;
-#ifdef HAS_CURTAIN_DETAIL
-        if (EXACT_SUB_STEPS) {
-            // Exact along the slanted path, integrated in closed form over the coordinate whose cells it
-            // crosses more of, cut at the other's cell centres.
-            bool moreAlong = abs(uRate) / fluxCellAcrossKm(c) < abs(sRate) / fluxCellAlongKm();
-            radiance += uCurtainState[c].x *
-                        curtainEnergyExact(o, d, c, cc, tm, within, uRate, sRate, hRate, moreAlong && betweenEnds, betweenEnds);
-            continue;
-        }
-#endif
-        real resolveParts = alongMode ? acrossParts : alongParts;
-        // Beyond an end, the sub-steps also move s by at most curtainEndFadeStepKm.
-        real fadeKm = curtainEndFadeStepKm(reach);
-        real fadeParts = betweenEnds ? 0.0 : abs(sRate) / fadeKm;
-        int parts = int(clamp(ceil(max(max(abs(hRate) / uAuroraResolveKm, resolveParts), fadeParts) * span), 1.0, 64.0));
-        real part = span / real(parts);
-        COUNT_WORK(z, parts);
-        // Runs of sub-steps over which the altitude changes by at most uAuroraResolveKm (and, beyond an end, s
-        // by at most fadeKm) share one emission, at their flux-weighted mean position (where it changes less
-        // than that over the whole step, all the step's sub-steps do).
-        real runParts = min(floor(uAuroraResolveKm / max(abs(hRate) * part, 1e-6)),
-                            betweenEnds ? 64.0 : floor(fadeKm / max(abs(sRate) * part, 1e-6)));
-        int run = int(clamp(runParts, 1.0, 64.0));
-        // The sub-step's change in the coordinate integrated in closed form, and its rate per km of ray.
-        real rate = alongMode ? sRate : uRate;
-        real change = rate * part;
+        // (1 − κu) kept above 1/4: nearer the centre of curvature than that, no curtain reaches.
+        real bend = max(1.0 - cc.curvature * cc.u, 0.25);
+        real sRate = scale * dot(cross(cc.normal, n), footprintRate) / bend;
+        vec2 acceleration = cc.curvature * vec2(-bend * sRate * sRate, 2.0 * uRate * sRate / bend); // u'', s''
+        real bentCells = 0.125 * len * len * max(abs(acceleration.x) / fluxCellAcrossKm(c),
+                                                 abs(acceleration.y) / fluxCellAlongKm());
+        int chords = int(clamp(ceil(sqrt(bentCells / kChordCells)), 1.0, 8.0));
+        real chordKm = len / real(chords);
         vec3 energy = vec3(0.0);
-        vec2 runSums = vec2(0.0); // the run's summed runShare
-        for (int i = 0; i < parts; ++i) {
-            real ta = start + real(i) * part;
-            real tMid = ta + 0.5 * part;
-            real u = cc.u + uRate * (tMid - tm);
-            real s = cc.s + sRate * (tMid - tm);
-            if (withinReach(s, u, lengthKm, reach)) {
-                // (∫ profile, ∫ offset from the sub-step's start × profile, mean profile at its ends) over
-                // the integrated coordinate.
-                real q0 = (alongMode ? s : u) - 0.5 * change;
-                vec3 column = curtainIntegral(c, alongMode, alongMode ? u : clamp(s, 0.0, lengthKm), q0, change);
-                runSums += runShare(column, change, rate, ta, part, false);
-            }
-            if ((i + 1) % run == 0 || i == parts - 1) {
-                energy += runEnergy(o, d, runSums, c, cc.s, sRate, tm);
-                runSums = vec2(0.0);
-            }
-        }
+        int h = 0;
+        do {
+            real tc = t0 + (real(h) + 0.5) * chordKm;
+            real dt = tc - tm;
+            CurtainCoordinates chord = cc;
+            chord.u = cc.u + dt * (uRate + 0.5 * acceleration.x * dt);
+            chord.s = cc.s + dt * (sRate + 0.5 * acceleration.y * dt);
+            energy += curtainChordEnergy(o, d, c, chord, vec2(tc - 0.5 * chordKm, tc + 0.5 * chordKm),
+                                         uRate + acceleration.x * dt, sRate + acceleration.y * dt, hRate, alongResolveKm);
+        } while (++h < chords);
         radiance += uCurtainState[c].x * energy;
     } while (++k < count);
     return radiance;

@@ -23,3 +23,13 @@ vec4 projectOnSegment(vec3 a, vec3 b, real length, vec3 n, real R)
 {
     return projectOnSegmentWithNormal(a, segmentNormal(a, b), length, n, R);
 }
+
+// The signed curvature (1/km, positive where the polyline bends towards `normal`) at its point `corner`,
+// the end of a segment of `inner` km on the great circle of unit normal `normal`, from the point `beyond`
+// `outer` km past it (on either side): a curve of curvature κ through three points d1 and d2 apart passes
+// the third κ d2 (d1 + d2) / 2 off the great circle through the first two, to first order in κ d.
+// beyond − corner, not beyond alone: the difference keeps the offset's digits in float.
+real polylineCurvature(vec3 corner, vec3 beyond, vec3 normal, real inner, real outer, real R)
+{
+    return real(2.0) * R * dot(beyond - corner, normal) / max(outer * (inner + outer), real(1e-6));
+}

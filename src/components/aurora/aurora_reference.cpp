@@ -9,9 +9,12 @@
 namespace aurorawall::components::aurora::f64 {
 using namespace aurorawall::scene::f64; // the ray and its steps
 namespace {
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wunused-function" // the reference uses some of the modules' functions
 #include "render/angle.glsl"
 #include "components/aurora/segment_projection.glsl"
 #include "components/aurora/curtain_end.glsl"
+#pragma GCC diagnostic pop
 } // namespace
 } // namespace aurorawall::components::aurora::f64
 
