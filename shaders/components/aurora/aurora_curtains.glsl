@@ -92,13 +92,14 @@ CurtainCoordinates curtainCoordinates(int c, int i, vec3 n)
         }
     } while (jumping);
     CurtainCoordinates best;
-    // The curtain's curvature at the segment's nearer end, from the point beyond it (polylineCurvature):
-    // one fetch; 0 where the polyline is one segment.
+    // The curtain's curvature at the segment's nearer end, from the point beyond it (polylineCurvature, the
+    // turn held to the polyline's largest, θ = 2 atan(uCurtainCornerSlope)): one fetch; 0 where the polyline
+    // is one segment.
     bool atStart = (p.x < 0.5 * p.y && j > 0) || j == last;
     vec4 beyond = polylinePoint(c, clamp(atStart ? j - 1 : j + 2, 0, last + 1));
     vec4 corner = atStart ? a : b;
     best.curvature = last > 0 ? polylineCurvature(vec3(corner), vec3(beyond), normal, p.y, abs(beyond.w - corner.w),
-                                                  uPlanetRadiusKm)
+                                                  uPlanetRadiusKm, 2.0 * atan(uCurtainCornerSlope[c]))
                               : 0.0;
     best.distance = length(vec2(p.z, p.w));
     best.u = p.z;

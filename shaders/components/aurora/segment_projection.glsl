@@ -28,8 +28,12 @@ vec4 projectOnSegment(vec3 a, vec3 b, real length, vec3 n, real R)
 // the end of a segment of `inner` km on the great circle of unit normal `normal`, from the point `beyond`
 // `outer` km past it (on either side): a curve of curvature κ through three points d1 and d2 apart passes
 // the third κ d2 (d1 + d2) / 2 off the great circle through the first two, to first order in κ d.
-// beyond − corner, not beyond alone: the difference keeps the offset's digits in float.
-real polylineCurvature(vec3 corner, vec3 beyond, vec3 normal, real inner, real outer, real R)
+// beyond − corner, not beyond alone: the difference keeps the offset's digits in float. The points are
+// floats, ~1e-7 R apart from where they belong, so next to a segment of metres the offset is rounding;
+// the turn at the corner, κ (d1 + d2) / 2, is then held to the polyline's largest (`largestTurn`, rad).
+real polylineCurvature(vec3 corner, vec3 beyond, vec3 normal, real inner, real outer, real R, real largestTurn)
 {
-    return real(2.0) * R * dot(beyond - corner, normal) / max(outer * (inner + outer), real(1e-6));
+    real bound = real(2.0) * largestTurn / max(inner + outer, real(1e-6));
+    real curvature = real(2.0) * R * dot(beyond - corner, normal) / max(outer * (inner + outer), real(1e-6));
+    return clamp(curvature, -bound, bound);
 }

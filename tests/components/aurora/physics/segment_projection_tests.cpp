@@ -70,13 +70,17 @@ TEST(SegmentProjection, CurvatureOfCirclesFromThreePolylinePoints)
                     const double span = r.inner + r.outer;
                     const double firstOrder = kappa * (std::pow(kappa * span, 2) + std::pow(span / kRadiusKm, 2));
                     const double rounding = 16.0 * std::ldexp(1.0, -24) * 2.0 * kRadiusKm / (r.outer * span);
-                    EXPECT_NEAR(f64::polylineCurvature(r.corner, r.beyond, normal, r.inner, r.outer, kRadiusKm),
+                    // The polyline's largest turn, twice this corner's (κ (d1 + d2) / 2), does not bind.
+                    const double largestTurn = kappa * span;
+                    EXPECT_NEAR(f64::polylineCurvature(r.corner, r.beyond, normal, r.inner, r.outer, kRadiusKm,
+                                                       largestTurn),
                                 expected, firstOrder + 1e-12)
                         << radiusKm << " km circle, " << spacingKm << " km segments, ratio " << ratio;
                     const glm::vec3 a(r.a), b(r.b);
                     const float inFloat = f32::polylineCurvature(glm::vec3(r.corner), glm::vec3(r.beyond),
                                                                  f32::segmentNormal(a, b), float(r.inner),
-                                                                 float(r.outer), float(kRadiusKm));
+                                                                 float(r.outer), float(kRadiusKm),
+                                                                 float(largestTurn));
                     EXPECT_NEAR(inFloat, expected, firstOrder + rounding)
                         << radiusKm << " km circle, " << spacingKm << " km segments, ratio " << ratio << " (float)";
                 }
@@ -94,6 +98,26 @@ TEST(SegmentProjection, StraightAndDegenerateReadsGiveNoCurvature)
         return std::cos(t) * a + std::sin(t) * glm::cross(axis, a);
     };
     const glm::dvec3 normal = f64::segmentNormal(along(0.0), along(2.0));
-    EXPECT_NEAR(f64::polylineCurvature(along(2.0), along(4.0), normal, 2.0, 2.0, kRadiusKm), 0.0, 1e-9);
-    EXPECT_EQ(f64::polylineCurvature(along(2.0), along(2.0), normal, 2.0, 0.0, kRadiusKm), 0.0);
+    EXPECT_NEAR(f64::polylineCurvature(along(2.0), along(4.0), normal, 2.0, 2.0, kRadiusKm, 0.01), 0.0, 1e-9);
+    EXPECT_EQ(f64::polylineCurvature(along(2.0), along(2.0), normal, 2.0, 0.0, kRadiusKm, 0.01), 0.0);
+}
+
+// Next to a segment of 0.1 m, a point 0.6 m across (a float point's rounding, 1e-7 R) would read as a
+// turn of 0.6 / 0.1 rad: the curvature is held to the polyline's largest turn over the two segments.
+TEST(SegmentProjection, CurvatureNextToATinySegmentIsHeldToTheLargestTurn)
+{
+    const glm::dvec3 a = glm::normalize(glm::dvec3(1.0, 0.2, 0.1));
+    const glm::dvec3 axis = glm::normalize(glm::cross(a, glm::dvec3(0.0, 0.0, 1.0)));
+    const auto along = [&](double km) {
+        const double t = km / kRadiusKm;
+        return std::cos(t) * a + std::sin(t) * glm::cross(axis, a);
+    };
+    const glm::dvec3 normal = f64::segmentNormal(along(0.0), along(2.0));
+    const double largestTurn = 0.01;
+    for (double side : {1.0, -1.0}) {
+        const glm::dvec3 beyond = glm::normalize(along(2.0001) + side * 1e-7 * normal);
+        const double bound = 2.0 * largestTurn / 2.0001;
+        EXPECT_NEAR(f64::polylineCurvature(along(2.0), beyond, normal, 2.0, 1e-4, kRadiusKm, largestTurn),
+                    side * bound, 1e-12);
+    }
 }
