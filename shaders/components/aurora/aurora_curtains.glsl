@@ -58,6 +58,7 @@ struct CurtainCoordinates {
     real distance;  // km from its polyline
     vec3 normal;    // unit normal of the closest segment's great circle: u grows along it
     real curvature; // 1/km, positive where the curtain bends towards +u
+    real segmentKm; // length of the segment whose end gives the curvature
 };
 
 CurtainCoordinates curtainCoordinates(int c, int i, vec3 n)
@@ -101,6 +102,7 @@ CurtainCoordinates curtainCoordinates(int c, int i, vec3 n)
     best.curvature = last > 0 ? polylineCurvature(vec3(corner), vec3(beyond), normal, p.y, abs(beyond.w - corner.w),
                                                   uPlanetRadiusKm, 2.0 * atan(uCurtainCornerSlope[c]))
                               : 0.0;
+    best.segmentKm = p.y;
     best.distance = length(vec2(p.z, p.w));
     best.u = p.z;
     best.s = a.w + p.x;
@@ -582,10 +584,14 @@ vec3 integrateCurtains(vec3 o, vec3 d, real t0, real t1, vec4 candidates)
         real across = dot(n, cc.normal);
         real scale = uPlanetRadiusKm * inversesqrt(max(1.0 - across * across, 1e-12));
         real uRate = scale * dot(cc.normal, footprintRate);
+        // The polyline is straight within a segment of L km and turns at its ends: a step whose footprint
+        // runs S km along turns by κ min(S, L) on average, so it takes the curvature κ min(1, S / L).
+        real straightRate = scale * dot(cross(cc.normal, n), footprintRate);
+        real curvature = cc.curvature * min(1.0, abs(straightRate) * len / max(cc.segmentKm, 1e-6));
         // (1 − κu) kept above 1/4: nearer the centre of curvature than that, no curtain reaches.
-        real bend = max(1.0 - cc.curvature * cc.u, 0.25);
-        real sRate = scale * dot(cross(cc.normal, n), footprintRate) / bend;
-        vec2 acceleration = cc.curvature * vec2(-bend * sRate * sRate, 2.0 * uRate * sRate / bend); // u'', s''
+        real bend = max(1.0 - curvature * cc.u, 0.25);
+        real sRate = straightRate / bend;
+        vec2 acceleration = curvature * vec2(-bend * sRate * sRate, 2.0 * uRate * sRate / bend); // u'', s''
         real bentCells = 0.125 * len * len * max(abs(acceleration.x) / fluxCellAcrossKm(c),
                                                  abs(acceleration.y) / fluxCellAlongKm());
         int chords = int(clamp(ceil(sqrt(bentCells / kChordCells)), 1.0, 8.0));
