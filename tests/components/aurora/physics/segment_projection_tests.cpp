@@ -36,6 +36,15 @@ double arcKm(glm::dvec3 a, glm::dvec3 b)
     return kRadiusKm * std::atan2(glm::length(glm::cross(a, b)), glm::dot(a, b));
 }
 
+// The unit point `km` along a great circle of the planet (kRadiusKm) through a fixed point.
+glm::dvec3 alongGreatCircle(double km)
+{
+    const glm::dvec3 a = glm::normalize(glm::dvec3(1.0, 0.2, 0.1));
+    const glm::dvec3 axis = glm::normalize(glm::cross(a, glm::dvec3(0.0, 0.0, 1.0)));
+    const double t = km / kRadiusKm;
+    return std::cos(t) * a + std::sin(t) * glm::cross(axis, a);
+}
+
 } // namespace
 
 // Three points of a small circle of angular radius alpha, whose geodesic curvature is cot(alpha) / R
@@ -91,33 +100,23 @@ TEST(SegmentProjection, CurvatureOfCirclesFromThreePolylinePoints)
 // (the march reads its own end point: beyond == corner).
 TEST(SegmentProjection, StraightAndDegenerateReadsGiveNoCurvature)
 {
-    const glm::dvec3 a = glm::normalize(glm::dvec3(1.0, 0.2, 0.1));
-    const glm::dvec3 axis = glm::normalize(glm::cross(a, glm::dvec3(0.0, 0.0, 1.0)));
-    const auto along = [&](double km) {
-        const double t = km / kRadiusKm;
-        return std::cos(t) * a + std::sin(t) * glm::cross(axis, a);
-    };
-    const glm::dvec3 normal = f64::segmentNormal(along(0.0), along(2.0));
-    EXPECT_NEAR(f64::polylineCurvature(along(2.0), along(4.0), normal, 2.0, 2.0, kRadiusKm, 0.01), 0.0, 1e-9);
-    EXPECT_EQ(f64::polylineCurvature(along(2.0), along(2.0), normal, 2.0, 0.0, kRadiusKm, 0.01), 0.0);
+    const glm::dvec3 normal = f64::segmentNormal(alongGreatCircle(0.0), alongGreatCircle(2.0));
+    const glm::dvec3 corner = alongGreatCircle(2.0);
+    EXPECT_NEAR(f64::polylineCurvature(corner, alongGreatCircle(4.0), normal, 2.0, 2.0, kRadiusKm, 0.01), 0.0, 1e-9);
+    EXPECT_EQ(f64::polylineCurvature(corner, corner, normal, 2.0, 0.0, kRadiusKm, 0.01), 0.0);
 }
 
 // Next to a segment of 0.1 m, a point 0.6 m across (a float point's rounding, 1e-7 R) would read as a
 // turn of 0.6 / 0.1 rad: the curvature is held to the polyline's largest turn over the two segments.
 TEST(SegmentProjection, CurvatureNextToATinySegmentIsHeldToTheLargestTurn)
 {
-    const glm::dvec3 a = glm::normalize(glm::dvec3(1.0, 0.2, 0.1));
-    const glm::dvec3 axis = glm::normalize(glm::cross(a, glm::dvec3(0.0, 0.0, 1.0)));
-    const auto along = [&](double km) {
-        const double t = km / kRadiusKm;
-        return std::cos(t) * a + std::sin(t) * glm::cross(axis, a);
-    };
-    const glm::dvec3 normal = f64::segmentNormal(along(0.0), along(2.0));
+    const glm::dvec3 normal = f64::segmentNormal(alongGreatCircle(0.0), alongGreatCircle(2.0));
     const double largestTurn = 0.01;
     for (double side : {1.0, -1.0}) {
-        const glm::dvec3 beyond = glm::normalize(along(2.0001) + side * 1e-7 * normal);
+        const glm::dvec3 beyond = glm::normalize(alongGreatCircle(2.0001) + side * 1e-7 * normal);
         const double bound = 2.0 * largestTurn / 2.0001;
-        EXPECT_NEAR(f64::polylineCurvature(along(2.0), beyond, normal, 2.0, 1e-4, kRadiusKm, largestTurn),
+        EXPECT_NEAR(f64::polylineCurvature(alongGreatCircle(2.0), beyond, normal, 2.0, 1e-4, kRadiusKm,
+                                           largestTurn),
                     side * bound, 1e-12);
     }
 }
