@@ -266,7 +266,7 @@ TEST_F(ReferenceRay, CoarseStepsIntegratedAcrossTheCurtainStayNearTheReference)
 // emission's position within a run of pieces, the reference's own 0.05 km midpoint rule, and where the
 // curtain is followed: the march carries the step's coordinates along the curtain's smooth curvature, the
 // reference takes the nearest of its 2 km segments, whose coordinates jump by |u| θ where that changes.
-// Measured: the middle column's largest error at 16 lit pixels 9.1%, the exact integral's 0.13% (0.055%
+// Measured: the middle column's largest error at 16 lit pixels 9.1%, the exact integral's 0.096% (0.055%
 // with coordinates linear over the step, though over the whole view those were 0.23% RMS off the finest
 // render and the curvature's are 0.10%: docs/aurora-physics.md); held to more than 5% (the view still
 // shows the tilted sheet) and to less than 0.2%, a forty-fifth of the middle column's.
