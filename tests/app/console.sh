@@ -5,7 +5,6 @@
 # Right typed into it turns the master's camera (status). --console without --backend glfw is a
 # usage error (2). Exits 77 (skipped) without xvfb-run or xdotool.
 source "$(dirname "$0")/lib.sh"
-client=(python3 "$SRC_DIR/launch/wall-control" --timeout $((30 * ${AW_TIME_SCALE:-1})))
 
 run_under_xvfb "1280x1024x24" "$@"
 

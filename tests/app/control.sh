@@ -5,7 +5,6 @@
 # wall keeps rendering; the screenshots differ after goto; the job exits 0 soon after quit; and
 # every rank drew every frame at the master's frame and time (--stats).
 source "$(dirname "$0")/lib.sh"
-client=(python3 "$SRC_DIR/launch/wall-control" --timeout $((30 * ${AW_TIME_SCALE:-1})))
 
 # The tiny 2x2 wall driven by two ranks, two screens each.
 wall="$WORK/tiny-2-ranks.toml"

@@ -5,7 +5,6 @@
 # stays byte for byte what it was before, so no file output holds the HUD. A second H hides it
 # again. Exits 77 (skipped) without xvfb-run or xdotool.
 source "$(dirname "$0")/lib.sh"
-client=(python3 "$SRC_DIR/launch/wall-control" --timeout $((30 * ${AW_TIME_SCALE:-1})))
 
 run_under_xvfb "1280x1024x24" "$@"
 

@@ -3,6 +3,7 @@
 #   AW          the aurorawall binary           MPIEXEC   mpirun
 #   COMPARE     the compare_walls binary        SRC_DIR   the source tree
 #   DATA        tests/app/data                  HERE      tests/app
+#   AW_TIME_SCALE  how many times longer the time limits are (10 under the sanitizers)
 set -euo pipefail
 
 : "${AW:?}" "${MPIEXEC:?}" "${SRC_DIR:?}" "${DATA:?}" "${HERE:?}"
@@ -16,6 +17,10 @@ MPI_FLAGS=(--oversubscribe --bind-to none --mca pml ob1 --mca btl self,vader)
 WORK="$(mktemp -d "${TMPDIR:-/tmp}/aw-e2e.XXXXXX")"
 cleanup() { rm -rf "$WORK"; }
 trap cleanup EXIT
+
+# The remote-control client (launch/wall-control), waiting 30 s for an answer, AW_TIME_SCALE times
+# longer under the sanitizers.
+client=(python3 "$SRC_DIR/launch/wall-control" --timeout $((30 * ${AW_TIME_SCALE:-1})))
 
 fail() { echo "FAIL: $*" >&2; exit 1; }
 note() { echo "== $*"; }

@@ -5,7 +5,6 @@
 # a drag upwards with the left button raises the view, O Right Right Right O orbits the point ahead at
 # the same altitude and pitch, as `status` shows, and the screenshot changes. Exits 77 (skipped) without xvfb-run or xdotool.
 source "$(dirname "$0")/lib.sh"
-client=(python3 "$SRC_DIR/launch/wall-control" --timeout $((30 * ${AW_TIME_SCALE:-1})))
 
 run_under_xvfb "640x480x24" "$@"
 

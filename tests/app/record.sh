@@ -6,7 +6,6 @@
 # where the path has its keys. Then a path that zooms (field_of_view_deg) recorded between its keys:
 # the recorded keys carry the zoom and replay bit-identical too.
 source "$(dirname "$0")/lib.sh"
-client=(python3 "$SRC_DIR/launch/wall-control" --timeout $((30 * ${AW_TIME_SCALE:-1})))
 
 wall="$WORK/tiny-1-rank.toml"
 { cat "$DATA/tiny-2x2.toml"; printf '\n[ranks]\nper_screen = [0, 0, 0, 0]\n'; } > "$wall"
